@@ -1,0 +1,375 @@
+//! The gradient-deficient planar ANCF beam element with Gerstmayr–Irschik strain measures.
+//!
+//! ```text
+//! ε = |r'| − 1                       axial strain
+//! κ = (r' × r'') / |r'|²             material curvature
+//! U = ½ ∫₀ˡ (EA ε² + EI κ²) dx        strain energy,   Q_e = ∂U/∂e
+//! Q_e = ∫₀ˡ (EA ε ε_eᵀ + EI κ κ_eᵀ) dx
+//! K_T = ∫₀ˡ EA (ε_eᵀε_e + ε ε_ee) + EI (κ_eᵀκ_e + κ κ_ee) dx
+//! ```
+//! with ε_e = r'ᵀS'/|r'|, ε_ee = S'ᵀ(I − t tᵀ)S'/|r'| (t = r'/|r'|), and for κ = f/g, f = r' × r'',
+//! g = r'·r': κ_e = f_e/g − f g_e/g², κ_ee = f_ee/g − (f_e g_eᵀ + g_e f_eᵀ)/g² − f g_ee/g² + 2f g_e g_eᵀ/g³.
+//!
+//! Quadrature: 5 Gauss points for the axial term (order 9: ε² of a stretched straight element is a
+//! degree-8 polynomial in the Berzeri–Shabana limit and smooth here) and 3 for bending (order 5:
+//! κ² of a cubic is of degree ≤ 4 when |r'| is constant), as Exudyn's default `A9-B5` rule.
+//!
+//! Optional strain-rate (stiffness-proportional) damping with coefficient β [s]:
+//! N_d = β EA ε̇, M_d = β EI κ̇, Q_d = ∫ (N_d ε_eᵀ + M_d κ_eᵀ) dx. It vanishes under rigid motion.
+//!
+//! # References
+//! - Gerstmayr & Irschik (2008), J. Sound Vib. 318, 461; MODEL.md §1.2–1.4.
+//! - Exudyn `CObjectANCFCable2D.cpp` (strain variations, quadrature orders).
+
+use nalgebra::{Matrix2, Matrix4, SMatrix, SVector, Vector2, Vector4};
+
+use super::shape::{shape, shape_x, shape_xx};
+use crate::quadrature::{GAUSS_3, GAUSS_5};
+
+/// Element coordinate vector e = [r₁, r₁,ₓ, r₂, r₂,ₓ].
+pub type ElementVector = SVector<f64, 8>;
+/// 8 × 8 element matrix.
+pub type ElementMatrix = SMatrix<f64, 8, 8>;
+
+/// Cross-section properties of the beam.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Section {
+    /// Axial stiffness EA [N].
+    pub ea: f64,
+    /// Bending stiffness EI [N m²].
+    pub ei: f64,
+    /// Mass per unit length ρA [kg/m].
+    pub rho_a: f64,
+    /// Strain-rate damping coefficient β [s] (0: undamped).
+    pub damping: f64,
+}
+
+/// Shape-function derivatives and scaled weight at one Gauss point.
+#[derive(Clone, Copy, Debug)]
+struct GaussPoint {
+    s_x: Vector4<f64>,
+    s_xx: Vector4<f64>,
+    weight: f64,
+}
+
+/// One planar ANCF element of reference length `l`, with its quadrature points precomputed.
+#[derive(Clone, Copy, Debug)]
+pub struct Element {
+    section: Section,
+    l: f64,
+    axial: [GaussPoint; 5],
+    bending: [GaussPoint; 3],
+}
+
+/// Axial strain and its first variation at a point.
+struct Axial {
+    eps: f64,
+    eps_e: ElementVector,
+    t: Vector2<f64>,
+    norm: f64,
+}
+
+/// Curvature and the pieces of its variations at a point.
+struct Bending {
+    kappa: f64,
+    kappa_e: ElementVector,
+    f: f64,
+    g: f64,
+    f_e: ElementVector,
+    g_e: ElementVector,
+}
+
+/// [sₖ v_d] for k = 0..4, d = 0..2, in element coordinate order.
+fn kron(s: &Vector4<f64>, v: Vector2<f64>) -> ElementVector {
+    ElementVector::from_fn(|i, _| s[i / 2] * v[i % 2])
+}
+
+/// a ⊗ b: out[(2k + d, 2j + c)] = a[(k, j)] b[(d, c)].
+fn kron_mat(a: &Matrix4<f64>, b: &Matrix2<f64>) -> ElementMatrix {
+    ElementMatrix::from_fn(|i, j| a[(i / 2, j / 2)] * b[(i % 2, j % 2)])
+}
+
+/// Σₖ sₖ r_k, the field value of a derivative with shape values `s`.
+fn field(s: &Vector4<f64>, e: &ElementVector) -> Vector2<f64> {
+    (0..4).fold(Vector2::zeros(), |acc, k| {
+        acc + s[k] * Vector2::new(e[2 * k], e[2 * k + 1])
+    })
+}
+
+fn cross(a: Vector2<f64>, b: Vector2<f64>) -> f64 {
+    a.x * b.y - a.y * b.x
+}
+
+impl Element {
+    /// An element of length `l` [m] with the given section.
+    pub fn new(section: Section, l: f64) -> Self {
+        let point = |(xi, weight): (f64, f64)| GaussPoint {
+            s_x: shape_x(xi, l),
+            s_xx: shape_xx(xi, l),
+            weight,
+        };
+        Self {
+            section,
+            l,
+            axial: std::array::from_fn(|i| point(GAUSS_5.unit_node(i, l))),
+            bending: std::array::from_fn(|i| point(GAUSS_3.unit_node(i, l))),
+        }
+    }
+
+    /// Reference length l [m].
+    pub fn length(&self) -> f64 {
+        self.l
+    }
+
+    /// Cross-section properties.
+    pub fn section(&self) -> &Section {
+        &self.section
+    }
+
+    /// Scalar consistent mass m = ρA ∫ s sᵀ dx (closed form, MODEL.md §1.2); M_e = m ⊗ I₂.
+    pub fn scalar_mass_matrix(&self) -> Matrix4<f64> {
+        let l = self.l;
+        let c = self.section.rho_a * l;
+        c * Matrix4::new(
+            13.0 / 35.0,
+            11.0 * l / 210.0,
+            9.0 / 70.0,
+            -13.0 * l / 420.0,
+            11.0 * l / 210.0,
+            l * l / 105.0,
+            13.0 * l / 420.0,
+            -l * l / 140.0,
+            9.0 / 70.0,
+            13.0 * l / 420.0,
+            13.0 / 35.0,
+            -11.0 * l / 210.0,
+            -13.0 * l / 420.0,
+            -l * l / 140.0,
+            -11.0 * l / 210.0,
+            l * l / 105.0,
+        )
+    }
+
+    /// Constant element mass matrix M_e = m ⊗ I₂ (ANCF: no centrifugal or Coriolis terms).
+    pub fn mass_matrix(&self) -> ElementMatrix {
+        kron_mat(&self.scalar_mass_matrix(), &Matrix2::identity())
+    }
+
+    /// Scalar bending stiffness k = EI ∫ s'' s''ᵀ dx = EI/l³ [12 6l −12 6l; …] (MODEL.md §1.4b).
+    ///
+    /// This is the stiffness of the unstressed straight element in each Cartesian direction; it is
+    /// isotropic, which is what makes the Craig–Bampton subspace independent of the rod's orientation.
+    pub fn scalar_bending_stiffness(&self) -> Matrix4<f64> {
+        let l = self.l;
+        let c = self.section.ei / (l * l * l);
+        c * Matrix4::new(
+            12.0,
+            6.0 * l,
+            -12.0,
+            6.0 * l,
+            6.0 * l,
+            4.0 * l * l,
+            -6.0 * l,
+            2.0 * l * l,
+            -12.0,
+            -6.0 * l,
+            12.0,
+            -6.0 * l,
+            6.0 * l,
+            2.0 * l * l,
+            -6.0 * l,
+            4.0 * l * l,
+        )
+    }
+
+    /// Gravity load Q_g = ρA ∫ Sᵀ g dx = ρA l [g/2, l g/12, g/2, −l g/12] (MODEL.md §1.3).
+    pub fn gravity_force(&self, g: Vector2<f64>) -> ElementVector {
+        let c = self.section.rho_a * self.l;
+        kron(
+            &Vector4::new(0.5, self.l / 12.0, 0.5, -self.l / 12.0),
+            g * c,
+        )
+    }
+
+    fn axial_at(p: &GaussPoint, e: &ElementVector) -> Axial {
+        let r_x = field(&p.s_x, e);
+        let norm = r_x.norm();
+        let t = r_x / norm;
+        Axial {
+            eps: norm - 1.0,
+            eps_e: kron(&p.s_x, t),
+            t,
+            norm,
+        }
+    }
+
+    fn bending_at(p: &GaussPoint, e: &ElementVector) -> Bending {
+        let r_x = field(&p.s_x, e);
+        let r_xx = field(&p.s_xx, e);
+        let f = cross(r_x, r_xx);
+        let g = r_x.norm_squared();
+        let f_e = kron(&p.s_x, Vector2::new(r_xx.y, -r_xx.x))
+            + kron(&p.s_xx, Vector2::new(-r_x.y, r_x.x));
+        let g_e = 2.0 * kron(&p.s_x, r_x);
+        let kappa_e = f_e / g - (f / (g * g)) * g_e;
+        Bending {
+            kappa: f / g,
+            kappa_e,
+            f,
+            g,
+            f_e,
+            g_e,
+        }
+    }
+
+    /// Elastic force Q_e(e) = ∂U/∂e.
+    pub fn elastic_force(&self, e: &ElementVector) -> ElementVector {
+        let Section { ea, ei, .. } = self.section;
+        let axial = self.axial.iter().fold(ElementVector::zeros(), |acc, p| {
+            let a = Self::axial_at(p, e);
+            acc + (p.weight * ea * a.eps) * a.eps_e
+        });
+        self.bending.iter().fold(axial, |acc, p| {
+            let b = Self::bending_at(p, e);
+            acc + (p.weight * ei * b.kappa) * b.kappa_e
+        })
+    }
+
+    /// Internal force: elastic force plus strain-rate damping β(EA ε̇ ε_eᵀ + EI κ̇ κ_eᵀ).
+    pub fn internal_force(&self, e: &ElementVector, e_dot: &ElementVector) -> ElementVector {
+        let Section {
+            ea, ei, damping, ..
+        } = self.section;
+        if damping == 0.0 {
+            return self.elastic_force(e);
+        }
+        let axial = self.axial.iter().fold(ElementVector::zeros(), |acc, p| {
+            let a = Self::axial_at(p, e);
+            let n = ea * (a.eps + damping * a.eps_e.dot(e_dot));
+            acc + (p.weight * n) * a.eps_e
+        });
+        self.bending.iter().fold(axial, |acc, p| {
+            let b = Self::bending_at(p, e);
+            let m = ei * (b.kappa + damping * b.kappa_e.dot(e_dot));
+            acc + (p.weight * m) * b.kappa_e
+        })
+    }
+
+    /// Tangent stiffness K_T = ∂Q_e/∂e (analytic, symmetric).
+    pub fn tangent_stiffness(&self, e: &ElementVector) -> ElementMatrix {
+        let Section { ea, ei, .. } = self.section;
+        let mut k = ElementMatrix::zeros();
+        for p in &self.axial {
+            let a = Self::axial_at(p, e);
+            let projector = Matrix2::identity() - a.t * a.t.transpose();
+            let eps_ee = kron_mat(&(p.s_x * p.s_x.transpose()), &projector) / a.norm;
+            k += (p.weight * ea) * (a.eps_e * a.eps_e.transpose() + a.eps * eps_ee);
+        }
+        let rotation = Matrix2::new(0.0, 1.0, -1.0, 0.0);
+        for p in &self.bending {
+            let b = Self::bending_at(p, e);
+            let a_kj = p.s_x * p.s_xx.transpose() - p.s_xx * p.s_x.transpose();
+            let f_ee = kron_mat(&a_kj, &rotation);
+            let g_ee = 2.0 * kron_mat(&(p.s_x * p.s_x.transpose()), &Matrix2::identity());
+            let (f, g) = (b.f, b.g);
+            let fg = b.f_e * b.g_e.transpose();
+            let kappa_ee = f_ee / g - (fg + fg.transpose()) / (g * g) - (f / (g * g)) * g_ee
+                + (2.0 * f / (g * g * g)) * (b.g_e * b.g_e.transpose());
+            k += (p.weight * ei) * (b.kappa_e * b.kappa_e.transpose() + b.kappa * kappa_ee);
+        }
+        k
+    }
+
+    /// Strain energy U = ½ ∫ (EA ε² + EI κ²) dx.
+    pub fn strain_energy(&self, e: &ElementVector) -> f64 {
+        let Section { ea, ei, .. } = self.section;
+        let axial: f64 = self
+            .axial
+            .iter()
+            .map(|p| p.weight * ea * Self::axial_at(p, e).eps.powi(2))
+            .sum();
+        let bending: f64 = self
+            .bending
+            .iter()
+            .map(|p| p.weight * ei * Self::bending_at(p, e).kappa.powi(2))
+            .sum();
+        0.5 * (axial + bending)
+    }
+
+    /// Position r(x) = S(x) e at arc length `x` ∈ [0, l] on the reference.
+    pub fn position(&self, e: &ElementVector, x: f64) -> Vector2<f64> {
+        field(&shape(x / self.l, self.l), e)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::quadrature::GAUSS_4;
+
+    fn element() -> Element {
+        Element::new(
+            Section {
+                ea: 4.6e7,
+                ei: 868.0,
+                rho_a: 1.75,
+                damping: 0.0,
+            },
+            0.03,
+        )
+    }
+
+    /// The closed-form mass equals ρA ∫ S Sᵀ dx by 4-point Gauss (exact for degree 6).
+    #[test]
+    fn closed_form_mass_equals_quadrature() {
+        let el = element();
+        let l = el.length();
+        let mut m = Matrix4::zeros();
+        for (xi, w) in GAUSS_4.on_unit_interval(l) {
+            let s = shape(xi, l);
+            m += w * 1.75 * s * s.transpose();
+        }
+        assert!((m - el.scalar_mass_matrix()).norm() < 1e-15 * m.norm().max(1.0) * 10.0);
+    }
+
+    /// Closed-form bending stiffness equals EI ∫ s'' s''ᵀ (3-point Gauss is exact for degree 2).
+    #[test]
+    fn closed_form_bending_stiffness_equals_quadrature() {
+        let el = element();
+        let l = el.length();
+        let mut k = Matrix4::zeros();
+        for (xi, w) in GAUSS_3.on_unit_interval(l) {
+            let s = shape_xx(xi, l);
+            k += w * 868.0 * s * s.transpose();
+        }
+        let k_ref = el.scalar_bending_stiffness();
+        assert!((k - k_ref).norm() < 1e-12 * k_ref.norm());
+    }
+
+    /// The gravity load equals ρA ∫ Sᵀ g (4-point Gauss, exact for cubic S).
+    #[test]
+    fn gravity_equals_quadrature() {
+        let el = element();
+        let g = Vector2::new(0.3, -9.81);
+        let mut q = ElementVector::zeros();
+        for (xi, w) in GAUSS_4.on_unit_interval(el.length()) {
+            q += kron(&shape(xi, el.length()), w * 1.75 * g);
+        }
+        assert!((q - el.gravity_force(g)).norm() < 1e-15);
+    }
+
+    /// Linear-in-e straight stretch: tangent of the unstressed element is symmetric and the
+    /// energy of a uniform 1 % stretch is ½ EA ε² l.
+    #[test]
+    fn uniform_stretch_energy() {
+        let el = element();
+        let l = el.length();
+        let s = 1.01;
+        let e = ElementVector::from_column_slice(&[0.0, 0.0, s, 0.0, s * l, 0.0, s, 0.0]);
+        let u = el.strain_energy(&e);
+        let expected = 0.5 * 4.6e7 * 0.01f64.powi(2) * l;
+        assert!((u - expected).abs() < 1e-12 * expected);
+        let k = el.tangent_stiffness(&e);
+        assert!((k - k.transpose()).norm() < 1e-10 * k.norm());
+    }
+}
