@@ -14,8 +14,8 @@ pub enum ModelError {
         name: &'static str,
         /// The rejected value.
         value: f64,
-        /// The allowed range, in words or interval notation (e.g. `[1, 64]`).
-        range: &'static str,
+        /// The allowed range, in interval notation (e.g. `[1, 64]`).
+        range: String,
     },
     /// A numerical operation failed (factorisation, eigenproblem, Newton iteration, step size).
     Numerical(String),
@@ -23,8 +23,12 @@ pub enum ModelError {
 
 impl ModelError {
     /// Builds [`ModelError::InvalidParameter`].
-    pub fn invalid(name: &'static str, value: f64, range: &'static str) -> Self {
-        Self::InvalidParameter { name, value, range }
+    pub fn invalid(name: &'static str, value: f64, range: impl Into<String>) -> Self {
+        Self::InvalidParameter {
+            name,
+            value,
+            range: range.into(),
+        }
     }
 }
 

@@ -11,6 +11,8 @@
 
 pub mod ancf;
 pub mod error;
+pub mod integrator;
 pub mod quadrature;
+pub mod reduction;
 
 pub use error::ModelError;

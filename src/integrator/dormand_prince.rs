@@ -1,0 +1,304 @@
+//! Dormand–Prince 5(4) stepper (DOPRI5), allocation-free after construction.
+//!
+//! ```text
+//! kᵢ = f(t + cᵢh, y + h Σⱼ aᵢⱼ kⱼ),  y₁ = y + h Σ bᵢ kᵢ (= stage 7, FSAL),  err = h Σ eᵢ kᵢ
+//! h_new = h · min(5, max(0.2, 0.9 · err^(−1/5)))    (no growth right after a rejection)
+//! ```
+//!
+//! # References
+//! - Dormand & Prince (1980); Hairer, Nørsett & Wanner (1993), Table II.5.2 and code DOPRI5.
+
+use super::{Stats, Tolerances};
+use crate::error::ModelError;
+
+const C: [f64; 7] = [0.0, 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0, 1.0, 1.0];
+const A: [[f64; 6]; 7] = [
+    [0.0; 6],
+    [1.0 / 5.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+    [3.0 / 40.0, 9.0 / 40.0, 0.0, 0.0, 0.0, 0.0],
+    [44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0, 0.0, 0.0, 0.0],
+    [
+        19372.0 / 6561.0,
+        -25360.0 / 2187.0,
+        64448.0 / 6561.0,
+        -212.0 / 729.0,
+        0.0,
+        0.0,
+    ],
+    [
+        9017.0 / 3168.0,
+        -355.0 / 33.0,
+        46732.0 / 5247.0,
+        49.0 / 176.0,
+        -5103.0 / 18656.0,
+        0.0,
+    ],
+    [
+        35.0 / 384.0,
+        0.0,
+        500.0 / 1113.0,
+        125.0 / 192.0,
+        -2187.0 / 6784.0,
+        11.0 / 84.0,
+    ],
+];
+/// Error weights e = b − b̂.
+const E: [f64; 7] = [
+    71.0 / 57600.0,
+    0.0,
+    -71.0 / 16695.0,
+    71.0 / 1920.0,
+    -17253.0 / 339200.0,
+    22.0 / 525.0,
+    -1.0 / 40.0,
+];
+
+/// Dormand–Prince 5(4) integrator with its workspace and statistics.
+#[derive(Clone, Debug)]
+pub struct DormandPrince {
+    tolerances: Tolerances,
+    k: [Vec<f64>; 7],
+    y_stage: Vec<f64>,
+    /// Proposed next step size (0: not yet known).
+    h: f64,
+    stats: Stats,
+}
+
+impl DormandPrince {
+    /// An integrator for `n` states.
+    pub fn new(n: usize, tolerances: Tolerances) -> Result<Self, ModelError> {
+        tolerances.validate()?;
+        Ok(Self {
+            tolerances,
+            k: std::array::from_fn(|_| vec![0.0; n]),
+            y_stage: vec![0.0; n],
+            h: 0.0,
+            stats: Stats::default(),
+        })
+    }
+
+    /// Statistics since construction.
+    pub fn stats(&self) -> Stats {
+        self.stats
+    }
+
+    /// The tolerances in use.
+    pub fn tolerances(&self) -> &Tolerances {
+        &self.tolerances
+    }
+
+    /// Proposed size of the next step (0 before the first step) [s].
+    pub fn proposed_step(&self) -> f64 {
+        self.h
+    }
+
+    /// Sets the proposed next step size (used to restore a snapshot bit-exactly).
+    pub fn set_proposed_step(&mut self, h: f64) {
+        self.h = h;
+    }
+
+    /// Advances `y` from `*t` to `t_end`, calling `f(t, y, dy)` for the derivative.
+    ///
+    /// On failure (step below the minimum, non-finite state) `*t` and `y` hold the last accepted
+    /// point and the error says where and why.
+    pub fn advance<F>(
+        &mut self,
+        f: &mut F,
+        t: &mut f64,
+        y: &mut [f64],
+        t_end: f64,
+    ) -> Result<(), ModelError>
+    where
+        F: FnMut(f64, &[f64], &mut [f64]),
+    {
+        if t_end <= *t {
+            return Ok(());
+        }
+        f(*t, y, &mut self.k[0]);
+        self.stats.evaluations += 1;
+        if self.h <= 0.0 {
+            self.h = self.initial_step(f, *t, y, t_end);
+        }
+        let Tolerances {
+            max_step, min_step, ..
+        } = self.tolerances;
+        let mut rejected_last = false;
+        loop {
+            let remaining = t_end - *t;
+            // Take the end exactly when the proposal reaches it or nearly does.
+            let last = self.h.min(max_step) >= remaining * (1.0 - 1e-12);
+            let h = if last {
+                remaining
+            } else {
+                self.h.min(max_step)
+            };
+            let err = self.try_step(f, *t, y, h);
+            if err <= 1.0 {
+                self.stats.steps += 1;
+                *t = if last { t_end } else { *t + h };
+                y.copy_from_slice(&self.y_stage);
+                self.k.swap(0, 6);
+                let mut factor = (0.9 * err.max(1e-10).powf(-0.2)).clamp(0.2, 5.0);
+                if rejected_last {
+                    factor = factor.min(1.0);
+                }
+                rejected_last = false;
+                // Keep the unclamped proposal when the last step was shortened to hit t_end.
+                if !last || h >= self.h {
+                    self.h = h * factor;
+                }
+                if last {
+                    return Ok(());
+                }
+            } else {
+                self.stats.rejected += 1;
+                rejected_last = true;
+                let factor = if err.is_finite() {
+                    (0.9 * err.powf(-0.2)).max(0.2)
+                } else {
+                    0.2
+                };
+                self.h = h * factor;
+            }
+            if self.h < min_step {
+                return Err(ModelError::Numerical(format!(
+                    "step size {:.3e} s fell below the minimum {:.3e} s at t = {} s \
+                     (error estimate {err:.3e})",
+                    self.h, min_step, *t
+                )));
+            }
+        }
+    }
+
+    /// One trial step of size `h` from (t, y); the candidate is left in `y_stage` and k[6] holds
+    /// f at it. Returns the scaled error norm (∞ for a non-finite candidate).
+    fn try_step<F>(&mut self, f: &mut F, t: f64, y: &[f64], h: f64) -> f64
+    where
+        F: FnMut(f64, &[f64], &mut [f64]),
+    {
+        for s in 1..7 {
+            for i in 0..y.len() {
+                let incr: f64 = (0..s).map(|j| A[s][j] * self.k[j][i]).sum();
+                self.y_stage[i] = y[i] + h * incr;
+            }
+            f(t + C[s] * h, &self.y_stage, &mut self.k[s]);
+            self.stats.evaluations += 1;
+        }
+        let Tolerances {
+            relative, absolute, ..
+        } = self.tolerances;
+        let mut sum = 0.0;
+        for i in 0..y.len() {
+            let err: f64 = h * (0..7).map(|j| E[j] * self.k[j][i]).sum::<f64>();
+            let scale = absolute + relative * y[i].abs().max(self.y_stage[i].abs());
+            sum += (err / scale).powi(2);
+        }
+        let norm = (sum / y.len().max(1) as f64).sqrt();
+        if norm.is_finite() {
+            norm
+        } else {
+            f64::INFINITY
+        }
+    }
+
+    /// Initial step size (Hairer, Nørsett & Wanner 1993, §II.4): h₀ from ‖y‖/‖f‖, then one Euler
+    /// step to estimate the second derivative; k[0] must hold f(t, y).
+    fn initial_step<F>(&mut self, f: &mut F, t: f64, y: &[f64], t_end: f64) -> f64
+    where
+        F: FnMut(f64, &[f64], &mut [f64]),
+    {
+        let Tolerances {
+            relative,
+            absolute,
+            max_step,
+            ..
+        } = self.tolerances;
+        let n = y.len().max(1) as f64;
+        let scale = |v: f64| absolute + relative * v.abs();
+        let norm = |v: &mut dyn Iterator<Item = (f64, f64)>| {
+            (v.map(|(a, s)| (a / s).powi(2)).sum::<f64>() / n).sqrt()
+        };
+        let d0 = norm(&mut y.iter().map(|&v| (v, scale(v))));
+        let d1 = norm(&mut y.iter().zip(&self.k[0]).map(|(&v, &d)| (d, scale(v))));
+        let h0 = if d0 < 1e-5 || d1 < 1e-5 {
+            1e-6
+        } else {
+            0.01 * d0 / d1
+        };
+        let h0 = h0.min(max_step).min(t_end - t);
+        for i in 0..y.len() {
+            self.y_stage[i] = y[i] + h0 * self.k[0][i];
+        }
+        let (k0, rest) = self.k.split_at_mut(1);
+        f(t + h0, &self.y_stage, &mut rest[0]);
+        self.stats.evaluations += 1;
+        let d2 = norm(
+            &mut y
+                .iter()
+                .zip(rest[0].iter().zip(&k0[0]))
+                .map(|(&v, (&a, &b))| (a - b, scale(v))),
+        ) / h0;
+        let h1 = if d1.max(d2) <= 1e-15 {
+            (h0 * 1e-3).max(1e-6)
+        } else {
+            (0.01 / d1.max(d2)).powf(0.2)
+        };
+        (100.0 * h0).min(h1).min(max_step)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn tolerances(rtol: f64) -> Tolerances {
+        Tolerances {
+            relative: rtol,
+            absolute: rtol,
+            max_step: 1.0,
+            min_step: 1e-14,
+        }
+    }
+
+    /// Harmonic oscillator over 10 periods: the global error follows the tolerance.
+    #[test]
+    fn harmonic_oscillator_error_follows_tolerance() {
+        let omega = 3.0;
+        let mut f = |_t: f64, y: &[f64], dy: &mut [f64]| {
+            dy[0] = y[1];
+            dy[1] = -omega * omega * y[0];
+        };
+        let t_end = 10.0 * std::f64::consts::TAU / omega;
+        let mut errors = Vec::new();
+        for rtol in [1e-6, 1e-9] {
+            let mut dp = DormandPrince::new(2, tolerances(rtol)).unwrap();
+            let (mut t, mut y) = (0.0, [1.0, 0.0]);
+            // Cut [0, T] into uneven pieces: the end is hit exactly each time.
+            for piece in [0.37, 1.0, 2.5, t_end] {
+                dp.advance(&mut f, &mut t, &mut y, piece.min(t_end))
+                    .unwrap();
+                assert_eq!(t, piece.min(t_end));
+            }
+            let err = ((y[0] - (omega * t).cos()).powi(2)
+                + (y[1] / omega + (omega * t).sin()).powi(2))
+            .sqrt();
+            errors.push(err);
+            let stats = dp.stats();
+            assert!(stats.steps > 10 && stats.evaluations >= 6 * stats.steps);
+        }
+        // 10 periods: global error ≲ 100·tol; tightening by 1e3 must gain at least 100×.
+        assert!(errors[0] < 1e-4 && errors[1] < 1e-7, "{errors:?}");
+        assert!(errors[0] / errors[1] > 100.0, "{errors:?}");
+    }
+
+    /// A blow-up is reported as an error at the minimum step, not an endless loop.
+    #[test]
+    fn finite_time_blow_up_fails_cleanly() {
+        let mut f = |_t: f64, y: &[f64], dy: &mut [f64]| dy[0] = y[0] * y[0];
+        let mut dp = DormandPrince::new(1, tolerances(1e-8)).unwrap();
+        let (mut t, mut y) = (0.0, [1.0]);
+        let err = dp.advance(&mut f, &mut t, &mut y, 2.0).unwrap_err();
+        assert!(err.to_string().contains("fell below the minimum"), "{err}");
+        assert!(t < 1.01 && y[0] > 1e3, "stopped at t = {t}, y = {}", y[0]);
+    }
+}

@@ -1,0 +1,183 @@
+//! Craig–Bampton reduction of the ANCF rod, and [`RodModel`]: the rod in the coordinates the
+//! equations of motion use (full nodal coordinates or reduced ones).
+//!
+//! # References
+//! - R. R. Craig, M. C. C. Bampton (1968), AIAA J. 6, 1313–1319.
+//! - Sun et al. (2015), Mech. Mach. Theory 85, 106–115, eqs. (1)–(3).
+
+pub mod craig_bampton;
+pub mod modes;
+
+use faer::linalg::triangular_solve::{
+    solve_lower_triangular_in_place, solve_upper_triangular_in_place,
+};
+use faer::reborrow::ReborrowMut;
+use faer::{Mat, MatMut, MatRef, Par, Side};
+
+pub use craig_bampton::{CraigBampton, max_modes};
+pub use modes::{Modes, generalized_eigen};
+
+use crate::ancf::Rod;
+use crate::error::ModelError;
+
+/// The rod in full ANCF coordinates or in Craig–Bampton coordinates p (e = V p), with the buffers
+/// its force evaluation needs, so that evaluating forces never allocates.
+///
+/// In both cases the first 4 coordinates are node 0 (r₀, r₀,ₓ) and [`RodModel::end_node_offset`]
+/// locates the last node's 4 coordinates: joints are written directly in these coordinates.
+#[derive(Clone, Debug)]
+pub struct RodModel {
+    rod: Rod,
+    reduction: Option<CraigBampton>,
+    mass: Mat<f64>,
+    mass_factor: Mat<f64>,
+    e: Vec<f64>,
+    e_dot: Vec<f64>,
+    q: Vec<f64>,
+    k_full: Mat<f64>,
+    k_work: Mat<f64>,
+}
+
+impl RodModel {
+    /// The full (unreduced) rod.
+    pub fn full(rod: Rod) -> Result<Self, ModelError> {
+        let mass = rod.mass_matrix();
+        Self::build(rod, None, mass)
+    }
+
+    /// The rod reduced by Craig–Bampton with `n_modes` mode shapes.
+    pub fn craig_bampton(rod: Rod, n_modes: usize) -> Result<Self, ModelError> {
+        let cb = CraigBampton::new(&rod, n_modes)?;
+        let mass = cb.mass_matrix().to_owned();
+        Self::build(rod, Some(cb), mass)
+    }
+
+    fn build(
+        rod: Rod,
+        reduction: Option<CraigBampton>,
+        mass: Mat<f64>,
+    ) -> Result<Self, ModelError> {
+        let llt = mass.llt(Side::Lower).map_err(|e| {
+            ModelError::Numerical(format!("rod mass matrix is not positive definite: {e:?}"))
+        })?;
+        let mass_factor = llt.L().to_owned();
+        let n_full = rod.n_coordinates();
+        let n = mass.nrows();
+        Ok(Self {
+            reduction,
+            mass_factor,
+            mass,
+            e: vec![0.0; n_full],
+            e_dot: vec![0.0; n_full],
+            q: vec![0.0; n_full],
+            k_full: Mat::zeros(n_full, n_full),
+            k_work: Mat::zeros(n_full, n),
+            rod,
+        })
+    }
+
+    /// The underlying ANCF rod.
+    pub fn rod(&self) -> &Rod {
+        &self.rod
+    }
+
+    /// The Craig–Bampton reduction, if any.
+    pub fn reduction(&self) -> Option<&CraigBampton> {
+        self.reduction.as_ref()
+    }
+
+    /// Number of coordinates of the model.
+    pub fn n_coordinates(&self) -> usize {
+        self.mass.nrows()
+    }
+
+    /// Offset of the last node's coordinates (r_n, r_n,ₓ) in the model's coordinate vector.
+    pub fn end_node_offset(&self) -> usize {
+        match self.reduction {
+            Some(_) => 4,
+            None => self.rod.last_node_offset(),
+        }
+    }
+
+    /// Constant mass matrix (full M or reduced Vᵀ M V).
+    pub fn mass_matrix(&self) -> MatRef<'_, f64> {
+        self.mass.as_ref()
+    }
+
+    /// Solves M x = b in place with the stored Cholesky factor (no allocation).
+    pub fn solve_mass(&self, b: &mut [f64]) {
+        let n = b.len();
+        let mut x = MatMut::from_column_major_slice_mut(b, n, 1);
+        solve_lower_triangular_in_place(self.mass_factor.as_ref(), x.rb_mut(), Par::Seq);
+        solve_upper_triangular_in_place(self.mass_factor.transpose(), x, Par::Seq);
+    }
+
+    /// Nodal ANCF coordinates e of the model coordinates `p` (e = V p, or p itself).
+    pub fn nodal_coordinates<'a>(&'a mut self, p: &'a [f64]) -> &'a [f64] {
+        match &self.reduction {
+            Some(cb) => {
+                cb.expand(p, &mut self.e);
+                &self.e
+            }
+            None => p,
+        }
+    }
+
+    /// Internal (elastic + damping) force in model coordinates, written to `out`.
+    pub fn internal_force(&mut self, p: &[f64], p_dot: &[f64], out: &mut [f64]) {
+        match &self.reduction {
+            Some(cb) => {
+                cb.expand(p, &mut self.e);
+                cb.expand(p_dot, &mut self.e_dot);
+                self.rod.internal_force(&self.e, &self.e_dot, &mut self.q);
+                cb.project(&self.q, out);
+            }
+            None => self.rod.internal_force(p, p_dot, out),
+        }
+    }
+
+    /// Tangent stiffness ∂Q_e/∂p in model coordinates, written to `out`.
+    pub fn tangent_stiffness(&mut self, p: &[f64], out: MatMut<'_, f64>) {
+        match &self.reduction {
+            Some(cb) => {
+                cb.expand(p, &mut self.e);
+                self.rod.tangent_stiffness(&self.e, self.k_full.as_mut());
+                cb.project_matrix(self.k_full.as_ref(), self.k_work.as_mut(), out);
+            }
+            None => self.rod.tangent_stiffness(p, out),
+        }
+    }
+
+    /// Strain energy U(V p) [J].
+    pub fn strain_energy(&mut self, p: &[f64]) -> f64 {
+        match &self.reduction {
+            Some(cb) => {
+                cb.expand(p, &mut self.e);
+                self.rod.strain_energy(&self.e)
+            }
+            None => self.rod.strain_energy(p),
+        }
+    }
+
+    /// Generalised force Vᵀ q of a force `q` on the nodal coordinates, written to `out`.
+    pub fn project_force(&self, q: &[f64], out: &mut [f64]) {
+        match &self.reduction {
+            Some(cb) => cb.project(q, out),
+            None => out.copy_from_slice(q),
+        }
+    }
+
+    /// Model coordinates of nodal coordinates `e`: the M-orthogonal projection
+    /// p = (Vᵀ M V)⁻¹ Vᵀ M e, exact when e lies in the reduced space (e.g. any straight rod).
+    pub fn model_coordinates(&self, e: &[f64]) -> Vec<f64> {
+        let Some(cb) = &self.reduction else {
+            return e.to_vec();
+        };
+        let me = self.rod.mass_matrix() * MatRef::from_column_major_slice(e, e.len(), 1);
+        let mut p = vec![0.0; self.n_coordinates()];
+        let me: Vec<f64> = (0..e.len()).map(|i| me[(i, 0)]).collect();
+        cb.project(&me, &mut p);
+        self.solve_mass(&mut p);
+        p
+    }
+}
