@@ -177,9 +177,9 @@ impl DormandPrince {
         F: FnMut(f64, &[f64], &mut [f64]),
     {
         for s in 1..7 {
-            for i in 0..y.len() {
+            for (i, (stage, &y_i)) in self.y_stage.iter_mut().zip(y).enumerate() {
                 let incr: f64 = (0..s).map(|j| A[s][j] * self.k[j][i]).sum();
-                self.y_stage[i] = y[i] + h * incr;
+                *stage = y_i + h * incr;
             }
             f(t + C[s] * h, &self.y_stage, &mut self.k[s]);
             self.stats.evaluations += 1;
@@ -188,9 +188,9 @@ impl DormandPrince {
             relative, absolute, ..
         } = self.tolerances;
         let mut sum = 0.0;
-        for i in 0..y.len() {
+        for (i, (&y_i, &stage)) in y.iter().zip(&self.y_stage).enumerate() {
             let err: f64 = h * (0..7).map(|j| E[j] * self.k[j][i]).sum::<f64>();
-            let scale = absolute + relative * y[i].abs().max(self.y_stage[i].abs());
+            let scale = absolute + relative * y_i.abs().max(stage.abs());
             sum += (err / scale).powi(2);
         }
         let norm = (sum / y.len().max(1) as f64).sqrt();
@@ -226,8 +226,8 @@ impl DormandPrince {
             0.01 * d0 / d1
         };
         let h0 = h0.min(max_step).min(t_end - t);
-        for i in 0..y.len() {
-            self.y_stage[i] = y[i] + h0 * self.k[0][i];
+        for ((stage, &y_i), &k_i) in self.y_stage.iter_mut().zip(y).zip(&self.k[0]) {
+            *stage = y_i + h0 * k_i;
         }
         let (k0, rest) = self.k.split_at_mut(1);
         f(t + h0, &self.y_stage, &mut rest[0]);
