@@ -14,7 +14,7 @@
 //! degree-8 polynomial in the Berzeri–Shabana limit and smooth here) and 3 for bending (order 5:
 //! κ² of a cubic is of degree ≤ 4 when |r'| is constant), as Exudyn's default `A9-B5` rule.
 //!
-//! Optional strain-rate (stiffness-proportional) damping with coefficient β [s]:
+//! Optional strain-rate (stiffness-proportional) damping with coefficient β \[s\]:
 //! N_d = β EA ε̇, M_d = β EI κ̇, Q_d = ∫ (N_d ε_eᵀ + M_d κ_eᵀ) dx. It vanishes under rigid motion.
 //!
 //! # References
@@ -34,13 +34,13 @@ pub type ElementMatrix = SMatrix<f64, 8, 8>;
 /// Cross-section properties of the beam.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Section {
-    /// Axial stiffness EA [N].
+    /// Axial stiffness EA \[N\].
     pub ea: f64,
-    /// Bending stiffness EI [N m²].
+    /// Bending stiffness EI \[N m²\].
     pub ei: f64,
-    /// Mass per unit length ρA [kg/m].
+    /// Mass per unit length ρA \[kg/m\].
     pub rho_a: f64,
-    /// Strain-rate damping coefficient β [s] (0: undamped).
+    /// Strain-rate damping coefficient β \[s\] (0: undamped).
     pub damping: f64,
 }
 
@@ -101,7 +101,7 @@ fn cross(a: Vector2<f64>, b: Vector2<f64>) -> f64 {
 }
 
 impl Element {
-    /// An element of length `l` [m] with the given section.
+    /// An element of length `l` \[m\] with the given section.
     pub fn new(section: Section, l: f64) -> Self {
         let point = |(xi, weight): (f64, f64)| GaussPoint {
             s_x: shape_x(xi, l),
@@ -116,7 +116,7 @@ impl Element {
         }
     }
 
-    /// Reference length l [m].
+    /// Reference length l \[m\].
     pub fn length(&self) -> f64 {
         self.l
     }

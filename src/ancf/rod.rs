@@ -22,17 +22,17 @@ pub const MAX_ELEMENTS: usize = 64;
 /// Material and geometry of the rod (SI units).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RodProperties {
-    /// Reference length L [m].
+    /// Reference length L \[m\].
     pub length: f64,
-    /// Young's modulus E [Pa].
+    /// Young's modulus E \[Pa\].
     pub youngs_modulus: f64,
-    /// Density ρ [kg/m³].
+    /// Density ρ \[kg/m³\].
     pub density: f64,
-    /// Cross-section area A [m²].
+    /// Cross-section area A \[m²\].
     pub area: f64,
-    /// Second moment of area I [m⁴].
+    /// Second moment of area I \[m⁴\].
     pub second_moment_of_area: f64,
-    /// Strain-rate (stiffness-proportional) damping coefficient β [s]; 0 = undamped.
+    /// Strain-rate (stiffness-proportional) damping coefficient β \[s\]; 0 = undamped.
     pub stiffness_damping: f64,
 }
 
@@ -61,7 +61,7 @@ impl RodProperties {
         Ok(())
     }
 
-    /// Total mass ρ A L [kg].
+    /// Total mass ρ A L \[kg\].
     pub fn mass(&self) -> f64 {
         self.density * self.area * self.length
     }
@@ -127,7 +127,7 @@ impl Rod {
     }
 
     /// Coordinates of a straight, unstressed rod starting at `origin` with unit direction at `angle`
-    /// [rad]: node k at origin + xₖ t, slope t.
+    /// \[rad\]: node k at origin + xₖ t, slope t.
     pub fn straight_configuration(&self, origin: Vector2<f64>, angle: f64) -> Vec<f64> {
         let t = Vector2::new(angle.cos(), angle.sin());
         let l = self.element.length();
@@ -181,7 +181,7 @@ impl Rod {
         }
     }
 
-    /// Strain energy U(e) = Σ element energies [J].
+    /// Strain energy U(e) = Σ element energies \[J\].
     pub fn strain_energy(&self, e: &[f64]) -> f64 {
         (0..self.n_elements)
             .map(|j| self.element.strain_energy(&Self::element_coordinates(e, j)))
@@ -216,7 +216,7 @@ impl Rod {
         kron_identity(&self.scalar_mass_matrix())
     }
 
-    /// Constant gravity load Q_g for acceleration `g` [m/s²].
+    /// Constant gravity load Q_g for acceleration `g` \[m/s²\].
     pub fn gravity_force(&self, g: Vector2<f64>) -> Vec<f64> {
         let mut out = vec![0.0; self.n_coordinates()];
         let q = self.element.gravity_force(g);

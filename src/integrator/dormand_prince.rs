@@ -87,7 +87,7 @@ impl DormandPrince {
         &self.tolerances
     }
 
-    /// Proposed size of the next step (0 before the first step) [s].
+    /// Proposed size of the next step (0 before the first step) \[s\].
     pub fn proposed_step(&self) -> f64 {
         self.h
     }

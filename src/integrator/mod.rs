@@ -24,9 +24,9 @@ pub struct Tolerances {
     pub relative: f64,
     /// Absolute tolerance (in the units of each state component).
     pub absolute: f64,
-    /// Largest step size [s].
+    /// Largest step size \[s\].
     pub max_step: f64,
-    /// Smallest step size [s]: below it the integration fails instead of stalling.
+    /// Smallest step size \[s\]: below it the integration fails instead of stalling.
     pub min_step: f64,
 }
 

@@ -109,7 +109,7 @@ impl CraigBampton {
         8 + 2 * self.n_modes
     }
 
-    /// Fixed-interface natural frequencies ω [rad/s] of the kept mode shapes.
+    /// Fixed-interface natural frequencies ω \[rad/s\] of the kept mode shapes.
     pub fn mode_frequencies(&self) -> &[f64] {
         &self.mode_frequencies
     }

@@ -148,7 +148,7 @@ impl RodModel {
         }
     }
 
-    /// Strain energy U(V p) [J].
+    /// Strain energy U(V p) \[J\].
     pub fn strain_energy(&mut self, p: &[f64]) -> f64 {
         match &self.reduction {
             Some(cb) => {

@@ -17,14 +17,14 @@ use crate::error::ModelError;
 /// Mass-normalised eigenpairs, eigenvalues ω² ascending.
 #[derive(Clone, Debug)]
 pub struct Modes {
-    /// Eigenvalues ω² [rad²/s²], nondecreasing.
+    /// Eigenvalues ω² \[rad²/s²\], nondecreasing.
     pub eigenvalues: Vec<f64>,
     /// Mass-normalised mode shapes, one per column.
     pub shapes: Mat<f64>,
 }
 
 impl Modes {
-    /// Natural frequencies ω = √max(λ, 0) [rad/s].
+    /// Natural frequencies ω = √max(λ, 0) \[rad/s\].
     pub fn angular_frequencies(&self) -> Vec<f64> {
         self.eigenvalues.iter().map(|l| l.max(0.0).sqrt()).collect()
     }
