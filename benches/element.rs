@@ -32,7 +32,9 @@ fn element(c: &mut Criterion) {
     let rod = rod(1);
     let e = ElementVector::from_column_slice(&deformed(&rod));
     let el = *rod.element();
-    c.bench_function("element/elastic_force", |b| b.iter(|| el.elastic_force(black_box(&e))));
+    c.bench_function("element/elastic_force", |b| {
+        b.iter(|| el.elastic_force(black_box(&e)))
+    });
     c.bench_function("element/tangent_stiffness", |b| {
         b.iter(|| el.tangent_stiffness(black_box(&e)))
     });

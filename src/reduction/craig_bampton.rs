@@ -179,3 +179,25 @@ impl CraigBampton {
         );
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ancf::RodProperties;
+
+    #[test]
+    fn too_many_modes_is_an_error_naming_the_limit() {
+        let rod = Rod::new(RodProperties::benchmark_b(), 4).unwrap();
+        let err = CraigBampton::new(&rod, 7).unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "rod.nModes = 7 is outside the allowed range [0, 6] (= 2 (rod.nElements - 1) with \
+             rod.nElements = 4)"
+        );
+        assert!(CraigBampton::new(&rod, 6).is_ok());
+        let single = Rod::new(RodProperties::benchmark_b(), 1).unwrap();
+        let guyan = CraigBampton::new(&single, 0).unwrap();
+        assert_eq!(guyan.n_coordinates(), 8);
+        assert!(CraigBampton::new(&single, 1).is_err());
+    }
+}
