@@ -8,7 +8,7 @@
 //! # References
 //! - Dormand & Prince (1980); Hairer, Nørsett & Wanner (1993), Table II.5.2 and code DOPRI5.
 
-use super::{Stats, Tolerances};
+use super::{OdeSystem, Stats, Tolerances};
 use crate::error::ModelError;
 
 const C: [f64; 7] = [0.0, 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0, 1.0, 1.0];
@@ -97,24 +97,21 @@ impl DormandPrince {
         self.h = h;
     }
 
-    /// Advances `y` from `*t` to `t_end`, calling `f(t, y, dy)` for the derivative.
+    /// Advances `y` from `*t` to `t_end` for the system `f`.
     ///
     /// On failure (step below the minimum, non-finite state) `*t` and `y` hold the last accepted
     /// point and the error says where and why.
-    pub fn advance<F>(
+    pub fn advance<F: OdeSystem>(
         &mut self,
         f: &mut F,
         t: &mut f64,
         y: &mut [f64],
         t_end: f64,
-    ) -> Result<(), ModelError>
-    where
-        F: FnMut(f64, &[f64], &mut [f64]),
-    {
+    ) -> Result<(), ModelError> {
         if t_end <= *t {
             return Ok(());
         }
-        f(*t, y, &mut self.k[0]);
+        f.rhs(*t, y, &mut self.k[0]);
         self.stats.evaluations += 1;
         if self.h <= 0.0 {
             self.h = self.initial_step(f, *t, y, t_end);
@@ -133,9 +130,20 @@ impl DormandPrince {
                 self.h.min(max_step)
             };
             let err = self.try_step(f, *t, y, h);
-            if err <= 1.0 {
+            let t_new = if last { t_end } else { *t + h };
+            let veto = if err <= 1.0 {
+                f.check_step(*t, y, t_new, &self.y_stage)
+            } else {
+                None
+            };
+            if let Some(factor) = veto {
+                self.stats.rejected += 1;
+                rejected_last = true;
+                self.h = h * factor.clamp(1e-3, 0.99);
+            } else if err <= 1.0 {
                 self.stats.steps += 1;
-                *t = if last { t_end } else { *t + h };
+                f.accept_step(*t, y, t_new, &self.y_stage);
+                *t = t_new;
                 y.copy_from_slice(&self.y_stage);
                 self.k.swap(0, 6);
                 let mut factor = (0.9 * err.max(1e-10).powf(-0.2)).clamp(0.2, 5.0);
@@ -172,16 +180,13 @@ impl DormandPrince {
 
     /// One trial step of size `h` from (t, y); the candidate is left in `y_stage` and k[6] holds
     /// f at it. Returns the scaled error norm (∞ for a non-finite candidate).
-    fn try_step<F>(&mut self, f: &mut F, t: f64, y: &[f64], h: f64) -> f64
-    where
-        F: FnMut(f64, &[f64], &mut [f64]),
-    {
+    fn try_step<F: OdeSystem>(&mut self, f: &mut F, t: f64, y: &[f64], h: f64) -> f64 {
         for s in 1..7 {
             for (i, (stage, &y_i)) in self.y_stage.iter_mut().zip(y).enumerate() {
                 let incr: f64 = (0..s).map(|j| A[s][j] * self.k[j][i]).sum();
                 *stage = y_i + h * incr;
             }
-            f(t + C[s] * h, &self.y_stage, &mut self.k[s]);
+            f.rhs(t + C[s] * h, &self.y_stage, &mut self.k[s]);
             self.stats.evaluations += 1;
         }
         let Tolerances {
@@ -203,10 +208,7 @@ impl DormandPrince {
 
     /// Initial step size (Hairer, Nørsett & Wanner 1993, §II.4): h₀ from ‖y‖/‖f‖, then one Euler
     /// step to estimate the second derivative; k[0] must hold f(t, y).
-    fn initial_step<F>(&mut self, f: &mut F, t: f64, y: &[f64], t_end: f64) -> f64
-    where
-        F: FnMut(f64, &[f64], &mut [f64]),
-    {
+    fn initial_step<F: OdeSystem>(&mut self, f: &mut F, t: f64, y: &[f64], t_end: f64) -> f64 {
         let Tolerances {
             relative,
             absolute,
@@ -230,7 +232,7 @@ impl DormandPrince {
             *stage = y_i + h0 * k_i;
         }
         let (k0, rest) = self.k.split_at_mut(1);
-        f(t + h0, &self.y_stage, &mut rest[0]);
+        f.rhs(t + h0, &self.y_stage, &mut rest[0]);
         self.stats.evaluations += 1;
         let d2 = norm(
             &mut y

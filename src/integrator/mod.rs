@@ -17,6 +17,31 @@ pub use dormand_prince::DormandPrince;
 
 use crate::error::{ModelError, require_positive};
 
+/// A first-order system y' = f(t, y) with optional hooks on step acceptance.
+///
+/// The hooks let a system with impacts refuse a step that would start a contact too deep
+/// (Flores & Ambrósio 2010: keep the first penetration small) and update discrete state (the
+/// impact velocity of a contact event) only at accepted steps, never at trial stages.
+pub trait OdeSystem {
+    /// Writes f(t, y) to `dy`.
+    fn rhs(&mut self, t: f64, y: &[f64], dy: &mut [f64]);
+
+    /// Called for a step (t₀, y₀) → (t₁, y₁) that passed the error test: `None` accepts it,
+    /// `Some(factor)` rejects it and retries with the step size multiplied by `factor` ∈ (0, 1).
+    fn check_step(&mut self, _t0: f64, _y0: &[f64], _t1: f64, _y1: &[f64]) -> Option<f64> {
+        None
+    }
+
+    /// Called once a step (t₀, y₀) → (t₁, y₁) has been accepted.
+    fn accept_step(&mut self, _t0: f64, _y0: &[f64], _t1: f64, _y1: &[f64]) {}
+}
+
+impl<F: FnMut(f64, &[f64], &mut [f64])> OdeSystem for F {
+    fn rhs(&mut self, t: f64, y: &[f64], dy: &mut [f64]) {
+        self(t, y, dy)
+    }
+}
+
 /// Error tolerances: a step is accepted when ‖err_i / (atol + rtol·max(|y_i|, |y_new,i|))‖_rms ≤ 1.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Tolerances {

@@ -3,7 +3,7 @@
 
 use faer::{Mat, MatRef, Side, linalg::solvers::Solve};
 use flexible_slider_crank::ancf::{Rod, RodProperties};
-use flexible_slider_crank::integrator::{DormandPrince, Tolerances};
+use flexible_slider_crank::integrator::{DormandPrince, OdeSystem, Tolerances};
 use flexible_slider_crank::reduction::{RodModel, generalized_eigen};
 
 /// Fails with all four numbers unless |actual − expected| ≤ max(rel·|expected|, abs).
@@ -169,7 +169,7 @@ impl HeldRod {
     }
 
     /// y' = [ṗ_f, M_ff⁻¹(F_f − Q_f)].
-    pub fn rhs(&mut self, y: &[f64], dy: &mut [f64]) {
+    fn derivative(&mut self, y: &[f64], dy: &mut [f64]) {
         let nf = self.free.len();
         self.scatter(y);
         self.model.internal_force(&self.p, &self.p_dot, &mut self.q);
@@ -202,13 +202,17 @@ impl HeldRod {
         };
         let mut dp = DormandPrince::new(y0.len(), tolerances).unwrap();
         let (mut t, mut y) = (0.0, y0.to_vec());
-        times
-            .iter()
-            .map(|&t_out| {
-                dp.advance(&mut |_t, y, dy| self.rhs(y, dy), &mut t, &mut y, t_out)
-                    .unwrap();
-                y.clone()
-            })
-            .collect()
+        let mut out = Vec::with_capacity(times.len());
+        for &t_out in times {
+            dp.advance(self, &mut t, &mut y, t_out).unwrap();
+            out.push(y.clone());
+        }
+        out
+    }
+}
+
+impl OdeSystem for HeldRod {
+    fn rhs(&mut self, _t: f64, y: &[f64], dy: &mut [f64]) {
+        self.derivative(y, dy);
     }
 }
