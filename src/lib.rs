@@ -12,6 +12,8 @@
 pub mod ancf;
 pub mod error;
 pub mod integrator;
+pub mod joint;
+pub mod params;
 pub mod quadrature;
 pub mod reduction;
 

@@ -1,0 +1,121 @@
+//! The rod–slider joint: ideal, dry clearance, or lubricated.
+//!
+//! Kinematics (MODEL.md §3, Sun et al. 2015 eqs. 4–5): the eccentricity e = r_journal − r_bearing,
+//! n = e/|e|, t = ẑ × n, penetration δ = |e| − c. The joint returns the force on the journal
+//! (the bearing gets its opposite) and the moment on the journal about its centre.
+//!
+//! # References
+//! - H. M. Lankarani, P. E. Nikravesh (1990), J. Mech. Des. 112, 369–376.
+//! - P. Flores, J. Ambrósio, J. C. P. Claro, H. M. Lankarani (2008), Kinematics and Dynamics of
+//!   Multibody Systems with Imperfect Joints, Springer.
+
+pub mod bearing;
+pub mod contact;
+
+use nalgebra::Vector2;
+
+pub use bearing::JournalBearing;
+pub use contact::{DryContact, hertz_stiffness};
+
+use crate::params::{JointModel, Parameters};
+
+/// Smallest impact velocity used in the Lankarani–Nikravesh damping term \[m/s\] (MODEL.md §10).
+pub const MIN_IMPACT_VELOCITY: f64 = 1e-4;
+
+/// Relative kinematics of the journal in the bearing.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct JointKinematics {
+    /// Eccentricity e = journal centre − bearing centre \[m\].
+    pub e: Vector2<f64>,
+    /// Its rate ė \[m/s\].
+    pub e_dot: Vector2<f64>,
+    /// Absolute angular velocity of the journal (CCW +) \[rad/s\]; the bearing does not rotate.
+    pub omega_journal: f64,
+}
+
+impl JointKinematics {
+    /// Unit normal n = e/|e| (x axis when e = 0).
+    pub fn normal(&self) -> Vector2<f64> {
+        let norm = self.e.norm();
+        if norm > 0.0 {
+            self.e / norm
+        } else {
+            Vector2::x()
+        }
+    }
+
+    /// Normal relative velocity δ̇ = ė · n.
+    pub fn normal_velocity(&self) -> f64 {
+        self.e_dot.dot(&self.normal())
+    }
+}
+
+/// Force of the joint on the journal.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct JointForce {
+    /// Force on the journal \[N\] (the bearing receives −force).
+    pub force: Vector2<f64>,
+    /// Moment on the journal about its centre \[N m\] (friction only).
+    pub moment: f64,
+    /// Elastic energy stored in the contact, K δ^2.5 / 2.5 \[J\].
+    pub potential: f64,
+}
+
+/// The joint model with its constants.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Joint {
+    /// Ideal revolute joint: a constraint, no force law.
+    Ideal,
+    /// Dry clearance joint.
+    Dry(DryContact),
+    /// Lubricated journal bearing with dry contact near metal contact.
+    Lubricated(JournalBearing),
+}
+
+impl Joint {
+    /// The joint described by the parameters (validated beforehand).
+    pub fn from_parameters(p: &Parameters) -> Self {
+        let dry = DryContact {
+            stiffness: hertz_stiffness(
+                p.bearing_radius(),
+                p.journal_radius,
+                p.joint_youngs_modulus,
+                p.joint_poisson_ratio,
+            ),
+            clearance: p.clearance,
+            journal_radius: p.journal_radius,
+            restitution: p.restitution,
+            friction: p.friction,
+            friction_v0: p.friction_v0,
+            friction_v1: p.friction_v1,
+        };
+        match p.joint_model {
+            JointModel::Ideal => Self::Ideal,
+            JointModel::Dry => Self::Dry(dry),
+            JointModel::Lubricated => Self::Lubricated(JournalBearing {
+                viscosity: p.viscosity,
+                length: p.bearing_length,
+                switch_eccentricity: p.switch_eccentricity,
+                dry,
+            }),
+        }
+    }
+
+    /// The dry-contact law, if the joint has one.
+    pub fn dry_contact(&self) -> Option<&DryContact> {
+        match self {
+            Self::Ideal => None,
+            Self::Dry(dry) => Some(dry),
+            Self::Lubricated(bearing) => Some(&bearing.dry),
+        }
+    }
+
+    /// Force on the journal; `impact_velocity` is δ̇⁽⁻⁾ of the current contact event.
+    pub fn force(&self, k: &JointKinematics, impact_velocity: f64) -> JointForce {
+        match self {
+            Self::Ideal => JointForce::default(),
+            Self::Dry(dry) => dry.force(k, impact_velocity),
+            Self::Lubricated(bearing) => bearing.force(k, impact_velocity),
+        }
+    }
+}

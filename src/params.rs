@@ -1,0 +1,434 @@
+//! Parameters of the slider-crank model, in SI units, with defaults = MODEL.md benchmark B
+//! (steel ANCF rod, 8 elements, 4 mode shapes, dry clearance joint, 5000 rpm speed drive).
+//!
+//! Every check names the FMU parameter, its value and the allowed range.
+
+use crate::ancf::RodProperties;
+use crate::ancf::rod::MAX_ELEMENTS;
+use crate::error::{ModelError, require_non_negative, require_positive};
+use crate::integrator::Tolerances;
+use crate::reduction::max_modes;
+
+/// How the connecting rod is modelled.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RodFormulation {
+    /// Rigid uniform bar (natural coordinates of its two pins).
+    Rigid,
+    /// Full ANCF model with `n_elements` elements.
+    Ancf,
+    /// ANCF reduced by Craig–Bampton with `n_modes` mode shapes.
+    CraigBampton,
+}
+
+/// Model of the rod–slider joint.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum JointModel {
+    /// Ideal revolute joint (constraint).
+    Ideal,
+    /// Dry clearance joint: Lankarani–Nikravesh contact with Coulomb–Ambrósio friction.
+    Dry,
+    /// Lubricated journal bearing (short-bearing film), dry contact near metal contact.
+    Lubricated,
+}
+
+/// What drives the crank.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DriveMode {
+    /// The crank speed is prescribed (input `drive.speed`); the torque is an output.
+    Speed,
+    /// The crank torque is prescribed (input `drive.torque`); angle and speed are dynamic.
+    Torque,
+}
+
+/// All parameters of the model (SI units).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Parameters {
+    /// Rod formulation.
+    pub rod_formulation: RodFormulation,
+    /// Number of ANCF elements (ancf and craigBampton).
+    pub n_elements: usize,
+    /// Number of Craig–Bampton mode shapes, 0 ..= 2(n_elements − 1).
+    pub n_modes: usize,
+    /// Rod material and section.
+    pub rod: RodProperties,
+    /// Crank length r_c (pivot to pin) \[m\].
+    pub crank_length: f64,
+    /// Crank mass \[kg\] (uniform, centre of mass at mid-length).
+    pub crank_mass: f64,
+    /// Crank moment of inertia about its centre of mass \[kg m²\].
+    pub crank_inertia: f64,
+    /// Initial crank angle \[rad\].
+    pub crank_initial_angle: f64,
+    /// Initial crank speed \[rad/s\].
+    pub crank_initial_speed: f64,
+    /// Slider mass \[kg\].
+    pub slider_mass: f64,
+    /// Joint model.
+    pub joint_model: JointModel,
+    /// Radial clearance c = R_bearing − R_journal \[m\].
+    pub clearance: f64,
+    /// Journal (pin) radius R_j \[m\].
+    pub journal_radius: f64,
+    /// Young's modulus of journal and bearing \[Pa\].
+    pub joint_youngs_modulus: f64,
+    /// Poisson ratio of journal and bearing.
+    pub joint_poisson_ratio: f64,
+    /// Coefficient of restitution c_e ∈ (0, 1].
+    pub restitution: f64,
+    /// Coulomb friction coefficient μ.
+    pub friction: f64,
+    /// Tangential speed below which friction vanishes v₀ \[m/s\].
+    pub friction_v0: f64,
+    /// Tangential speed above which friction is fully developed v₁ \[m/s\].
+    pub friction_v1: f64,
+    /// Lubricant dynamic viscosity \[Pa s\].
+    pub viscosity: f64,
+    /// Bearing length L \[m\].
+    pub bearing_length: f64,
+    /// Eccentricity ratio above which dry contact takes over, ε_b ∈ (0, 1).
+    pub switch_eccentricity: f64,
+    /// Drive mode.
+    pub drive_mode: DriveMode,
+    /// Gravitational acceleration along −y \[m/s²\].
+    pub gravity: f64,
+    /// Relative tolerance of the error-controlled integrator.
+    pub relative_tolerance: f64,
+    /// Largest internal step \[s\].
+    pub max_step_size: f64,
+}
+
+/// 5000 rpm in rad/s.
+pub const BENCHMARK_SPEED: f64 = 5000.0 * std::f64::consts::TAU / 60.0;
+
+impl Default for Parameters {
+    fn default() -> Self {
+        Self {
+            rod_formulation: RodFormulation::CraigBampton,
+            n_elements: 8,
+            n_modes: 4,
+            rod: RodProperties::benchmark_b(),
+            crank_length: 0.05,
+            crank_mass: 0.30,
+            crank_inertia: 1e-4,
+            crank_initial_angle: 0.0,
+            crank_initial_speed: BENCHMARK_SPEED,
+            slider_mass: 0.14,
+            joint_model: JointModel::Dry,
+            clearance: 0.5e-3,
+            journal_radius: 9.5e-3,
+            joint_youngs_modulus: 207e9,
+            joint_poisson_ratio: 0.3,
+            restitution: 0.9,
+            friction: 0.0,
+            friction_v0: 1e-4,
+            friction_v1: 1e-3,
+            viscosity: 0.4,
+            bearing_length: 0.04,
+            switch_eccentricity: 0.95,
+            drive_mode: DriveMode::Speed,
+            gravity: 0.0,
+            relative_tolerance: 1e-6,
+            max_step_size: 1e-4,
+        }
+    }
+}
+
+fn require_in(
+    name: &'static str,
+    value: f64,
+    lo: f64,
+    hi: f64,
+    range: &str,
+) -> Result<f64, ModelError> {
+    let ok = match range.as_bytes() {
+        [b'(', .., b']'] => value > lo && value <= hi,
+        [b'(', .., b')'] => value > lo && value < hi,
+        [b'[', .., b')'] => value >= lo && value < hi,
+        _ => value >= lo && value <= hi,
+    };
+    if value.is_finite() && ok {
+        Ok(value)
+    } else {
+        Err(ModelError::invalid(name, value, range))
+    }
+}
+
+impl Parameters {
+    /// Benchmark A of MODEL.md: rigid rod (0.21 kg, inertia m l²/12), dry joint, 5000 rpm.
+    pub fn benchmark_a() -> Self {
+        Self {
+            rod_formulation: RodFormulation::Rigid,
+            ..Self::default()
+        }
+    }
+
+    /// Benchmark B of MODEL.md with `n_elements` elements: full ANCF rod, dry joint.
+    pub fn benchmark_b() -> Self {
+        Self {
+            rod_formulation: RodFormulation::Ancf,
+            ..Self::default()
+        }
+    }
+
+    /// Benchmark C of MODEL.md: as B with the lubricated joint.
+    pub fn benchmark_c() -> Self {
+        Self {
+            joint_model: JointModel::Lubricated,
+            ..Self::benchmark_b()
+        }
+    }
+
+    /// Bearing (hole) radius R_i = R_j + c \[m\].
+    pub fn bearing_radius(&self) -> f64 {
+        self.journal_radius + self.clearance
+    }
+
+    /// Crank moment of inertia about the pivot, I_c + m_c (r_c/2)² \[kg m²\].
+    pub fn crank_inertia_about_pivot(&self) -> f64 {
+        self.crank_inertia + self.crank_mass * (0.5 * self.crank_length).powi(2)
+    }
+
+    /// Integrator tolerances: rtol as given, atol = rtol × 1e-3 (states are in m, m/s, rad, J:
+    /// 1e-3 of rtol in those units is below every physically meaningful resolution here), the
+    /// maximum step, and a 1e-14 s floor.
+    pub fn tolerances(&self) -> Tolerances {
+        Tolerances {
+            relative: self.relative_tolerance,
+            absolute: self.relative_tolerance * 1e-3,
+            max_step: self.max_step_size,
+            min_step: 1e-14,
+        }
+    }
+
+    /// Checks every parameter and their consistency.
+    pub fn validate(&self) -> Result<(), ModelError> {
+        if self.rod_formulation != RodFormulation::Rigid {
+            if !(1..=MAX_ELEMENTS).contains(&self.n_elements) {
+                return Err(ModelError::invalid(
+                    "rod.nElements",
+                    self.n_elements as f64,
+                    "[1, 64]",
+                ));
+            }
+        }
+        if self.rod_formulation == RodFormulation::CraigBampton {
+            let max = max_modes(self.n_elements);
+            if self.n_modes > max {
+                return Err(ModelError::invalid(
+                    "rod.nModes",
+                    self.n_modes as f64,
+                    format!(
+                        "[0, {max}] (= 2 (rod.nElements - 1) with rod.nElements = {})",
+                        self.n_elements
+                    ),
+                ));
+            }
+        }
+        self.rod.validate()?;
+        require_positive("crank.length", self.crank_length)?;
+        if self.rod.length <= self.crank_length {
+            return Err(ModelError::invalid(
+                "rod.length",
+                self.rod.length,
+                format!(
+                    "(crank.length, inf) = ({}, inf): the rod must be longer than the crank",
+                    self.crank_length
+                ),
+            ));
+        }
+        require_positive("crank.mass", self.crank_mass)?;
+        require_positive("crank.inertia", self.crank_inertia)?;
+        require_in(
+            "crank.initialAngle",
+            self.crank_initial_angle,
+            -1e3,
+            1e3,
+            "[-1000, 1000]",
+        )?;
+        require_in(
+            "crank.initialSpeed",
+            self.crank_initial_speed,
+            -1e4,
+            1e4,
+            "[-10000, 10000]",
+        )?;
+        require_positive("slider.mass", self.slider_mass)?;
+        require_positive("joint.journalRadius", self.journal_radius)?;
+        if self.joint_model == JointModel::Ideal {
+            require_non_negative("joint.clearance", self.clearance)?;
+        } else {
+            require_positive("joint.clearance", self.clearance)?;
+        }
+        require_positive("joint.youngsModulus", self.joint_youngs_modulus)?;
+        require_in(
+            "joint.poissonRatio",
+            self.joint_poisson_ratio,
+            -1.0,
+            0.5,
+            "(-1, 0.5)",
+        )?;
+        require_in("joint.restitution", self.restitution, 0.0, 1.0, "(0, 1]")?;
+        require_non_negative("joint.friction", self.friction)?;
+        require_non_negative("joint.frictionV0", self.friction_v0)?;
+        if !(self.friction_v1.is_finite() && self.friction_v1 > self.friction_v0) {
+            return Err(ModelError::invalid(
+                "joint.frictionV1",
+                self.friction_v1,
+                format!("(joint.frictionV0, inf) = ({}, inf)", self.friction_v0),
+            ));
+        }
+        require_positive("joint.viscosity", self.viscosity)?;
+        require_positive("joint.bearingLength", self.bearing_length)?;
+        require_in(
+            "joint.switchEccentricity",
+            self.switch_eccentricity,
+            0.0,
+            1.0,
+            "(0, 1)",
+        )?;
+        require_in("gravity", self.gravity, -1e3, 1e3, "[-1000, 1000]")?;
+        require_in(
+            "solver.relativeTolerance",
+            self.relative_tolerance,
+            1e-12,
+            1e-2,
+            "[1e-12, 0.01]",
+        )?;
+        require_in(
+            "solver.maxStepSize",
+            self.max_step_size,
+            1e-9,
+            1.0,
+            "[1e-09, 1]",
+        )?;
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn defaults_are_valid_and_benchmark_b() {
+        let p = Parameters::default();
+        p.validate().unwrap();
+        assert!((p.rod.mass() - 0.21).abs() < 1e-12);
+        assert!((p.bearing_radius() - 0.010).abs() < 1e-15);
+    }
+
+    /// Every listed bad value is rejected with an error naming the parameter.
+    #[test]
+    fn bad_values_name_the_parameter() {
+        let base = Parameters::default();
+        let cases: Vec<(&str, Parameters)> = vec![
+            (
+                "rod.length",
+                Parameters {
+                    rod: RodProperties {
+                        length: 0.04,
+                        ..base.rod
+                    },
+                    ..base.clone()
+                },
+            ),
+            (
+                "joint.clearance",
+                Parameters {
+                    clearance: 0.0,
+                    ..base.clone()
+                },
+            ),
+            (
+                "joint.clearance",
+                Parameters {
+                    clearance: f64::NAN,
+                    ..base.clone()
+                },
+            ),
+            (
+                "joint.restitution",
+                Parameters {
+                    restitution: 0.0,
+                    ..base.clone()
+                },
+            ),
+            (
+                "joint.restitution",
+                Parameters {
+                    restitution: 1.2,
+                    ..base.clone()
+                },
+            ),
+            (
+                "joint.switchEccentricity",
+                Parameters {
+                    switch_eccentricity: 1.0,
+                    ..base.clone()
+                },
+            ),
+            (
+                "joint.frictionV1",
+                Parameters {
+                    friction_v1: 1e-5,
+                    ..base.clone()
+                },
+            ),
+            (
+                "joint.friction",
+                Parameters {
+                    friction: -0.1,
+                    ..base.clone()
+                },
+            ),
+            (
+                "slider.mass",
+                Parameters {
+                    slider_mass: f64::INFINITY,
+                    ..base.clone()
+                },
+            ),
+            (
+                "crank.length",
+                Parameters {
+                    crank_length: -0.05,
+                    ..base.clone()
+                },
+            ),
+            (
+                "rod.nModes",
+                Parameters {
+                    n_modes: 15,
+                    ..base.clone()
+                },
+            ),
+            (
+                "rod.nElements",
+                Parameters {
+                    n_elements: 0,
+                    ..base.clone()
+                },
+            ),
+            (
+                "solver.relativeTolerance",
+                Parameters {
+                    relative_tolerance: 0.0,
+                    ..base.clone()
+                },
+            ),
+        ];
+        for (name, p) in cases {
+            match p.validate() {
+                Err(ModelError::InvalidParameter { name: n, .. }) => assert_eq!(n, name),
+                other => panic!("{name}: expected an error, got {other:?}"),
+            }
+        }
+        let ok = Parameters {
+            restitution: 1.0,
+            joint_model: JointModel::Ideal,
+            clearance: 0.0,
+            ..base
+        };
+        ok.validate().unwrap();
+    }
+}
