@@ -13,8 +13,13 @@ pub mod ancf;
 pub mod error;
 pub mod integrator;
 pub mod joint;
+pub mod mechanism;
 pub mod params;
 pub mod quadrature;
 pub mod reduction;
+pub mod simulation;
+
+pub use params::Parameters;
+pub use simulation::{Outputs, Simulation, Snapshot};
 
 pub use error::ModelError;

@@ -202,8 +202,10 @@ impl Parameters {
 
     /// Checks every parameter and their consistency.
     pub fn validate(&self) -> Result<(), ModelError> {
-        if self.rod_formulation != RodFormulation::Rigid {
-            if !(1..=MAX_ELEMENTS).contains(&self.n_elements) {
+        if self.rod_formulation != RodFormulation::Rigid
+            && !(1..=MAX_ELEMENTS).contains(&self.n_elements)
+        {
+            {
                 return Err(ModelError::invalid(
                     "rod.nElements",
                     self.n_elements as f64,

@@ -82,6 +82,11 @@ impl DormandPrince {
         self.stats
     }
 
+    /// Restores statistics (snapshots).
+    pub fn set_stats(&mut self, stats: Stats) {
+        self.stats = stats;
+    }
+
     /// The tolerances in use.
     pub fn tolerances(&self) -> &Tolerances {
         &self.tolerances

@@ -17,6 +17,8 @@ use faer::{Mat, MatMut, MatRef, Par, Side};
 pub use craig_bampton::{CraigBampton, max_modes};
 pub use modes::{Modes, generalized_eigen};
 
+use nalgebra::Vector2;
+
 use crate::ancf::Rod;
 use crate::error::ModelError;
 
@@ -157,6 +159,24 @@ impl RodModel {
             }
             None => self.rod.strain_energy(p),
         }
+    }
+
+    /// Mid-span deflection: displacement of the point at arc length L/2 perpendicular to the chord
+    /// from node 0 to the last node, positive to the left of the chord direction \[m\].
+    pub fn midspan_deflection(&mut self, p: &[f64]) -> f64 {
+        let half = 0.5 * self.rod.properties().length;
+        let e: &[f64] = match &self.reduction {
+            Some(cb) => {
+                cb.expand(p, &mut self.e);
+                &self.e
+            }
+            None => p,
+        };
+        let last = e.len() - 4;
+        let a = Vector2::new(e[0], e[1]);
+        let chord = Vector2::new(e[last], e[last + 1]) - a;
+        let r = self.rod.position(e, half) - a;
+        (chord.x * r.y - chord.y * r.x) / chord.norm()
     }
 
     /// Generalised force Vᵀ q of a force `q` on the nodal coordinates, written to `out`.

@@ -1,0 +1,503 @@
+//! The slider-crank mechanism: crank (angle θ), connecting rod (rigid, ANCF or Craig–Bampton), and
+//! slider (abscissa x_s) on a frictionless guide through the crank pivot.
+//!
+//! Equations of motion in index-1 form with Baumgarte stabilisation (Sun et al. 2015 eq. 1):
+//! ```text
+//! M q̈ = Q(q, q̇, t) − Φ_qᵀ λ,     Φ_q q̈ = γ − 2α Φ̇ − β² Φ,     q = [θ, p, x_s]
+//! M = diag(I_O, M_rod, m_s)  constant      (I_O: crank inertia about the pivot)
+//! ```
+//! Φ_q touches only s = [θ, r_A, r_B, x_s], so with G = M⁻¹E_s (constant, E_s selects s) and
+//! W = E_sᵀ M⁻¹ E_s (6 × 6, constant): λ = (C W Cᵀ)⁻¹ (C a₀ − rhs), q̈ = a₀ − G Cᵀ λ, a₀ = M⁻¹Q. One
+//! solve with the rod's stored Cholesky factor and a ≤ 6 × 6 Cholesky per evaluation, no allocation.
+//!
+//! State vector y = [q, q̇, θ_d, W_drive, W_joint, W_external]: the drive angle (speed drive) and the
+//! work of the drive, of the joint forces and of the external slider force, integrated with the
+//! motion so that the energy balance is checked to the integrator tolerance.
+//!
+//! # References
+//! - Sun et al. (2015), Mech. Mach. Theory 85, eqs. (1)–(3).
+//! - P. Flores et al. (2008), Kinematics and Dynamics of Multibody Systems with Imperfect Joints.
+//! - MODEL.md §0, §3–§6, §10.
+
+pub mod constraints;
+pub mod rod_body;
+
+use faer::MatRef;
+use nalgebra::{SMatrix, Vector2};
+
+use self::constraints::{Active, ConstraintState, Constraints, Vector6};
+use self::rod_body::RodBody;
+use crate::error::ModelError;
+use crate::integrator::OdeSystem;
+use crate::joint::{Joint, JointForce, JointKinematics, MIN_IMPACT_VELOCITY};
+use crate::params::{DriveMode, JointModel, Parameters};
+
+/// Largest penetration accepted at the first step of a contact event \[m\]: 1e-3 of the Hertz
+/// maximum penetration of a 0.1 kg, 1 m/s impact (≈ 20 µm, MODEL.md §6), so that the impact
+/// velocity is located accurately and the integrator never starts a contact deep inside.
+pub const CONTACT_ONSET_PENETRATION: f64 = 2e-8;
+
+/// Inputs that the caller may change between steps.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Inputs {
+    /// Prescribed crank speed \[rad/s\] (speed drive).
+    pub drive_speed: f64,
+    /// Crank torque \[N m\] (torque drive).
+    pub drive_torque: f64,
+    /// External force on the slider along the guide \[N\].
+    pub slider_force: f64,
+}
+
+/// Discrete contact state, updated at accepted steps only.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ContactState {
+    /// Whether the journal touched the bearing at the end of the last accepted step.
+    pub in_contact: bool,
+    /// Normal velocity δ̇⁽⁻⁾ at the onset of the current contact event \[m/s\].
+    pub impact_velocity: f64,
+}
+
+/// Quantities computed by the last right-hand-side evaluation.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Evaluation {
+    /// Joint force on the journal (contact/film, or the ideal joint's reaction) \[N\].
+    pub joint_force: Vector2<f64>,
+    /// Friction moment on the journal \[N m\].
+    pub joint_moment: f64,
+    /// Elastic energy stored in the contact \[J\].
+    pub contact_potential: f64,
+    /// Torque the drive applies to the crank \[N m\].
+    pub crank_torque: f64,
+    /// Slider acceleration ẍ_s \[m/s²\].
+    pub slider_acceleration: f64,
+    /// Constraint drift ‖Φ‖.
+    pub drift: f64,
+}
+
+/// Energies of a state.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Energies {
+    /// Kinetic energy ½ q̇ᵀ M q̇ \[J\].
+    pub kinetic: f64,
+    /// Rod strain energy \[J\].
+    pub strain: f64,
+    /// Elastic energy stored in the contact \[J\].
+    pub contact: f64,
+    /// Gravitational potential energy (zero at y = 0) \[J\].
+    pub gravity: f64,
+    /// Work done by the drive \[J\].
+    pub drive_work: f64,
+    /// Work done by the joint forces (contact, friction, film) \[J\].
+    pub joint_work: f64,
+    /// Work done by the external slider force \[J\].
+    pub external_work: f64,
+}
+
+impl Energies {
+    /// Energy lost in the joint: −W_joint − stored contact energy (≥ 0 up to integration error).
+    pub fn dissipated(&self) -> f64 {
+        -self.joint_work - self.contact
+    }
+
+    /// Balance T + U + V_c + V_g − W_drive − W_external − W_joint, constant in exact arithmetic.
+    pub fn balance(&self) -> f64 {
+        self.kinetic + self.strain + self.contact + self.gravity
+            - self.drive_work
+            - self.external_work
+            - self.joint_work
+    }
+}
+
+/// The slider-crank mechanism as a first-order system.
+#[derive(Clone, Debug)]
+pub struct SliderCrank {
+    rod: RodBody,
+    joint: Joint,
+    drive: DriveMode,
+    active: Active,
+    crank_length: f64,
+    crank_mass: f64,
+    crank_inertia: f64,
+    slider_mass: f64,
+    gravity: f64,
+    rod_length: f64,
+    /// M_rod⁻¹ e_j for j ∈ {A_x, A_y, B_x, B_y}, column-major (n_rod × 4).
+    rod_compliance: Vec<f64>,
+    /// W = E_sᵀ M⁻¹ E_s.
+    w: SMatrix<f64, 6, 6>,
+    rod_gravity: Vec<f64>,
+    /// Inputs used by the right-hand side.
+    pub inputs: Inputs,
+    contact: ContactState,
+    force: Vec<f64>,
+    evaluation: Evaluation,
+}
+
+impl SliderCrank {
+    /// Builds the mechanism; the parameters must have been validated.
+    pub fn new(p: &Parameters) -> Result<Self, ModelError> {
+        p.validate()?;
+        let rod = RodBody::from_parameters(p)?;
+        let n_rod = rod.n_coordinates();
+        let b = rod.end_offset();
+        let pins = [0, 1, b, b + 1];
+        let mut rod_compliance = vec![0.0; 4 * n_rod];
+        for (j, &pin) in pins.iter().enumerate() {
+            let column = &mut rod_compliance[j * n_rod..(j + 1) * n_rod];
+            column[pin] = 1.0;
+            rod.solve_mass(column);
+        }
+        let crank_inertia = p.crank_inertia_about_pivot();
+        let mut w = SMatrix::<f64, 6, 6>::zeros();
+        w[(0, 0)] = 1.0 / crank_inertia;
+        w[(5, 5)] = 1.0 / p.slider_mass;
+        for i in 0..4 {
+            for j in 0..4 {
+                w[(1 + i, 1 + j)] = rod_compliance[j * n_rod + pins[i]];
+            }
+        }
+        let active = Active {
+            ideal_joint: p.joint_model == JointModel::Ideal,
+            rigid_rod: rod.rigid_length().is_some(),
+            speed_drive: p.drive_mode == DriveMode::Speed,
+        };
+        Ok(Self {
+            rod_gravity: rod.gravity_force(p.gravity),
+            joint: Joint::from_parameters(p),
+            drive: p.drive_mode,
+            active,
+            crank_length: p.crank_length,
+            crank_mass: p.crank_mass,
+            crank_inertia,
+            slider_mass: p.slider_mass,
+            gravity: p.gravity,
+            rod_length: p.rod.length,
+            rod_compliance,
+            w,
+            inputs: Inputs {
+                drive_speed: p.crank_initial_speed,
+                drive_torque: 0.0,
+                slider_force: 0.0,
+            },
+            contact: ContactState {
+                in_contact: false,
+                impact_velocity: MIN_IMPACT_VELOCITY,
+            },
+            force: vec![0.0; n_rod],
+            evaluation: Evaluation::default(),
+            rod,
+        })
+    }
+
+    /// Number of mechanical coordinates n = 1 + n_rod + 1.
+    pub fn n_coordinates(&self) -> usize {
+        self.rod.n_coordinates() + 2
+    }
+
+    /// Length of the state vector 2n + 4.
+    pub fn n_states(&self) -> usize {
+        2 * self.n_coordinates() + 4
+    }
+
+    /// The rod body.
+    pub fn rod(&self) -> &RodBody {
+        &self.rod
+    }
+
+    /// The joint.
+    pub fn joint(&self) -> &Joint {
+        &self.joint
+    }
+
+    /// Discrete contact state.
+    pub fn contact_state(&self) -> ContactState {
+        self.contact
+    }
+
+    /// Restores the discrete contact state (snapshots).
+    pub fn set_contact_state(&mut self, contact: ContactState) {
+        self.contact = contact;
+    }
+
+    /// Quantities of the last right-hand-side evaluation.
+    pub fn evaluation(&self) -> &Evaluation {
+        &self.evaluation
+    }
+
+    /// Initial state: crank at `angle` turning at `speed`, rod straight and unstressed, journal
+    /// centred, every velocity that of the ideal mechanism (MODEL.md §10).
+    pub fn initial_state(&self, angle: f64, speed: f64) -> Vec<f64> {
+        let (r_c, l) = (self.crank_length, self.rod_length);
+        let (sin, cos) = angle.sin_cos();
+        let a = r_c * Vector2::new(cos, sin);
+        let sin_beta = -r_c * sin / l;
+        let cos_beta = (1.0 - sin_beta * sin_beta).sqrt();
+        let b = a + l * Vector2::new(cos_beta, sin_beta);
+        let v_a = r_c * speed * Vector2::new(-sin, cos);
+        let beta_dot = -r_c * speed * cos / (l * cos_beta);
+        let v_b = v_a + l * beta_dot * Vector2::new(-sin_beta, cos_beta);
+        let (p, p_dot) = self.rod.straight_state(a, b, v_a, v_b);
+        let n = self.n_coordinates();
+        let mut y = vec![0.0; self.n_states()];
+        y[0] = angle;
+        y[1..n - 1].copy_from_slice(&p);
+        y[n - 1] = b.x;
+        y[n] = speed;
+        y[n + 1..2 * n - 1].copy_from_slice(&p_dot);
+        y[2 * n - 1] = v_b.x;
+        y[2 * n] = angle;
+        y
+    }
+
+    fn constraint_state(&self, y: &[f64]) -> ConstraintState {
+        let n = self.n_coordinates();
+        let b = 1 + self.rod.end_offset();
+        ConstraintState {
+            theta: y[0],
+            theta_dot: y[n],
+            theta_drive: y[2 * n],
+            drive_speed: self.inputs.drive_speed,
+            r_a: Vector2::new(y[1], y[2]),
+            v_a: Vector2::new(y[n + 1], y[n + 2]),
+            r_b: Vector2::new(y[b], y[b + 1]),
+            v_b: Vector2::new(y[n + b], y[n + b + 1]),
+            x_s: y[n - 1],
+            v_s: y[2 * n - 1],
+        }
+    }
+
+    fn constraints(&self, y: &[f64]) -> Constraints {
+        Constraints::evaluate(
+            self.active,
+            self.crank_length,
+            self.rod_length,
+            &self.constraint_state(y),
+        )
+    }
+
+    /// Journal–bearing kinematics of a state.
+    pub fn joint_kinematics(&self, y: &[f64]) -> JointKinematics {
+        let n = self.n_coordinates();
+        let b = 1 + self.rod.end_offset();
+        let p = &y[1..n - 1];
+        let p_dot = &y[n + 1..2 * n - 1];
+        JointKinematics {
+            e: Vector2::new(y[b] - y[n - 1], y[b + 1]),
+            e_dot: Vector2::new(y[n + b] - y[2 * n - 1], y[n + b + 1]),
+            omega_journal: self.rod.end_angular_velocity(p, p_dot),
+        }
+    }
+
+    /// Penetration δ = |e| − c of a state (−∞ for the ideal joint).
+    pub fn penetration(&self, y: &[f64]) -> f64 {
+        match self.joint.dry_contact() {
+            Some(dry) => dry.penetration(&self.joint_kinematics(y)),
+            None => f64::NEG_INFINITY,
+        }
+    }
+
+    /// Solves (C W Cᵀ) x = r on the k active rows (inactive rows padded with identity).
+    fn solve_schur(&self, c: &Constraints, r: Vector6) -> Result<Vector6, ModelError> {
+        let mut s = c.jacobian * self.w * c.jacobian.transpose();
+        for i in c.rows..6 {
+            s[(i, i)] = 1.0;
+        }
+        let chol = s.cholesky().ok_or_else(|| {
+            ModelError::Numerical("singular constraint Jacobian (locked configuration)".into())
+        })?;
+        Ok(chol.solve(&r))
+    }
+
+    /// Adds −G μ to the accelerations (or velocities) `out` for μ on s: M⁻¹ Cᵀλ applied.
+    fn subtract_compliance(&self, mu: &Vector6, out: &mut [f64]) {
+        let n = out.len();
+        let n_rod = n - 2;
+        out[0] -= mu[0] / self.crank_inertia;
+        out[n - 1] -= mu[5] / self.slider_mass;
+        for j in 0..4 {
+            let column = &self.rod_compliance[j * n_rod..(j + 1) * n_rod];
+            for (o, g) in out[1..n - 1].iter_mut().zip(column) {
+                *o -= g * mu[1 + j];
+            }
+        }
+    }
+
+    /// Values of `v` (length n) on s.
+    fn on_s(&self, v: &[f64]) -> Vector6 {
+        let n = v.len();
+        let b = 1 + self.rod.end_offset();
+        Vector6::new(v[0], v[1], v[2], v[b], v[b + 1], v[n - 1])
+    }
+
+    fn impact_velocity(&self, k: &JointKinematics) -> f64 {
+        if self.contact.in_contact {
+            self.contact.impact_velocity
+        } else {
+            k.normal_velocity().max(MIN_IMPACT_VELOCITY)
+        }
+    }
+
+    /// Right-hand side; fills [`SliderCrank::evaluation`].
+    fn derivative(&mut self, y: &[f64], dy: &mut [f64]) -> Result<(), ModelError> {
+        let n = self.n_coordinates();
+        let n_rod = n - 2;
+        let b = self.rod.end_offset();
+        let (q, rest) = y.split_at(n);
+        let v = &rest[..n];
+        let p = &q[1..n - 1];
+        let p_dot = &v[1..n - 1];
+
+        self.rod.internal_force(p, p_dot, &mut self.force);
+        for (f, g) in self.force.iter_mut().zip(&self.rod_gravity) {
+            *f = g - *f;
+        }
+        let kin = self.joint_kinematics(y);
+        let joint = self.joint.force(&kin, self.impact_velocity(&kin));
+        self.force[b] += joint.force.x;
+        self.force[b + 1] += joint.force.y;
+        self.rod.add_end_moment(p, joint.moment, &mut self.force);
+        let torque_in = match self.drive {
+            DriveMode::Torque => self.inputs.drive_torque,
+            DriveMode::Speed => 0.0,
+        };
+        let gravity_torque = -self.crank_mass * self.gravity * 0.5 * self.crank_length * q[0].cos();
+
+        let (dq, rest) = dy.split_at_mut(n);
+        let (acc, extra) = rest.split_at_mut(n);
+        dq.copy_from_slice(v);
+        acc[0] = (torque_in + gravity_torque) / self.crank_inertia;
+        acc[1..n - 1].copy_from_slice(&self.force[..n_rod]);
+        self.rod.solve_mass(&mut acc[1..n - 1]);
+        acc[n - 1] = (self.inputs.slider_force - joint.force.x) / self.slider_mass;
+
+        let c = self.constraints(y);
+        let lambda = self.solve_schur(&c, c.jacobian * self.on_s(acc) - c.acceleration_rhs())?;
+        let mu = c.jacobian.transpose() * lambda;
+        self.subtract_compliance(&mu, acc);
+
+        let crank_torque = match c.drive_row {
+            Some(k) => -lambda[k],
+            None => torque_in,
+        };
+        let (joint_force, joint_power) = match c.ideal_row {
+            Some(k) => (-Vector2::new(lambda[k], lambda[k + 1]), 0.0),
+            None => (
+                joint.force,
+                joint.force.dot(&kin.e_dot) + joint.moment * kin.omega_journal,
+            ),
+        };
+        extra[0] = if self.active.speed_drive {
+            self.inputs.drive_speed
+        } else {
+            0.0
+        };
+        extra[1] = crank_torque * v[0];
+        extra[2] = joint_power;
+        extra[3] = self.inputs.slider_force * v[n - 1];
+        self.evaluation = Evaluation {
+            joint_force,
+            joint_moment: joint.moment,
+            contact_potential: joint.potential,
+            crank_torque,
+            slider_acceleration: acc[n - 1],
+            drift: c.drift(),
+        };
+        Ok(())
+    }
+
+    /// Evaluates the right-hand side at `y` into `dy`, reporting a singular configuration.
+    pub fn evaluate(&mut self, y: &[f64], dy: &mut [f64]) -> Result<&Evaluation, ModelError> {
+        self.derivative(y, dy)?;
+        Ok(&self.evaluation)
+    }
+
+    /// Projects the velocities of `y` onto the velocity constraints Φ_q q̇ = v (v = ω_in on the
+    /// drive row, 0 elsewhere) with the least change of kinetic energy (an impulsive adjustment
+    /// through the constraints). Returns the kinetic energy change \[J\].
+    pub fn project_velocities(&mut self, y: &mut [f64]) -> Result<f64, ModelError> {
+        let n = self.n_coordinates();
+        let before = self.kinetic_energy(y);
+        let c = self.constraints(y);
+        let mu = c.jacobian.transpose() * self.solve_schur(&c, c.phi_dot)?;
+        self.subtract_compliance(&mu, &mut y[n..2 * n]);
+        Ok(self.kinetic_energy(y) - before)
+    }
+
+    fn kinetic_energy(&self, y: &[f64]) -> f64 {
+        let n = self.n_coordinates();
+        let v = &y[n..2 * n];
+        let p_dot = &v[1..n - 1];
+        let m: MatRef<'_, f64> = self.rod.mass_matrix();
+        let rod: f64 = (0..n - 2)
+            .map(|i| p_dot[i] * (0..n - 2).map(|j| m[(i, j)] * p_dot[j]).sum::<f64>())
+            .sum();
+        0.5 * (self.crank_inertia * v[0] * v[0] + rod + self.slider_mass * v[n - 1] * v[n - 1])
+    }
+
+    /// Energies of a state (evaluates the joint force for the stored contact energy).
+    pub fn energies(&mut self, y: &[f64]) -> Energies {
+        let n = self.n_coordinates();
+        let kin = self.joint_kinematics(y);
+        let contact: JointForce = self.joint.force(&kin, self.impact_velocity(&kin));
+        let p = &y[1..n - 1];
+        let rod_gravity: f64 = self.rod_gravity.iter().zip(p).map(|(g, x)| g * x).sum();
+        Energies {
+            kinetic: self.kinetic_energy(y),
+            strain: self.rod.strain_energy(p),
+            contact: contact.potential,
+            gravity: self.crank_mass * self.gravity * 0.5 * self.crank_length * y[0].sin()
+                - rod_gravity,
+            drive_work: y[2 * n + 1],
+            joint_work: y[2 * n + 2],
+            external_work: y[2 * n + 3],
+        }
+    }
+
+    /// Mid-span deflection of the rod \[m\].
+    pub fn midspan_deflection(&mut self, y: &[f64]) -> f64 {
+        let n = self.n_coordinates();
+        self.rod.midspan_deflection(&y[1..n - 1])
+    }
+
+    /// Normal velocity δ̇ of a state.
+    fn normal_velocity(&self, y: &[f64]) -> f64 {
+        self.joint_kinematics(y).normal_velocity()
+    }
+}
+
+impl OdeSystem for SliderCrank {
+    fn rhs(&mut self, _t: f64, y: &[f64], dy: &mut [f64]) {
+        if self.derivative(y, dy).is_err() {
+            // A locked configuration: make the step fail through the error estimate.
+            dy.fill(f64::NAN);
+        }
+    }
+
+    /// Rejects a step that starts a contact deeper than [`CONTACT_ONSET_PENETRATION`], shrinking
+    /// it towards the crossing (linear estimate of the crossing time).
+    fn check_step(&mut self, _t0: f64, y0: &[f64], _t1: f64, y1: &[f64]) -> Option<f64> {
+        let (d0, d1) = (self.penetration(y0), self.penetration(y1));
+        if d0 <= 0.0 && d1 > CONTACT_ONSET_PENETRATION {
+            let crossing = -d0 / (d1 - d0);
+            Some((crossing + 0.5 * CONTACT_ONSET_PENETRATION / (d1 - d0)).clamp(0.01, 0.9))
+        } else {
+            None
+        }
+    }
+
+    /// Latches the impact velocity at the located onset of a contact event (linear interpolation
+    /// of δ̇ to the crossing of δ = 0), and clears the contact flag at separation.
+    fn accept_step(&mut self, _t0: f64, y0: &[f64], _t1: f64, y1: &[f64]) {
+        let (d0, d1) = (self.penetration(y0), self.penetration(y1));
+        if d1 > 0.0 && !self.contact.in_contact {
+            let s = if d0 < 0.0 { -d0 / (d1 - d0) } else { 0.0 };
+            let (v0, v1) = (self.normal_velocity(y0), self.normal_velocity(y1));
+            self.contact = ContactState {
+                in_contact: true,
+                impact_velocity: (v0 + s * (v1 - v0)).max(MIN_IMPACT_VELOCITY),
+            };
+        } else if d1 <= 0.0 {
+            self.contact.in_contact = false;
+        }
+    }
+}

@@ -1,0 +1,231 @@
+//! The connecting rod as a body of the mechanism: rigid, full ANCF, or Craig–Bampton reduced.
+//!
+//! In every formulation the first two coordinates are the crank-pin end A, and
+//! [`RodBody::end_offset`] locates the slider-pin end B, so joints are written the same way.
+//!
+//! - Rigid: natural coordinates p = [r_A, r_B] of a uniform bar, constant mass
+//!   M = m [1/3 1/6; 1/6 1/3] ⊗ I₂ (inertia m l²/12 about the centre), with the length constraint
+//!   ½(|r_B − r_A|² − l²) = 0 added by the mechanism.
+//! - ANCF / Craig–Bampton: [`RodModel`].
+//!
+//! # References
+//! - J. García de Jalón, E. Bayo (1994), Kinematic and Dynamic Simulation of Multibody Systems,
+//!   Springer, ch. 3 (natural coordinates).
+
+use faer::{Mat, MatRef};
+use nalgebra::Vector2;
+
+use crate::ancf::Rod;
+use crate::error::ModelError;
+use crate::params::{Parameters, RodFormulation};
+use crate::reduction::RodModel;
+
+/// The connecting rod in the mechanism's coordinates.
+#[derive(Clone, Debug)]
+pub enum RodBody {
+    /// Rigid uniform bar in natural coordinates [r_A, r_B].
+    Rigid {
+        /// Mass \[kg\].
+        mass: f64,
+        /// Length \[m\].
+        length: f64,
+        /// Constant 4 × 4 mass matrix.
+        mass_matrix: Mat<f64>,
+    },
+    /// Flexible ANCF rod, full or reduced.
+    Flexible(Box<RodModel>),
+}
+
+fn cross(a: Vector2<f64>, b: Vector2<f64>) -> f64 {
+    a.x * b.y - a.y * b.x
+}
+
+impl RodBody {
+    /// The rod described by the parameters (validated beforehand).
+    pub fn from_parameters(p: &Parameters) -> Result<Self, ModelError> {
+        match p.rod_formulation {
+            RodFormulation::Rigid => {
+                let mass = p.rod.mass();
+                let mass_matrix = Mat::from_fn(4, 4, |i, j| {
+                    if i % 2 != j % 2 {
+                        0.0
+                    } else if i / 2 == j / 2 {
+                        mass / 3.0
+                    } else {
+                        mass / 6.0
+                    }
+                });
+                Ok(Self::Rigid {
+                    mass,
+                    length: p.rod.length,
+                    mass_matrix,
+                })
+            }
+            RodFormulation::Ancf => Ok(Self::Flexible(Box::new(RodModel::full(Rod::new(
+                p.rod,
+                p.n_elements,
+            )?)?))),
+            RodFormulation::CraigBampton => Ok(Self::Flexible(Box::new(RodModel::craig_bampton(
+                Rod::new(p.rod, p.n_elements)?,
+                p.n_modes,
+            )?))),
+        }
+    }
+
+    /// Number of coordinates.
+    pub fn n_coordinates(&self) -> usize {
+        match self {
+            Self::Rigid { .. } => 4,
+            Self::Flexible(model) => model.n_coordinates(),
+        }
+    }
+
+    /// Offset of r_B (the slider-pin end) in the rod coordinates.
+    pub fn end_offset(&self) -> usize {
+        match self {
+            Self::Rigid { .. } => 2,
+            Self::Flexible(model) => model.end_node_offset(),
+        }
+    }
+
+    /// Constant mass matrix.
+    pub fn mass_matrix(&self) -> MatRef<'_, f64> {
+        match self {
+            Self::Rigid { mass_matrix, .. } => mass_matrix.as_ref(),
+            Self::Flexible(model) => model.mass_matrix(),
+        }
+    }
+
+    /// Solves M x = b in place.
+    pub fn solve_mass(&self, b: &mut [f64]) {
+        match self {
+            Self::Rigid { mass, .. } => {
+                // M⁻¹ = (2/m) [2 −1; −1 2] ⊗ I₂.
+                let c = 2.0 / mass;
+                for d in 0..2 {
+                    let (a, bb) = (b[d], b[2 + d]);
+                    b[d] = c * (2.0 * a - bb);
+                    b[2 + d] = c * (2.0 * bb - a);
+                }
+            }
+            Self::Flexible(model) => model.solve_mass(b),
+        }
+    }
+
+    /// Internal (elastic + damping) force, written to `out` (zero for the rigid rod).
+    pub fn internal_force(&mut self, p: &[f64], p_dot: &[f64], out: &mut [f64]) {
+        match self {
+            Self::Rigid { .. } => out.fill(0.0),
+            Self::Flexible(model) => model.internal_force(p, p_dot, out),
+        }
+    }
+
+    /// Constant gravity load for acceleration (0, −g).
+    pub fn gravity_force(&self, g: f64) -> Vec<f64> {
+        match self {
+            Self::Rigid { mass, .. } => vec![0.0, -0.5 * mass * g, 0.0, -0.5 * mass * g],
+            Self::Flexible(model) => {
+                let q = model.rod().gravity_force(Vector2::new(0.0, -g));
+                let mut out = vec![0.0; model.n_coordinates()];
+                model.project_force(&q, &mut out);
+                out
+            }
+        }
+    }
+
+    /// Strain energy \[J\] (0 for the rigid rod).
+    pub fn strain_energy(&mut self, p: &[f64]) -> f64 {
+        match self {
+            Self::Rigid { .. } => 0.0,
+            Self::Flexible(model) => model.strain_energy(p),
+        }
+    }
+
+    /// Direction whose rotation rate is the journal's rotation rate at B: the end slope r_x of the
+    /// ANCF rod, or the chord r_B − r_A of the rigid rod; with its rate.
+    fn end_direction(&self, p: &[f64], p_dot: &[f64]) -> (Vector2<f64>, Vector2<f64>) {
+        let b = self.end_offset();
+        match self {
+            Self::Rigid { .. } => (
+                Vector2::new(p[2] - p[0], p[3] - p[1]),
+                Vector2::new(p_dot[2] - p_dot[0], p_dot[3] - p_dot[1]),
+            ),
+            Self::Flexible(_) => (
+                Vector2::new(p[b + 2], p[b + 3]),
+                Vector2::new(p_dot[b + 2], p_dot[b + 3]),
+            ),
+        }
+    }
+
+    /// Angular velocity of the rod end B, ω = (d × ḋ)/|d|² (MODEL.md §1.1).
+    pub fn end_angular_velocity(&self, p: &[f64], p_dot: &[f64]) -> f64 {
+        let (d, d_dot) = self.end_direction(p, p_dot);
+        cross(d, d_dot) / d.norm_squared()
+    }
+
+    /// Adds the generalised force of a moment `m` acting at B: m (∂φ/∂p)ᵀ with
+    /// ∂φ/∂d = ẑ × d / |d|² (MODEL.md §1.6).
+    pub fn add_end_moment(&self, p: &[f64], m: f64, out: &mut [f64]) {
+        let (d, _) = self.end_direction(p, p);
+        let g = m / d.norm_squared() * Vector2::new(-d.y, d.x);
+        match self {
+            Self::Rigid { .. } => {
+                out[2] += g.x;
+                out[3] += g.y;
+                out[0] -= g.x;
+                out[1] -= g.y;
+            }
+            Self::Flexible(_) => {
+                let b = self.end_offset();
+                out[b + 2] += g.x;
+                out[b + 3] += g.y;
+            }
+        }
+    }
+
+    /// Mid-span deflection: displacement of the point at arc length l/2 perpendicular to the chord
+    /// A → B, positive to the left of the chord direction (MODEL.md §10). 0 for the rigid rod.
+    pub fn midspan_deflection(&mut self, p: &[f64]) -> f64 {
+        match self {
+            Self::Rigid { .. } => 0.0,
+            Self::Flexible(model) => model.midspan_deflection(p),
+        }
+    }
+
+    /// Coordinates and velocities of the straight rod from A to B moving rigidly with end
+    /// velocities v_A, v_B (|B − A| = l, (B − A)·(v_B − v_A) = 0).
+    pub fn straight_state(
+        &self,
+        a: Vector2<f64>,
+        b: Vector2<f64>,
+        v_a: Vector2<f64>,
+        v_b: Vector2<f64>,
+    ) -> (Vec<f64>, Vec<f64>) {
+        match self {
+            Self::Rigid { .. } => (vec![a.x, a.y, b.x, b.y], vec![v_a.x, v_a.y, v_b.x, v_b.y]),
+            Self::Flexible(model) => {
+                let rod = model.rod();
+                let length = rod.properties().length;
+                let d = b - a;
+                let e = rod.straight_configuration(a, d.y.atan2(d.x));
+                let slope_rate = (v_b - v_a) / length;
+                let h = length / rod.n_elements() as f64;
+                let e_dot: Vec<f64> = (0..=rod.n_elements())
+                    .flat_map(|k| {
+                        let v = v_a + (k as f64 * h) * slope_rate;
+                        [v.x, v.y, slope_rate.x, slope_rate.y]
+                    })
+                    .collect();
+                (model.model_coordinates(&e), model.model_coordinates(&e_dot))
+            }
+        }
+    }
+
+    /// Rigid-rod length l, if rigid (the mechanism adds the length constraint).
+    pub fn rigid_length(&self) -> Option<f64> {
+        match self {
+            Self::Rigid { length, .. } => Some(*length),
+            Self::Flexible(_) => None,
+        }
+    }
+}
