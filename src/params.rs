@@ -205,13 +205,11 @@ impl Parameters {
         if self.rod_formulation != RodFormulation::Rigid
             && !(1..=MAX_ELEMENTS).contains(&self.n_elements)
         {
-            {
-                return Err(ModelError::invalid(
-                    "rod.nElements",
-                    self.n_elements as f64,
-                    "[1, 64]",
-                ));
-            }
+            return Err(ModelError::invalid(
+                "rod.nElements",
+                self.n_elements as f64,
+                "[1, 64]",
+            ));
         }
         if self.rod_formulation == RodFormulation::CraigBampton {
             let max = max_modes(self.n_elements);
