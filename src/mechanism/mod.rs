@@ -99,9 +99,10 @@ impl Energies {
         -self.joint_work - self.contact
     }
 
-    /// Balance T + U + V_c + V_g − W_drive − W_external − W_joint, constant in exact arithmetic.
+    /// Balance T + U + V_g − W_drive − W_external − W_joint, constant in exact arithmetic (the
+    /// joint work includes the work of the elastic contact force, so V_c does not appear).
     pub fn balance(&self) -> f64 {
-        self.kinetic + self.strain + self.contact + self.gravity
+        self.kinetic + self.strain + self.gravity
             - self.drive_work
             - self.external_work
             - self.joint_work
