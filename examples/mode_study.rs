@@ -151,7 +151,11 @@ fn main() -> Result<(), Box<dyn Error>> {
     Ok(())
 }
 
-type Curve = Vec<(usize, f64, f64, f64)>;
+/// Errors of one reduced run: (nModes, e_U, acceleration, peak force).
+type Point = (usize, f64, f64, f64);
+type Curve = Vec<Point>;
+/// A plotted error measure: label, colour, and how to read it from a point.
+type Measure = (&'static str, RGBColor, fn(&Point) -> f64);
 
 fn plot(curves: &[(&str, Curve)]) -> Result<(), Box<dyn Error>> {
     let font: &'static [u8] = Box::leak(std::fs::read(FONT)?.into_boxed_slice());
@@ -177,7 +181,7 @@ fn plot(curves: &[(&str, Curve)]) -> Result<(), Box<dyn Error>> {
             .y_desc("relative error")
             .y_label_formatter(&|v| format!("{v:.0e}"))
             .draw()?;
-        let series: [(&str, RGBColor, fn(&(usize, f64, f64, f64)) -> f64); 3] = [
+        let series: [Measure; 3] = [
             ("max deformation energy (2nd rev.)", BLUE, |c| c.1),
             ("slider acceleration RMS (point-wise horizon)", RED, |c| c.2),
             ("peak joint force", GREEN, |c| c.3),
