@@ -1,0 +1,93 @@
+//! The hot path allocates nothing: after initialisation, `advance_to` and `outputs` of every rod ×
+//! joint model run without a single heap allocation (counting global allocator, own test binary).
+
+// Test code: a failed unwrap is a failed test, with its message.
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+// A global allocator is an unsafe trait implementation; it only forwards to `System`.
+#![allow(unsafe_code)]
+
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+use flexible_slider_crank::params::{JointModel, RodFormulation};
+use flexible_slider_crank::{Parameters, Simulation};
+
+/// Counts allocations made by the thread that set [`COUNTING`] (the test runs on one thread).
+struct Counting;
+
+static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
+
+thread_local! {
+    static COUNTING: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+// SAFETY: forwards every call to the system allocator unchanged; only counts.
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        if COUNTING.with(|c| c.get()) {
+            ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
+        }
+        // SAFETY: same contract as the caller's.
+        unsafe { System.alloc(layout) }
+    }
+
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        // SAFETY: same contract as the caller's.
+        unsafe { System.dealloc(ptr, layout) }
+    }
+
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        if COUNTING.with(|c| c.get()) {
+            ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
+        }
+        // SAFETY: same contract as the caller's.
+        unsafe { System.realloc(ptr, layout, new_size) }
+    }
+}
+
+#[global_allocator]
+static GLOBAL: Counting = Counting;
+
+/// The counter sees allocations made while counting (so a zero below means something).
+#[test]
+fn counter_counts() {
+    ALLOCATIONS.store(0, Ordering::Relaxed);
+    COUNTING.with(|c| c.set(true));
+    let v = std::hint::black_box(vec![1.0f64; 16]);
+    COUNTING.with(|c| c.set(false));
+    drop(v);
+    assert!(ALLOCATIONS.load(Ordering::Relaxed) >= 1);
+}
+
+#[test]
+fn stepping_does_not_allocate() {
+    for rod in [
+        RodFormulation::Rigid,
+        RodFormulation::Ancf,
+        RodFormulation::CraigBampton,
+    ] {
+        for joint in [JointModel::Ideal, JointModel::Dry, JointModel::Lubricated] {
+            let p = Parameters {
+                rod_formulation: rod,
+                joint_model: joint,
+                ..Parameters::default()
+            };
+            let mut sim = Simulation::new(p).unwrap();
+            sim.advance_to(1e-4).unwrap();
+            sim.outputs().unwrap();
+            ALLOCATIONS.store(0, Ordering::Relaxed);
+            COUNTING.with(|c| c.set(true));
+            for i in 1..=40 {
+                sim.set_drive_speed(520.0 + f64::from(i));
+                sim.advance_to(1e-4 + 5e-5 * f64::from(i)).unwrap();
+                sim.outputs().unwrap();
+            }
+            COUNTING.with(|c| c.set(false));
+            let n = ALLOCATIONS.load(Ordering::Relaxed);
+            assert_eq!(
+                n, 0,
+                "{rod:?} rod, {joint:?} joint: {n} allocations in 40 steps"
+            );
+        }
+    }
+}
