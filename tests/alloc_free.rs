@@ -7,26 +7,33 @@
 #![allow(unsafe_code)]
 
 use std::alloc::{GlobalAlloc, Layout, System};
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::cell::Cell;
 
 use flexible_slider_crank::params::{JointModel, RodFormulation};
 use flexible_slider_crank::{Parameters, Simulation};
 
-/// Counts allocations made by the thread that set [`COUNTING`] (the test runs on one thread).
+/// Counts the allocations of each thread while its [`COUNT`] is `Some` (tests run in parallel).
 struct Counting;
 
-static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
-
 thread_local! {
-    static COUNTING: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+    static COUNT: Cell<Option<usize>> = const { Cell::new(None) };
+}
+
+fn record() {
+    COUNT.with(|c| c.set(c.get().map(|n| n + 1)));
+}
+
+/// Runs `f` and returns how many allocations this thread made meanwhile.
+fn allocations_in(f: impl FnOnce()) -> usize {
+    COUNT.with(|c| c.set(Some(0)));
+    f();
+    COUNT.with(|c| c.replace(None)).unwrap_or(0)
 }
 
 // SAFETY: forwards every call to the system allocator unchanged; only counts.
 unsafe impl GlobalAlloc for Counting {
     unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        if COUNTING.with(|c| c.get()) {
-            ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
-        }
+        record();
         // SAFETY: same contract as the caller's.
         unsafe { System.alloc(layout) }
     }
@@ -37,9 +44,7 @@ unsafe impl GlobalAlloc for Counting {
     }
 
     unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
-        if COUNTING.with(|c| c.get()) {
-            ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
-        }
+        record();
         // SAFETY: same contract as the caller's.
         unsafe { System.realloc(ptr, layout, new_size) }
     }
@@ -51,12 +56,8 @@ static GLOBAL: Counting = Counting;
 /// The counter sees allocations made while counting (so a zero below means something).
 #[test]
 fn counter_counts() {
-    ALLOCATIONS.store(0, Ordering::Relaxed);
-    COUNTING.with(|c| c.set(true));
-    let v = std::hint::black_box(vec![1.0f64; 16]);
-    COUNTING.with(|c| c.set(false));
-    drop(v);
-    assert!(ALLOCATIONS.load(Ordering::Relaxed) >= 1);
+    let n = allocations_in(|| drop(std::hint::black_box(vec![1.0f64; 16])));
+    assert!(n >= 1);
 }
 
 #[test]
@@ -75,15 +76,13 @@ fn stepping_does_not_allocate() {
             let mut sim = Simulation::new(p).unwrap();
             sim.advance_to(1e-4).unwrap();
             sim.outputs().unwrap();
-            ALLOCATIONS.store(0, Ordering::Relaxed);
-            COUNTING.with(|c| c.set(true));
-            for i in 1..=40 {
-                sim.set_drive_speed(520.0 + f64::from(i));
-                sim.advance_to(1e-4 + 5e-5 * f64::from(i)).unwrap();
-                sim.outputs().unwrap();
-            }
-            COUNTING.with(|c| c.set(false));
-            let n = ALLOCATIONS.load(Ordering::Relaxed);
+            let n = allocations_in(|| {
+                for i in 1..=40 {
+                    sim.set_drive_speed(520.0 + f64::from(i));
+                    sim.advance_to(1e-4 + 5e-5 * f64::from(i)).unwrap();
+                    sim.outputs().unwrap();
+                }
+            });
             assert_eq!(
                 n, 0,
                 "{rod:?} rod, {joint:?} joint: {n} allocations in 40 steps"
