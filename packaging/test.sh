@@ -10,5 +10,7 @@ echo "== cargo clippy --all-targets -D warnings"
 cargo clippy --all-targets -- -D warnings
 echo "== cargo doc (warnings are errors)"
 RUSTDOCFLAGS="-D warnings" cargo doc --no-deps --quiet
-echo "== cargo test (unit + validation tests, benches compiled and run once)"
-cargo test --all-targets
+echo "== benches and examples compile"
+cargo test --benches --examples --no-run --quiet
+echo "== cargo test (unit and validation tests)"
+cargo test --lib --tests
