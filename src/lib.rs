@@ -11,6 +11,7 @@
 
 pub mod ancf;
 pub mod error;
+pub mod fmi;
 pub mod integrator;
 pub mod joint;
 pub mod mechanism;

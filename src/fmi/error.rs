@@ -1,0 +1,46 @@
+//! Errors of the FMI layer, each mapped to an `fmi2Status` and a message for the master's logger.
+
+use std::fmt;
+
+use super::state::Call;
+use crate::error::ModelError;
+
+/// Why an FMI call failed.
+#[derive(Clone, Debug, PartialEq)]
+pub enum FmuError {
+    /// The call is not allowed in the current state.
+    IllegalCall(Call),
+    /// A pointer argument is NULL.
+    Null(&'static str),
+    /// Any other invalid argument or request; the message says which and why.
+    Invalid(String),
+    /// The model rejected the parameters or failed numerically.
+    Model(ModelError),
+    /// The integrator could not complete the step (fmi2Discard); simulation stopped at `time`.
+    Discard {
+        /// Last successful time \[s\].
+        time: f64,
+        /// Reason.
+        reason: String,
+    },
+}
+
+impl From<ModelError> for FmuError {
+    fn from(e: ModelError) -> Self {
+        Self::Model(e)
+    }
+}
+
+impl fmt::Display for FmuError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::IllegalCall(call) => write!(f, "{}: Illegal call sequence.", call.name()),
+            Self::Null(argument) => write!(f, "Argument {argument} must not be NULL."),
+            Self::Invalid(message) => f.write_str(message),
+            Self::Model(e) => write!(f, "{e}"),
+            Self::Discard { time, reason } => {
+                write!(f, "step discarded, last successful time {time} s: {reason}")
+            }
+        }
+    }
+}

@@ -1,0 +1,162 @@
+//! The unsafe edge of the FMI layer: raw pointers to slices and strings (NULL-checked), the
+//! instance guard with `catch_unwind`, and the call into the master's variadic logger.
+#![allow(unsafe_code)]
+
+use std::ffi::{CStr, c_char};
+use std::panic::{AssertUnwindSafe, catch_unwind};
+
+use fmi_sys::fmi2::{
+    fmi2CallbackLogger, fmi2Component, fmi2ComponentEnvironment, fmi2Status,
+    fmi2Status_fmi2Discard, fmi2Status_fmi2Error,
+};
+
+use super::error::FmuError;
+use super::instance::Instance;
+use super::state::{Call, State};
+
+/// Calls the master's logger with `"%s"` as the format, so the text is never interpreted.
+// The environment pointer is the master's opaque value, passed back unchanged, never dereferenced.
+#[allow(clippy::not_unsafe_ptr_arg_deref)]
+pub fn call_logger(
+    callback: fmi2CallbackLogger,
+    environment: fmi2ComponentEnvironment,
+    instance_name: &CStr,
+    status: fmi2Status,
+    category: &CStr,
+    message: &CStr,
+) {
+    if let Some(log) = callback {
+        // SAFETY: the master passed this function in fmi2CallbackFunctions (FMI 2.0.4 §2.1.5) with
+        // the printf-style signature; every string is NUL-terminated and outlives the call, and
+        // "%s" consumes exactly the one variadic argument given.
+        unsafe {
+            log(
+                environment,
+                instance_name.as_ptr(),
+                status,
+                category.as_ptr(),
+                c"%s".as_ptr(),
+                message.as_ptr(),
+            );
+        }
+    }
+}
+
+/// `n` values at `ptr` (any pointer when n = 0); NULL with n > 0 is an error naming `name`.
+///
+/// # Safety
+/// A non-NULL `ptr` must point to `n` valid values for the duration of the call (FMI 2.0.4 §2.1.7).
+pub unsafe fn slice<'a, T>(
+    ptr: *const T,
+    n: usize,
+    name: &'static str,
+) -> Result<&'a [T], FmuError> {
+    if n == 0 {
+        Ok(&[])
+    } else if ptr.is_null() {
+        Err(FmuError::Null(name))
+    } else {
+        // SAFETY: non-NULL and n values long per the caller's contract.
+        Ok(unsafe { std::slice::from_raw_parts(ptr, n) })
+    }
+}
+
+/// Mutable version of [`slice`].
+///
+/// # Safety
+/// A non-NULL `ptr` must point to `n` writable values for the duration of the call.
+pub unsafe fn slice_mut<'a, T>(
+    ptr: *mut T,
+    n: usize,
+    name: &'static str,
+) -> Result<&'a mut [T], FmuError> {
+    if n == 0 {
+        Ok(&mut [])
+    } else if ptr.is_null() {
+        Err(FmuError::Null(name))
+    } else {
+        // SAFETY: non-NULL and n writable values per the caller's contract.
+        Ok(unsafe { std::slice::from_raw_parts_mut(ptr, n) })
+    }
+}
+
+/// A C string as `&str` (None for NULL; invalid UTF-8 is replaced).
+///
+/// # Safety
+/// A non-NULL `ptr` must be NUL-terminated and valid for the duration of the call.
+pub unsafe fn string(ptr: *const c_char) -> Option<String> {
+    if ptr.is_null() {
+        None
+    } else {
+        // SAFETY: NUL-terminated per the caller's contract (FMI 2.0.4 fmi2String).
+        Some(
+            unsafe { CStr::from_ptr(ptr) }
+                .to_string_lossy()
+                .into_owned(),
+        )
+    }
+}
+
+/// A panic payload as text.
+pub fn panic_text(payload: &(dyn std::any::Any + Send)) -> String {
+    payload
+        .downcast_ref::<&str>()
+        .map(|s| (*s).to_string())
+        .or_else(|| payload.downcast_ref::<String>().cloned())
+        .unwrap_or_else(|| "unknown panic".into())
+}
+
+/// Runs `f` on the instance behind `c` if `call` is legal in its state: errors are logged and move
+/// the instance to the Error state, a discarded step to StepFailed, and a panic is caught, logged
+/// and poisons the instance (only fmi2Reset and fmi2FreeInstance are accepted afterwards).
+pub fn with_instance(
+    c: fmi2Component,
+    call: Call,
+    f: impl FnOnce(&mut Instance) -> Result<fmi2Status, FmuError>,
+) -> fmi2Status {
+    if c.is_null() {
+        return fmi2Status_fmi2Error;
+    }
+    // SAFETY: a non-NULL component is one returned by fmi2Instantiate (Box::into_raw) and not yet
+    // freed, and the master calls one instance's functions one at a time (FMI 2.0.4 §2.1.5).
+    let instance = unsafe { &mut *c.cast::<Instance>() };
+    let result = catch_unwind(AssertUnwindSafe(|| {
+        if instance.poisoned && call != Call::Reset {
+            return Err(FmuError::Invalid(format!(
+                "{}: the instance is unusable after an internal error; call fmi2Reset or fmi2FreeInstance",
+                call.name()
+            )));
+        }
+        if !call.allowed().contains(&instance.state) {
+            return Err(FmuError::IllegalCall(call));
+        }
+        f(instance)
+    }));
+    match result {
+        Ok(Ok(status)) => status,
+        Ok(Err(e @ FmuError::Discard { .. })) => {
+            instance.logger.discard(&format!("{}: {e}", call.name()));
+            instance.state = State::StepFailed;
+            fmi2Status_fmi2Discard
+        }
+        Ok(Err(e)) => {
+            let message = match e {
+                FmuError::IllegalCall(_) => e.to_string(),
+                _ => format!("{}: {e}", call.name()),
+            };
+            instance.logger.error(&message);
+            instance.state = State::Error;
+            fmi2Status_fmi2Error
+        }
+        Err(payload) => {
+            instance.logger.error(&format!(
+                "{}: internal error: {}",
+                call.name(),
+                panic_text(&*payload)
+            ));
+            instance.poisoned = true;
+            instance.state = State::Error;
+            fmi2Status_fmi2Error
+        }
+    }
+}

@@ -1,0 +1,550 @@
+//! [`Instance`]: one FMU instance in safe Rust — parameters, inputs, the simulation, the clock and
+//! the state machine. Values are read and written by an exhaustive `match` on [`Vr`], with the
+//! ranges of the variable table, so every message quotes what the master sees in the XML.
+
+use super::error::FmuError;
+use super::logger::Logger;
+use super::snapshot::FmuSnapshot;
+use super::state::State;
+use super::variables::{Causality, ENUMERATIONS, Kind, VARIABLES, Variable, Vr, variable};
+use crate::joint::hertz_stiffness;
+use crate::params::{DriveMode, JointModel, Parameters, RodFormulation};
+use crate::simulation::{Outputs, Simulation};
+
+/// Tolerance on the communication point: |t − t_expected| ≤ 1e-9 (1 + |t|) (FMI.md §1.6).
+const TIME_TOLERANCE: f64 = 1e-9;
+
+/// Input values.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct InputValues {
+    /// drive.speed \[rad/s\].
+    pub drive_speed: f64,
+    /// drive.torque \[N m\].
+    pub drive_torque: f64,
+    /// slider.force \[N\].
+    pub slider_force: f64,
+}
+
+impl Default for InputValues {
+    fn default() -> Self {
+        let start = |vr: Vr| match VARIABLES[vr as usize].kind {
+            Kind::Real { start: Some(s), .. } => s,
+            _ => 0.0,
+        };
+        Self {
+            drive_speed: start(Vr::DriveSpeed),
+            drive_torque: start(Vr::DriveTorque),
+            slider_force: start(Vr::SliderForce),
+        }
+    }
+}
+
+/// One FMU instance.
+#[derive(Debug)]
+pub struct Instance {
+    /// Instance name.
+    pub name: String,
+    /// The master's logger.
+    pub logger: Logger,
+    /// State-machine state.
+    pub state: State,
+    /// Set after a caught panic: only Reset and FreeInstance are accepted.
+    pub poisoned: bool,
+    pub(crate) parameters: Parameters,
+    pub(crate) inputs: InputValues,
+    pub(crate) simulation: Option<Simulation>,
+    pub(crate) start_time: f64,
+    pub(crate) stop_time: Option<f64>,
+    pub(crate) time: f64,
+    pub(crate) last_successful_time: f64,
+}
+
+fn enum_value<T: PartialEq>(items: &[T], value: &T) -> i32 {
+    items
+        .iter()
+        .position(|x| x == value)
+        .map_or(0, |i| i as i32 + 1)
+}
+
+const FORMULATIONS: [RodFormulation; 3] = [
+    RodFormulation::Rigid,
+    RodFormulation::Ancf,
+    RodFormulation::CraigBampton,
+];
+const JOINTS: [JointModel; 3] = [JointModel::Ideal, JointModel::Dry, JointModel::Lubricated];
+const DRIVES: [DriveMode; 2] = [DriveMode::Speed, DriveMode::Torque];
+
+impl Instance {
+    /// A fresh instance with the start values of the variable table.
+    pub fn new(name: String, logger: Logger) -> Self {
+        Self {
+            name,
+            logger,
+            state: State::Instantiated,
+            poisoned: false,
+            parameters: Parameters::default(),
+            inputs: InputValues::default(),
+            simulation: None,
+            start_time: 0.0,
+            stop_time: None,
+            time: 0.0,
+            last_successful_time: 0.0,
+        }
+    }
+
+    /// fmi2Reset: back to Instantiated with every start value.
+    pub fn reset(&mut self) {
+        self.state = State::Instantiated;
+        self.poisoned = false;
+        self.parameters = Parameters::default();
+        self.inputs = InputValues::default();
+        self.simulation = None;
+        self.start_time = 0.0;
+        self.stop_time = None;
+        self.time = 0.0;
+        self.last_successful_time = 0.0;
+    }
+
+    /// fmi2SetupExperiment.
+    pub fn setup_experiment(&mut self, start: f64, stop: Option<f64>) -> Result<(), FmuError> {
+        if !start.is_finite() {
+            return Err(FmuError::Invalid(format!(
+                "fmi2SetupExperiment: startTime = {start} is not finite"
+            )));
+        }
+        if let Some(stop) = stop {
+            if !(stop.is_finite() && stop >= start) {
+                return Err(FmuError::Invalid(format!(
+                    "fmi2SetupExperiment: stopTime = {stop} must be finite and >= startTime = {start}"
+                )));
+            }
+        }
+        self.start_time = start;
+        self.stop_time = stop;
+        self.time = start;
+        self.last_successful_time = start;
+        Ok(())
+    }
+
+    /// The simulation, built from the current parameters if needed.
+    fn simulation(&mut self) -> Result<&mut Simulation, FmuError> {
+        if self.simulation.is_none() {
+            let mut sim = Simulation::new(self.parameters.clone())?;
+            sim.set_time(self.time);
+            sim.set_drive_speed(self.inputs.drive_speed);
+            sim.set_drive_torque(self.inputs.drive_torque);
+            sim.set_slider_force(self.inputs.slider_force);
+            self.logger.event(&format!(
+                "model built: {:?} rod, {:?} joint, {:?} drive, {} states",
+                self.parameters.rod_formulation,
+                self.parameters.joint_model,
+                self.parameters.drive_mode,
+                sim.state().len()
+            ));
+            self.simulation = Some(sim);
+        }
+        self.simulation
+            .as_mut()
+            .ok_or_else(|| FmuError::Invalid("no simulation".into()))
+    }
+
+    /// fmi2ExitInitializationMode: builds the model (all parameter checks happen here).
+    pub fn exit_initialization(&mut self) -> Result<(), FmuError> {
+        self.simulation()?;
+        Ok(())
+    }
+
+    /// fmi2DoStep from `t` over `h`.
+    pub fn do_step(&mut self, t: f64, h: f64) -> Result<(), FmuError> {
+        if (t - self.time).abs() > TIME_TOLERANCE * (1.0 + t.abs()) {
+            return Err(FmuError::Invalid(format!(
+                "fmi2DoStep: Expected currentCommunicationPoint = {:.16e} but was {t:.16e}.",
+                self.time
+            )));
+        }
+        if !(h > 0.0 && h.is_finite()) {
+            return Err(FmuError::Invalid(format!(
+                "fmi2DoStep: communicationStepSize must be > 0 and finite but was {h:.16e}."
+            )));
+        }
+        let end = t + h;
+        if let Some(stop) = self.stop_time {
+            if end > stop + TIME_TOLERANCE * (1.0 + stop.abs()) {
+                return Err(FmuError::Invalid(format!(
+                    "fmi2DoStep: t + h = {end:.16e} is past stopTime = {stop:.16e}."
+                )));
+            }
+        }
+        let sim = self.simulation()?;
+        sim.set_time(t);
+        match sim.advance_to(end) {
+            Ok(()) => {
+                self.time = end;
+                self.last_successful_time = end;
+                Ok(())
+            }
+            Err(e) => {
+                let time = sim.time();
+                self.time = time;
+                self.last_successful_time = time;
+                Err(FmuError::Discard {
+                    time,
+                    reason: e.to_string(),
+                })
+            }
+        }
+    }
+
+    fn lookup(vr: u32, base: &str) -> Result<&'static Variable, FmuError> {
+        let v = variable(vr)
+            .ok_or_else(|| FmuError::Invalid(format!("unknown value reference {vr}")))?;
+        let matches = matches!(
+            (v.kind, base),
+            (Kind::Real { .. }, "Real")
+                | (Kind::Integer { .. } | Kind::Enumeration { .. }, "Integer")
+                | (Kind::Boolean, "Boolean")
+        );
+        if matches {
+            Ok(v)
+        } else {
+            Err(FmuError::Invalid(format!(
+                "value reference {vr} ({}) is not of type {base}",
+                v.name
+            )))
+        }
+    }
+
+    /// Checks that `v` may be set now.
+    fn check_settable(&self, v: &Variable) -> Result<(), FmuError> {
+        let ok = match v.causality {
+            Causality::Parameter => {
+                matches!(self.state, State::Instantiated | State::InitializationMode)
+            }
+            Causality::Input => true,
+            _ => false,
+        };
+        if ok {
+            Ok(())
+        } else {
+            Err(FmuError::Invalid(format!(
+                "variable {} ({:?}) cannot be set in state {:?}",
+                v.name, v.causality, self.state
+            )))
+        }
+    }
+
+    fn outputs(&mut self) -> Result<Outputs, FmuError> {
+        Ok(self.simulation()?.outputs()?)
+    }
+
+    /// fmi2GetReal.
+    pub fn get_real(&mut self, vrs: &[u32], values: &mut [f64]) -> Result<(), FmuError> {
+        let mut outputs: Option<Outputs> = None;
+        for (vr, value) in vrs.iter().zip(values.iter_mut()) {
+            let v = Self::lookup(*vr, "Real")?;
+            if v.causality == Causality::Output && outputs.is_none() {
+                outputs = Some(self.outputs()?);
+            }
+            let o = outputs.unwrap_or_default();
+            if let Some(x) = real_parameter(&self.parameters, v.vr) {
+                *value = x;
+                continue;
+            }
+            let p = &self.parameters;
+            *value = match v.vr {
+                Vr::Time => self.time,
+                Vr::JointContactStiffness => hertz_stiffness(
+                    p.bearing_radius(),
+                    p.journal_radius,
+                    p.joint_youngs_modulus,
+                    p.joint_poisson_ratio,
+                ),
+                Vr::DriveSpeed => self.inputs.drive_speed,
+                Vr::DriveTorque => self.inputs.drive_torque,
+                Vr::SliderForce => self.inputs.slider_force,
+                Vr::CrankAngle => o.crank_angle,
+                Vr::CrankSpeed => o.crank_speed,
+                Vr::CrankTorque => o.crank_torque,
+                Vr::SliderPosition => o.slider_position,
+                Vr::SliderVelocity => o.slider_velocity,
+                Vr::SliderAcceleration => o.slider_acceleration,
+                Vr::JointForce => o.joint_force,
+                Vr::JointForceX => o.joint_force_x,
+                Vr::JointForceY => o.joint_force_y,
+                Vr::JointEccentricityX => o.eccentricity_x,
+                Vr::JointEccentricityY => o.eccentricity_y,
+                Vr::JointPenetration => o.penetration,
+                Vr::RodMidspanDeflection => o.midspan_deflection,
+                Vr::RodDeformationEnergy => o.deformation_energy,
+                Vr::EnergyKinetic => o.kinetic_energy,
+                Vr::EnergyDriveWork => o.drive_work,
+                Vr::EnergyDissipated => o.dissipated_energy,
+                _ => unreachable_type(v)?,
+            };
+        }
+        Ok(())
+    }
+
+    /// fmi2SetReal.
+    pub fn set_real(&mut self, vrs: &[u32], values: &[f64]) -> Result<(), FmuError> {
+        for (vr, &value) in vrs.iter().zip(values) {
+            let v = Self::lookup(*vr, "Real")?;
+            self.check_settable(v)?;
+            if let Kind::Real { min, max, unit, .. } = v.kind {
+                if !(value.is_finite() && min <= value && value <= max) {
+                    return Err(FmuError::Invalid(format!(
+                        "{} = {value:e} is outside the allowed range [{min:e}, {max:e}] {unit}",
+                        v.name
+                    )));
+                }
+            }
+            if set_real_parameter(&mut self.parameters, v.vr, value) {
+                // A parameter changed: the model is rebuilt when next needed.
+                self.simulation = None;
+                continue;
+            }
+            match v.vr {
+                Vr::DriveSpeed => {
+                    self.inputs.drive_speed = value;
+                    if let Some(sim) = &mut self.simulation {
+                        sim.set_drive_speed(value);
+                    }
+                    continue;
+                }
+                Vr::DriveTorque => {
+                    self.inputs.drive_torque = value;
+                    if let Some(sim) = &mut self.simulation {
+                        sim.set_drive_torque(value);
+                    }
+                    continue;
+                }
+                Vr::SliderForce => {
+                    self.inputs.slider_force = value;
+                    if let Some(sim) = &mut self.simulation {
+                        sim.set_slider_force(value);
+                    }
+                    continue;
+                }
+                _ => unreachable_type(v)?,
+            }
+        }
+        Ok(())
+    }
+
+    /// fmi2GetInteger (Integer and Enumeration variables).
+    pub fn get_integer(&mut self, vrs: &[u32], values: &mut [i32]) -> Result<(), FmuError> {
+        for (vr, value) in vrs.iter().zip(values.iter_mut()) {
+            let v = Self::lookup(*vr, "Integer")?;
+            if let Some(x) = integer_parameter(&self.parameters, v.vr) {
+                *value = x;
+                continue;
+            }
+            *value = match v.vr {
+                Vr::SolverSteps => {
+                    let steps = self.simulation()?.stats().steps;
+                    i32::try_from(steps).unwrap_or(i32::MAX)
+                }
+                _ => unreachable_type(v)?,
+            };
+        }
+        Ok(())
+    }
+
+    /// fmi2SetInteger (Integer and Enumeration parameters).
+    pub fn set_integer(&mut self, vrs: &[u32], values: &[i32]) -> Result<(), FmuError> {
+        for (vr, &value) in vrs.iter().zip(values) {
+            let v = Self::lookup(*vr, "Integer")?;
+            self.check_settable(v)?;
+            let (min, max) = match v.kind {
+                Kind::Integer { min, max, .. } => (min, max),
+                Kind::Enumeration { type_index, .. } => {
+                    (1, ENUMERATIONS[type_index].items.len() as i32)
+                }
+                _ => (0, -1),
+            };
+            if !(min..=max).contains(&value) {
+                return Err(FmuError::Invalid(format!(
+                    "{} = {value} is outside the allowed range [{min}, {max}]",
+                    v.name
+                )));
+            }
+            if !set_integer_parameter(&mut self.parameters, v.vr, value) {
+                return unreachable_type(v);
+            }
+            self.simulation = None;
+        }
+        Ok(())
+    }
+
+    /// fmi2GetBoolean.
+    pub fn get_boolean(&mut self, vrs: &[u32], values: &mut [i32]) -> Result<(), FmuError> {
+        for (vr, value) in vrs.iter().zip(values.iter_mut()) {
+            let v = Self::lookup(*vr, "Boolean")?;
+            *value = match v.vr {
+                Vr::JointInContact => i32::from(self.outputs()?.in_contact),
+                _ => unreachable_type(v)?,
+            };
+        }
+        Ok(())
+    }
+
+    /// fmi2SetBoolean: no Boolean variable is settable.
+    pub fn set_boolean(&mut self, vrs: &[u32]) -> Result<(), FmuError> {
+        for vr in vrs {
+            let v = Self::lookup(*vr, "Boolean")?;
+            self.check_settable(v)?;
+        }
+        Ok(())
+    }
+
+    /// Captures the complete state (parameters, inputs, clock, state machine, simulation).
+    pub fn snapshot(&self) -> FmuSnapshot {
+        FmuSnapshot {
+            state: self.state,
+            parameters: self.parameters.clone(),
+            inputs: self.inputs,
+            start_time: self.start_time,
+            stop_time: self.stop_time,
+            time: self.time,
+            last_successful_time: self.last_successful_time,
+            simulation: self.simulation.as_ref().map(Simulation::snapshot),
+        }
+    }
+
+    /// Restores a captured state; the model is rebuilt only if its parameters differ.
+    pub fn restore(&mut self, s: &FmuSnapshot) -> Result<(), FmuError> {
+        let same_model = self.parameters == s.parameters && self.simulation.is_some();
+        let mut simulation = if same_model {
+            self.simulation.take()
+        } else {
+            None
+        };
+        if let Some(snap) = &s.simulation {
+            if simulation.is_none() {
+                simulation = Some(Simulation::new(s.parameters.clone())?);
+            }
+            if let Some(sim) = &mut simulation {
+                sim.restore(snap)?;
+            }
+        } else {
+            simulation = None;
+        }
+        self.simulation = simulation;
+        self.parameters = s.parameters.clone();
+        self.inputs = s.inputs;
+        self.state = s.state;
+        self.start_time = s.start_time;
+        self.stop_time = s.stop_time;
+        self.time = s.time;
+        self.last_successful_time = s.last_successful_time;
+        Ok(())
+    }
+}
+
+/// Value of a Real parameter, None for other variables.
+pub fn real_parameter(p: &Parameters, vr: Vr) -> Option<f64> {
+    Some(match vr {
+        Vr::RodLength => p.rod.length,
+        Vr::RodYoungsModulus => p.rod.youngs_modulus,
+        Vr::RodDensity => p.rod.density,
+        Vr::RodArea => p.rod.area,
+        Vr::RodSecondMomentOfArea => p.rod.second_moment_of_area,
+        Vr::RodStiffnessDamping => p.rod.stiffness_damping,
+        Vr::CrankLength => p.crank_length,
+        Vr::CrankMass => p.crank_mass,
+        Vr::CrankInertia => p.crank_inertia,
+        Vr::CrankInitialAngle => p.crank_initial_angle,
+        Vr::CrankInitialSpeed => p.crank_initial_speed,
+        Vr::SliderMass => p.slider_mass,
+        Vr::JointClearance => p.clearance,
+        Vr::JointJournalRadius => p.journal_radius,
+        Vr::JointYoungsModulus => p.joint_youngs_modulus,
+        Vr::JointPoissonRatio => p.joint_poisson_ratio,
+        Vr::JointRestitution => p.restitution,
+        Vr::JointFriction => p.friction,
+        Vr::JointFrictionV0 => p.friction_v0,
+        Vr::JointFrictionV1 => p.friction_v1,
+        Vr::JointViscosity => p.viscosity,
+        Vr::JointBearingLength => p.bearing_length,
+        Vr::JointSwitchEccentricity => p.switch_eccentricity,
+        Vr::Gravity => p.gravity,
+        Vr::SolverRelativeTolerance => p.relative_tolerance,
+        Vr::SolverMaxStepSize => p.max_step_size,
+        _ => return None,
+    })
+}
+
+/// Sets a Real parameter; false if `vr` is not one.
+pub fn set_real_parameter(p: &mut Parameters, vr: Vr, value: f64) -> bool {
+    let field = match vr {
+        Vr::RodLength => &mut p.rod.length,
+        Vr::RodYoungsModulus => &mut p.rod.youngs_modulus,
+        Vr::RodDensity => &mut p.rod.density,
+        Vr::RodArea => &mut p.rod.area,
+        Vr::RodSecondMomentOfArea => &mut p.rod.second_moment_of_area,
+        Vr::RodStiffnessDamping => &mut p.rod.stiffness_damping,
+        Vr::CrankLength => &mut p.crank_length,
+        Vr::CrankMass => &mut p.crank_mass,
+        Vr::CrankInertia => &mut p.crank_inertia,
+        Vr::CrankInitialAngle => &mut p.crank_initial_angle,
+        Vr::CrankInitialSpeed => &mut p.crank_initial_speed,
+        Vr::SliderMass => &mut p.slider_mass,
+        Vr::JointClearance => &mut p.clearance,
+        Vr::JointJournalRadius => &mut p.journal_radius,
+        Vr::JointYoungsModulus => &mut p.joint_youngs_modulus,
+        Vr::JointPoissonRatio => &mut p.joint_poisson_ratio,
+        Vr::JointRestitution => &mut p.restitution,
+        Vr::JointFriction => &mut p.friction,
+        Vr::JointFrictionV0 => &mut p.friction_v0,
+        Vr::JointFrictionV1 => &mut p.friction_v1,
+        Vr::JointViscosity => &mut p.viscosity,
+        Vr::JointBearingLength => &mut p.bearing_length,
+        Vr::JointSwitchEccentricity => &mut p.switch_eccentricity,
+        Vr::Gravity => &mut p.gravity,
+        Vr::SolverRelativeTolerance => &mut p.relative_tolerance,
+        Vr::SolverMaxStepSize => &mut p.max_step_size,
+        _ => return false,
+    };
+    *field = value;
+    true
+}
+
+/// Value of an Integer or Enumeration parameter, None for other variables.
+pub fn integer_parameter(p: &Parameters, vr: Vr) -> Option<i32> {
+    Some(match vr {
+        Vr::RodFormulation => enum_value(&FORMULATIONS, &p.rod_formulation),
+        Vr::JointModel => enum_value(&JOINTS, &p.joint_model),
+        Vr::DriveMode => enum_value(&DRIVES, &p.drive_mode),
+        Vr::RodNElements => i32::try_from(p.n_elements).unwrap_or(i32::MAX),
+        Vr::RodNModes => i32::try_from(p.n_modes).unwrap_or(i32::MAX),
+        _ => return None,
+    })
+}
+
+/// Sets an Integer or Enumeration parameter (value already range-checked); false if `vr` is not
+/// one or the value is not representable.
+pub fn set_integer_parameter(p: &mut Parameters, vr: Vr, value: i32) -> bool {
+    fn item<T: Copy>(items: &[T], value: i32) -> Option<T> {
+        usize::try_from(value - 1)
+            .ok()
+            .and_then(|i| items.get(i).copied())
+    }
+    let count = usize::try_from(value).ok();
+    let done = match vr {
+        Vr::RodFormulation => item(&FORMULATIONS, value).map(|x| p.rod_formulation = x),
+        Vr::JointModel => item(&JOINTS, value).map(|x| p.joint_model = x),
+        Vr::DriveMode => item(&DRIVES, value).map(|x| p.drive_mode = x),
+        Vr::RodNElements => count.map(|n| p.n_elements = n),
+        Vr::RodNModes => count.map(|n| p.n_modes = n),
+        _ => None,
+    };
+    done.is_some()
+}
+
+/// A value reference whose type was already checked cannot reach the wrong arm.
+fn unreachable_type<T>(v: &Variable) -> Result<T, FmuError> {
+    Err(FmuError::Invalid(format!(
+        "variable {} has no value of this type",
+        v.name
+    )))
+}

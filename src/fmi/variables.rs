@@ -1,0 +1,780 @@
+//! THE variable table of the FMU: one row per FMI variable, in value-reference order.
+//!
+//! This file is plain data over `core` types: `build.rs` compiles it too and renders
+//! `modelDescription.xml` from it, and the FMI layer gets and sets values through an exhaustive
+//! `match` on [`Vr`], so the code and the XML cannot disagree.
+
+/// FMI causality.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Causality {
+    /// Fixed parameter, set before initialisation ends.
+    Parameter,
+    /// Computed from parameters.
+    CalculatedParameter,
+    /// Continuous input.
+    Input,
+    /// Output.
+    Output,
+    /// The independent variable (time).
+    Independent,
+}
+
+/// FMI variability.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Variability {
+    /// Fixed after initialisation.
+    Fixed,
+    /// Changes at events (steps) only.
+    Discrete,
+    /// Continuous in time.
+    Continuous,
+}
+
+/// Base type, start value and range of a variable.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Kind {
+    /// Real with unit and range.
+    Real {
+        /// Start value (None: calculated).
+        start: Option<f64>,
+        /// Smallest allowed value.
+        min: f64,
+        /// Largest allowed value.
+        max: f64,
+        /// Unit name, defined in [`UNITS`].
+        unit: &'static str,
+    },
+    /// Integer with range.
+    Integer {
+        /// Start value (None: calculated).
+        start: Option<i32>,
+        /// Smallest allowed value.
+        min: i32,
+        /// Largest allowed value.
+        max: i32,
+    },
+    /// Boolean.
+    Boolean,
+    /// Enumeration item of one of [`ENUMERATIONS`], numbered from 1.
+    Enumeration {
+        /// Start item.
+        start: i32,
+        /// Index into [`ENUMERATIONS`].
+        type_index: usize,
+    },
+}
+
+/// One FMI variable.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Variable {
+    /// Value reference (its position in [`VARIABLES`]).
+    pub vr: Vr,
+    /// Structured name.
+    pub name: &'static str,
+    /// Causality.
+    pub causality: Causality,
+    /// Variability.
+    pub variability: Variability,
+    /// Type, start and range.
+    pub kind: Kind,
+    /// Description.
+    pub description: &'static str,
+}
+
+/// An enumeration type: name and items (name, description), numbered from 1.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Enumeration {
+    /// Type name.
+    pub name: &'static str,
+    /// Items.
+    pub items: &'static [(&'static str, &'static str)],
+}
+
+/// Enumeration types.
+pub const ENUMERATIONS: &[Enumeration] = &[
+    Enumeration {
+        name: "RodFormulation",
+        items: &[
+            ("rigid", "rigid uniform bar"),
+            ("ancf", "full ANCF beam model"),
+            ("craigBampton", "ANCF beam reduced by Craig-Bampton"),
+        ],
+    },
+    Enumeration {
+        name: "JointModel",
+        items: &[
+            ("ideal", "ideal revolute joint"),
+            (
+                "dry",
+                "dry clearance joint (Lankarani-Nikravesh contact, Coulomb friction)",
+            ),
+            (
+                "lubricated",
+                "lubricated journal bearing (short-bearing film, dry contact near the wall)",
+            ),
+        ],
+    },
+    Enumeration {
+        name: "DriveMode",
+        items: &[
+            ("speed", "crank speed prescribed"),
+            ("torque", "crank torque prescribed"),
+        ],
+    },
+];
+
+/// Units: name and SI base-unit exponents (kg, m, s, rad), or None where FMI 2's integer
+/// exponents cannot express the unit (N/m^1.5).
+pub const UNITS: &[(&str, Option<[i32; 4]>)] = &[
+    ("s", Some([0, 0, 1, 0])),
+    ("m", Some([0, 1, 0, 0])),
+    ("m/s", Some([0, 1, -1, 0])),
+    ("m/s2", Some([0, 1, -2, 0])),
+    ("m2", Some([0, 2, 0, 0])),
+    ("m4", Some([0, 4, 0, 0])),
+    ("kg", Some([1, 0, 0, 0])),
+    ("kg/m3", Some([1, -3, 0, 0])),
+    ("kg.m2", Some([1, 2, 0, 0])),
+    ("Pa", Some([1, -1, -2, 0])),
+    ("Pa.s", Some([1, -1, -1, 0])),
+    ("N", Some([1, 1, -2, 0])),
+    ("N.m", Some([1, 2, -2, 0])),
+    ("J", Some([1, 2, -2, 0])),
+    ("rad", Some([0, 0, 0, 1])),
+    ("rad/s", Some([0, 0, -1, 1])),
+    ("1", Some([0, 0, 0, 0])),
+    ("N/m1.5", None),
+];
+
+/// Default experiment: two crank revolutions of benchmark B (5000 rpm) with a 1e-4 s step.
+pub const DEFAULT_EXPERIMENT: (f64, f64, f64, f64) = (0.0, 0.024, 1e-6, 1e-4);
+
+/// Log categories: name and description.
+pub const LOG_CATEGORIES: &[(&str, &str)] = &[
+    ("logEvents", "Initialisation, contact and step information"),
+    ("logStatusWarning", "Warnings"),
+    ("logStatusDiscard", "Steps that could not be completed"),
+    (
+        "logStatusError",
+        "Errors: illegal calls, invalid arguments and parameters",
+    ),
+    ("logStatusFatal", "Fatal errors"),
+    ("logAll", "Everything"),
+];
+
+/// Value references, dense from 0 in table order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[repr(u32)]
+#[allow(missing_docs)]
+pub enum Vr {
+    Time = 0,
+    RodFormulation,
+    RodNElements,
+    RodNModes,
+    RodLength,
+    RodYoungsModulus,
+    RodDensity,
+    RodArea,
+    RodSecondMomentOfArea,
+    RodStiffnessDamping,
+    CrankLength,
+    CrankMass,
+    CrankInertia,
+    CrankInitialAngle,
+    CrankInitialSpeed,
+    SliderMass,
+    JointModel,
+    JointClearance,
+    JointJournalRadius,
+    JointYoungsModulus,
+    JointPoissonRatio,
+    JointRestitution,
+    JointFriction,
+    JointFrictionV0,
+    JointFrictionV1,
+    JointViscosity,
+    JointBearingLength,
+    JointSwitchEccentricity,
+    DriveMode,
+    Gravity,
+    SolverRelativeTolerance,
+    SolverMaxStepSize,
+    JointContactStiffness,
+    DriveSpeed,
+    DriveTorque,
+    SliderForce,
+    CrankAngle,
+    CrankSpeed,
+    CrankTorque,
+    SliderPosition,
+    SliderVelocity,
+    SliderAcceleration,
+    JointForce,
+    JointForceX,
+    JointForceY,
+    JointEccentricityX,
+    JointEccentricityY,
+    JointPenetration,
+    JointInContact,
+    RodMidspanDeflection,
+    RodDeformationEnergy,
+    EnergyKinetic,
+    EnergyDriveWork,
+    EnergyDissipated,
+    SolverSteps,
+}
+
+const fn parameter(
+    vr: Vr,
+    name: &'static str,
+    start: f64,
+    min: f64,
+    max: f64,
+    unit: &'static str,
+    description: &'static str,
+) -> Variable {
+    Variable {
+        vr,
+        name,
+        causality: Causality::Parameter,
+        variability: Variability::Fixed,
+        kind: Kind::Real {
+            start: Some(start),
+            min,
+            max,
+            unit,
+        },
+        description,
+    }
+}
+
+const fn output(
+    vr: Vr,
+    name: &'static str,
+    unit: &'static str,
+    description: &'static str,
+) -> Variable {
+    Variable {
+        vr,
+        name,
+        causality: Causality::Output,
+        variability: Variability::Continuous,
+        kind: Kind::Real {
+            start: None,
+            min: f64::NEG_INFINITY,
+            max: f64::INFINITY,
+            unit,
+        },
+        description,
+    }
+}
+
+const fn input(
+    vr: Vr,
+    name: &'static str,
+    start: f64,
+    min: f64,
+    max: f64,
+    unit: &'static str,
+    description: &'static str,
+) -> Variable {
+    Variable {
+        vr,
+        name,
+        causality: Causality::Input,
+        variability: Variability::Continuous,
+        kind: Kind::Real {
+            start: Some(start),
+            min,
+            max,
+            unit,
+        },
+        description,
+    }
+}
+
+const fn enumeration(
+    vr: Vr,
+    name: &'static str,
+    start: i32,
+    type_index: usize,
+    description: &'static str,
+) -> Variable {
+    Variable {
+        vr,
+        name,
+        causality: Causality::Parameter,
+        variability: Variability::Fixed,
+        kind: Kind::Enumeration { start, type_index },
+        description,
+    }
+}
+
+const fn integer(
+    vr: Vr,
+    name: &'static str,
+    start: i32,
+    min: i32,
+    max: i32,
+    description: &'static str,
+) -> Variable {
+    Variable {
+        vr,
+        name,
+        causality: Causality::Parameter,
+        variability: Variability::Fixed,
+        kind: Kind::Integer {
+            start: Some(start),
+            min,
+            max,
+        },
+        description,
+    }
+}
+
+/// 5000 rpm in rad/s (benchmark B).
+const SPEED: f64 = 523.598_775_598_298_8;
+
+/// Every variable, in value-reference order. Defaults are MODEL.md benchmark B.
+pub const VARIABLES: &[Variable] = &[
+    Variable {
+        vr: Vr::Time,
+        name: "time",
+        causality: Causality::Independent,
+        variability: Variability::Continuous,
+        kind: Kind::Real {
+            start: None,
+            min: f64::NEG_INFINITY,
+            max: f64::INFINITY,
+            unit: "s",
+        },
+        description: "Simulation time",
+    },
+    enumeration(
+        Vr::RodFormulation,
+        "rod.formulation",
+        3,
+        0,
+        "Connecting-rod model",
+    ),
+    integer(
+        Vr::RodNElements,
+        "rod.nElements",
+        8,
+        1,
+        64,
+        "Number of ANCF elements (ancf, craigBampton)",
+    ),
+    integer(
+        Vr::RodNModes,
+        "rod.nModes",
+        4,
+        0,
+        126,
+        "Craig-Bampton mode shapes, at most 2 (rod.nElements - 1)",
+    ),
+    parameter(
+        Vr::RodLength,
+        "rod.length",
+        0.12,
+        1e-4,
+        100.0,
+        "m",
+        "Rod length between the pins",
+    ),
+    parameter(
+        Vr::RodYoungsModulus,
+        "rod.youngsModulus",
+        207e9,
+        1e6,
+        1e13,
+        "Pa",
+        "Rod Young's modulus",
+    ),
+    parameter(
+        Vr::RodDensity,
+        "rod.density",
+        7800.0,
+        1.0,
+        1e5,
+        "kg/m3",
+        "Rod density",
+    ),
+    parameter(
+        Vr::RodArea,
+        "rod.area",
+        2.243_589_743_589_743_6e-4,
+        1e-10,
+        1.0,
+        "m2",
+        "Rod cross-section area",
+    ),
+    parameter(
+        Vr::RodSecondMomentOfArea,
+        "rod.secondMomentOfArea",
+        4.195e-9,
+        1e-20,
+        1.0,
+        "m4",
+        "Rod second moment of area",
+    ),
+    parameter(
+        Vr::RodStiffnessDamping,
+        "rod.stiffnessDamping",
+        0.0,
+        0.0,
+        1.0,
+        "s",
+        "Strain-rate (stiffness-proportional) damping coefficient",
+    ),
+    parameter(
+        Vr::CrankLength,
+        "crank.length",
+        0.05,
+        1e-4,
+        100.0,
+        "m",
+        "Crank length, pivot to pin",
+    ),
+    parameter(
+        Vr::CrankMass,
+        "crank.mass",
+        0.3,
+        1e-6,
+        1e4,
+        "kg",
+        "Crank mass (centre of mass at mid-length)",
+    ),
+    parameter(
+        Vr::CrankInertia,
+        "crank.inertia",
+        1e-4,
+        1e-12,
+        1e4,
+        "kg.m2",
+        "Crank moment of inertia about its centre of mass",
+    ),
+    parameter(
+        Vr::CrankInitialAngle,
+        "crank.initialAngle",
+        0.0,
+        -1000.0,
+        1000.0,
+        "rad",
+        "Initial crank angle",
+    ),
+    parameter(
+        Vr::CrankInitialSpeed,
+        "crank.initialSpeed",
+        SPEED,
+        -1e4,
+        1e4,
+        "rad/s",
+        "Initial crank speed (mechanism starts with ideal-joint velocities)",
+    ),
+    parameter(
+        Vr::SliderMass,
+        "slider.mass",
+        0.14,
+        1e-6,
+        1e4,
+        "kg",
+        "Slider mass",
+    ),
+    enumeration(
+        Vr::JointModel,
+        "joint.model",
+        2,
+        1,
+        "Rod-slider joint model",
+    ),
+    parameter(
+        Vr::JointClearance,
+        "joint.clearance",
+        5e-4,
+        0.0,
+        0.1,
+        "m",
+        "Radial clearance (bearing radius - journal radius)",
+    ),
+    parameter(
+        Vr::JointJournalRadius,
+        "joint.journalRadius",
+        9.5e-3,
+        1e-5,
+        1.0,
+        "m",
+        "Journal (pin) radius",
+    ),
+    parameter(
+        Vr::JointYoungsModulus,
+        "joint.youngsModulus",
+        207e9,
+        1e6,
+        1e13,
+        "Pa",
+        "Young's modulus of journal and bearing",
+    ),
+    parameter(
+        Vr::JointPoissonRatio,
+        "joint.poissonRatio",
+        0.3,
+        -0.99,
+        0.499,
+        "1",
+        "Poisson ratio of journal and bearing",
+    ),
+    parameter(
+        Vr::JointRestitution,
+        "joint.restitution",
+        0.9,
+        1e-3,
+        1.0,
+        "1",
+        "Coefficient of restitution (Lankarani-Nikravesh)",
+    ),
+    parameter(
+        Vr::JointFriction,
+        "joint.friction",
+        0.0,
+        0.0,
+        2.0,
+        "1",
+        "Coulomb friction coefficient",
+    ),
+    parameter(
+        Vr::JointFrictionV0,
+        "joint.frictionV0",
+        1e-4,
+        0.0,
+        10.0,
+        "m/s",
+        "Slip speed below which friction vanishes",
+    ),
+    parameter(
+        Vr::JointFrictionV1,
+        "joint.frictionV1",
+        1e-3,
+        1e-9,
+        10.0,
+        "m/s",
+        "Slip speed above which friction is fully developed",
+    ),
+    parameter(
+        Vr::JointViscosity,
+        "joint.viscosity",
+        0.4,
+        1e-6,
+        100.0,
+        "Pa.s",
+        "Lubricant dynamic viscosity",
+    ),
+    parameter(
+        Vr::JointBearingLength,
+        "joint.bearingLength",
+        0.04,
+        1e-5,
+        10.0,
+        "m",
+        "Bearing length",
+    ),
+    parameter(
+        Vr::JointSwitchEccentricity,
+        "joint.switchEccentricity",
+        0.95,
+        0.01,
+        0.99,
+        "1",
+        "Eccentricity ratio above which dry contact takes over",
+    ),
+    enumeration(Vr::DriveMode, "drive.mode", 1, 2, "What drives the crank"),
+    parameter(
+        Vr::Gravity,
+        "gravity",
+        0.0,
+        -1000.0,
+        1000.0,
+        "m/s2",
+        "Gravitational acceleration along -y",
+    ),
+    parameter(
+        Vr::SolverRelativeTolerance,
+        "solver.relativeTolerance",
+        1e-6,
+        1e-12,
+        1e-2,
+        "1",
+        "Relative tolerance of the internal error-controlled integrator",
+    ),
+    parameter(
+        Vr::SolverMaxStepSize,
+        "solver.maxStepSize",
+        1e-4,
+        1e-9,
+        1.0,
+        "s",
+        "Largest internal step",
+    ),
+    Variable {
+        vr: Vr::JointContactStiffness,
+        name: "joint.contactStiffness",
+        causality: Causality::CalculatedParameter,
+        variability: Variability::Fixed,
+        kind: Kind::Real {
+            start: None,
+            min: 0.0,
+            max: f64::INFINITY,
+            unit: "N/m1.5",
+        },
+        description: "Hertz contact stiffness 4/(3(s_i+s_j)) sqrt(Ri Rj/(Ri-Rj)), s = (1-nu^2)/E",
+    },
+    input(
+        Vr::DriveSpeed,
+        "drive.speed",
+        SPEED,
+        -1e4,
+        1e4,
+        "rad/s",
+        "Prescribed crank speed (drive.mode = speed)",
+    ),
+    input(
+        Vr::DriveTorque,
+        "drive.torque",
+        0.0,
+        -1e6,
+        1e6,
+        "N.m",
+        "Crank torque (drive.mode = torque)",
+    ),
+    input(
+        Vr::SliderForce,
+        "slider.force",
+        0.0,
+        -1e7,
+        1e7,
+        "N",
+        "External force on the slider along the guide",
+    ),
+    output(Vr::CrankAngle, "crank.angle", "rad", "Crank angle"),
+    output(
+        Vr::CrankSpeed,
+        "crank.speed",
+        "rad/s",
+        "Crank angular speed",
+    ),
+    output(
+        Vr::CrankTorque,
+        "crank.torque",
+        "N.m",
+        "Torque the drive applies to the crank (CCW positive)",
+    ),
+    output(
+        Vr::SliderPosition,
+        "slider.position",
+        "m",
+        "Slider position along the guide",
+    ),
+    output(
+        Vr::SliderVelocity,
+        "slider.velocity",
+        "m/s",
+        "Slider velocity",
+    ),
+    output(
+        Vr::SliderAcceleration,
+        "slider.acceleration",
+        "m/s2",
+        "Slider acceleration",
+    ),
+    output(
+        Vr::JointForce,
+        "joint.force",
+        "N",
+        "Magnitude of the joint force on the journal",
+    ),
+    output(
+        Vr::JointForceX,
+        "joint.forceX",
+        "N",
+        "Joint force on the journal, x",
+    ),
+    output(
+        Vr::JointForceY,
+        "joint.forceY",
+        "N",
+        "Joint force on the journal, y",
+    ),
+    output(
+        Vr::JointEccentricityX,
+        "joint.eccentricityX",
+        "m",
+        "Journal centre - bearing centre, x",
+    ),
+    output(
+        Vr::JointEccentricityY,
+        "joint.eccentricityY",
+        "m",
+        "Journal centre - bearing centre, y",
+    ),
+    output(
+        Vr::JointPenetration,
+        "joint.penetration",
+        "m",
+        "Contact penetration max(|e| - c, 0)",
+    ),
+    Variable {
+        vr: Vr::JointInContact,
+        name: "joint.inContact",
+        causality: Causality::Output,
+        variability: Variability::Discrete,
+        kind: Kind::Boolean,
+        description: "Journal and bearing in contact",
+    },
+    output(
+        Vr::RodMidspanDeflection,
+        "rod.midspanDeflection",
+        "m",
+        "Rod mid-span deflection from the chord, left positive",
+    ),
+    output(
+        Vr::RodDeformationEnergy,
+        "rod.deformationEnergy",
+        "J",
+        "Rod strain energy",
+    ),
+    output(
+        Vr::EnergyKinetic,
+        "energy.kinetic",
+        "J",
+        "Kinetic energy of crank, rod and slider",
+    ),
+    output(
+        Vr::EnergyDriveWork,
+        "energy.driveWork",
+        "J",
+        "Work done by the drive",
+    ),
+    output(
+        Vr::EnergyDissipated,
+        "energy.dissipated",
+        "J",
+        "Energy dissipated in the joint",
+    ),
+    Variable {
+        vr: Vr::SolverSteps,
+        name: "solver.steps",
+        causality: Causality::Output,
+        variability: Variability::Discrete,
+        kind: Kind::Integer {
+            start: None,
+            min: 0,
+            max: i32::MAX,
+        },
+        description: "Accepted internal integrator steps",
+    },
+];
+
+/// The variable of a value reference, if it exists.
+pub fn variable(vr: u32) -> Option<&'static Variable> {
+    VARIABLES.get(vr as usize)
+}
