@@ -3,6 +3,10 @@
 //! `cargo run --release --example simulate -- [rigid|ancf|craigBampton] [ideal|dry|lubricated]
 //! [stop time s] [output interval s]` — defaults: benchmark B (Craig–Bampton, 4 modes, dry joint),
 //! two crank revolutions at 5000 rpm, 1e-4 s.
+//!
+//! Communication points follow fmpy's arithmetic (t_n = n·dt, step h = t_{n+1} − t_n, end t + h) and
+//! values are printed in shortest round-trip form, so the FMU run through fmpy can be compared with
+//! this library run bit for bit (packaging/python/test_fmu.py).
 
 use flexible_slider_crank::params::{JointModel, RodFormulation};
 use flexible_slider_crank::{ModelError, Parameters, Simulation};
@@ -29,12 +33,18 @@ fn main() -> Result<(), ModelError> {
          deformation_energy,kinetic_energy,drive_work,dissipated_energy"
     );
     let steps = (stop / interval).round() as usize;
+    let mut t = 0.0;
     for i in 0..=steps {
-        sim.advance_to(i as f64 * interval)?;
+        if i > 0 {
+            let next = i as f64 * interval;
+            let h = next - t;
+            sim.advance_to(t + h)?;
+            t = next;
+        }
         let o = sim.outputs()?;
         println!(
-            "{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e}",
-            o.time,
+            "{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e}",
+            t,
             o.crank_angle,
             o.crank_torque,
             o.slider_position,
