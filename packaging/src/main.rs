@@ -18,7 +18,14 @@ fn build_library(root: &Path) -> Result<PathBuf, Box<dyn Error>> {
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
     let mut child = Command::new(cargo)
         .current_dir(root)
-        .args(["build", "--release", "--lib", "-p", "flexible-slider-crank", "--message-format=json"])
+        .args([
+            "build",
+            "--release",
+            "--lib",
+            "-p",
+            "flexible-slider-crank",
+            "--message-format=json",
+        ])
         .stdout(Stdio::piped())
         .spawn()?;
     let stdout = child.stdout.take().ok_or("no stdout from cargo")?;
@@ -46,23 +53,43 @@ fn build_library(root: &Path) -> Result<PathBuf, Box<dyn Error>> {
 /// table), validation status and the plots.
 fn documentation(readme_validation: &str) -> String {
     let mut rows = |causality: Causality| {
-        let mut t = String::from("<table><tr><th>name</th><th>unit</th><th>start</th><th>range</th><th>description</th></tr>\n");
+        let mut t = String::from(
+            "<table><tr><th>name</th><th>unit</th><th>start</th><th>range</th><th>description</th></tr>\n",
+        );
         for v in VARIABLES.iter().filter(|v| v.causality == causality) {
             let (unit, start, range) = match v.kind {
-                Kind::Real { start, min, max, unit } => (
+                Kind::Real {
+                    start,
+                    min,
+                    max,
+                    unit,
+                } => (
                     unit.to_string(),
                     start.map_or(String::new(), |s| format!("{s}")),
-                    if min.is_finite() { format!("[{min}, {max}]") } else { String::new() },
+                    if min.is_finite() {
+                        format!("[{min}, {max}]")
+                    } else {
+                        String::new()
+                    },
                 ),
-                Kind::Integer { start, min, max } => {
-                    (String::new(), start.map_or(String::new(), |s| s.to_string()), format!("[{min}, {max}]"))
-                }
+                Kind::Integer { start, min, max } => (
+                    String::new(),
+                    start.map_or(String::new(), |s| s.to_string()),
+                    format!("[{min}, {max}]"),
+                ),
                 Kind::Boolean => (String::new(), String::new(), "true/false".into()),
                 Kind::Enumeration { start, type_index } => {
                     let items = ENUMERATIONS[type_index].items;
-                    let names: Vec<String> =
-                        items.iter().enumerate().map(|(i, (n, _))| format!("{}={n}", i + 1)).collect();
-                    (String::new(), items[(start - 1) as usize].0.to_string(), names.join(", "))
+                    let names: Vec<String> = items
+                        .iter()
+                        .enumerate()
+                        .map(|(i, (n, _))| format!("{}={n}", i + 1))
+                        .collect();
+                    (
+                        String::new(),
+                        items[(start - 1) as usize].0.to_string(),
+                        names.join(", "),
+                    )
                 }
             };
             let _ = writeln!(
@@ -110,7 +137,10 @@ fn validation_summary(root: &Path) -> String {
         .split("\n## ")
         .find(|s| s.starts_with("Validation"))
         .unwrap_or("Validation: see README.md");
-    let escaped = section.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;");
+    let escaped = section
+        .replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;");
     format!("<pre style=\"white-space:pre-wrap\">{escaped}</pre>")
 }
 

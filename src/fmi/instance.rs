@@ -548,3 +548,68 @@ fn unreachable_type<T>(v: &Variable) -> Result<T, FmuError> {
         v.name
     )))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every start value in the XML is bit-identical to the library default, so a master that
+    /// applies all start values runs exactly the model of `Parameters::default()`.
+    #[test]
+    fn table_start_values_equal_the_library_defaults() {
+        let p = Parameters::default();
+        let inputs = InputValues::default();
+        assert_eq!(
+            inputs.drive_speed.to_bits(),
+            p.crank_initial_speed.to_bits()
+        );
+        for v in VARIABLES
+            .iter()
+            .filter(|v| v.causality == Causality::Parameter)
+        {
+            match v.kind {
+                Kind::Real { start: Some(s), .. } => {
+                    let default = real_parameter(&p, v.vr).unwrap();
+                    assert_eq!(
+                        s.to_bits(),
+                        default.to_bits(),
+                        "{}: {s} vs {default}",
+                        v.name
+                    );
+                }
+                Kind::Integer { start: Some(s), .. } | Kind::Enumeration { start: s, .. } => {
+                    assert_eq!(Some(s), integer_parameter(&p, v.vr), "{}", v.name);
+                }
+                _ => panic!("{} has no start value", v.name),
+            }
+        }
+    }
+
+    /// Setting then getting every parameter round-trips through the same mapping.
+    #[test]
+    fn every_parameter_round_trips() {
+        let mut p = Parameters::default();
+        for v in VARIABLES
+            .iter()
+            .filter(|v| v.causality == Causality::Parameter)
+        {
+            match v.kind {
+                Kind::Real { max, .. } => {
+                    assert!(set_real_parameter(&mut p, v.vr, max));
+                    assert_eq!(real_parameter(&p, v.vr), Some(max), "{}", v.name);
+                }
+                Kind::Enumeration { type_index, .. } => {
+                    let n = ENUMERATIONS[type_index].items.len() as i32;
+                    assert!(set_integer_parameter(&mut p, v.vr, n));
+                    assert_eq!(integer_parameter(&p, v.vr), Some(n), "{}", v.name);
+                    assert!(!set_integer_parameter(&mut p, v.vr, n + 1));
+                }
+                Kind::Integer { max, .. } => {
+                    assert!(set_integer_parameter(&mut p, v.vr, max));
+                    assert_eq!(integer_parameter(&p, v.vr), Some(max), "{}", v.name);
+                }
+                Kind::Boolean => panic!("{} is a Boolean parameter", v.name),
+            }
+        }
+    }
+}

@@ -332,8 +332,8 @@ const fn integer(
     }
 }
 
-/// 5000 rpm in rad/s (benchmark B).
-const SPEED: f64 = 523.598_775_598_298_8;
+/// 5000 rpm in rad/s (benchmark B); the same expression as `params::BENCHMARK_SPEED`.
+const SPEED: f64 = 5000.0 * core::f64::consts::TAU / 60.0;
 
 /// Every variable, in value-reference order. Defaults are MODEL.md benchmark B.
 pub const VARIABLES: &[Variable] = &[

@@ -1,0 +1,166 @@
+"""Tests of the packaged FMU through fmpy (pinned in requirements.txt): validation, simulation of
+every joint model x rod formulation with start values and inputs, fmpy's FMU-state scenarios, and
+bit-for-bit agreement with the Rust library run (examples/simulate.rs) on the same time grid."""
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+from fmpy import instantiate_fmu, read_model_description, simulate_fmu
+from fmpy.fmi2 import FMU2Slave, fmi2LastSuccessfulTime
+from fmpy import extract
+from fmpy.validation import validate_fmu
+
+ROOT = Path(__file__).resolve().parents[2]
+FMU = str(ROOT / "target" / "fmu" / "FlexibleSliderCrank.fmu")
+FORMULATIONS = {"rigid": 1, "ancf": 2, "craigBampton": 3}
+JOINTS = {"ideal": 1, "dry": 2, "lubricated": 3}
+
+
+def test_validate_fmu_finds_no_problem():
+    assert validate_fmu(FMU) == []
+
+
+def test_model_description():
+    md = read_model_description(FMU)
+    assert md.fmiVersion == "2.0"
+    assert md.coSimulation.modelIdentifier == "FlexibleSliderCrank"
+    assert md.coSimulation.canHandleVariableCommunicationStepSize
+    assert md.coSimulation.canGetAndSetFMUstate and md.coSimulation.canSerializeFMUstate
+    assert md.variableNamingConvention == "structured"
+    ex = md.defaultExperiment
+    assert float(ex.stopTime) == 0.024 and float(ex.stepSize) == 1e-4
+    names = {v.name for v in md.modelVariables}
+    for name in ["rod.nModes", "joint.model", "drive.speed", "slider.force", "joint.inContact",
+                 "solver.steps", "joint.contactStiffness", "energy.dissipated"]:
+        assert name in names
+
+
+@pytest.mark.parametrize("joint", JOINTS)
+@pytest.mark.parametrize("formulation", FORMULATIONS)
+def test_simulate_every_model(formulation, joint):
+    res = simulate_fmu(FMU, stop_time=0.003, output_interval=1e-4,
+                       start_values={"rod.formulation": FORMULATIONS[formulation],
+                                     "joint.model": JOINTS[joint], "rod.nElements": 4,
+                                     "rod.nModes": 2})
+    assert len(res) == 31
+    assert np.all(np.isfinite(res["slider.position"]))
+    # The slider moves from the outer dead centre towards the crank (x starts at 0.17 m).
+    assert res["slider.position"][0] == pytest.approx(0.17, abs=1e-9)
+    assert res["slider.position"][-1] < 0.17
+
+
+def test_torque_drive_with_input_signals():
+    signal = np.array([(0.0, 0.0, 0.0), (0.001, 5.0, -100.0), (0.002, 5.0, -100.0)],
+                      dtype=[("time", np.float64), ("drive.torque", np.float64),
+                             ("slider.force", np.float64)])
+    res = simulate_fmu(FMU, stop_time=0.002, output_interval=1e-4, input=signal,
+                       start_values={"drive.mode": 2, "rod.formulation": 1, "joint.model": 1},
+                       output=["crank.torque", "crank.speed", "energy.driveWork"])
+    assert res["crank.torque"][-1] == pytest.approx(5.0)
+    assert res["energy.driveWork"][-1] != 0.0
+
+
+def test_invalid_start_value_is_rejected_with_a_message(capsys):
+    # fmpy's default logger prints the FMU's messages (a custom Python logger would be kept in a
+    # process-global pointer of fmpy's logging proxy and outlive its test).
+    with pytest.raises(Exception):
+        simulate_fmu(FMU, stop_time=0.001, start_values={"rod.youngsModulus": -3.0})
+    text = capsys.readouterr().out
+    assert "rod.youngsModulus = -3e0 is outside the allowed range [1e6, 1e13] Pa" in text, text
+
+
+def _pause_at(pause_time, keep_state=False, serialize=False):
+    """A step_finished callback that stops at pause_time, optionally capturing the FMU state."""
+    captured = {}
+
+    def callback(time, recorder):
+        if time >= pause_time:
+            captured["time"] = time
+            if keep_state or serialize:
+                state = recorder.fmu.getFMUState()
+                captured["state"] = recorder.fmu.serializeFMUState(state) if serialize else state
+            return False
+        return True
+
+    return callback, captured
+
+
+def test_fmu_state_continue_simulation():
+    """FMPy scenario 1 (tests/test_fmu_state.py): pause with terminate=False, continue with
+    initialize=False; the continuation's first row equals the last row bit for bit."""
+    unzip = extract(FMU)
+    md = read_model_description(unzip)
+    fmu = instantiate_fmu(unzipdir=unzip, model_description=md)
+    pause, captured = _pause_at(0.002)
+    r1 = simulate_fmu(unzip, model_description=md, fmu_instance=fmu, stop_time=0.004,
+                      output_interval=1e-4, step_finished=pause, terminate=False)
+    r2 = simulate_fmu(unzip, model_description=md, fmu_instance=fmu, start_time=captured["time"],
+                      stop_time=0.004, output_interval=1e-4, initialize=False)
+    fmu.freeInstance()
+    assert r1[-1] == r2[0]
+
+
+def test_fmu_state_set_on_terminated_instance():
+    """FMPy scenario 2: state captured while running, the run terminates, the state is set on the
+    terminated instance and the simulation continues from it."""
+    unzip = extract(FMU)
+    md = read_model_description(unzip)
+    fmu = instantiate_fmu(unzipdir=unzip, model_description=md)
+    pause, captured = _pause_at(0.002, keep_state=True)
+    r1 = simulate_fmu(unzip, model_description=md, fmu_instance=fmu, stop_time=0.004,
+                      output_interval=1e-4, step_finished=pause)
+    r2 = simulate_fmu(unzip, model_description=md, fmu_instance=fmu, start_time=captured["time"],
+                      stop_time=0.004, output_interval=1e-4, fmu_state=captured["state"])
+    fmu.freeInstance()
+    assert r1[-1] == r2[0]
+
+
+def test_fmu_state_serialized_into_a_new_instance():
+    """FMPy scenario 3: serialize, then a new instance deserializes and continues (no setup/init)."""
+    pause, captured = _pause_at(0.002, serialize=True)
+    r1 = simulate_fmu(FMU, stop_time=0.004, output_interval=1e-4, step_finished=pause)
+    r2 = simulate_fmu(FMU, start_time=captured["time"], stop_time=0.004, output_interval=1e-4,
+                      fmu_state=captured["state"])
+    assert r1[-1] == r2[0]
+
+
+def test_last_successful_time_and_step_past_stop_time():
+    """fmi2GetRealStatus(fmi2LastSuccessfulTime) answers after a step; a step past the stop time
+    given in fmi2SetupExperiment is an error."""
+    unzip = extract(FMU)
+    md = read_model_description(unzip)
+    fmu = FMU2Slave(guid=md.guid, unzipDirectory=unzip, modelIdentifier="FlexibleSliderCrank",
+                    instanceName="e")
+    fmu.instantiate()
+    fmu.setupExperiment(startTime=0.0, stopTime=0.001)
+    fmu.enterInitializationMode()
+    fmu.exitInitializationMode()
+    fmu.doStep(currentCommunicationPoint=0.0, communicationStepSize=5e-4)
+    assert fmu.getRealStatus(fmi2LastSuccessfulTime) == 5e-4
+    with pytest.raises(Exception):
+        fmu.doStep(currentCommunicationPoint=5e-4, communicationStepSize=1e-3)
+    fmu.freeInstance()
+
+
+@pytest.mark.parametrize("formulation,joint", [("craigBampton", "dry"), ("rigid", "lubricated")])
+def test_fmu_equals_library(formulation, joint):
+    """The FMU through fmpy and the Rust library (examples/simulate.rs) on the same time grid give
+    the same numbers (relative difference <= 1e-12; bit-identical in practice)."""
+    csv = subprocess.run(
+        ["cargo", "run", "--quiet", "--release", "--example", "simulate", "--",
+         formulation, joint, "0.003", "1e-4"],
+        cwd=ROOT, check=True, capture_output=True, text=True).stdout.splitlines()
+    header = csv[0].split(",")
+    rows = np.array([[float(x) for x in line.split(",")] for line in csv[1:]])
+    lib = {name: rows[:, i] for i, name in enumerate(header)}
+    res = simulate_fmu(FMU, stop_time=0.003, output_interval=1e-4,
+                       start_values={"rod.formulation": FORMULATIONS[formulation],
+                                     "joint.model": JOINTS[joint]})
+    for fmu_name, lib_name in [("slider.position", "slider_position"),
+                               ("slider.acceleration", "slider_acceleration"),
+                               ("joint.force", "joint_force"), ("crank.torque", "crank_torque"),
+                               ("rod.deformationEnergy", "deformation_energy")]:
+        a, b = res[fmu_name], lib[lib_name]
+        scale = max(np.max(np.abs(b)), 1e-30)
+        assert np.max(np.abs(a - b)) <= 1e-12 * scale, fmu_name

@@ -1,0 +1,28 @@
+//! The committed `modelDescription/modelDescription.xml` equals the one build.rs generates from the
+//! variable table (interface changes show up in review). `UPDATE_SNAPSHOT=1 cargo test` rewrites it.
+
+// Test code: a failed unwrap is a failed test, with its message.
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+use flexible_slider_crank::fmi::{GUID, MODEL_DESCRIPTION};
+
+#[test]
+fn committed_snapshot_is_current() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("modelDescription/modelDescription.xml");
+    if std::env::var_os("UPDATE_SNAPSHOT").is_some() {
+        std::fs::write(&path, MODEL_DESCRIPTION).unwrap();
+    }
+    let committed = std::fs::read_to_string(&path).unwrap_or_default();
+    assert!(
+        committed == MODEL_DESCRIPTION,
+        "modelDescription/modelDescription.xml is stale: run UPDATE_SNAPSHOT=1 cargo test --test model_description"
+    );
+}
+
+#[test]
+fn guid_is_the_one_in_the_xml() {
+    assert!(GUID.starts_with('{') && GUID.ends_with('}') && GUID.len() == 38);
+    assert!(MODEL_DESCRIPTION.contains(&format!("guid=\"{GUID}\"")));
+    assert_eq!(MODEL_DESCRIPTION.matches("<ScalarVariable ").count(), 55);
+}
