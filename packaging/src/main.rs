@@ -52,7 +52,7 @@ fn build_library(root: &Path) -> Result<PathBuf, Box<dyn Error>> {
 /// documentation/index.html: model, parameters, inputs and outputs with units (from the variable
 /// table), validation status and the plots.
 fn documentation(readme_validation: &str) -> String {
-    let mut rows = |causality: Causality| {
+    let rows = |causality: Causality| {
         let mut t = String::from(
             "<table><tr><th>name</th><th>unit</th><th>start</th><th>range</th><th>description</th></tr>\n",
         );
