@@ -1,0 +1,274 @@
+//! Loads the release library once, captures the FMU's log messages by instance name, and wraps the
+//! raw calls in small safe methods.
+
+use std::collections::HashMap;
+use std::ffi::{CString, c_void};
+use std::path::PathBuf;
+use std::sync::{Mutex, OnceLock};
+
+use flexible_slider_crank::fmi::GUID;
+use fmi_sys::fmi2::*;
+
+/// Path of the release library; built on demand when a plain `cargo test` runs first.
+pub fn library_path() -> PathBuf {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let path = root.join("target/release/libflexible_slider_crank.so");
+    static BUILT: OnceLock<()> = OnceLock::new();
+    BUILT.get_or_init(|| {
+        let status = std::process::Command::new(env!("CARGO"))
+            .current_dir(&root)
+            .args(["build", "--release", "--lib", "--quiet"])
+            .status()
+            .unwrap();
+        assert!(status.success(), "cargo build --release --lib failed");
+    });
+    path
+}
+
+/// The loaded library (one per test process).
+pub fn fmu() -> &'static Fmi2Binding {
+    static FMU: OnceLock<Fmi2Binding> = OnceLock::new();
+    FMU.get_or_init(|| {
+        init_logging();
+        // SAFETY: loading our own FMU library; its initialisers do nothing.
+        unsafe { Fmi2Binding::new(library_path()) }.unwrap()
+    })
+}
+
+/// Messages received per instance name.
+static MESSAGES: OnceLock<Mutex<HashMap<String, Vec<String>>>> = OnceLock::new();
+
+struct Collect;
+
+impl log::Log for Collect {
+    fn enabled(&self, _: &log::Metadata<'_>) -> bool {
+        true
+    }
+    fn log(&self, record: &log::Record<'_>) {
+        let map = MESSAGES.get_or_init(Default::default);
+        map.lock()
+            .unwrap()
+            .entry(record.target().to_string())
+            .or_default()
+            .push(record.args().to_string());
+    }
+    fn flush(&self) {}
+}
+
+fn init_logging() {
+    static LOGGER: Collect = Collect;
+    let _ = log::set_logger(&LOGGER);
+    log::set_max_level(log::LevelFilter::Trace);
+}
+
+/// Messages logged so far by the instance called `name`.
+pub fn messages(name: &str) -> Vec<String> {
+    MESSAGES
+        .get_or_init(Default::default)
+        .lock()
+        .unwrap()
+        .get(name)
+        .cloned()
+        .unwrap_or_default()
+}
+
+/// Callbacks whose logger forwards to the `log` crate (fmi-sys's C shim).
+pub fn callbacks() -> fmi2CallbackFunctions {
+    fmi2CallbackFunctions {
+        logger: Some(fmi_sys::fmi2::logger::callback_logger_handler),
+        allocateMemory: None,
+        freeMemory: None,
+        stepFinished: None,
+        componentEnvironment: std::ptr::null_mut(),
+    }
+}
+
+/// Raw fmi2Instantiate with every argument given.
+pub fn instantiate_raw(
+    name: Option<&str>,
+    kind: fmi2Type,
+    guid: Option<&str>,
+    resources: Option<&str>,
+    callbacks: Option<&fmi2CallbackFunctions>,
+) -> fmi2Component {
+    let name = name.map(|s| CString::new(s).unwrap());
+    let guid = guid.map(|s| CString::new(s).unwrap());
+    let resources = resources.map(|s| CString::new(s).unwrap());
+    let ptr = |s: &Option<CString>| s.as_ref().map_or(std::ptr::null(), |s| s.as_ptr());
+    // SAFETY: valid NUL-terminated strings or NULL, and a callbacks struct that outlives the call.
+    unsafe {
+        fmu().fmi2Instantiate(
+            ptr(&name),
+            kind,
+            ptr(&guid),
+            ptr(&resources),
+            callbacks.map_or(std::ptr::null(), |c| c as *const _),
+            0,
+            1,
+        )
+    }
+}
+
+/// A live instance, freed on drop.
+pub struct Instance {
+    pub c: fmi2Component,
+    pub name: String,
+}
+
+// SAFETY: an FMU instance may be used from any thread, one call at a time (FMI.md §1.4 item 7).
+unsafe impl Send for Instance {}
+
+impl Drop for Instance {
+    fn drop(&mut self) {
+        // SAFETY: c is live and freed once.
+        unsafe { fmu().fmi2FreeInstance(self.c) };
+    }
+}
+
+impl Instance {
+    /// A co-simulation instance with the correct GUID.
+    pub fn new(name: &str) -> Self {
+        let c = instantiate_raw(
+            Some(name),
+            fmi2Type_fmi2CoSimulation,
+            Some(GUID),
+            None,
+            Some(&callbacks()),
+        );
+        assert!(!c.is_null(), "instantiation failed: {:?}", messages(name));
+        Self {
+            c,
+            name: name.to_string(),
+        }
+    }
+
+    /// Messages logged by this instance.
+    pub fn messages(&self) -> Vec<String> {
+        messages(&self.name)
+    }
+
+    /// The last message, or "".
+    pub fn last_message(&self) -> String {
+        self.messages().pop().unwrap_or_default()
+    }
+
+    pub fn setup(&self, start: f64, stop: Option<f64>) -> fmi2Status {
+        // SAFETY: live instance.
+        unsafe {
+            fmu().fmi2SetupExperiment(
+                self.c,
+                0,
+                0.0,
+                start,
+                i32::from(stop.is_some()),
+                stop.unwrap_or(0.0),
+            )
+        }
+    }
+    pub fn enter(&self) -> fmi2Status {
+        // SAFETY: live instance.
+        unsafe { fmu().fmi2EnterInitializationMode(self.c) }
+    }
+    pub fn exit(&self) -> fmi2Status {
+        // SAFETY: live instance.
+        unsafe { fmu().fmi2ExitInitializationMode(self.c) }
+    }
+    /// Setup, enter and exit initialization: ready to step.
+    pub fn initialize(&self) {
+        assert_eq!(self.setup(0.0, None), fmi2Status_fmi2OK);
+        assert_eq!(self.enter(), fmi2Status_fmi2OK);
+        assert_eq!(self.exit(), fmi2Status_fmi2OK, "{:?}", self.messages());
+    }
+    pub fn do_step(&self, t: f64, h: f64) -> fmi2Status {
+        // SAFETY: live instance.
+        unsafe { fmu().fmi2DoStep(self.c, t, h, 1) }
+    }
+    pub fn terminate(&self) -> fmi2Status {
+        // SAFETY: live instance.
+        unsafe { fmu().fmi2Terminate(self.c) }
+    }
+    pub fn reset(&self) -> fmi2Status {
+        // SAFETY: live instance.
+        unsafe { fmu().fmi2Reset(self.c) }
+    }
+    pub fn set_real(&self, vr: u32, value: f64) -> fmi2Status {
+        // SAFETY: one value reference and one value.
+        unsafe { fmu().fmi2SetReal(self.c, &vr, 1, &value) }
+    }
+    pub fn set_integer(&self, vr: u32, value: i32) -> fmi2Status {
+        // SAFETY: one value reference and one value.
+        unsafe { fmu().fmi2SetInteger(self.c, &vr, 1, &value) }
+    }
+    pub fn get_real(&self, vr: u32) -> (fmi2Status, f64) {
+        let mut value = f64::NAN;
+        // SAFETY: one value reference and one writable value.
+        let status = unsafe { fmu().fmi2GetReal(self.c, &vr, 1, &mut value) };
+        (status, value)
+    }
+    pub fn get_reals(&self, vrs: &[u32]) -> Vec<f64> {
+        let mut values = vec![f64::NAN; vrs.len()];
+        // SAFETY: vrs.len() references and writable values.
+        let status =
+            unsafe { fmu().fmi2GetReal(self.c, vrs.as_ptr(), vrs.len(), values.as_mut_ptr()) };
+        assert_eq!(status, fmi2Status_fmi2OK, "{:?}", self.messages());
+        values
+    }
+    pub fn get_integer(&self, vr: u32) -> (fmi2Status, i32) {
+        let mut value = -1;
+        // SAFETY: one value reference and one writable value.
+        let status = unsafe { fmu().fmi2GetInteger(self.c, &vr, 1, &mut value) };
+        (status, value)
+    }
+    /// fmi2GetFMUstate into a new state.
+    pub fn get_state(&self) -> fmi2FMUstate {
+        let mut state: fmi2FMUstate = std::ptr::null_mut();
+        // SAFETY: writable state pointer.
+        let status = unsafe { fmu().fmi2GetFMUstate(self.c, &mut state) };
+        assert_eq!(status, fmi2Status_fmi2OK);
+        state
+    }
+    pub fn set_state(&self, state: fmi2FMUstate) -> fmi2Status {
+        // SAFETY: a state of this FMU.
+        unsafe { fmu().fmi2SetFMUstate(self.c, state) }
+    }
+    pub fn free_state(&self, mut state: fmi2FMUstate) {
+        // SAFETY: a state of this FMU, freed once.
+        let status = unsafe { fmu().fmi2FreeFMUstate(self.c, &mut state) };
+        assert_eq!(status, fmi2Status_fmi2OK);
+        assert!(state.is_null());
+    }
+    pub fn serialize(&self, state: fmi2FMUstate) -> Vec<u8> {
+        let mut size = 0usize;
+        // SAFETY: a state of this FMU; writable size.
+        let status = unsafe { fmu().fmi2SerializedFMUstateSize(self.c, state, &mut size) };
+        assert_eq!(status, fmi2Status_fmi2OK);
+        let mut bytes = vec![0u8; size];
+        // SAFETY: `size` writable bytes.
+        let status =
+            unsafe { fmu().fmi2SerializeFMUstate(self.c, state, bytes.as_mut_ptr().cast(), size) };
+        assert_eq!(status, fmi2Status_fmi2OK);
+        bytes
+    }
+    pub fn deserialize(&self, bytes: &[u8]) -> (fmi2Status, fmi2FMUstate) {
+        let mut state: fmi2FMUstate = std::ptr::null_mut();
+        // SAFETY: `bytes.len()` readable bytes; writable state pointer.
+        let status = unsafe {
+            fmu().fmi2DeSerializeFMUstate(self.c, bytes.as_ptr().cast(), bytes.len(), &mut state)
+        };
+        (status, state)
+    }
+}
+
+/// Value reference of a variable by name.
+pub fn vr(name: &str) -> u32 {
+    flexible_slider_crank::fmi::variables::VARIABLES
+        .iter()
+        .find(|v| v.name == name)
+        .map(|v| v.vr as u32)
+        .unwrap_or_else(|| panic!("no variable {name}"))
+}
+
+/// An opaque non-NULL pointer for arguments that must not be dereferenced.
+pub fn dangling() -> *mut c_void {
+    std::ptr::NonNull::<u8>::dangling().as_ptr().cast()
+}
