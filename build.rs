@@ -171,7 +171,6 @@ fn render() -> String {
             Causality::CalculatedParameter => "calculatedParameter",
             Causality::Input => "input",
             Causality::Output => "output",
-            Causality::Independent => "independent",
         };
         let variability = match v.variability {
             Variability::Fixed => "fixed",

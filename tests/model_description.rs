@@ -24,5 +24,5 @@ fn committed_snapshot_is_current() {
 fn guid_is_the_one_in_the_xml() {
     assert!(GUID.starts_with('{') && GUID.ends_with('}') && GUID.len() == 38);
     assert!(MODEL_DESCRIPTION.contains(&format!("guid=\"{GUID}\"")));
-    assert_eq!(MODEL_DESCRIPTION.matches("<ScalarVariable ").count(), 55);
+    assert_eq!(MODEL_DESCRIPTION.matches("<ScalarVariable ").count(), 54);
 }

@@ -252,7 +252,6 @@ impl Instance {
             }
             let p = &self.parameters;
             *value = match v.vr {
-                Vr::Time => self.time,
                 Vr::JointContactStiffness => hertz_stiffness(
                     p.bearing_radius(),
                     p.journal_radius,

@@ -15,8 +15,6 @@ pub enum Causality {
     Input,
     /// Output.
     Output,
-    /// The independent variable (time).
-    Independent,
 }
 
 /// FMI variability.
@@ -167,8 +165,7 @@ pub const LOG_CATEGORIES: &[(&str, &str)] = &[
 #[repr(u32)]
 #[allow(missing_docs)]
 pub enum Vr {
-    Time = 0,
-    RodFormulation,
+    RodFormulation = 0,
     RodNElements,
     RodNModes,
     RodLength,
@@ -336,20 +333,11 @@ const fn integer(
 const SPEED: f64 = 5000.0 * core::f64::consts::TAU / 60.0;
 
 /// Every variable, in value-reference order. Defaults are MODEL.md benchmark B.
+///
+/// There is no `time` variable: FMI 2.0 makes the independent variable optional, and FMIL (used by
+/// the FMU Compliance Checker and libcosim) reports an independent variable without `start` as a
+/// parse error although the standard forbids `start` there.
 pub const VARIABLES: &[Variable] = &[
-    Variable {
-        vr: Vr::Time,
-        name: "time",
-        causality: Causality::Independent,
-        variability: Variability::Continuous,
-        kind: Kind::Real {
-            start: None,
-            min: f64::NEG_INFINITY,
-            max: f64::INFINITY,
-            unit: "s",
-        },
-        description: "Simulation time",
-    },
     enumeration(
         Vr::RodFormulation,
         "rod.formulation",
