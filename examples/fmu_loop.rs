@@ -7,18 +7,31 @@
 use std::error::Error;
 use std::time::Instant;
 
+use flexible_slider_crank::fmi::variables::VARIABLES;
 use fmi::fmi2::import::Fmi2Import;
 use fmi::fmi2::instance::{CoSimulation, Common};
-use flexible_slider_crank::fmi::variables::VARIABLES;
 
 fn vr(name: &str) -> Result<u32, Box<dyn Error>> {
-    VARIABLES.iter().find(|v| v.name == name).map(|v| v.vr as u32).ok_or_else(|| name.into())
+    VARIABLES
+        .iter()
+        .find(|v| v.name == name)
+        .map(|v| v.vr as u32)
+        .ok_or_else(|| name.into())
 }
 
-fn run(import: &Fmi2Import, formulation: i32, joint: i32, modes: i32) -> Result<f64, Box<dyn Error>> {
+fn run(
+    import: &Fmi2Import,
+    formulation: i32,
+    joint: i32,
+    modes: i32,
+) -> Result<f64, Box<dyn Error>> {
     let start = Instant::now();
     let mut inst = import.instantiate_cs("bench", false, false)?;
-    let vrs = [vr("rod.formulation")?, vr("joint.model")?, vr("rod.nModes")?];
+    let vrs = [
+        vr("rod.formulation")?,
+        vr("joint.model")?,
+        vr("rod.nModes")?,
+    ];
     inst.set_integer(&vrs, &[formulation, joint, modes])?;
     inst.setup_experiment(None, 0.0, Some(0.024))?;
     inst.enter_initialization_mode()?;
@@ -57,7 +70,11 @@ fn main() -> Result<(), Box<dyn Error>> {
         }
         let full = times[1];
         for ((name, _, _), w) in cases.iter().zip(&times) {
-            println!("| {name} | {joint_name} | {w:.3} | {:.4} | {:.2} |", 0.024 / w, full / w);
+            println!(
+                "| {name} | {joint_name} | {w:.3} | {:.4} | {:.2} |",
+                0.024 / w,
+                full / w
+            );
         }
     }
     Ok(())
