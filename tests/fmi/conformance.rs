@@ -7,7 +7,8 @@ use flexible_slider_crank::fmi::state::{Call, State};
 use fmi_sys::fmi2::*;
 
 use crate::harness::{
-    Instance, callbacks, dangling, fmu, instantiate_raw, library_path, messages, vr,
+    Instance, callbacks, dangling, fmu, instantiate_raw, instantiate_with_logging, library_path,
+    messages, vr,
 };
 
 const OK: fmi2Status = fmi2Status_fmi2OK;
@@ -294,6 +295,72 @@ fn percent_and_hash_arrive_intact() {
     assert!(c.is_null());
     let m = messages("pct").pop().unwrap_or_default();
     assert!(m.contains("got \"%s%d%n ##r3##\""), "{m}");
+}
+
+/// With loggingOn = false no OK message is sent, but errors always are; fmi2SetDebugLogging turns
+/// messages on, and an unknown category is an error naming it.
+#[test]
+fn logging_switch_and_categories() {
+    let c = instantiate_with_logging(
+        Some("quiet"),
+        fmi2Type_fmi2CoSimulation,
+        Some(GUID),
+        None,
+        Some(&callbacks()),
+        false,
+    );
+    assert!(!c.is_null());
+    let inst = Instance {
+        c,
+        name: "quiet".into(),
+    };
+    inst.initialize();
+    assert!(inst.messages().is_empty(), "{:?}", inst.messages());
+    let category = std::ffi::CString::new("logEvents").unwrap();
+    let categories = [category.as_ptr()];
+    // SAFETY: one valid category name.
+    assert_eq!(
+        unsafe { fmu().fmi2SetDebugLogging(inst.c, 1, 1, categories.as_ptr()) },
+        OK
+    );
+    assert_eq!(inst.reset(), OK);
+    inst.initialize();
+    assert!(
+        inst.messages().iter().any(|m| m.starts_with("model built")),
+        "{:?}",
+        inst.messages()
+    );
+    let unknown = std::ffi::CString::new("logNoSuchThing").unwrap();
+    let categories = [unknown.as_ptr()];
+    // SAFETY: one valid (unknown) category name.
+    assert_eq!(
+        unsafe { fmu().fmi2SetDebugLogging(inst.c, 1, 1, categories.as_ptr()) },
+        ERROR
+    );
+    assert!(
+        inst.last_message()
+            .contains("unknown log category \"logNoSuchThing\""),
+        "{:?}",
+        inst.messages()
+    );
+
+    let c = instantiate_with_logging(
+        Some("quiet-error"),
+        fmi2Type_fmi2CoSimulation,
+        Some(GUID),
+        None,
+        Some(&callbacks()),
+        false,
+    );
+    let inst = Instance {
+        c,
+        name: "quiet-error".into(),
+    };
+    assert_eq!(inst.do_step(0.0, 1e-4), ERROR);
+    assert!(
+        inst.last_message().contains("Illegal call sequence"),
+        "errors are always logged"
+    );
 }
 
 /// Reset restores every start value; outputs are valid right after initialisation.

@@ -83,13 +83,25 @@ pub fn callbacks() -> fmi2CallbackFunctions {
     }
 }
 
-/// Raw fmi2Instantiate with every argument given.
+/// Raw fmi2Instantiate with every argument given (debug logging on).
 pub fn instantiate_raw(
     name: Option<&str>,
     kind: fmi2Type,
     guid: Option<&str>,
     resources: Option<&str>,
     callbacks: Option<&fmi2CallbackFunctions>,
+) -> fmi2Component {
+    instantiate_with_logging(name, kind, guid, resources, callbacks, true)
+}
+
+/// Raw fmi2Instantiate with the loggingOn switch given.
+pub fn instantiate_with_logging(
+    name: Option<&str>,
+    kind: fmi2Type,
+    guid: Option<&str>,
+    resources: Option<&str>,
+    callbacks: Option<&fmi2CallbackFunctions>,
+    logging_on: bool,
 ) -> fmi2Component {
     let name = name.map(|s| CString::new(s).unwrap());
     let guid = guid.map(|s| CString::new(s).unwrap());
@@ -104,7 +116,7 @@ pub fn instantiate_raw(
             ptr(&resources),
             callbacks.map_or(std::ptr::null(), |c| c as *const _),
             0,
-            1,
+            i32::from(logging_on),
         )
     }
 }
