@@ -319,10 +319,8 @@ fn logging_switch_and_categories() {
     let category = std::ffi::CString::new("logEvents").unwrap();
     let categories = [category.as_ptr()];
     // SAFETY: one valid category name.
-    assert_eq!(
-        unsafe { fmu().fmi2SetDebugLogging(inst.c, 1, 1, categories.as_ptr()) },
-        OK
-    );
+    let status = unsafe { fmu().fmi2SetDebugLogging(inst.c, 1, 1, categories.as_ptr()) };
+    assert_eq!(status, OK);
     assert_eq!(inst.reset(), OK);
     inst.initialize();
     assert!(
@@ -333,10 +331,8 @@ fn logging_switch_and_categories() {
     let unknown = std::ffi::CString::new("logNoSuchThing").unwrap();
     let categories = [unknown.as_ptr()];
     // SAFETY: one valid (unknown) category name.
-    assert_eq!(
-        unsafe { fmu().fmi2SetDebugLogging(inst.c, 1, 1, categories.as_ptr()) },
-        ERROR
-    );
+    let status = unsafe { fmu().fmi2SetDebugLogging(inst.c, 1, 1, categories.as_ptr()) };
+    assert_eq!(status, ERROR);
     assert!(
         inst.last_message()
             .contains("unknown log category \"logNoSuchThing\""),
