@@ -61,7 +61,7 @@ pub unsafe fn slice<'a, T>(
     }
 }
 
-/// Mutable version of [`slice`].
+/// Mutable version of [`slice()`].
 ///
 /// # Safety
 /// A non-NULL `ptr` must point to `n` writable values for the duration of the call.
