@@ -143,29 +143,32 @@ impl Rod {
         ElementVector::from_column_slice(&e[4 * j..4 * j + 8])
     }
 
-    /// Internal force (elastic + strain-rate damping) Q(e, ė), written to `out`.
-    pub fn internal_force(&self, e: &[f64], e_dot: &[f64], out: &mut [f64]) {
+    /// Assembles element vectors: out = Σⱼ (element j's vector on its slice 4j .. 4j + 8).
+    fn assemble(&self, out: &mut [f64], element_vector: impl Fn(usize) -> ElementVector) {
         out.fill(0.0);
         for j in 0..self.n_elements {
-            let q = self.element.internal_force(
-                &Self::element_coordinates(e, j),
-                &Self::element_coordinates(e_dot, j),
-            );
+            let q = element_vector(j);
             for (o, v) in out[4 * j..4 * j + 8].iter_mut().zip(q.iter()) {
                 *o += v;
             }
         }
     }
 
+    /// Internal force (elastic + strain-rate damping) Q(e, ė), written to `out`.
+    pub fn internal_force(&self, e: &[f64], e_dot: &[f64], out: &mut [f64]) {
+        self.assemble(out, |j| {
+            self.element.internal_force(
+                &Self::element_coordinates(e, j),
+                &Self::element_coordinates(e_dot, j),
+            )
+        });
+    }
+
     /// Elastic force Q_e(e) = ∂U/∂e, written to `out`.
     pub fn elastic_force(&self, e: &[f64], out: &mut [f64]) {
-        out.fill(0.0);
-        for j in 0..self.n_elements {
-            let q = self.element.elastic_force(&Self::element_coordinates(e, j));
-            for (o, v) in out[4 * j..4 * j + 8].iter_mut().zip(q.iter()) {
-                *o += v;
-            }
-        }
+        self.assemble(out, |j| {
+            self.element.elastic_force(&Self::element_coordinates(e, j))
+        });
     }
 
     /// Tangent stiffness ∂Q_e/∂e, written to the square matrix `out`.
@@ -220,11 +223,7 @@ impl Rod {
     pub fn gravity_force(&self, g: Vector2<f64>) -> Vec<f64> {
         let mut out = vec![0.0; self.n_coordinates()];
         let q = self.element.gravity_force(g);
-        for j in 0..self.n_elements {
-            for (o, v) in out[4 * j..4 * j + 8].iter_mut().zip(q.iter()) {
-                *o += v;
-            }
-        }
+        self.assemble(&mut out, |_| q);
         out
     }
 

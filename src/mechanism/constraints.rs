@@ -16,8 +16,9 @@
 
 use nalgebra::{SMatrix, SVector, Vector2};
 
-/// Baumgarte gains α = β \[1/s\]: critically damped drift correction with a time constant of 10 ms,
-/// slower than nothing the integrator resolves and far below the stability limit of its steps.
+/// Baumgarte gains α = β \[1/s\]: critically damped drift correction with a time constant of 10 ms
+/// (about one crank revolution at 5000 rpm). The added eigenvalues (≈ −100 1/s) lie far inside the
+/// stability region of the explicit steps (≤ 1e-4 s), so they cost no step-size reduction.
 pub const BAUMGARTE: f64 = 100.0;
 
 /// Row-major constraint Jacobian on s (at most 6 rows).

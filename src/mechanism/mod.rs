@@ -135,7 +135,7 @@ pub struct SliderCrank {
 }
 
 impl SliderCrank {
-    /// Builds the mechanism; the parameters must have been validated.
+    /// Builds the mechanism after validating the parameters.
     pub fn new(p: &Parameters) -> Result<Self, ModelError> {
         p.validate()?;
         let rod = RodBody::from_parameters(p)?;

@@ -141,32 +141,28 @@ impl RodBody {
         }
     }
 
-    /// Direction whose rotation rate is the journal's rotation rate at B: the end slope r_x of the
-    /// ANCF rod, or the chord r_B − r_A of the rigid rod; with its rate.
-    fn end_direction(&self, p: &[f64], p_dot: &[f64]) -> (Vector2<f64>, Vector2<f64>) {
-        let b = self.end_offset();
+    /// Direction whose rotation is the journal's: the end slope r_x of the ANCF rod, or the chord
+    /// r_B − r_A of the rigid rod. It is linear in the coordinates, so applied to ṗ it gives the rate.
+    fn end_direction(&self, v: &[f64]) -> Vector2<f64> {
         match self {
-            Self::Rigid { .. } => (
-                Vector2::new(p[2] - p[0], p[3] - p[1]),
-                Vector2::new(p_dot[2] - p_dot[0], p_dot[3] - p_dot[1]),
-            ),
-            Self::Flexible(_) => (
-                Vector2::new(p[b + 2], p[b + 3]),
-                Vector2::new(p_dot[b + 2], p_dot[b + 3]),
-            ),
+            Self::Rigid { .. } => Vector2::new(v[2] - v[0], v[3] - v[1]),
+            Self::Flexible(_) => {
+                let b = self.end_offset();
+                Vector2::new(v[b + 2], v[b + 3])
+            }
         }
     }
 
     /// Angular velocity of the rod end B, ω = (d × ḋ)/|d|² (MODEL.md §1.1).
     pub fn end_angular_velocity(&self, p: &[f64], p_dot: &[f64]) -> f64 {
-        let (d, d_dot) = self.end_direction(p, p_dot);
-        cross(d, d_dot) / d.norm_squared()
+        let d = self.end_direction(p);
+        cross(d, self.end_direction(p_dot)) / d.norm_squared()
     }
 
     /// Adds the generalised force of a moment `m` acting at B: m (∂φ/∂p)ᵀ with
     /// ∂φ/∂d = ẑ × d / |d|² (MODEL.md §1.6).
     pub fn add_end_moment(&self, p: &[f64], m: f64, out: &mut [f64]) {
-        let (d, _) = self.end_direction(p, p);
+        let d = self.end_direction(p);
         let g = m / d.norm_squared() * Vector2::new(-d.y, d.x);
         match self {
             Self::Rigid { .. } => {
