@@ -7,7 +7,7 @@ use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use faer::Mat;
 use flexible_slider_crank::ancf::element::ElementVector;
 use flexible_slider_crank::ancf::{Rod, RodProperties};
-use flexible_slider_crank::reduction::RodModel;
+use flexible_slider_crank::reduction::{Boundary, RodModel};
 use nalgebra::Vector2;
 
 /// A deformed (bent and stretched) configuration: straight rod plus a smooth transverse bow.
@@ -64,7 +64,10 @@ fn reduced(c: &mut Criterion) {
     let e = deformed(&full);
     let mut models = vec![("full".to_string(), RodModel::full(rod(8)))];
     for m in [2, 4, 8] {
-        models.push((format!("nModes={m}"), RodModel::craig_bampton(rod(8), m)));
+        models.push((
+            format!("nModes={m}"),
+            RodModel::craig_bampton(rod(8), m, Boundary::PositionsAndSlopes),
+        ));
     }
     for (name, model) in models {
         let mut model = match model {

@@ -6,8 +6,8 @@
 use crate::ancf::RodProperties;
 use crate::ancf::rod::MAX_ELEMENTS;
 use crate::error::{ModelError, require_non_negative, require_positive};
-use crate::integrator::Tolerances;
-use crate::reduction::max_modes;
+use crate::integrator::{Method, Tolerances};
+use crate::reduction::{Boundary, check_mode_count};
 
 /// How the connecting rod is modelled.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -47,8 +47,10 @@ pub struct Parameters {
     pub rod_formulation: RodFormulation,
     /// Number of ANCF elements (ancf and craigBampton).
     pub n_elements: usize,
-    /// Number of Craig–Bampton mode shapes, 0 ..= 2(n_elements − 1).
+    /// Number of Craig–Bampton mode shapes, 0 ..= [`crate::reduction::max_modes`].
     pub n_modes: usize,
+    /// Craig–Bampton interface (the rod coordinates kept physical).
+    pub boundary: Boundary,
     /// Rod material and section.
     pub rod: RodProperties,
     /// Crank length r_c (pivot to pin) \[m\].
@@ -91,6 +93,8 @@ pub struct Parameters {
     pub drive_mode: DriveMode,
     /// Gravitational acceleration along −y \[m/s²\].
     pub gravity: f64,
+    /// Time-integration method.
+    pub method: Method,
     /// Relative tolerance of the error-controlled integrator.
     pub relative_tolerance: f64,
     /// Largest internal step \[s\].
@@ -106,6 +110,7 @@ impl Default for Parameters {
             rod_formulation: RodFormulation::CraigBampton,
             n_elements: 8,
             n_modes: 4,
+            boundary: Boundary::Pins,
             rod: RodProperties::benchmark_b(),
             crank_length: 0.05,
             crank_mass: 0.30,
@@ -127,6 +132,7 @@ impl Default for Parameters {
             switch_eccentricity: 0.95,
             drive_mode: DriveMode::Speed,
             gravity: 0.0,
+            method: Method::Esdirk,
             relative_tolerance: 1e-6,
             max_step_size: 1e-4,
         }
@@ -188,13 +194,13 @@ impl Parameters {
         self.crank_inertia + self.crank_mass * (0.5 * self.crank_length).powi(2)
     }
 
-    /// Integrator tolerances: rtol as given, atol = rtol × 1e-3 (states are in m, m/s, rad, J:
-    /// 1e-3 of rtol in those units is below every physically meaningful resolution here), the
-    /// maximum step, and a 1e-14 s floor.
+    /// Integrator tolerances: rtol as given for both the relative and the absolute part (the
+    /// absolute one in units of each state's scale, [`crate::mechanism::SliderCrank::error_scales`]),
+    /// the maximum step, and a 1e-14 s floor.
     pub fn tolerances(&self) -> Tolerances {
         Tolerances {
             relative: self.relative_tolerance,
-            absolute: self.relative_tolerance * 1e-3,
+            absolute: self.relative_tolerance,
             max_step: self.max_step_size,
             min_step: 1e-14,
         }
@@ -212,17 +218,7 @@ impl Parameters {
             ));
         }
         if self.rod_formulation == RodFormulation::CraigBampton {
-            let max = max_modes(self.n_elements);
-            if self.n_modes > max {
-                return Err(ModelError::invalid(
-                    "rod.nModes",
-                    self.n_modes as f64,
-                    format!(
-                        "[0, {max}] (= 2 (rod.nElements - 1) with rod.nElements = {})",
-                        self.n_elements
-                    ),
-                ));
-            }
+            check_mode_count(self.n_elements, self.n_modes, self.boundary)?;
         }
         self.rod.validate()?;
         require_positive("crank.length", self.crank_length)?;

@@ -2,7 +2,8 @@
 //! outputs out. This is what the FMU, the examples and the benchmarks drive.
 
 use crate::error::ModelError;
-use crate::integrator::{DormandPrince, Stats};
+use crate::integrator::dense::interpolate;
+use crate::integrator::{Integrator, IntegratorState, Stats};
 use crate::mechanism::{ContactState, Energies, Inputs, SliderCrank};
 use crate::params::{DriveMode, Parameters};
 
@@ -68,32 +69,48 @@ pub struct Outputs {
 /// A complete, restorable state of a [`Simulation`] (parameters excepted).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Snapshot {
-    /// Time \[s\].
+    /// Communication time \[s\].
     pub time: f64,
-    /// State vector.
+    /// State at `time`.
     pub state: Vec<f64>,
-    /// Integrator's proposed next step \[s\].
-    pub proposed_step: f64,
-    /// Integrator statistics.
-    pub stats: Stats,
-    /// Contact state.
+    /// The last accepted step: start time, state and contact state there.
+    pub step_start: (f64, Vec<f64>, ContactState),
+    /// The end of the last accepted step (the integrator's point, ≥ `time`): time and state.
+    pub step_end: (f64, Vec<f64>),
+    /// Integrator state (step size, f at the step end, Jacobian, statistics).
+    pub integrator: IntegratorState,
+    /// Contact state at the step end.
     pub contact: ContactState,
     /// Inputs.
     pub inputs: Inputs,
     /// Whether a velocity projection is pending (speed input changed).
     pub speed_changed: bool,
+    /// Whether the step sequence restarts at `time` (an input changed).
+    pub restart: bool,
 }
 
 /// The slider-crank simulation.
+///
+/// The integrator runs on its own step sequence: `advance_to(t)` takes accepted steps until one
+/// ends at or past t and reads the state at t from the dense output of that step, so the steps
+/// (and the results) do not depend on how a master cuts time into communication intervals. The
+/// sequence restarts exactly at the current time only when the model is changed from outside:
+/// an input changes value, or a snapshot is restored.
 #[derive(Clone, Debug)]
 pub struct Simulation {
     parameters: Parameters,
     mechanism: SliderCrank,
-    integrator: DormandPrince,
+    integrator: Integrator,
     time: f64,
     state: Vec<f64>,
+    step_start: f64,
+    y_start: Vec<f64>,
+    contact_start: ContactState,
+    step_end: f64,
+    y_end: Vec<f64>,
     scratch: Vec<f64>,
     speed_changed: bool,
+    restart: bool,
 }
 
 impl Simulation {
@@ -104,15 +121,27 @@ impl Simulation {
             parameters.crank_initial_angle,
             parameters.crank_initial_speed,
         );
-        let integrator = DormandPrince::new(state.len(), parameters.tolerances())?;
+        let integrator = Integrator::new(
+            parameters.method,
+            state.len(),
+            mechanism.n_coordinates(),
+            parameters.tolerances(),
+            mechanism.error_scales(),
+        )?;
         Ok(Self {
             scratch: vec![0.0; state.len()],
+            contact_start: mechanism.contact_state(),
             parameters,
             mechanism,
             integrator,
             time: 0.0,
+            y_start: state.clone(),
+            y_end: state.clone(),
             state,
+            step_start: 0.0,
+            step_end: 0.0,
             speed_changed: false,
+            restart: false,
         })
     }
 
@@ -127,9 +156,15 @@ impl Simulation {
     }
 
     /// Sets the clock (e.g. to the FMI start time or a communication point) without changing the
-    /// state; the time is rounded to the clock grid.
+    /// state; the time is rounded to the clock grid. Before the first step the integrator's clock
+    /// moves with it.
     pub fn set_time(&mut self, time: f64) {
-        self.time = on_clock_grid(time);
+        let time = on_clock_grid(time);
+        if self.step_end == self.time {
+            self.step_start = time;
+            self.step_end = time;
+        }
+        self.time = time;
     }
 
     /// The mechanism.
@@ -137,7 +172,7 @@ impl Simulation {
         &self.mechanism
     }
 
-    /// The state vector [q, q̇, θ_d, W_drive, W_joint, W_external].
+    /// The state vector [q, q̇, θ_d, W_drive, W_joint, W_external] at the current time.
     pub fn state(&self) -> &[f64] {
         &self.state
     }
@@ -153,17 +188,24 @@ impl Simulation {
         if speed != self.mechanism.inputs.drive_speed {
             self.mechanism.inputs.drive_speed = speed;
             self.speed_changed = self.parameters.drive_mode == DriveMode::Speed;
+            self.restart = true;
         }
     }
 
     /// Crank torque \[N m\] (torque drive).
     pub fn set_drive_torque(&mut self, torque: f64) {
-        self.mechanism.inputs.drive_torque = torque;
+        if torque != self.mechanism.inputs.drive_torque {
+            self.mechanism.inputs.drive_torque = torque;
+            self.restart = true;
+        }
     }
 
     /// External force on the slider along the guide \[N\].
     pub fn set_slider_force(&mut self, force: f64) {
-        self.mechanism.inputs.slider_force = force;
+        if force != self.mechanism.inputs.slider_force {
+            self.mechanism.inputs.slider_force = force;
+            self.restart = true;
+        }
     }
 
     /// Integrator statistics since the start.
@@ -171,8 +213,41 @@ impl Simulation {
         self.integrator.stats()
     }
 
+    /// Contact state at the current time: the one at the step end, unless the current time lies
+    /// before the end of the step and the journal is out of contact there (or was already in
+    /// contact at the step start, with that event's impact velocity).
+    fn contact_now(&self) -> ContactState {
+        if self.time >= self.step_end {
+            return self.mechanism.contact_state();
+        }
+        let in_contact = self.mechanism.penetration(&self.state) > 0.0;
+        let latched = if self.contact_start.in_contact {
+            self.contact_start
+        } else {
+            self.mechanism.contact_state()
+        };
+        ContactState {
+            in_contact,
+            impact_velocity: latched.impact_velocity,
+        }
+    }
+
+    /// Restarts the step sequence at the current time from the current state.
+    fn restart_here(&mut self) {
+        if self.step_end > self.time {
+            let contact = self.contact_now();
+            self.mechanism.set_contact_state(contact);
+            self.y_end.copy_from_slice(&self.state);
+            self.step_end = self.time;
+        }
+        self.step_start = self.step_end;
+        self.y_start.copy_from_slice(&self.y_end);
+        self.contact_start = self.mechanism.contact_state();
+        self.integrator.restart();
+    }
+
     /// Integrates to `t_end` (rounded to the clock grid). On failure the simulation stays at the
-    /// last accepted time ([`Simulation::time`]) and the error says why.
+    /// last accepted point ([`Simulation::time`]) and the error says why.
     pub fn advance_to(&mut self, t_end: f64) -> Result<(), ModelError> {
         let t_end = on_clock_grid(t_end);
         if !(t_end.is_finite() && t_end >= self.time) {
@@ -181,23 +256,72 @@ impl Simulation {
                 self.time
             )));
         }
+        if self.restart {
+            self.restart_here();
+            self.restart = false;
+        }
         if self.speed_changed {
-            let work = self.mechanism.project_velocities(&mut self.state)?;
+            let work = self.mechanism.project_velocities(&mut self.y_end)?;
             let n = self.mechanism.n_coordinates();
-            self.state[2 * n + 1] += work;
+            self.y_end[2 * n + 1] += work;
+            self.state.copy_from_slice(&self.y_end);
+            self.y_start.copy_from_slice(&self.y_end);
             self.speed_changed = false;
         }
-        self.integrator
-            .advance(&mut self.mechanism, &mut self.time, &mut self.state, t_end)
+        while self.step_end < t_end {
+            self.step_start = self.step_end;
+            self.y_start.copy_from_slice(&self.y_end);
+            self.contact_start = self.mechanism.contact_state();
+            if let Err(e) = self.integrator.step(
+                &mut self.mechanism,
+                &mut self.step_end,
+                &mut self.y_end,
+                None,
+            ) {
+                self.time = self.step_end;
+                self.state.copy_from_slice(&self.y_end);
+                return Err(e);
+            }
+        }
+        self.time = t_end;
+        if t_end == self.step_end {
+            self.state.copy_from_slice(&self.y_end);
+        } else {
+            let h = self.step_end - self.step_start;
+            let (f0, f1) = self.integrator.derivatives();
+            interpolate(
+                self.mechanism.n_coordinates(),
+                h,
+                &self.y_start,
+                f0,
+                &self.y_end,
+                f1,
+                (t_end - self.step_start) / h,
+                &mut self.state,
+            );
+        }
+        Ok(())
     }
 
     /// Energies of the current state.
     pub fn energies(&mut self) -> Energies {
-        self.mechanism.energies(&self.state)
+        let contact = self.mechanism.contact_state();
+        self.mechanism.set_contact_state(self.contact_now());
+        let energies = self.mechanism.energies(&self.state);
+        self.mechanism.set_contact_state(contact);
+        energies
     }
 
     /// Outputs at the current time (one right-hand-side evaluation, no allocation).
     pub fn outputs(&mut self) -> Result<Outputs, ModelError> {
+        let contact = self.mechanism.contact_state();
+        self.mechanism.set_contact_state(self.contact_now());
+        let outputs = self.outputs_here();
+        self.mechanism.set_contact_state(contact);
+        outputs
+    }
+
+    fn outputs_here(&mut self) -> Result<Outputs, ModelError> {
         let y = &self.state;
         let ev = *self.mechanism.evaluate(y, &mut self.scratch)?;
         let n = self.mechanism.n_coordinates();
@@ -233,30 +357,41 @@ impl Simulation {
         Snapshot {
             time: self.time,
             state: self.state.clone(),
-            proposed_step: self.integrator.proposed_step(),
-            stats: self.integrator.stats(),
+            step_start: (self.step_start, self.y_start.clone(), self.contact_start),
+            step_end: (self.step_end, self.y_end.clone()),
+            integrator: self.integrator.state(),
             contact: self.mechanism.contact_state(),
             inputs: self.mechanism.inputs,
             speed_changed: self.speed_changed,
+            restart: self.restart,
         }
     }
 
     /// Restores a snapshot taken from a simulation with the same parameters.
     pub fn restore(&mut self, snapshot: &Snapshot) -> Result<(), ModelError> {
-        if snapshot.state.len() != self.state.len() {
+        let n = self.state.len();
+        let lengths = [
+            snapshot.state.len(),
+            snapshot.step_start.1.len(),
+            snapshot.step_end.1.len(),
+        ];
+        if lengths.iter().any(|&l| l != n) {
             return Err(ModelError::Numerical(format!(
-                "snapshot has {} states, this simulation {}",
-                snapshot.state.len(),
-                self.state.len()
+                "snapshot has {lengths:?} states, this simulation {n}"
             )));
         }
+        self.integrator.set_state(&snapshot.integrator)?;
         self.time = snapshot.time;
         self.state.copy_from_slice(&snapshot.state);
-        self.integrator.set_proposed_step(snapshot.proposed_step);
-        self.integrator.set_stats(snapshot.stats);
+        self.step_start = snapshot.step_start.0;
+        self.y_start.copy_from_slice(&snapshot.step_start.1);
+        self.contact_start = snapshot.step_start.2;
+        self.step_end = snapshot.step_end.0;
+        self.y_end.copy_from_slice(&snapshot.step_end.1);
         self.mechanism.set_contact_state(snapshot.contact);
         self.mechanism.inputs = snapshot.inputs;
         self.speed_changed = snapshot.speed_changed;
+        self.restart = snapshot.restart;
         Ok(())
     }
 }

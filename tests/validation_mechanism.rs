@@ -5,6 +5,7 @@
 // Test code: a failed unwrap is a failed test, with its message.
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
+use flexible_slider_crank::integrator::Method;
 use flexible_slider_crank::params::{BENCHMARK_SPEED, DriveMode, JointModel, RodFormulation};
 use flexible_slider_crank::{Outputs, Parameters, Simulation};
 
@@ -102,6 +103,9 @@ fn energy_balance_holds_for_every_model() {
 
 /// Acceptance 2 (conservation): restitution 1, no friction, free-spinning torque-driven crank with
 /// zero torque: total energy is conserved to 1e-4 over one second (83 revolutions, ~300 impacts).
+/// The model's conservation is checked with the non-dissipative explicit reference method; the
+/// implicit method damps unresolved frequencies by design (its dissipation is measured by
+/// `implicit_dissipation_falls_with_the_tolerance`).
 #[test]
 fn free_spinning_elastic_mechanism_conserves_energy() {
     for rod in [RodFormulation::Rigid, RodFormulation::CraigBampton] {
@@ -112,6 +116,7 @@ fn free_spinning_elastic_mechanism_conserves_energy() {
             drive_mode: DriveMode::Torque,
             restitution: 1.0,
             friction: 0.0,
+            method: Method::DormandPrince,
             relative_tolerance: 1e-8,
             ..Parameters::default()
         };

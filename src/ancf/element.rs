@@ -222,37 +222,62 @@ impl Element {
         }
     }
 
+    /// Generalised force of the stress resultants at the Gauss points:
+    /// Q = Σ w [N ε_eᵀ + M κ_eᵀ], with N = EA(ε + β ε̇) and M = EI(κ + β κ̇) (β = 0: elastic).
+    ///
+    /// Written per node k as Q_k = Σ w [N s'_k t + M (s'_k a + s''_k b)], since ε_e = s' ⊗ t and
+    /// κ_e = f_e/g − f g_e/g² = s' ⊗ a + s'' ⊗ b with a = (r''_y, −r''_x)/g − 2f r'/g² and
+    /// b = (−r'_y, r'_x)/g: the kron form of the module docs without building 8-vectors (this is
+    /// the hot path of every flexible model).
+    fn resultant_force(&self, e: &ElementVector, e_dot: Option<&ElementVector>) -> ElementVector {
+        let Section {
+            ea, ei, damping, ..
+        } = self.section;
+        let mut q = [Vector2::zeros(); 4];
+        for p in &self.axial {
+            let r_x = field(&p.s_x, e);
+            let norm = r_x.norm();
+            let t = r_x / norm;
+            let mut n = ea * (norm - 1.0);
+            if let Some(e_dot) = e_dot {
+                n += ea * damping * t.dot(&field(&p.s_x, e_dot));
+            }
+            let c = p.weight * n;
+            for (k, qk) in q.iter_mut().enumerate() {
+                *qk += (c * p.s_x[k]) * t;
+            }
+        }
+        for p in &self.bending {
+            let r_x = field(&p.s_x, e);
+            let r_xx = field(&p.s_xx, e);
+            let f = cross(r_x, r_xx);
+            let g = r_x.norm_squared();
+            let a = Vector2::new(r_xx.y, -r_xx.x) / g - (2.0 * f / (g * g)) * r_x;
+            let b = Vector2::new(-r_x.y, r_x.x) / g;
+            let mut m = ei * f / g;
+            if let Some(e_dot) = e_dot {
+                let kappa_dot = a.dot(&field(&p.s_x, e_dot)) + b.dot(&field(&p.s_xx, e_dot));
+                m += ei * damping * kappa_dot;
+            }
+            let c = p.weight * m;
+            for (k, qk) in q.iter_mut().enumerate() {
+                *qk += c * (p.s_x[k] * a + p.s_xx[k] * b);
+            }
+        }
+        ElementVector::from_fn(|i, _| q[i / 2][i % 2])
+    }
+
     /// Elastic force Q_e(e) = ∂U/∂e.
     pub fn elastic_force(&self, e: &ElementVector) -> ElementVector {
-        let Section { ea, ei, .. } = self.section;
-        let axial = self.axial.iter().fold(ElementVector::zeros(), |acc, p| {
-            let a = Self::axial_at(p, e);
-            acc + (p.weight * ea * a.eps) * a.eps_e
-        });
-        self.bending.iter().fold(axial, |acc, p| {
-            let b = Self::bending_at(p, e);
-            acc + (p.weight * ei * b.kappa) * b.kappa_e
-        })
+        self.resultant_force(e, None)
     }
 
     /// Internal force: elastic force plus strain-rate damping β(EA ε̇ ε_eᵀ + EI κ̇ κ_eᵀ).
     pub fn internal_force(&self, e: &ElementVector, e_dot: &ElementVector) -> ElementVector {
-        let Section {
-            ea, ei, damping, ..
-        } = self.section;
-        if damping == 0.0 {
+        if self.section.damping == 0.0 {
             return self.elastic_force(e);
         }
-        let axial = self.axial.iter().fold(ElementVector::zeros(), |acc, p| {
-            let a = Self::axial_at(p, e);
-            let n = ea * (a.eps + damping * a.eps_e.dot(e_dot));
-            acc + (p.weight * n) * a.eps_e
-        });
-        self.bending.iter().fold(axial, |acc, p| {
-            let b = Self::bending_at(p, e);
-            let m = ei * (b.kappa + damping * b.kappa_e.dot(e_dot));
-            acc + (p.weight * m) * b.kappa_e
-        })
+        self.resultant_force(e, Some(e_dot))
     }
 
     /// Tangent stiffness K_T = ∂Q_e/∂e (analytic, symmetric).

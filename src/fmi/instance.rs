@@ -7,8 +7,10 @@ use super::logger::Logger;
 use super::snapshot::FmuSnapshot;
 use super::state::State;
 use super::variables::{Causality, ENUMERATIONS, Kind, VARIABLES, Variable, Vr, variable};
+use crate::integrator::Method;
 use crate::joint::hertz_stiffness;
 use crate::params::{DriveMode, JointModel, Parameters, RodFormulation};
+use crate::reduction::Boundary;
 use crate::simulation::{Outputs, Simulation};
 
 /// Tolerance on the communication point: |t − t_expected| ≤ 1e-9 (1 + |t|) (FMI.md §1.6).
@@ -73,6 +75,8 @@ const FORMULATIONS: [RodFormulation; 3] = [
 ];
 const JOINTS: [JointModel; 3] = [JointModel::Ideal, JointModel::Dry, JointModel::Lubricated];
 const DRIVES: [DriveMode; 2] = [DriveMode::Speed, DriveMode::Torque];
+const BOUNDARIES: [Boundary; 2] = [Boundary::Pins, Boundary::PositionsAndSlopes];
+const METHODS: [Method; 2] = [Method::Esdirk, Method::DormandPrince];
 
 impl Instance {
     /// A fresh instance with the start values of the variable table.
@@ -343,6 +347,10 @@ impl Instance {
                     let steps = self.simulation()?.stats().steps;
                     i32::try_from(steps).unwrap_or(i32::MAX)
                 }
+                Vr::SolverEvaluations => {
+                    let evaluations = self.simulation()?.stats().evaluations;
+                    i32::try_from(evaluations).unwrap_or(i32::MAX)
+                }
                 _ => unreachable_type(v)?,
             };
         }
@@ -514,6 +522,8 @@ pub fn integer_parameter(p: &Parameters, vr: Vr) -> Option<i32> {
         Vr::RodFormulation => enum_value(&FORMULATIONS, &p.rod_formulation),
         Vr::JointModel => enum_value(&JOINTS, &p.joint_model),
         Vr::DriveMode => enum_value(&DRIVES, &p.drive_mode),
+        Vr::RodBoundary => enum_value(&BOUNDARIES, &p.boundary),
+        Vr::SolverMethod => enum_value(&METHODS, &p.method),
         Vr::RodNElements => i32::try_from(p.n_elements).unwrap_or(i32::MAX),
         Vr::RodNModes => i32::try_from(p.n_modes).unwrap_or(i32::MAX),
         _ => return None,
@@ -533,6 +543,8 @@ pub fn set_integer_parameter(p: &mut Parameters, vr: Vr, value: i32) -> bool {
         Vr::RodFormulation => item(&FORMULATIONS, value).map(|x| p.rod_formulation = x),
         Vr::JointModel => item(&JOINTS, value).map(|x| p.joint_model = x),
         Vr::DriveMode => item(&DRIVES, value).map(|x| p.drive_mode = x),
+        Vr::RodBoundary => item(&BOUNDARIES, value).map(|x| p.boundary = x),
+        Vr::SolverMethod => item(&METHODS, value).map(|x| p.method = x),
         Vr::RodNElements => count.map(|n| p.n_elements = n),
         Vr::RodNModes => count.map(|n| p.n_modes = n),
         _ => None,

@@ -11,13 +11,15 @@ use super::instance::{
 };
 use super::state::State;
 use super::variables::{Causality, Kind, VARIABLES};
-use crate::integrator::Stats;
+use crate::integrator::{EsdirkState, IntegratorState, Stats};
 use crate::mechanism::{ContactState, Inputs};
 use crate::params::Parameters;
 use crate::simulation::Snapshot;
 
 const MAGIC: &[u8; 4] = b"FSCS";
-const VERSION: u32 = 1;
+const VERSION: u32 = 2;
+/// Largest accepted vector length (states, Jacobian entries) in a state.
+const MAX_LENGTH: usize = 1 << 20;
 const STATES: [State; 6] = [
     State::Instantiated,
     State::InitializationMode,
@@ -76,6 +78,28 @@ impl Writer {
     fn f64(&mut self, v: f64) {
         self.u64(v.to_bits());
     }
+    fn f64s(&mut self, v: &[f64]) {
+        self.u32(v.len() as u32);
+        for x in v {
+            self.f64(*x);
+        }
+    }
+    fn contact(&mut self, c: &ContactState) {
+        self.u8(u8::from(c.in_contact));
+        self.f64(c.impact_velocity);
+    }
+    fn stats(&mut self, s: &Stats) {
+        for x in [
+            s.steps,
+            s.rejected,
+            s.evaluations,
+            s.newton_iterations,
+            s.jacobians,
+            s.factorizations,
+        ] {
+            self.u64(x);
+        }
+    }
 }
 
 struct Reader<'a> {
@@ -111,6 +135,31 @@ impl Reader<'_> {
     }
     fn f64(&mut self) -> Result<f64, FmuError> {
         Ok(f64::from_bits(self.u64()?))
+    }
+    fn f64s(&mut self) -> Result<Vec<f64>, FmuError> {
+        let n = self.u32()? as usize;
+        if n > MAX_LENGTH {
+            return Err(FmuError::Invalid(format!(
+                "FMU state rejected: a vector of {n} values"
+            )));
+        }
+        (0..n).map(|_| self.f64()).collect()
+    }
+    fn contact(&mut self) -> Result<ContactState, FmuError> {
+        Ok(ContactState {
+            in_contact: self.flag()?,
+            impact_velocity: self.f64()?,
+        })
+    }
+    fn stats(&mut self) -> Result<Stats, FmuError> {
+        Ok(Stats {
+            steps: self.u64()?,
+            rejected: self.u64()?,
+            evaluations: self.u64()?,
+            newton_iterations: self.u64()?,
+            jacobians: self.u64()?,
+            factorizations: self.u64()?,
+        })
     }
     fn flag(&mut self) -> Result<bool, FmuError> {
         match self.u8()? {
@@ -157,20 +206,43 @@ impl FmuSnapshot {
         w.u8(u8::from(self.simulation.is_some()));
         if let Some(s) = &self.simulation {
             w.f64(s.time);
-            w.u32(s.state.len() as u32);
-            for x in &s.state {
-                w.f64(*x);
+            w.f64s(&s.state);
+            w.f64(s.step_start.0);
+            w.f64s(&s.step_start.1);
+            w.contact(&s.step_start.2);
+            w.f64(s.step_end.0);
+            w.f64s(&s.step_end.1);
+            match &s.integrator {
+                IntegratorState::DormandPrince {
+                    h,
+                    derivative,
+                    stats,
+                } => {
+                    w.u8(0);
+                    w.f64(*h);
+                    w.f64s(derivative);
+                    w.stats(stats);
+                }
+                IntegratorState::Esdirk(e) => {
+                    w.u8(1);
+                    w.f64(e.h);
+                    w.f64(e.h_factored);
+                    w.f64s(&e.jacobian_q);
+                    w.f64s(&e.jacobian_v);
+                    w.u8(u8::from(e.jacobian_stale));
+                    w.f64(e.newton_rate);
+                    w.f64s(&e.history);
+                    w.f64(e.history_step);
+                    w.f64s(&e.derivative);
+                    w.stats(&e.stats);
+                }
             }
-            w.f64(s.proposed_step);
-            w.u64(s.stats.steps);
-            w.u64(s.stats.rejected);
-            w.u64(s.stats.evaluations);
-            w.u8(u8::from(s.contact.in_contact));
-            w.f64(s.contact.impact_velocity);
+            w.contact(&s.contact);
             w.f64(s.inputs.drive_speed);
             w.f64(s.inputs.drive_torque);
             w.f64(s.inputs.slider_force);
             w.u8(u8::from(s.speed_changed));
+            w.u8(u8::from(s.restart));
         }
         let checksum = fnv64(&w.0);
         w.u64(checksum);
@@ -239,21 +311,30 @@ impl FmuSnapshot {
         let last_successful_time = r.f64()?;
         let simulation = if r.flag()? {
             let sim_time = r.f64()?;
-            let n = r.u32()? as usize;
-            if n > 1 << 16 {
-                return Err(bad(format!("{n} states")));
-            }
-            let state_vector = (0..n).map(|_| r.f64()).collect::<Result<Vec<_>, _>>()?;
-            let proposed_step = r.f64()?;
-            let stats = Stats {
-                steps: r.u64()?,
-                rejected: r.u64()?,
-                evaluations: r.u64()?,
+            let state_vector = r.f64s()?;
+            let step_start = (r.f64()?, r.f64s()?, r.contact()?);
+            let step_end = (r.f64()?, r.f64s()?);
+            let integrator = match r.u8()? {
+                0 => IntegratorState::DormandPrince {
+                    h: r.f64()?,
+                    derivative: r.f64s()?,
+                    stats: r.stats()?,
+                },
+                1 => IntegratorState::Esdirk(EsdirkState {
+                    h: r.f64()?,
+                    h_factored: r.f64()?,
+                    jacobian_q: r.f64s()?,
+                    jacobian_v: r.f64s()?,
+                    jacobian_stale: r.flag()?,
+                    newton_rate: r.f64()?,
+                    history: r.f64s()?,
+                    history_step: r.f64()?,
+                    derivative: r.f64s()?,
+                    stats: r.stats()?,
+                }),
+                m => return Err(bad(format!("unknown integrator {m}"))),
             };
-            let contact = ContactState {
-                in_contact: r.flag()?,
-                impact_velocity: r.f64()?,
-            };
+            let contact = r.contact()?;
             let sim_inputs = Inputs {
                 drive_speed: r.f64()?,
                 drive_torque: r.f64()?,
@@ -262,11 +343,13 @@ impl FmuSnapshot {
             Some(Snapshot {
                 time: sim_time,
                 state: state_vector,
-                proposed_step,
-                stats,
+                step_start,
+                step_end,
+                integrator,
                 contact,
                 inputs: sim_inputs,
                 speed_changed: r.flag()?,
+                restart: r.flag()?,
             })
         } else {
             None

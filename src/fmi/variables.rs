@@ -119,6 +119,32 @@ pub const ENUMERATIONS: &[Enumeration] = &[
             ("torque", "crank torque prescribed"),
         ],
     },
+    Enumeration {
+        name: "RodBoundary",
+        items: &[
+            (
+                "pins",
+                "the two pin positions; pinned-pinned modes span the end slopes",
+            ),
+            (
+                "positionsAndSlopes",
+                "positions and slopes of both end nodes (Sun et al. 2015); clamped-clamped modes",
+            ),
+        ],
+    },
+    Enumeration {
+        name: "IntegrationMethod",
+        items: &[
+            (
+                "implicit",
+                "L-stable ESDIRK5(4) with Newton iterations: steps set by the motion, not by stiffness",
+            ),
+            (
+                "explicit",
+                "Dormand-Prince 5(4), the reference method: steps bound by the highest frequency",
+            ),
+        ],
+    },
 ];
 
 /// Units: name and SI base-unit exponents (kg, m, s, rad), or None where FMI 2's integer
@@ -219,6 +245,9 @@ pub enum Vr {
     EnergyDriveWork,
     EnergyDissipated,
     SolverSteps,
+    RodBoundary,
+    SolverMethod,
+    SolverEvaluations,
 }
 
 const fn parameter(
@@ -358,8 +387,8 @@ pub const VARIABLES: &[Variable] = &[
         "rod.nModes",
         4,
         0,
-        126,
-        "Craig-Bampton mode shapes, at most 2 (rod.nElements - 1)",
+        128,
+        "Craig-Bampton fixed-interface mode shapes, each in both directions; at most 2 rod.nElements (rod.boundary = pins) or 2 rod.nElements - 2 (positionsAndSlopes)",
     ),
     parameter(
         Vr::RodLength,
@@ -759,6 +788,32 @@ pub const VARIABLES: &[Variable] = &[
             max: i32::MAX,
         },
         description: "Accepted internal integrator steps",
+    },
+    enumeration(
+        Vr::RodBoundary,
+        "rod.boundary",
+        1,
+        3,
+        "Craig-Bampton interface: the rod coordinates kept physical",
+    ),
+    enumeration(
+        Vr::SolverMethod,
+        "solver.method",
+        1,
+        4,
+        "Internal time-integration method",
+    ),
+    Variable {
+        vr: Vr::SolverEvaluations,
+        name: "solver.evaluations",
+        causality: Causality::Output,
+        variability: Variability::Discrete,
+        kind: Kind::Integer {
+            start: None,
+            min: 0,
+            max: i32::MAX,
+        },
+        description: "Right-hand-side evaluations of the internal integrator (with those of Jacobians)",
     },
 ];
 

@@ -8,7 +8,7 @@
 //! # References
 //! - Dormand & Prince (1980); Hairer, Nørsett & Wanner (1993), Table II.5.2 and code DOPRI5.
 
-use super::{OdeSystem, Stats, Tolerances};
+use super::{OdeSystem, Stats, Tolerances, initial_step};
 use crate::error::ModelError;
 
 const C: [f64; 7] = [0.0, 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0, 1.0, 1.0];
@@ -57,10 +57,14 @@ const E: [f64; 7] = [
 #[derive(Clone, Debug)]
 pub struct DormandPrince {
     tolerances: Tolerances,
+    /// Per-component scales: absolute tolerance = `tolerances.absolute` × scale.
+    scales: Vec<f64>,
     k: [Vec<f64>; 7],
     y_stage: Vec<f64>,
     /// Proposed next step size (0: not yet known).
     h: f64,
+    /// Whether k\[0\] holds f at the current point (first same as last).
+    fsal: bool,
     stats: Stats,
 }
 
@@ -70,11 +74,26 @@ impl DormandPrince {
         tolerances.validate()?;
         Ok(Self {
             tolerances,
+            scales: vec![1.0; n],
             k: std::array::from_fn(|_| vec![0.0; n]),
             y_stage: vec![0.0; n],
             h: 0.0,
+            fsal: false,
             stats: Stats::default(),
         })
+    }
+
+    /// Sets per-component scales (absolute tolerance = `absolute` × scale), one per state.
+    pub fn with_scales(mut self, scales: Vec<f64>) -> Result<Self, ModelError> {
+        if scales.len() != self.scales.len() {
+            return Err(ModelError::Numerical(format!(
+                "{} scales for {} states",
+                scales.len(),
+                self.scales.len()
+            )));
+        }
+        self.scales = scales;
+        Ok(self)
     }
 
     /// Statistics since construction.
@@ -82,27 +101,54 @@ impl DormandPrince {
         self.stats
     }
 
-    /// Restores statistics (snapshots).
-    pub fn set_stats(&mut self, stats: Stats) {
-        self.stats = stats;
+    /// The state later steps depend on: proposed step, f at the current point (empty if not
+    /// known) and statistics.
+    pub fn state(&self) -> (f64, Vec<f64>, Stats) {
+        let derivative = if self.fsal {
+            self.k[0].clone()
+        } else {
+            Vec::new()
+        };
+        (self.h, derivative, self.stats)
     }
 
-    /// The tolerances in use.
-    pub fn tolerances(&self) -> &Tolerances {
-        &self.tolerances
-    }
-
-    /// Proposed size of the next step (0 before the first step) \[s\].
-    pub fn proposed_step(&self) -> f64 {
-        self.h
-    }
-
-    /// Sets the proposed next step size (used to restore a snapshot bit-exactly).
-    pub fn set_proposed_step(&mut self, h: f64) {
+    /// Restores [`DormandPrince::state`].
+    pub fn set_state(
+        &mut self,
+        h: f64,
+        derivative: &[f64],
+        stats: Stats,
+    ) -> Result<(), ModelError> {
+        self.fsal = match derivative.len() {
+            0 => false,
+            n if n == self.k[0].len() => {
+                self.k[0].copy_from_slice(derivative);
+                true
+            }
+            n => {
+                return Err(ModelError::Numerical(format!(
+                    "Dormand–Prince state with {n} derivatives for {} states",
+                    self.k[0].len()
+                )));
+            }
+        };
         self.h = h;
+        self.stats = stats;
+        Ok(())
     }
 
-    /// Advances `y` from `*t` to `t_end` for the system `f`.
+    /// Forgets f at the current point (the state was changed from outside).
+    pub fn restart(&mut self) {
+        self.fsal = false;
+    }
+
+    /// f at the start and at the end of the last accepted step.
+    pub fn derivatives(&self) -> (&[f64], &[f64]) {
+        (&self.k[6], &self.k[0])
+    }
+
+    /// Advances `y` from `*t` to exactly `t_end` for the system `f`, the last step shortened to
+    /// end there.
     ///
     /// On failure (step below the minimum, non-finite state) `*t` and `y` hold the last accepted
     /// point and the error says where and why.
@@ -113,29 +159,60 @@ impl DormandPrince {
         y: &mut [f64],
         t_end: f64,
     ) -> Result<(), ModelError> {
-        if t_end <= *t {
-            return Ok(());
+        self.fsal = false;
+        while *t < t_end {
+            self.step(f, t, y, Some(t_end))?;
         }
-        f.rhs(*t, y, &mut self.k[0]);
-        self.stats.evaluations += 1;
-        if self.h <= 0.0 {
-            self.h = self.initial_step(f, *t, y, t_end);
+        Ok(())
+    }
+
+    /// Takes one accepted step from (`*t`, `y`), retrying rejected ones; with a `limit` the step
+    /// ends there at the latest (exactly, when the proposal reaches it or nearly does).
+    pub fn step<F: OdeSystem>(
+        &mut self,
+        f: &mut F,
+        t: &mut f64,
+        y: &mut [f64],
+        limit: Option<f64>,
+    ) -> Result<(), ModelError> {
+        if !self.fsal {
+            f.rhs(*t, y, &mut self.k[0]);
+            self.stats.evaluations += 1;
+            self.fsal = true;
         }
         let Tolerances {
             max_step, min_step, ..
         } = self.tolerances;
+        if self.h <= 0.0 {
+            let (k0, rest) = self.k.split_at_mut(1);
+            self.h = initial_step(
+                f,
+                *t,
+                y,
+                &k0[0],
+                limit.unwrap_or(*t + max_step),
+                &self.tolerances,
+                &self.scales,
+                5,
+                &mut self.y_stage,
+                &mut rest[0],
+            );
+            self.stats.evaluations += 1;
+        }
         let mut rejected_last = false;
         loop {
-            let remaining = t_end - *t;
-            // Take the end exactly when the proposal reaches it or nearly does.
-            let last = self.h.min(max_step) >= remaining * (1.0 - 1e-12);
-            let h = if last {
-                remaining
-            } else {
-                self.h.min(max_step)
+            let proposal = self.h.min(max_step);
+            // Take the limit exactly when the proposal reaches it or nearly does.
+            let last = limit.is_some_and(|end| 1.01 * proposal >= end - *t);
+            let h = match limit {
+                Some(end) if last => end - *t,
+                _ => proposal,
             };
             let err = self.try_step(f, *t, y, h);
-            let t_new = if last { t_end } else { *t + h };
+            let t_new = match limit {
+                Some(end) if last => end,
+                _ => *t + h,
+            };
             let veto = if err <= 1.0 {
                 f.check_step(*t, y, t_new, &self.y_stage)
             } else {
@@ -155,14 +232,11 @@ impl DormandPrince {
                 if rejected_last {
                     factor = factor.min(1.0);
                 }
-                rejected_last = false;
-                // Keep the unclamped proposal when the last step was shortened to hit t_end.
+                // Keep the unclamped proposal when the step was shortened to hit the limit.
                 if !last || h >= self.h {
                     self.h = h * factor;
                 }
-                if last {
-                    return Ok(());
-                }
+                return Ok(());
             } else {
                 self.stats.rejected += 1;
                 rejected_last = true;
@@ -198,9 +272,9 @@ impl DormandPrince {
             relative, absolute, ..
         } = self.tolerances;
         let mut sum = 0.0;
-        for (i, (&y_i, &stage)) in y.iter().zip(&self.y_stage).enumerate() {
+        for (i, ((&y_i, &stage), &s)) in y.iter().zip(&self.y_stage).zip(&self.scales).enumerate() {
             let err: f64 = h * (0..7).map(|j| E[j] * self.k[j][i]).sum::<f64>();
-            let scale = absolute + relative * y_i.abs().max(stage.abs());
+            let scale = absolute * s + relative * y_i.abs().max(stage.abs());
             sum += (err / scale).powi(2);
         }
         let norm = (sum / y.len().max(1) as f64).sqrt();
@@ -209,48 +283,6 @@ impl DormandPrince {
         } else {
             f64::INFINITY
         }
-    }
-
-    /// Initial step size (Hairer, Nørsett & Wanner 1993, §II.4): h₀ from ‖y‖/‖f‖, then one Euler
-    /// step to estimate the second derivative; k[0] must hold f(t, y).
-    fn initial_step<F: OdeSystem>(&mut self, f: &mut F, t: f64, y: &[f64], t_end: f64) -> f64 {
-        let Tolerances {
-            relative,
-            absolute,
-            max_step,
-            ..
-        } = self.tolerances;
-        let n = y.len().max(1) as f64;
-        let scale = |v: f64| absolute + relative * v.abs();
-        let norm = |v: &mut dyn Iterator<Item = (f64, f64)>| {
-            (v.map(|(a, s)| (a / s).powi(2)).sum::<f64>() / n).sqrt()
-        };
-        let d0 = norm(&mut y.iter().map(|&v| (v, scale(v))));
-        let d1 = norm(&mut y.iter().zip(&self.k[0]).map(|(&v, &d)| (d, scale(v))));
-        let h0 = if d0 < 1e-5 || d1 < 1e-5 {
-            1e-6
-        } else {
-            0.01 * d0 / d1
-        };
-        let h0 = h0.min(max_step).min(t_end - t);
-        for ((stage, &y_i), &k_i) in self.y_stage.iter_mut().zip(y).zip(&self.k[0]) {
-            *stage = y_i + h0 * k_i;
-        }
-        let (k0, rest) = self.k.split_at_mut(1);
-        f.rhs(t + h0, &self.y_stage, &mut rest[0]);
-        self.stats.evaluations += 1;
-        let d2 = norm(
-            &mut y
-                .iter()
-                .zip(rest[0].iter().zip(&k0[0]))
-                .map(|(&v, (&a, &b))| (a - b, scale(v))),
-        ) / h0;
-        let h1 = if d1.max(d2) <= 1e-15 {
-            (h0 * 1e-3).max(1e-6)
-        } else {
-            (0.01 / d1.max(d2)).powf(0.2)
-        };
-        (100.0 * h0).min(h1).min(max_step)
     }
 }
 

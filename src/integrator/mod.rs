@@ -1,19 +1,38 @@
-//! Error-controlled time integration of first-order systems y' = f(t, y).
+//! Error-controlled time integration of the mechanism, y' = f(t, y).
 //!
-//! The method is the explicit embedded Runge–Kutta pair of Dormand and Prince, order 5 with a 4th
-//! order error estimate, local extrapolation, first-same-as-last, and the standard step-size
-//! controller. It is the integrator of choice for the reduced rod, whose highest frequency is far
-//! below the full model's (MODEL.md §6); BENCHMARKS.md records how it was chosen.
+//! Two methods ([`Method`]):
+//! - [`DormandPrince`]: the explicit embedded Runge–Kutta pair of Dormand and Prince, order 5 with a
+//!   4th-order error estimate (the reference method). Its step is bounded by the highest frequency
+//!   of the model, resolved or not.
+//! - [`Esdirk`]: an L-stable, stiffly accurate ESDIRK5(4) with simplified Newton on the mechanism's
+//!   n coordinates. Its step is set by the accuracy of the motion, not by the stiffness of the rod
+//!   or of the oil film.
+//!
+//! Both measure the local error in one weighted norm: component i is compared with
+//! `absolute · sᵢ + relative · |yᵢ|`, where the scales sᵢ carry each state's units (positions,
+//! slopes, modal amplitudes, velocities and energies differ by orders of magnitude; the mechanism
+//! provides them, [`crate::mechanism::SliderCrank::error_scales`]).
+//!
+//! The choice between the two methods and the default were made by measurement (BENCHMARKS.md,
+//! "Integrators"): the implicit method is the default for the flexible rods and the lubricated
+//! joint, where the explicit step is bound by stiffness.
 //!
 //! # References
 //! - J. R. Dormand, P. J. Prince (1980), A family of embedded Runge–Kutta formulae, J. Comput. Appl.
 //!   Math. 6, 19–26.
 //! - E. Hairer, S. P. Nørsett, G. Wanner (1993), Solving Ordinary Differential Equations I, 2nd ed.,
 //!   §II.4 (step-size control, initial step) and §II.5 (DOPRI5).
+//! - C. A. Kennedy, M. H. Carpenter (2016), Diagonally implicit Runge–Kutta methods for ordinary
+//!   differential equations. A review, NASA/TM–2016–219173.
+//! - E. Hairer, G. Wanner (1996), Solving Ordinary Differential Equations II, 2nd ed., §IV.8.
 
+pub mod dense;
 mod dormand_prince;
+mod esdirk;
+pub mod lu;
 
 pub use dormand_prince::DormandPrince;
+pub use esdirk::{Esdirk, EsdirkState};
 
 use crate::error::{ModelError, require_positive};
 
@@ -42,12 +61,21 @@ impl<F: FnMut(f64, &[f64], &mut [f64])> OdeSystem for F {
     }
 }
 
-/// Error tolerances: a step is accepted when ‖err_i / (atol + rtol·max(|y_i|, |y_new,i|))‖_rms ≤ 1.
+/// A mechanical system in first-order form y = [q, q̇, w]: q' = q̇, q̈ = a(t, q, q̇, w), and
+/// quadrature states w whose rates do not depend on w (work integrals, the drive angle).
+pub trait MechanicalSystem: OdeSystem {
+    /// Number of coordinates n (the lengths of q and of q̇).
+    fn n_coordinates(&self) -> usize;
+}
+
+/// Error tolerances: a step is accepted when the RMS over i of
+/// err_i / (absolute · s_i + relative · max(|y_i|, |y_new,i|)) is at most 1, with s_i the
+/// component's scale (1 unless the system provides scales).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Tolerances {
     /// Relative tolerance.
     pub relative: f64,
-    /// Absolute tolerance (in the units of each state component).
+    /// Absolute tolerance, in units of each component's scale.
     pub absolute: f64,
     /// Largest step size \[s\].
     pub max_step: f64,
@@ -71,8 +99,204 @@ impl Tolerances {
 pub struct Stats {
     /// Accepted steps.
     pub steps: u64,
-    /// Rejected steps.
+    /// Rejected steps (error test, contact onset, Newton failure).
     pub rejected: u64,
-    /// Right-hand-side evaluations.
+    /// Right-hand-side evaluations (including those of finite-difference Jacobians).
     pub evaluations: u64,
+    /// Newton iterations (implicit method).
+    pub newton_iterations: u64,
+    /// Jacobian evaluations (implicit method).
+    pub jacobians: u64,
+    /// LU factorisations of the Newton matrix (implicit method).
+    pub factorizations: u64,
+}
+
+/// The time-integration method.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Method {
+    /// Explicit Dormand–Prince 5(4) (the reference method).
+    DormandPrince,
+    /// L-stable implicit ESDIRK5(4)7L\[2\]SA₂ with simplified Newton.
+    Esdirk,
+}
+
+/// Integrator state that later steps depend on (for bit-exact snapshots).
+#[derive(Clone, Debug, PartialEq)]
+pub enum IntegratorState {
+    /// Dormand–Prince: proposed next step, f at the current point and statistics.
+    DormandPrince {
+        /// Proposed next step \[s\].
+        h: f64,
+        /// f at the current point (empty: to be evaluated).
+        derivative: Vec<f64>,
+        /// Statistics.
+        stats: Stats,
+    },
+    /// ESDIRK: step, Jacobian, Newton memory and statistics.
+    Esdirk(EsdirkState),
+}
+
+/// One of the [`Method`]s with its workspace.
+#[derive(Clone, Debug)]
+pub enum Integrator {
+    /// Explicit Dormand–Prince.
+    DormandPrince(Box<DormandPrince>),
+    /// Implicit ESDIRK.
+    Esdirk(Box<Esdirk>),
+}
+
+impl Integrator {
+    /// An integrator for `n` states of a system with `n_q` coordinates and per-component scales.
+    pub fn new(
+        method: Method,
+        n: usize,
+        n_q: usize,
+        tolerances: Tolerances,
+        scales: Vec<f64>,
+    ) -> Result<Self, ModelError> {
+        Ok(match method {
+            Method::DormandPrince => Self::DormandPrince(Box::new(
+                DormandPrince::new(n, tolerances)?.with_scales(scales)?,
+            )),
+            Method::Esdirk => Self::Esdirk(Box::new(Esdirk::new(n, n_q, tolerances, scales)?)),
+        })
+    }
+
+    /// Takes one accepted step from (`*t`, `y`), ending at `limit` at the latest; on failure
+    /// `*t`, `y` hold the last accepted point.
+    pub fn step<F: MechanicalSystem>(
+        &mut self,
+        f: &mut F,
+        t: &mut f64,
+        y: &mut [f64],
+        limit: Option<f64>,
+    ) -> Result<(), ModelError> {
+        match self {
+            Self::DormandPrince(dp) => dp.step(f, t, y, limit),
+            Self::Esdirk(es) => es.step(f, t, y, limit),
+        }
+    }
+
+    /// f at the start and at the end of the last accepted step (for dense output).
+    pub fn derivatives(&self) -> (&[f64], &[f64]) {
+        match self {
+            Self::DormandPrince(dp) => dp.derivatives(),
+            Self::Esdirk(es) => es.derivatives(),
+        }
+    }
+
+    /// Forgets what depends on the current point (f there, step history) after the state was
+    /// changed from outside.
+    pub fn restart(&mut self) {
+        match self {
+            Self::DormandPrince(dp) => dp.restart(),
+            Self::Esdirk(es) => es.restart(),
+        }
+    }
+
+    /// Statistics since construction.
+    pub fn stats(&self) -> Stats {
+        match self {
+            Self::DormandPrince(dp) => dp.stats(),
+            Self::Esdirk(es) => es.stats(),
+        }
+    }
+
+    /// The state later steps depend on.
+    pub fn state(&self) -> IntegratorState {
+        match self {
+            Self::DormandPrince(dp) => {
+                let (h, derivative, stats) = dp.state();
+                IntegratorState::DormandPrince {
+                    h,
+                    derivative,
+                    stats,
+                }
+            }
+            Self::Esdirk(es) => IntegratorState::Esdirk(es.state().clone()),
+        }
+    }
+
+    /// Restores a state taken from an integrator of the same method and dimensions.
+    pub fn set_state(&mut self, state: &IntegratorState) -> Result<(), ModelError> {
+        match (self, state) {
+            (
+                Self::DormandPrince(dp),
+                IntegratorState::DormandPrince {
+                    h,
+                    derivative,
+                    stats,
+                },
+            ) => dp.set_state(*h, derivative, *stats),
+            (Self::Esdirk(es), IntegratorState::Esdirk(s)) => es.set_state(s),
+            _ => Err(ModelError::Numerical(
+                "snapshot of another integration method".into(),
+            )),
+        }
+    }
+}
+
+/// The error norm: RMS over i of err_i / (absolute·s_i + relative·max(|y0_i|, |y1_i|)), or ∞ when
+/// not finite.
+fn scaled_norm(err: &[f64], y0: &[f64], y1: &[f64], scales: &[f64], tol: &Tolerances) -> f64 {
+    let mut sum = 0.0;
+    for (((e, a), b), s) in err.iter().zip(y0).zip(y1).zip(scales) {
+        let scale = tol.absolute * s + tol.relative * a.abs().max(b.abs());
+        sum += (e / scale).powi(2);
+    }
+    let norm = (sum / err.len().max(1) as f64).sqrt();
+    if norm.is_finite() {
+        norm
+    } else {
+        f64::INFINITY
+    }
+}
+
+/// Initial step size (Hairer, Nørsett & Wanner 1993, §II.4) for a method of order `order`:
+/// h₀ from ‖y‖/‖f‖, then one Euler step to estimate the second derivative. `f0` holds f(t, y);
+/// `y1` and `f1` are workspace.
+#[allow(clippy::too_many_arguments)]
+fn initial_step<F: OdeSystem>(
+    f: &mut F,
+    t: f64,
+    y: &[f64],
+    f0: &[f64],
+    t_end: f64,
+    tol: &Tolerances,
+    scales: &[f64],
+    order: i32,
+    y1: &mut [f64],
+    f1: &mut [f64],
+) -> f64 {
+    let n = y.len().max(1) as f64;
+    let scale = |v: f64, s: f64| tol.absolute * s + tol.relative * v.abs();
+    let rms = |it: &mut dyn Iterator<Item = f64>| (it.map(|v| v * v).sum::<f64>() / n).sqrt();
+    let d0 = rms(&mut y.iter().zip(scales).map(|(&v, &s)| v / scale(v, s)));
+    let d1 = rms(&mut y
+        .iter()
+        .zip(scales)
+        .zip(f0)
+        .map(|((&v, &s), &d)| d / scale(v, s)));
+    let h0 = if d0 < 1e-5 || d1 < 1e-5 {
+        1e-6
+    } else {
+        0.01 * d0 / d1
+    };
+    let h0 = h0.min(tol.max_step).min(t_end - t);
+    for ((y1, &v), &d) in y1.iter_mut().zip(y).zip(f0) {
+        *y1 = v + h0 * d;
+    }
+    f.rhs(t + h0, y1, f1);
+    let d2 = rms(&mut y
+        .iter()
+        .zip(scales)
+        .zip(f1.iter().zip(f0))
+        .map(|((&v, &s), (&a, &b))| (a - b) / scale(v, s)))
+        / h0;
+    let h1 = if d1.max(d2) <= 1e-15 {
+        (h0 * 1e-3).max(1e-6)
+    } else {
+        (0.01 / d1.max(d2)).powf(1.0 / f64::from(order))
+    };
+    (100.0 * h0).min(h1).min(tol.max_step)
 }

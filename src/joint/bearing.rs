@@ -38,6 +38,44 @@ use crate::quadrature::GAUSS_5;
 
 /// Panels of the composite Gauss–Legendre rule over the pressure region.
 const FILM_PANELS: usize = 24;
+/// Nodes of the composite rule.
+const FILM_NODES: usize = 5 * FILM_PANELS;
+
+/// Offsets φ = θ − θ₁ ∈ (0, π) of the composite rule's nodes with their weights, sin φ and cos φ:
+/// the node angles θ = θ₁ + φ then need only the angle-addition formulas, not a sine and cosine
+/// per node (the film force is evaluated at every right-hand side).
+#[derive(Clone, Debug, PartialEq)]
+struct FilmRule {
+    weight: [f64; FILM_NODES],
+    sin: [f64; FILM_NODES],
+    cos: [f64; FILM_NODES],
+}
+
+impl FilmRule {
+    fn new() -> Self {
+        let panel = std::f64::consts::PI / FILM_PANELS as f64;
+        let mut rule = Self {
+            weight: [0.0; FILM_NODES],
+            sin: [0.0; FILM_NODES],
+            cos: [0.0; FILM_NODES],
+        };
+        for i in 0..FILM_PANELS {
+            for (k, (xi, weight)) in GAUSS_5.on_unit_interval(panel).enumerate() {
+                let (sin, cos) = ((i as f64 + xi) * panel).sin_cos();
+                let m = 5 * i + k;
+                rule.weight[m] = weight;
+                rule.sin[m] = sin;
+                rule.cos[m] = cos;
+            }
+        }
+        rule
+    }
+}
+
+fn film_rule() -> &'static FilmRule {
+    static RULE: std::sync::OnceLock<FilmRule> = std::sync::OnceLock::new();
+    RULE.get_or_init(FilmRule::new)
+}
 
 /// Constants of the lubricated joint.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -77,17 +115,18 @@ impl JournalBearing {
         if amplitude == 0.0 {
             return Vector2::zeros();
         }
-        let theta1 = (2.0 * eps_dot).atan2(eps * w);
-        let panel = std::f64::consts::PI / FILM_PANELS as f64;
+        // θ₁ = atan2(2ε̇, εw): its sine and cosine directly.
+        let (sin1, cos1) = (2.0 * eps_dot / amplitude, eps * w / amplitude);
+        let rule = film_rule();
         let (mut f_r, mut f_t) = (0.0, 0.0);
-        for i in 0..FILM_PANELS {
-            for (xi, weight) in GAUSS_5.on_unit_interval(panel) {
-                let theta = theta1 + (i as f64 + xi) * panel;
-                let (sin, cos) = theta.sin_cos();
-                let p = amplitude * (theta - theta1).sin() / (1.0 + eps * cos).powi(3);
-                f_r += weight * p * cos;
-                f_t += weight * p * sin;
-            }
+        for m in 0..FILM_NODES {
+            let (sin_phi, cos_phi) = (rule.sin[m], rule.cos[m]);
+            let cos = cos1 * cos_phi - sin1 * sin_phi;
+            let sin = sin1 * cos_phi + cos1 * sin_phi;
+            let d = 1.0 + eps * cos;
+            let p = rule.weight[m] * amplitude * sin_phi / (d * d * d);
+            f_r += p * cos;
+            f_t += p * sin;
         }
         let scale = self.film_coefficient();
         scale * (f_r * n + f_t * t)

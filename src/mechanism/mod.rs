@@ -28,7 +28,7 @@ use nalgebra::{SMatrix, Vector2};
 use self::constraints::{Active, ConstraintState, Constraints, Vector6};
 use self::rod_body::RodBody;
 use crate::error::ModelError;
-use crate::integrator::OdeSystem;
+use crate::integrator::{MechanicalSystem, OdeSystem};
 use crate::joint::{Joint, JointForce, JointKinematics, MIN_IMPACT_VELOCITY};
 use crate::params::{DriveMode, JointModel, Parameters};
 
@@ -122,6 +122,9 @@ pub struct SliderCrank {
     slider_mass: f64,
     gravity: f64,
     rod_length: f64,
+    rod_mass: f64,
+    /// Reference crank speed for the error scales (the initial speed, at least 1 rad/s).
+    reference_speed: f64,
     /// M_rod⁻¹ e_j for j ∈ {A_x, A_y, B_x, B_y}, column-major (n_rod × 4).
     rod_compliance: Vec<f64>,
     /// W = E_sᵀ M⁻¹ E_s.
@@ -173,6 +176,8 @@ impl SliderCrank {
             slider_mass: p.slider_mass,
             gravity: p.gravity,
             rod_length: p.rod.length,
+            rod_mass: p.rod.mass(),
+            reference_speed: p.crank_initial_speed.abs().max(1.0),
             rod_compliance,
             w,
             inputs: Inputs {
@@ -198,6 +203,48 @@ impl SliderCrank {
     /// Length of the state vector 2n + 4.
     pub fn n_states(&self) -> usize {
         2 * self.n_coordinates() + 4
+    }
+
+    /// Scale of each state component: the integrators compare its error with
+    /// `rtol · (scale + |y|)` (MODEL.md §6; BENCHMARKS.md "Integrators").
+    ///
+    /// Every state is measured by the displacement (or velocity) it causes in the mechanism, in
+    /// units of the crank length ℓ = r_c and of the crank-pin speed V = ω₀ r_c
+    /// (ω₀ = |crank.initialSpeed|, at least 1 rad/s):
+    /// ```text
+    /// θ, θ_d          1 rad                 θ̇            ω₀
+    /// rod coordinate  ℓ / d_j               its rate     V / d_j
+    /// x_s             ℓ                     ẋ_s          V
+    /// works           ½ m V²,  m = I_O/r_c² + m_rod + m_slider
+    /// ```
+    /// with d_j the largest displacement along the rod per unit of coordinate j (1 for positions,
+    /// ≈ (4/27) l_e for ANCF slopes, the mode shape's largest value for modal amplitudes). A
+    /// coordinate whose unit moves the rod little gets a proportionally larger scale, so the
+    /// error control asks the same physical accuracy of every coordinate.
+    pub fn error_scales(&self) -> Vec<f64> {
+        let n = self.n_coordinates();
+        let length = match self.joint.dry_contact() {
+            Some(dry) => dry.clearance.min(0.01 * self.crank_length),
+            None => 0.01 * self.crank_length,
+        };
+        let speed = self.reference_speed * length;
+        let pin_speed = self.reference_speed * self.crank_length;
+        let mass =
+            self.crank_inertia / self.crank_length.powi(2) + self.rod_mass + self.slider_mass;
+        let mut scales = vec![0.0; self.n_states()];
+        scales[0] = length / self.crank_length;
+        scales[n] = speed / self.crank_length;
+        for (j, d) in self.rod.displacement_scales().into_iter().enumerate() {
+            scales[1 + j] = length / d;
+            scales[n + 1 + j] = speed / d;
+        }
+        scales[n - 1] = length;
+        scales[2 * n - 1] = speed;
+        scales[2 * n] = scales[0];
+        for s in &mut scales[2 * n + 1..] {
+            *s = 0.5 * mass * pin_speed * pin_speed * length / self.crank_length;
+        }
+        scales
     }
 
     /// The rod body.
@@ -463,6 +510,12 @@ impl SliderCrank {
     /// Normal velocity δ̇ of a state.
     fn normal_velocity(&self, y: &[f64]) -> f64 {
         self.joint_kinematics(y).normal_velocity()
+    }
+}
+
+impl MechanicalSystem for SliderCrank {
+    fn n_coordinates(&self) -> usize {
+        SliderCrank::n_coordinates(self)
     }
 }
 

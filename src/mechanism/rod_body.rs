@@ -68,6 +68,7 @@ impl RodBody {
             RodFormulation::CraigBampton => Ok(Self::Flexible(Box::new(RodModel::craig_bampton(
                 Rod::new(p.rod, p.n_elements)?,
                 p.n_modes,
+                p.boundary,
             )?))),
         }
     }
@@ -133,6 +134,15 @@ impl RodBody {
         }
     }
 
+    /// Largest displacement along the rod \[m\] per unit of each coordinate (1 for the rigid rod's
+    /// pin positions; see [`RodModel::displacement_scales`]).
+    pub fn displacement_scales(&self) -> Vec<f64> {
+        match self {
+            Self::Rigid { .. } => vec![1.0; 4],
+            Self::Flexible(model) => model.displacement_scales(),
+        }
+    }
+
     /// Strain energy \[J\] (0 for the rigid rod).
     pub fn strain_energy(&mut self, p: &[f64]) -> f64 {
         match self {
@@ -146,10 +156,7 @@ impl RodBody {
     fn end_direction(&self, v: &[f64]) -> Vector2<f64> {
         match self {
             Self::Rigid { .. } => Vector2::new(v[2] - v[0], v[3] - v[1]),
-            Self::Flexible(_) => {
-                let b = self.end_offset();
-                Vector2::new(v[b + 2], v[b + 3])
-            }
+            Self::Flexible(model) => model.end_slope(v),
         }
     }
 
@@ -171,11 +178,7 @@ impl RodBody {
                 out[0] -= g.x;
                 out[1] -= g.y;
             }
-            Self::Flexible(_) => {
-                let b = self.end_offset();
-                out[b + 2] += g.x;
-                out[b + 3] += g.y;
-            }
+            Self::Flexible(model) => model.add_end_slope_force(g, out),
         }
     }
 

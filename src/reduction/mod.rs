@@ -5,16 +5,15 @@
 //! - R. R. Craig, M. C. C. Bampton (1968), AIAA J. 6, 1313–1319.
 //! - Sun et al. (2015), Mech. Mach. Theory 85, 106–115, eqs. (1)–(3).
 
+pub mod cholesky;
 pub mod craig_bampton;
 pub mod modes;
 
-use faer::linalg::triangular_solve::{
-    solve_lower_triangular_in_place, solve_upper_triangular_in_place,
-};
-use faer::reborrow::ReborrowMut;
-use faer::{Mat, MatMut, MatRef, Par, Side};
+use faer::{Mat, MatMut, MatRef};
 
-pub use craig_bampton::{CraigBampton, max_modes};
+use self::cholesky::BandCholesky;
+
+pub use craig_bampton::{Boundary, CraigBampton, check_mode_count, max_modes};
 pub use modes::{Modes, generalized_eigen};
 
 use nalgebra::Vector2;
@@ -25,14 +24,19 @@ use crate::error::ModelError;
 /// The rod in full ANCF coordinates or in Craig–Bampton coordinates p (e = V p), with the buffers
 /// its force evaluation needs, so that evaluating forces never allocates.
 ///
-/// In both cases the first 4 coordinates are node 0 (r₀, r₀,ₓ) and [`RodModel::end_node_offset`]
-/// locates the last node's 4 coordinates: joints are written directly in these coordinates.
+/// In every case the first 2 coordinates are the crank-pin end r₀ and [`RodModel::end_node_offset`]
+/// locates the slider-pin end r_n: joints are written directly in these coordinates. The end slope
+/// r_n,ₓ (whose rotation is the journal's) is a coordinate of the full model and of the
+/// positions-and-slopes interface, and a linear combination of p with the pin interface
+/// ([`RodModel::end_slope`]).
 #[derive(Clone, Debug)]
 pub struct RodModel {
     rod: Rod,
     reduction: Option<CraigBampton>,
     mass: Mat<f64>,
-    mass_factor: Mat<f64>,
+    mass_factor: BandCholesky,
+    /// r_n,ₓ = Σ (w · (p₂ⱼ, p₂ⱼ₊₁)) over (j, w): the end slope as a combination of coordinate pairs.
+    end_slope: Vec<(usize, f64)>,
     e: Vec<f64>,
     e_dot: Vec<f64>,
     q: Vec<f64>,
@@ -47,9 +51,9 @@ impl RodModel {
         Self::build(rod, None, mass)
     }
 
-    /// The rod reduced by Craig–Bampton with `n_modes` mode shapes.
-    pub fn craig_bampton(rod: Rod, n_modes: usize) -> Result<Self, ModelError> {
-        let cb = CraigBampton::new(&rod, n_modes)?;
+    /// The rod reduced by Craig–Bampton with `n_modes` mode shapes and the given interface.
+    pub fn craig_bampton(rod: Rod, n_modes: usize, boundary: Boundary) -> Result<Self, ModelError> {
+        let cb = CraigBampton::new(&rod, n_modes, boundary)?;
         let mass = cb.mass_matrix().to_owned();
         Self::build(rod, Some(cb), mass)
     }
@@ -59,13 +63,20 @@ impl RodModel {
         reduction: Option<CraigBampton>,
         mass: Mat<f64>,
     ) -> Result<Self, ModelError> {
-        let llt = mass.llt(Side::Lower).map_err(|e| {
-            ModelError::Numerical(format!("rod mass matrix is not positive definite: {e:?}"))
-        })?;
-        let mass_factor = llt.L().to_owned();
+        let mass_factor = BandCholesky::new(mass.as_ref())?;
         let n_full = rod.n_coordinates();
         let n = mass.nrows();
+        let slope_row = 2 * rod.n_elements() + 1;
+        let end_slope = match &reduction {
+            Some(cb) => cb
+                .scalar_row(slope_row)
+                .enumerate()
+                .filter(|(_, w)| *w != 0.0)
+                .collect(),
+            None => vec![(slope_row, 1.0)],
+        };
         Ok(Self {
+            end_slope,
             reduction,
             mass_factor,
             mass,
@@ -93,11 +104,28 @@ impl RodModel {
         self.mass.nrows()
     }
 
-    /// Offset of the last node's coordinates (r_n, r_n,ₓ) in the model's coordinate vector.
+    /// Offset of the last node's position r_n in the model's coordinate vector.
     pub fn end_node_offset(&self) -> usize {
-        match self.reduction {
-            Some(_) => 4,
+        match &self.reduction {
+            Some(cb) => cb.end_node_offset(),
             None => self.rod.last_node_offset(),
+        }
+    }
+
+    /// End slope r_n,ₓ of the coordinates `p` (or its rate, applied to ṗ: the map is linear).
+    pub fn end_slope(&self, p: &[f64]) -> Vector2<f64> {
+        self.end_slope
+            .iter()
+            .fold(Vector2::zeros(), |acc, &(j, w)| {
+                acc + w * Vector2::new(p[2 * j], p[2 * j + 1])
+            })
+    }
+
+    /// Adds the generalised force of a force `g` acting on the end slope r_n,ₓ: (∂r_n,ₓ/∂p)ᵀ g.
+    pub fn add_end_slope_force(&self, g: Vector2<f64>, out: &mut [f64]) {
+        for &(j, w) in &self.end_slope {
+            out[2 * j] += w * g.x;
+            out[2 * j + 1] += w * g.y;
         }
     }
 
@@ -106,12 +134,9 @@ impl RodModel {
         self.mass.as_ref()
     }
 
-    /// Solves M x = b in place with the stored Cholesky factor (no allocation).
+    /// Solves M x = b in place with the stored banded Cholesky factor (no allocation).
     pub fn solve_mass(&self, b: &mut [f64]) {
-        let n = b.len();
-        let mut x = MatMut::from_column_major_slice_mut(b, n, 1);
-        solve_lower_triangular_in_place(self.mass_factor.as_ref(), x.rb_mut(), Par::Seq);
-        solve_upper_triangular_in_place(self.mass_factor.transpose(), x, Par::Seq);
+        self.mass_factor.solve(b);
     }
 
     /// Nodal ANCF coordinates e of the model coordinates `p` (e = V p, or p itself).
@@ -130,8 +155,12 @@ impl RodModel {
         match &self.reduction {
             Some(cb) => {
                 cb.expand(p, &mut self.e);
-                cb.expand(p_dot, &mut self.e_dot);
-                self.rod.internal_force(&self.e, &self.e_dot, &mut self.q);
+                if self.rod.element().section().damping == 0.0 {
+                    self.rod.elastic_force(&self.e, &mut self.q);
+                } else {
+                    cb.expand(p_dot, &mut self.e_dot);
+                    self.rod.internal_force(&self.e, &self.e_dot, &mut self.q);
+                }
                 cb.project(&self.q, out);
             }
             None => self.rod.internal_force(p, p_dot, out),
@@ -177,6 +206,28 @@ impl RodModel {
         let chord = Vector2::new(e[last], e[last + 1]) - a;
         let r = self.rod.position(e, half) - a;
         (chord.x * r.y - chord.y * r.x) / chord.norm()
+    }
+
+    /// For each model coordinate, the largest displacement along the rod \[m\] per unit of it:
+    /// max over nodes of |∂r_k/∂p_j| and (4/27) l_e |∂r_k,ₓ/∂p_j| (the largest value of the cubic
+    /// slope shape function l_e(ξ − 2ξ² + ξ³), l_e the element length). Positions give 1.
+    pub fn displacement_scales(&self) -> Vec<f64> {
+        let slope_length = 4.0 / 27.0 * self.rod.element().length();
+        let n_full = self.rod.n_coordinates();
+        (0..self.n_coordinates())
+            .map(|j| {
+                (0..n_full)
+                    .map(|i| {
+                        let weight = if (i / 2) % 2 == 0 { 1.0 } else { slope_length };
+                        let v = match &self.reduction {
+                            Some(cb) => cb.basis()[(i, j)],
+                            None => f64::from(u8::from(i == j)),
+                        };
+                        weight * v.abs()
+                    })
+                    .fold(0.0, f64::max)
+            })
+            .collect()
     }
 
     /// Generalised force Vᵀ q of a force `q` on the nodal coordinates, written to `out`.

@@ -276,7 +276,7 @@ fn out_of_range_values_name_variable_value_and_range() {
     assert_eq!(inst.exit(), ERROR);
     assert!(
         inst.last_message()
-            .contains("rod.nModes = 5 is outside the allowed range [0, 2]"),
+            .contains("rod.nModes = 5 is outside the allowed range [0, 4]"),
         "{:?}",
         inst.messages()
     );

@@ -4,7 +4,7 @@
 use faer::Mat;
 use flexible_slider_crank::ancf::element::{ElementVector, Section};
 use flexible_slider_crank::ancf::{Element, Rod, RodProperties};
-use flexible_slider_crank::reduction::RodModel;
+use flexible_slider_crank::reduction::{Boundary, RodModel};
 use nalgebra::{Rotation2, Vector2};
 
 use crate::common::{Lcg, assert_close, frequencies, slender_rod, solve_static};
@@ -96,7 +96,14 @@ fn tangent_equals_central_differences() {
 #[test]
 fn assembled_and_reduced_tangents_equal_central_differences() {
     let mut rng = Lcg::new(5);
-    for n_modes in [None, Some(0), Some(3), Some(6)] {
+    for n_modes in [
+        None,
+        Some((Boundary::PositionsAndSlopes, 0)),
+        Some((Boundary::PositionsAndSlopes, 3)),
+        Some((Boundary::PositionsAndSlopes, 6)),
+        Some((Boundary::Pins, 0)),
+        Some((Boundary::Pins, 5)),
+    ] {
         let rod = benchmark_rod(4);
         let mut straight = rod.straight_configuration(Vector2::zeros(), 0.3);
         for v in straight.iter_mut() {
@@ -104,7 +111,7 @@ fn assembled_and_reduced_tangents_equal_central_differences() {
         }
         let mut model = match n_modes {
             None => RodModel::full(rod).unwrap(),
-            Some(m) => RodModel::craig_bampton(rod, m).unwrap(),
+            Some((boundary, m)) => RodModel::craig_bampton(rod, m, boundary).unwrap(),
         };
         let p = model.model_coordinates(&straight);
         let n = p.len();

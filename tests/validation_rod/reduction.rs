@@ -3,7 +3,7 @@
 
 use faer::{Mat, Side};
 use flexible_slider_crank::ancf::{Rod, RodProperties};
-use flexible_slider_crank::reduction::{RodModel, max_modes};
+use flexible_slider_crank::reduction::{Boundary, RodModel, max_modes};
 use nalgebra::{Rotation2, Vector2};
 
 use crate::common::{HeldRod, Lcg, assert_close, frequencies};
@@ -12,16 +12,39 @@ fn rod(n: usize) -> Rod {
     Rod::new(RodProperties::benchmark_b(), n).unwrap()
 }
 
-/// Every model of a rod with `n` elements: full, then nModes = 0 ..= max.
-fn models(n: usize) -> Vec<(String, RodModel)> {
-    let mut out = vec![("full".to_string(), RodModel::full(rod(n)).unwrap())];
-    for m in 0..=max_modes(n) {
-        out.push((
-            format!("nModes = {m}"),
-            RodModel::craig_bampton(rod(n), m).unwrap(),
-        ));
+/// Both Craig–Bampton interfaces.
+const BOUNDARIES: [Boundary; 2] = [Boundary::PositionsAndSlopes, Boundary::Pins];
+
+/// A model of a rod with `n` elements: full (None), or reduced with an interface and nModes.
+fn model(n: usize, spec: Option<(Boundary, usize)>) -> RodModel {
+    match spec {
+        None => RodModel::full(rod(n)).unwrap(),
+        Some((boundary, m)) => RodModel::craig_bampton(rod(n), m, boundary).unwrap(),
+    }
+}
+
+/// Every model of a rod with `n` elements: full, then nModes = 0 ..= max for each interface.
+fn specs(n: usize) -> Vec<Option<(Boundary, usize)>> {
+    let mut out = vec![None];
+    for boundary in BOUNDARIES {
+        out.extend((0..=max_modes(n, boundary)).map(|m| Some((boundary, m))));
     }
     out
+}
+
+fn label(spec: Option<(Boundary, usize)>) -> String {
+    match spec {
+        None => "full".into(),
+        Some((boundary, m)) => format!("{boundary:?}, nModes = {m}"),
+    }
+}
+
+/// Every model of a rod with `n` elements, labelled.
+fn models(n: usize) -> Vec<(String, RodModel)> {
+    specs(n)
+        .into_iter()
+        .map(|s| (label(s), model(n, s)))
+        .collect()
 }
 
 /// Nodal coordinates of a circular arc of total angle `bend` [rad] starting at `origin` in
@@ -66,9 +89,15 @@ fn tangent(model: &mut RodModel, p: &[f64]) -> Mat<f64> {
 /// the full one in other coordinates: equal free–free frequencies and an equal nonlinear transient.
 #[test]
 fn all_modes_reproduce_the_full_model() {
+    for boundary in BOUNDARIES {
+        all_modes_reproduce_the_full_model_with(boundary);
+    }
+}
+
+fn all_modes_reproduce_the_full_model_with(boundary: Boundary) {
     let n = 4;
     let mut full = RodModel::full(rod(n)).unwrap();
-    let mut reduced = RodModel::craig_bampton(rod(n), max_modes(n)).unwrap();
+    let mut reduced = RodModel::craig_bampton(rod(n), max_modes(n, boundary), boundary).unwrap();
     let e0 = full
         .rod()
         .straight_configuration(Vector2::new(0.01, 0.02), 0.3);
@@ -111,7 +140,7 @@ fn all_modes_reproduce_the_full_model() {
             .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
         assert!(
             err <= 1e-8 * scale,
-            "transient: max |e_full − V p| = {err:e} (scale {scale:e})"
+            "{boundary:?} transient: max |e_full − V p| = {err:e} (scale {scale:e})"
         );
     }
 }
@@ -120,6 +149,12 @@ fn all_modes_reproduce_the_full_model() {
 /// decrease monotonically as nModes grows (nested Rayleigh–Ritz subspaces). Round-off margin 1e-10.
 #[test]
 fn reduced_frequencies_approach_the_full_ones_from_above() {
+    for boundary in BOUNDARIES {
+        reduced_frequencies_approach_the_full_ones_from_above_with(boundary);
+    }
+}
+
+fn reduced_frequencies_approach_the_full_ones_from_above_with(boundary: Boundary) {
     let n = 8;
     let mut previous: Option<Vec<f64>> = None;
     let mut full = RodModel::full(rod(n)).unwrap();
@@ -130,8 +165,8 @@ fn reduced_frequencies_approach_the_full_ones_from_above() {
         .filter(|&i| ![0, 1, end, end + 1].contains(&i))
         .collect();
     let w_full = frequencies(k.as_ref(), full.mass_matrix(), &keep);
-    for m in 0..=max_modes(n) {
-        let mut reduced = RodModel::craig_bampton(rod(n), m).unwrap();
+    for m in 0..=max_modes(n, boundary) {
+        let mut reduced = RodModel::craig_bampton(rod(n), m, boundary).unwrap();
         let p0 = reduced.model_coordinates(&e0);
         let k = tangent(&mut reduced, &p0);
         let end = reduced.end_node_offset();
@@ -154,12 +189,14 @@ fn reduced_frequencies_approach_the_full_ones_from_above() {
                 );
             }
         }
-        println!(
-            "nModes {m:2}: 2nd pinned-pinned bending mode {:.1} Hz (full {:.1} Hz, error {:.2e})",
-            w[1] / std::f64::consts::TAU,
-            w_full[1] / std::f64::consts::TAU,
-            (w[1] - w_full[1]) / w_full[1]
-        );
+        if w.len() > 1 {
+            println!(
+                "{boundary:?}, nModes {m:2}: 2nd pinned-pinned frequency {:.1} Hz (full {:.1} Hz, error {:.2e})",
+                w[1] / std::f64::consts::TAU,
+                w_full[1] / std::f64::consts::TAU,
+                (w[1] - w_full[1]) / w_full[1]
+            );
+        }
         previous = Some(w);
     }
     let last = previous.unwrap();
@@ -185,7 +222,14 @@ fn rigid_motion_of_the_end_nodes_is_exact() {
             let length = model.rod().properties().length;
             let end = origin + length * t;
             let mut p = vec![0.0; model.n_coordinates()];
-            p[..8].copy_from_slice(&[origin.x, origin.y, t.x, t.y, end.x, end.y, t.x, t.y]);
+            match model.reduction().map(|cb| cb.boundary()) {
+                Some(Boundary::Pins) => {
+                    p[..4].copy_from_slice(&[origin.x, origin.y, end.x, end.y]);
+                }
+                _ => {
+                    p[..8].copy_from_slice(&[origin.x, origin.y, t.x, t.y, end.x, end.y, t.x, t.y]);
+                }
+            }
             let e = model.nodal_coordinates(&p).to_vec();
             for k in 0..=n {
                 let r = origin + (k as f64 * length / n as f64) * t;
@@ -243,14 +287,12 @@ fn reduced_mass_is_symmetric_positive_definite() {
 fn response_is_independent_of_orientation() {
     let n = 4;
     let times = [5e-5, 2e-4];
-    for (name, _) in models(n) {
+    for spec in specs(n) {
+        let name = label(spec);
         let mut reference: Option<Vec<Vec<f64>>> = None;
         for degrees in [0.0f64, 30.0, 90.0, 180.0] {
             let angle = degrees.to_radians();
-            let model = match name.as_str() {
-                "full" => RodModel::full(rod(n)).unwrap(),
-                _ => RodModel::craig_bampton(rod(n), name[9..].parse().unwrap()).unwrap(),
-            };
+            let model = model(n, spec);
             let rod_n = rod(n);
             let bent = arc(
                 &rod_n,
@@ -308,14 +350,12 @@ fn free_vibration_conserves_energy() {
             .sqrt();
     let period = std::f64::consts::TAU / omega1;
     let times: Vec<f64> = (1..=200).map(|i| i as f64 * 0.5 * period).collect();
-    for model in [
-        RodModel::full(rod(n)).unwrap(),
-        RodModel::craig_bampton(rod(n), 2).unwrap(),
+    for spec in [
+        None,
+        Some((Boundary::PositionsAndSlopes, 2)),
+        Some((Boundary::Pins, 2)),
     ] {
-        let name = match model.reduction() {
-            Some(cb) => format!("nModes = {}", cb.n_modes()),
-            None => "full".into(),
-        };
+        let (name, model) = (label(spec), model(n, spec));
         let bent = arc(model.rod(), Vector2::zeros(), 0.4, 1.0);
         let p0 = model.model_coordinates(&bent);
         let nc = p0.len();
