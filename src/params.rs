@@ -133,7 +133,7 @@ impl Default for Parameters {
             drive_mode: DriveMode::Speed,
             gravity: 0.0,
             method: Method::Esdirk,
-            relative_tolerance: 1e-6,
+            relative_tolerance: 1e-3,
             max_step_size: 1e-4,
         }
     }

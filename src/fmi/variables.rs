@@ -617,7 +617,7 @@ pub const VARIABLES: &[Variable] = &[
     parameter(
         Vr::SolverRelativeTolerance,
         "solver.relativeTolerance",
-        1e-6,
+        1e-3,
         1e-12,
         1e-2,
         "1",

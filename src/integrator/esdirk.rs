@@ -36,94 +36,131 @@ use super::lu::Lu;
 use super::{MechanicalSystem, Stats, Tolerances, initial_step, scaled_norm};
 use crate::error::ModelError;
 
-/// Number of stages.
-const S: usize = 7;
-/// Diagonal coefficient γ.
-const GAMMA: f64 = 23.0 / 125.0;
-/// Order of the embedded solution (sets the step-size exponent 1/(p̂ + 1)).
-const EMBEDDED_ORDER: i32 = 4;
+/// Largest number of stages of a tableau.
+const MAX_STAGES: usize = 7;
 /// Largest number of Newton iterations per stage.
 const MAX_ITERATIONS: usize = 7;
 /// Newton stops when the estimated remaining error is below this fraction of the tolerance.
 const NEWTON_TOLERANCE: f64 = 0.3;
 /// A step whose slowest Newton convergence rate exceeds this asks for a new Jacobian.
 const REUSE_RATE: f64 = 0.1;
+/// Marks the start of the last accepted step among the predictor's known points.
+const HISTORY: usize = usize::MAX;
 
-const C: [f64; S] = [
-    0.0,
-    46.0 / 125.0,
-    7_121_331_996_143.0 / 11_335_814_405_378.0,
-    49.0 / 353.0,
-    3_706_679_970_760.0 / 5_295_570_149_437.0,
-    347.0 / 382.0,
-    1.0,
-];
-
-const B_TAIL: [f64; S - 1] = [
-    -188_593_204_321.0 / 4_778_616_380_481.0,
-    2_809_310_203_510.0 / 10_304_234_040_467.0,
-    1_021_729_336_898.0 / 2_364_210_264_653.0,
-    870_612_361_811.0 / 2_470_410_392_208.0,
-    -1_307_970_675_534.0 / 8_059_683_598_661.0,
-    GAMMA,
-];
-
-const B_HAT_TAIL: [f64; S - 1] = [
-    -582_099_335_757.0 / 7_214_068_459_310.0,
-    615_023_338_567.0 / 3_362_626_566_945.0,
-    3_192_122_436_311.0 / 6_174_152_374_399.0,
-    6_156_034_052_041.0 / 14_430_468_657_929.0,
-    -1_011_318_518_279.0 / 9_693_750_372_484.0,
-    1_914_490_192_573.0 / 13_754_262_428_401.0,
-];
-
-/// Weights with the first entry completing Σ = 1.
-const fn complete(tail: [f64; S - 1]) -> [f64; S] {
-    let mut out = [0.0; S];
-    let mut sum = 0.0;
-    let mut i = 0;
-    while i < S - 1 {
-        out[i + 1] = tail[i];
-        sum += tail[i];
-        i += 1;
-    }
-    out[0] = 1.0 - sum;
-    out
+/// An ESDIRK Butcher tableau: explicit first stage, γ on the diagonal, stiffly accurate (last row
+/// of A = b), padded to [`MAX_STAGES`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Tableau {
+    /// Number of stages s.
+    pub stages: usize,
+    /// Diagonal coefficient γ.
+    pub gamma: f64,
+    /// Coefficients aᵢⱼ.
+    pub a: [[f64; MAX_STAGES]; MAX_STAGES],
+    /// Weights b (= last row of A).
+    pub b: [f64; MAX_STAGES],
+    /// Embedded weights b̂.
+    pub b_hat: [f64; MAX_STAGES],
+    /// Nodes cᵢ = Σⱼ aᵢⱼ.
+    pub c: [f64; MAX_STAGES],
+    /// Order of the embedded solution (sets the step-size exponent 1/(p̂ + 1)).
+    pub embedded_order: i32,
 }
 
-/// Main weights b (= last row of A).
-const B: [f64; S] = complete(B_TAIL);
-/// Embedded weights b̂.
-const B_HAT: [f64; S] = complete(B_HAT_TAIL);
-
-/// The coefficient matrix A: the published off-diagonal entries, γ on the diagonal, the last row
-/// equal to b, and the first column completing the row sums cᵢ.
-const A: [[f64; S]; S] = {
-    let mut a = [[0.0; S]; S];
-    a[2][1] = 791_020_047_304.0 / 3_561_426_431_547.0;
-    a[3][1] = -158_159_076_358.0 / 11_257_294_102_345.0;
-    a[3][2] = -85_517_644_447.0 / 5_003_708_988_389.0;
-    a[4][1] = -1_653_327_111_580.0 / 4_048_416_487_981.0;
-    a[4][2] = 1_514_767_744_496.0 / 9_099_671_765_375.0;
-    a[4][3] = 14_283_835_447_591.0 / 12_247_432_691_556.0;
-    a[5][1] = -4_540_011_970_825.0 / 8_418_487_046_959.0;
-    a[5][2] = -1_790_937_573_418.0 / 7_393_406_387_169.0;
-    a[5][3] = 10_819_093_665_085.0 / 7_266_595_846_747.0;
-    a[5][4] = 4_109_463_131_231.0 / 7_386_972_500_302.0;
-    a[S - 1] = B;
+/// Builds a tableau from the published strictly lower entries (rows 2 .. s − 1, columns ≥ 1),
+/// γ, the nodes and the weights: b₁ and b̂₁ complete Σ = 1, the first column completes the row
+/// sums cᵢ, and the last row is b.
+const fn tableau(
+    stages: usize,
+    gamma: f64,
+    lower: [[f64; MAX_STAGES]; MAX_STAGES],
+    c: [f64; MAX_STAGES],
+    b_tail: [f64; MAX_STAGES],
+    b_hat_tail: [f64; MAX_STAGES],
+    embedded_order: i32,
+) -> Tableau {
+    let mut b = b_tail;
+    let mut b_hat = b_hat_tail;
+    let (mut sum, mut sum_hat) = (0.0, 0.0);
+    let mut j = 1;
+    while j < stages {
+        sum += b[j];
+        sum_hat += b_hat[j];
+        j += 1;
+    }
+    b[0] = 1.0 - sum;
+    b_hat[0] = 1.0 - sum_hat;
+    let mut a = lower;
+    a[stages - 1] = b;
     let mut i = 1;
-    while i < S - 1 {
-        a[i][i] = GAMMA;
-        let mut sum = 0.0;
+    while i < stages - 1 {
+        a[i][i] = gamma;
+        let mut row = 0.0;
         let mut j = 1;
         while j <= i {
-            sum += a[i][j];
+            row += a[i][j];
             j += 1;
         }
-        a[i][0] = C[i] - sum;
+        a[i][0] = c[i] - row;
         i += 1;
     }
-    a
+    Tableau {
+        stages,
+        gamma,
+        a,
+        b,
+        b_hat,
+        c,
+        embedded_order,
+    }
+}
+
+/// ESDIRK5(4)7L\[2\]SA₂ (Kennedy & Carpenter 2016): 5th order, 6 implicit stages, γ = 23/125.
+pub const ESDIRK54: Tableau = {
+    let mut lower = [[0.0; MAX_STAGES]; MAX_STAGES];
+    lower[2][1] = 791_020_047_304.0 / 3_561_426_431_547.0;
+    lower[3][1] = -158_159_076_358.0 / 11_257_294_102_345.0;
+    lower[3][2] = -85_517_644_447.0 / 5_003_708_988_389.0;
+    lower[4][1] = -1_653_327_111_580.0 / 4_048_416_487_981.0;
+    lower[4][2] = 1_514_767_744_496.0 / 9_099_671_765_375.0;
+    lower[4][3] = 14_283_835_447_591.0 / 12_247_432_691_556.0;
+    lower[5][1] = -4_540_011_970_825.0 / 8_418_487_046_959.0;
+    lower[5][2] = -1_790_937_573_418.0 / 7_393_406_387_169.0;
+    lower[5][3] = 10_819_093_665_085.0 / 7_266_595_846_747.0;
+    lower[5][4] = 4_109_463_131_231.0 / 7_386_972_500_302.0;
+    tableau(
+        7,
+        23.0 / 125.0,
+        lower,
+        [
+            0.0,
+            46.0 / 125.0,
+            7_121_331_996_143.0 / 11_335_814_405_378.0,
+            49.0 / 353.0,
+            3_706_679_970_760.0 / 5_295_570_149_437.0,
+            347.0 / 382.0,
+            1.0,
+        ],
+        [
+            0.0,
+            -188_593_204_321.0 / 4_778_616_380_481.0,
+            2_809_310_203_510.0 / 10_304_234_040_467.0,
+            1_021_729_336_898.0 / 2_364_210_264_653.0,
+            870_612_361_811.0 / 2_470_410_392_208.0,
+            -1_307_970_675_534.0 / 8_059_683_598_661.0,
+            23.0 / 125.0,
+        ],
+        [
+            0.0,
+            -582_099_335_757.0 / 7_214_068_459_310.0,
+            615_023_338_567.0 / 3_362_626_566_945.0,
+            3_192_122_436_311.0 / 6_174_152_374_399.0,
+            6_156_034_052_041.0 / 14_430_468_657_929.0,
+            -1_011_318_518_279.0 / 9_693_750_372_484.0,
+            1_914_490_192_573.0 / 13_754_262_428_401.0,
+        ],
+        4,
+    )
 };
 
 /// Why a trial step failed before its error test.
@@ -172,7 +209,8 @@ pub struct Esdirk {
     /// Slowest Newton convergence rate θ of the current step.
     step_rate: f64,
     lu: Lu,
-    k: [Vec<f64>; S],
+    table: &'static Tableau,
+    k: Vec<Vec<f64>>,
     base: Vec<f64>,
     stage: Vec<f64>,
     rates: Vec<f64>,
@@ -185,6 +223,7 @@ impl Esdirk {
     /// An integrator for `n` states whose first 2·`n_q` are coordinates and velocities, with
     /// per-component scales (absolute tolerance = `tolerances.absolute` × scale).
     pub fn new(
+        table: &'static Tableau,
         n: usize,
         n_q: usize,
         tolerances: Tolerances,
@@ -216,7 +255,8 @@ impl Esdirk {
             jacobian_fresh: false,
             step_rate: 0.0,
             lu: Lu::new(n_q),
-            k: std::array::from_fn(|_| vec![0.0; n]),
+            table,
+            k: vec![vec![0.0; n]; table.stages],
             base: vec![0.0; n],
             stage: vec![0.0; n],
             rates: vec![0.0; n],
@@ -266,7 +306,7 @@ impl Esdirk {
 
     /// f at the start and at the end of the last accepted step.
     pub fn derivatives(&self) -> (&[f64], &[f64]) {
-        (&self.k[S - 1], &self.k[0])
+        (&self.k[self.table.stages - 1], &self.k[0])
     }
 
     /// Takes one accepted step from (`*t`, `y`), retrying rejected ones; with a `limit` the step
@@ -298,7 +338,7 @@ impl Esdirk {
                 limit.unwrap_or(*t + max_step),
                 &self.tolerances,
                 &self.scales,
-                EMBEDDED_ORDER + 1,
+                self.table.embedded_order + 1,
                 &mut self.stage,
                 &mut rest[0],
             );
@@ -329,8 +369,9 @@ impl Esdirk {
                 Ok(err) if err > 1.0 => {
                     self.state.stats.rejected += 1;
                     rejected_last = true;
-                    self.state.h =
-                        h * (0.9 * err.powf(-1.0 / f64::from(EMBEDDED_ORDER + 1))).clamp(0.2, 1.0);
+                    self.state.h = h
+                        * (0.9 * err.powf(-1.0 / f64::from(self.table.embedded_order + 1)))
+                            .clamp(0.2, 1.0);
                 }
                 Ok(err) => {
                     if let Some(factor) = f.check_step(*t, y, t_new, &self.y_new) {
@@ -375,14 +416,17 @@ impl Esdirk {
         f.accept_step(*t, y, t_new, &self.y_new);
         *t = t_new;
         y.copy_from_slice(&self.y_new);
-        self.k.swap(0, S - 1);
+        self.k.swap(0, self.table.stages - 1);
         self.state.derivative.clone_from(&self.k[0]);
         self.jacobian_fresh = false;
         if self.step_rate > REUSE_RATE {
             self.state.jacobian_stale = true;
         }
-        let mut factor =
-            (0.9 * err.max(1e-10).powf(-1.0 / f64::from(EMBEDDED_ORDER + 1))).clamp(0.2, 5.0);
+        let mut factor = (0.9
+            * err
+                .max(1e-10)
+                .powf(-1.0 / f64::from(self.table.embedded_order + 1)))
+        .clamp(0.2, 5.0);
         if rejected_last {
             factor = factor.min(1.0);
         }
@@ -430,7 +474,7 @@ impl Esdirk {
 
     /// Factorises E = I − hγ ∂a/∂q̇ − (hγ)² ∂a/∂q (not counted: restoring a state refactorises).
     fn factorize(&mut self, h: f64) -> Result<(), ModelError> {
-        let hg = h * GAMMA;
+        let hg = h * self.table.gamma;
         let m = self.lu.matrix_mut();
         for (i, e) in m.iter_mut().enumerate() {
             let diagonal = if i % (self.n_q + 1) == 0 { 1.0 } else { 0.0 };
@@ -458,13 +502,21 @@ impl Esdirk {
             }
         }
         let (n, n_q) = (y.len(), self.n_q);
-        let hg = h * GAMMA;
+        let hg = h * self.table.gamma;
         let Tolerances {
             relative, absolute, ..
         } = self.tolerances;
-        for i in 1..S {
+        let Tableau {
+            stages,
+            a,
+            b,
+            b_hat,
+            c,
+            ..
+        } = *self.table;
+        for i in 1..stages {
             for (m, base) in self.base.iter_mut().enumerate() {
-                let sum: f64 = (0..i).map(|j| A[i][j] * self.k[j][m]).sum();
+                let sum: f64 = (0..i).map(|j| a[i][j] * self.k[j][m]).sum();
                 *base = y[m] + h * sum;
             }
             // Predictor: the cubic Hermite interpolant of the velocities (v, a known at stages
@@ -473,28 +525,28 @@ impl Esdirk {
             // step start to the closest point (from the last step's start to this one's for the
             // first stage); a Taylor step without history.
             let (done, todo) = self.k.split_at_mut(i);
-            let target = C[i] * h;
+            let target = c[i] * h;
             let below = (0..i)
-                .filter(|&j| C[j] < C[i])
-                .max_by(|&a, &b| C[a].total_cmp(&C[b]));
+                .filter(|&j| c[j] < c[i])
+                .max_by(|&a, &b| c[a].total_cmp(&c[b]));
             let above = (0..i)
-                .filter(|&j| C[j] > C[i])
-                .min_by(|&a, &b| C[a].total_cmp(&C[b]));
+                .filter(|&j| c[j] > c[i])
+                .min_by(|&a, &b| c[a].total_cmp(&c[b]));
             let nearest = (0..i)
-                .min_by(|&a, &b| (C[a] - C[i]).abs().total_cmp(&(C[b] - C[i]).abs()))
+                .min_by(|&a, &b| (c[a] - c[i]).abs().total_cmp(&(c[b] - c[i]).abs()))
                 .unwrap_or(0);
             let pair = match (below, above) {
                 (Some(a), Some(b)) => Some((a, b)),
                 _ if nearest > 0 => Some((0, nearest)),
-                _ if !self.state.history.is_empty() => Some((S, 0)),
+                _ if !self.state.history.is_empty() => Some((HISTORY, 0)),
                 _ => None,
             };
             let point = |j: usize| -> (f64, &[f64], &[f64]) {
-                if j == S {
+                if j == HISTORY {
                     let (v, a) = self.state.history.split_at(n_q);
                     (-self.state.history_step, v, a)
                 } else {
-                    (C[j] * h, &done[j][..n_q], &done[j][n_q..2 * n_q])
+                    (c[j] * h, &done[j][..n_q], &done[j][n_q..2 * n_q])
                 }
             };
             match pair {
@@ -528,7 +580,7 @@ impl Esdirk {
                 for m in 2 * n_q..n {
                     self.stage[m] = self.base[m] + hg * self.rates[m];
                 }
-                f.rhs(t + C[i] * h, &self.stage, &mut self.rates);
+                f.rhs(t + c[i] * h, &self.stage, &mut self.rates);
                 self.state.stats.evaluations += 1;
                 self.state.stats.newton_iterations += 1;
                 for m in 0..n_q {
@@ -578,8 +630,8 @@ impl Esdirk {
         for m in 0..n {
             let (mut sum, mut diff) = (0.0, 0.0);
             for (j, k) in self.k.iter().enumerate() {
-                sum += B[j] * k[m];
-                diff += (B[j] - B_HAT[j]) * k[m];
+                sum += b[j] * k[m];
+                diff += (b[j] - b_hat[j]) * k[m];
             }
             self.y_new[m] = y[m] + h * sum;
             self.err[m] = h * diff;
@@ -640,7 +692,7 @@ mod tests {
                 omega,
                 damping: 0.0,
             };
-            let mut es = Esdirk::new(3, 1, tolerances(rtol), vec![1.0; 3]).unwrap();
+            let mut es = Esdirk::new(&ESDIRK54, 3, 1, tolerances(rtol), vec![1.0; 3]).unwrap();
             let (mut t, mut y) = (0.0, [1.0, 0.0, 0.0]);
             while t < t_end {
                 es.step(&mut f, &mut t, &mut y, Some(t_end)).unwrap();
@@ -658,15 +710,19 @@ mod tests {
     /// the 8 of order ≤ 4 for b̂ (rooted trees, Butcher), to round-off of 13-digit rationals.
     #[test]
     fn tableau_satisfies_the_order_conditions() {
+        const S: usize = 7;
+        let t = &ESDIRK54;
+        assert_eq!(t.stages, S);
+        let (a, b, b_hat) = (t.a, t.b, t.b_hat);
         let dot = |u: &[f64; S], v: &[f64; S]| (0..S).map(|i| u[i] * v[i]).sum::<f64>();
         let mul = |u: &[f64; S], v: &[f64; S]| -> [f64; S] { std::array::from_fn(|i| u[i] * v[i]) };
         let apply = |v: &[f64; S]| -> [f64; S] {
-            std::array::from_fn(|i| (0..S).map(|j| A[i][j] * v[j]).sum())
+            std::array::from_fn(|i| (0..S).map(|j| a[i][j] * v[j]).sum())
         };
         let one = [1.0; S];
         let c = apply(&one);
         for i in 0..S {
-            assert!((c[i] - C[i]).abs() < 1e-15, "row sum {i}");
+            assert!((c[i] - t.c[i]).abs() < 1e-15, "row sum {i}");
         }
         let c2 = mul(&c, &c);
         let c3 = mul(&c2, &c);
@@ -686,25 +742,27 @@ mod tests {
                 (dot(w, &aac), 1.0 / 24.0),
             ]
         };
-        for (value, expected) in order4(&B).into_iter().chain(order4(&B_HAT)) {
+        for (value, expected) in order4(&b).into_iter().chain(order4(&b_hat)) {
             assert!((value - expected).abs() < 1e-12, "{value} vs {expected}");
         }
         let order5 = [
-            (dot(&B, &mul(&c3, &c)), 1.0 / 5.0),
-            (dot(&B, &mul(&c2, &ac)), 1.0 / 10.0),
-            (dot(&B, &mul(&c, &ac2)), 1.0 / 15.0),
-            (dot(&B, &mul(&c, &aac)), 1.0 / 30.0),
-            (dot(&B, &mul(&ac, &ac)), 1.0 / 20.0),
-            (dot(&B, &apply(&c3)), 1.0 / 20.0),
-            (dot(&B, &apply(&mul(&c, &ac))), 1.0 / 40.0),
-            (dot(&B, &apply(&ac2)), 1.0 / 60.0),
-            (dot(&B, &apply(&aac)), 1.0 / 120.0),
+            (dot(&b, &mul(&c3, &c)), 1.0 / 5.0),
+            (dot(&b, &mul(&c2, &ac)), 1.0 / 10.0),
+            (dot(&b, &mul(&c, &ac2)), 1.0 / 15.0),
+            (dot(&b, &mul(&c, &aac)), 1.0 / 30.0),
+            (dot(&b, &mul(&ac, &ac)), 1.0 / 20.0),
+            (dot(&b, &apply(&c3)), 1.0 / 20.0),
+            (dot(&b, &apply(&mul(&c, &ac))), 1.0 / 40.0),
+            (dot(&b, &apply(&ac2)), 1.0 / 60.0),
+            (dot(&b, &apply(&aac)), 1.0 / 120.0),
         ];
         for (value, expected) in order5 {
             assert!((value - expected).abs() < 1e-12, "{value} vs {expected}");
         }
-        // Stiffly accurate and L-stable: last row = b, so R(∞) = 0.
-        assert_eq!(A[S - 1], B);
-        assert!(B_HAT.iter().zip(&B).any(|(a, b)| a != b));
+        // Stiffly accurate (last row = b, hence R(∞) = 0 with γ on the diagonal), and an embedded
+        // solution that differs.
+        assert_eq!(a[S - 1], b);
+        assert!((1..S).all(|i| a[i][i] == t.gamma));
+        assert!(b_hat.iter().zip(&b).any(|(x, y)| x != y));
     }
 }

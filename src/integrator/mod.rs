@@ -32,7 +32,7 @@ mod esdirk;
 pub mod lu;
 
 pub use dormand_prince::DormandPrince;
-pub use esdirk::{Esdirk, EsdirkState};
+pub use esdirk::{ESDIRK54, Esdirk, EsdirkState, Tableau};
 
 use crate::error::{ModelError, require_positive};
 
@@ -158,7 +158,9 @@ impl Integrator {
             Method::DormandPrince => Self::DormandPrince(Box::new(
                 DormandPrince::new(n, tolerances)?.with_scales(scales)?,
             )),
-            Method::Esdirk => Self::Esdirk(Box::new(Esdirk::new(n, n_q, tolerances, scales)?)),
+            Method::Esdirk => Self::Esdirk(Box::new(Esdirk::new(
+                &ESDIRK54, n, n_q, tolerances, scales,
+            )?)),
         })
     }
 

@@ -346,9 +346,21 @@ impl SliderCrank {
 
     /// Solves (C W Cᵀ) x = r on the k active rows (inactive rows padded with identity).
     fn solve_schur(&self, c: &Constraints, r: Vector6) -> Result<Vector6, ModelError> {
-        let mut s = c.jacobian * self.w * c.jacobian.transpose();
-        for i in c.rows..6 {
-            s[(i, i)] = 1.0;
+        // S = C W Cᵀ on the k active rows only (rows of C beyond k are zero).
+        let k = c.rows;
+        let mut cw = SMatrix::<f64, 6, 6>::zeros();
+        for i in 0..k {
+            for j in 0..6 {
+                cw[(i, j)] = (0..6).map(|m| c.jacobian[(i, m)] * self.w[(m, j)]).sum();
+            }
+        }
+        let mut s = SMatrix::<f64, 6, 6>::identity();
+        for i in 0..k {
+            for j in 0..=i {
+                let v = (0..6).map(|m| cw[(i, m)] * c.jacobian[(j, m)]).sum();
+                s[(i, j)] = v;
+                s[(j, i)] = v;
+            }
         }
         let chol = s.cholesky().ok_or_else(|| {
             ModelError::Numerical("singular constraint Jacobian (locked configuration)".into())
