@@ -31,6 +31,16 @@ pub enum JointModel {
     Lubricated,
 }
 
+/// How the rod starts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum InitialState {
+    /// Quasi-statically equilibrated: deformed by the inertial loads of the initial motion
+    /// ([`crate::mechanism::SliderCrank::equilibrate`]).
+    Equilibrated,
+    /// Straight and unstressed (MODEL.md §10, the reference start).
+    Straight,
+}
+
 /// What drives the crank.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum DriveMode {
@@ -51,6 +61,8 @@ pub struct Parameters {
     pub n_modes: usize,
     /// Craig–Bampton interface (the rod coordinates kept physical).
     pub boundary: Boundary,
+    /// How the rod starts.
+    pub initial_state: InitialState,
     /// Rod material and section.
     pub rod: RodProperties,
     /// Crank length r_c (pivot to pin) \[m\].
@@ -111,6 +123,7 @@ impl Default for Parameters {
             n_elements: 8,
             n_modes: 4,
             boundary: Boundary::Pins,
+            initial_state: InitialState::Equilibrated,
             rod: RodProperties::benchmark_b(),
             crank_length: 0.05,
             crank_mass: 0.30,
@@ -394,7 +407,7 @@ mod tests {
             (
                 "rod.nModes",
                 Parameters {
-                    n_modes: 15,
+                    n_modes: 17,
                     ..base.clone()
                 },
             ),

@@ -5,7 +5,7 @@ use crate::error::ModelError;
 use crate::integrator::dense::interpolate;
 use crate::integrator::{Integrator, IntegratorState, Stats};
 use crate::mechanism::{ContactState, Energies, Inputs, SliderCrank};
-use crate::params::{DriveMode, Parameters};
+use crate::params::{DriveMode, InitialState, Parameters};
 
 /// Resolution of the simulation clock: 2⁻⁴⁰ s ≈ 0.91 ps.
 ///
@@ -116,11 +116,14 @@ pub struct Simulation {
 impl Simulation {
     /// A simulation at t = 0 in the initial state of the parameters (MODEL.md §10).
     pub fn new(parameters: Parameters) -> Result<Self, ModelError> {
-        let mechanism = SliderCrank::new(&parameters)?;
-        let state = mechanism.initial_state(
+        let mut mechanism = SliderCrank::new(&parameters)?;
+        let mut state = mechanism.initial_state(
             parameters.crank_initial_angle,
             parameters.crank_initial_speed,
         );
+        if parameters.initial_state == InitialState::Equilibrated {
+            mechanism.equilibrate(&mut state)?;
+        }
         let integrator = Integrator::new(
             parameters.method,
             state.len(),

@@ -9,7 +9,7 @@ use super::state::State;
 use super::variables::{Causality, ENUMERATIONS, Kind, VARIABLES, Variable, Vr, variable};
 use crate::integrator::Method;
 use crate::joint::hertz_stiffness;
-use crate::params::{DriveMode, JointModel, Parameters, RodFormulation};
+use crate::params::{DriveMode, InitialState, JointModel, Parameters, RodFormulation};
 use crate::reduction::Boundary;
 use crate::simulation::{Outputs, Simulation};
 
@@ -77,6 +77,7 @@ const JOINTS: [JointModel; 3] = [JointModel::Ideal, JointModel::Dry, JointModel:
 const DRIVES: [DriveMode; 2] = [DriveMode::Speed, DriveMode::Torque];
 const BOUNDARIES: [Boundary; 2] = [Boundary::Pins, Boundary::PositionsAndSlopes];
 const METHODS: [Method; 2] = [Method::Esdirk, Method::DormandPrince];
+const INITIAL_STATES: [InitialState; 2] = [InitialState::Equilibrated, InitialState::Straight];
 
 impl Instance {
     /// A fresh instance with the start values of the variable table.
@@ -524,6 +525,7 @@ pub fn integer_parameter(p: &Parameters, vr: Vr) -> Option<i32> {
         Vr::DriveMode => enum_value(&DRIVES, &p.drive_mode),
         Vr::RodBoundary => enum_value(&BOUNDARIES, &p.boundary),
         Vr::SolverMethod => enum_value(&METHODS, &p.method),
+        Vr::RodInitialState => enum_value(&INITIAL_STATES, &p.initial_state),
         Vr::RodNElements => i32::try_from(p.n_elements).unwrap_or(i32::MAX),
         Vr::RodNModes => i32::try_from(p.n_modes).unwrap_or(i32::MAX),
         _ => return None,
@@ -545,6 +547,7 @@ pub fn set_integer_parameter(p: &mut Parameters, vr: Vr, value: i32) -> bool {
         Vr::DriveMode => item(&DRIVES, value).map(|x| p.drive_mode = x),
         Vr::RodBoundary => item(&BOUNDARIES, value).map(|x| p.boundary = x),
         Vr::SolverMethod => item(&METHODS, value).map(|x| p.method = x),
+        Vr::RodInitialState => item(&INITIAL_STATES, value).map(|x| p.initial_state = x),
         Vr::RodNElements => count.map(|n| p.n_elements = n),
         Vr::RodNModes => count.map(|n| p.n_modes = n),
         _ => None,

@@ -133,6 +133,16 @@ pub const ENUMERATIONS: &[Enumeration] = &[
         ],
     },
     Enumeration {
+        name: "RodInitialState",
+        items: &[
+            (
+                "equilibrated",
+                "deformed by the inertial loads of the initial motion (no start-up ringing)",
+            ),
+            ("straight", "straight and unstressed (the reference start)"),
+        ],
+    },
+    Enumeration {
         name: "IntegrationMethod",
         items: &[
             (
@@ -248,6 +258,7 @@ pub enum Vr {
     RodBoundary,
     SolverMethod,
     SolverEvaluations,
+    RodInitialState,
 }
 
 const fn parameter(
@@ -800,7 +811,7 @@ pub const VARIABLES: &[Variable] = &[
         Vr::SolverMethod,
         "solver.method",
         1,
-        4,
+        5,
         "Internal time-integration method",
     ),
     Variable {
@@ -815,6 +826,13 @@ pub const VARIABLES: &[Variable] = &[
         },
         description: "Right-hand-side evaluations of the internal integrator (with those of Jacobians)",
     },
+    enumeration(
+        Vr::RodInitialState,
+        "rod.initialState",
+        1,
+        4,
+        "How the rod starts (the crank, slider and pins start with the ideal mechanism's motion)",
+    ),
 ];
 
 /// The variable of a value reference, if it exists.

@@ -28,6 +28,7 @@ use nalgebra::{SMatrix, Vector2};
 use self::constraints::{Active, ConstraintState, Constraints, Vector6};
 use self::rod_body::RodBody;
 use crate::error::ModelError;
+use crate::integrator::lu::Lu;
 use crate::integrator::{MechanicalSystem, OdeSystem};
 use crate::joint::{Joint, JointForce, JointKinematics, MIN_IMPACT_VELOCITY};
 use crate::params::{DriveMode, JointModel, Parameters};
@@ -284,7 +285,7 @@ impl SliderCrank {
         let v_a = r_c * speed * Vector2::new(-sin, cos);
         let beta_dot = -r_c * speed * cos / (l * cos_beta);
         let v_b = v_a + l * beta_dot * Vector2::new(-sin_beta, cos_beta);
-        let (p, p_dot) = self.rod.straight_state(a, b, v_a, v_b);
+        let (p, p_dot) = (self.rod.straight(a, b), self.rod.straight(v_a, v_b));
         let n = self.n_coordinates();
         let mut y = vec![0.0; self.n_states()];
         y[0] = angle;
@@ -295,6 +296,116 @@ impl SliderCrank {
         y[2 * n - 1] = v_b.x;
         y[2 * n] = angle;
         y
+    }
+
+    /// Quasi-static start: changes the rod's deformation in a state from
+    /// [`SliderCrank::initial_state`] so that the deformation has no acceleration.
+    ///
+    /// Unknowns: the rod's deviation d = p_o − Π_o(r_A, r_B) of its coordinates other than the pin
+    /// positions from the straight rod through its pins (Π, [`RodBody::straight`], linear), and
+    /// a shift Δ of the slider end along the guide (r_B and x_s together: the journal stays
+    /// centred, an ideal joint stays closed). Equations, with every velocity unchanged:
+    /// ```text
+    /// d̈ = p̈_o − Π_o(r̈_A, r̈_B) = 0                 (the rod accelerates as a straight rod)
+    /// σ̈ = (r̈_B − r̈_A)·t + |ṙ_B − ṙ_A|²/|r_B − r_A| − ((ṙ_B − ṙ_A)·t)²/|r_B − r_A| = 0
+    /// ```
+    /// (σ = |r_B − r_A|, t its direction: no stretching acceleration). Solved by Newton with a
+    /// finite-difference Jacobian. The rod then starts loaded by the inertial forces of the motion
+    /// (and gravity) instead of unstressed, and does not ring at its axial and bending frequencies
+    /// from t = 0. The rigid rod has no deformation: the state is left as it is.
+    pub fn equilibrate(&mut self, y: &mut [f64]) -> Result<(), ModelError> {
+        if self.rod.rigid_length().is_some() {
+            return Ok(());
+        }
+        let n = self.n_coordinates();
+        let e = self.rod.end_offset();
+        let others: Vec<usize> = (0..n - 2)
+            .filter(|&i| ![0, 1, e, e + 1].contains(&i))
+            .collect();
+        let m = others.len() + 1;
+        let base = y.to_vec();
+        let scales = self.error_scales();
+        let mut u = vec![0.0; m];
+        let mut residual = vec![0.0; m];
+        let mut shifted = vec![0.0; m];
+        let mut jacobian = Lu::new(m);
+        let mut dy = vec![0.0; y.len()];
+        let mut first_norm = f64::NAN;
+        for _ in 0..30 {
+            self.quasi_static_residual(&base, &others, &u, y, &mut dy, &mut residual)?;
+            let norm = residual.iter().map(|r| r * r).sum::<f64>().sqrt();
+            if first_norm.is_nan() {
+                first_norm = norm;
+            }
+            if norm <= 1e-8 * first_norm || norm == 0.0 {
+                return Ok(());
+            }
+            for j in 0..m {
+                let scale = if j < others.len() {
+                    scales[1 + others[j]]
+                } else {
+                    scales[n - 1]
+                };
+                let delta = 1e-7 * (u[j].abs() + scale);
+                let mut perturbed = u.clone();
+                perturbed[j] += delta;
+                self.quasi_static_residual(&base, &others, &perturbed, y, &mut dy, &mut shifted)?;
+                for i in 0..m {
+                    jacobian.matrix_mut()[j * m + i] = (shifted[i] - residual[i]) / delta;
+                }
+            }
+            jacobian.factorize()?;
+            jacobian.solve(&mut residual);
+            for (ui, ri) in u.iter_mut().zip(&residual) {
+                *ui -= ri;
+            }
+        }
+        self.quasi_static_residual(&base, &others, &u, y, &mut dy, &mut residual)?;
+        Err(ModelError::Numerical(format!(
+            "equilibrated initial state: Newton did not converge (residual {:.3e} of {:.3e})",
+            residual.iter().map(|r| r * r).sum::<f64>().sqrt(),
+            first_norm
+        )))
+    }
+
+    /// Writes the state of the quasi-static unknowns `u` = [d, Δ] (on the straight state `base`)
+    /// to `y` and the residual [d̈, σ̈] to `out`.
+    fn quasi_static_residual(
+        &mut self,
+        base: &[f64],
+        others: &[usize],
+        u: &[f64],
+        y: &mut [f64],
+        dy: &mut [f64],
+        out: &mut [f64],
+    ) -> Result<(), ModelError> {
+        let n = self.n_coordinates();
+        let e = 1 + self.rod.end_offset();
+        let shift = u[others.len()];
+        y.copy_from_slice(base);
+        y[e] += shift;
+        y[n - 1] += shift;
+        let a = Vector2::new(y[1], y[2]);
+        let b = Vector2::new(y[e], y[e + 1]);
+        let straight = self.rod.straight(a, b);
+        for (k, &i) in others.iter().enumerate() {
+            y[1 + i] = straight[i] + u[k];
+        }
+        self.evaluate(y, dy)?;
+        let (acc_a, acc_b) = (
+            Vector2::new(dy[n + 1], dy[n + 2]),
+            Vector2::new(dy[n + e], dy[n + e + 1]),
+        );
+        let straight_acc = self.rod.straight(acc_a, acc_b);
+        for (k, &i) in others.iter().enumerate() {
+            out[k] = dy[n + 1 + i] - straight_acc[i];
+        }
+        let chord = b - a;
+        let t = chord / chord.norm();
+        let rate = Vector2::new(y[n + e], y[n + e + 1]) - Vector2::new(y[n + 1], y[n + 2]);
+        out[others.len()] =
+            (acc_b - acc_a).dot(&t) + (rate.norm_squared() - rate.dot(&t).powi(2)) / chord.norm();
+        Ok(())
     }
 
     fn constraint_state(&self, y: &[f64]) -> ConstraintState {

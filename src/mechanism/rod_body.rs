@@ -191,31 +191,23 @@ impl RodBody {
         }
     }
 
-    /// Coordinates and velocities of the straight rod from A to B moving rigidly with end
-    /// velocities v_A, v_B (|B − A| = l, (B − A)·(v_B − v_A) = 0).
-    pub fn straight_state(
-        &self,
-        a: Vector2<f64>,
-        b: Vector2<f64>,
-        v_a: Vector2<f64>,
-        v_b: Vector2<f64>,
-    ) -> (Vec<f64>, Vec<f64>) {
+    /// Model coordinates of the straight, uniformly stretched rod from `a` to `b`: r(x) = a +
+    /// (x/L)(b − a), r_x = (b − a)/L (the natural coordinates [a, b] of the rigid rod). The map is
+    /// linear, so applied to end velocities or accelerations it gives the straight rod's rates.
+    pub fn straight(&self, a: Vector2<f64>, b: Vector2<f64>) -> Vec<f64> {
         match self {
-            Self::Rigid { .. } => (vec![a.x, a.y, b.x, b.y], vec![v_a.x, v_a.y, v_b.x, v_b.y]),
+            Self::Rigid { .. } => vec![a.x, a.y, b.x, b.y],
             Self::Flexible(model) => {
                 let rod = model.rod();
-                let length = rod.properties().length;
-                let d = b - a;
-                let e = rod.straight_configuration(a, d.y.atan2(d.x));
-                let slope_rate = (v_b - v_a) / length;
-                let h = length / rod.n_elements() as f64;
-                let e_dot: Vec<f64> = (0..=rod.n_elements())
+                let n = rod.n_elements();
+                let slope = (b - a) / rod.properties().length;
+                let e: Vec<f64> = (0..=n)
                     .flat_map(|k| {
-                        let v = v_a + (k as f64 * h) * slope_rate;
-                        [v.x, v.y, slope_rate.x, slope_rate.y]
+                        let r = a + (k as f64 / n as f64) * (b - a);
+                        [r.x, r.y, slope.x, slope.y]
                     })
                     .collect();
-                (model.model_coordinates(&e), model.model_coordinates(&e_dot))
+                model.model_coordinates(&e)
             }
         }
     }
