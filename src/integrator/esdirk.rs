@@ -721,8 +721,8 @@ mod tests {
         };
         let one = [1.0; S];
         let c = apply(&one);
-        for i in 0..S {
-            assert!((c[i] - t.c[i]).abs() < 1e-15, "row sum {i}");
+        for (i, (sum, node)) in c.iter().zip(&t.c).enumerate() {
+            assert!((sum - node).abs() < 1e-15, "row sum {i}");
         }
         let c2 = mul(&c, &c);
         let c3 = mul(&c2, &c);
