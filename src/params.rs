@@ -146,7 +146,7 @@ impl Default for Parameters {
             drive_mode: DriveMode::Speed,
             gravity: 0.0,
             method: Method::Esdirk,
-            relative_tolerance: 1e-3,
+            relative_tolerance: 1e-2,
             max_step_size: 1e-4,
         }
     }
@@ -300,8 +300,8 @@ impl Parameters {
             "solver.relativeTolerance",
             self.relative_tolerance,
             1e-12,
-            1e-2,
-            "[1e-12, 0.01]",
+            1e-1,
+            "[1e-12, 0.1]",
         )?;
         require_in(
             "solver.maxStepSize",

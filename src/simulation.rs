@@ -2,7 +2,6 @@
 //! outputs out. This is what the FMU, the examples and the benchmarks drive.
 
 use crate::error::ModelError;
-use crate::integrator::dense::interpolate;
 use crate::integrator::{Integrator, IntegratorState, Stats};
 use crate::mechanism::{ContactState, Energies, Inputs, SliderCrank};
 use crate::params::{DriveMode, InitialState, Parameters};
@@ -73,10 +72,11 @@ pub struct Snapshot {
     pub time: f64,
     /// State at `time`.
     pub state: Vec<f64>,
-    /// The last accepted step: start time, state and contact state there.
-    pub step_start: (f64, Vec<f64>, ContactState),
-    /// The end of the last accepted step (the integrator's point, ≥ `time`): time and state.
-    pub step_end: (f64, Vec<f64>),
+    /// The last accepted step: start time, state, its derivative and the contact state there.
+    pub step_start: (f64, Vec<f64>, Vec<f64>, ContactState),
+    /// The end of the last accepted step (the integrator's point, ≥ `time`): time, state and its
+    /// derivative.
+    pub step_end: (f64, Vec<f64>, Vec<f64>),
     /// Integrator state (step size, f at the step end, Jacobian, statistics).
     pub integrator: IntegratorState,
     /// Contact state at the step end.
@@ -105,9 +105,11 @@ pub struct Simulation {
     state: Vec<f64>,
     step_start: f64,
     y_start: Vec<f64>,
+    f_start: Vec<f64>,
     contact_start: ContactState,
     step_end: f64,
     y_end: Vec<f64>,
+    f_end: Vec<f64>,
     scratch: Vec<f64>,
     speed_changed: bool,
     restart: bool,
@@ -139,7 +141,9 @@ impl Simulation {
             integrator,
             time: 0.0,
             y_start: state.clone(),
+            f_start: vec![0.0; state.len()],
             y_end: state.clone(),
+            f_end: vec![0.0; state.len()],
             state,
             step_start: 0.0,
             step_end: 0.0,
@@ -285,23 +289,30 @@ impl Simulation {
                 self.state.copy_from_slice(&self.y_end);
                 return Err(e);
             }
+            let (f0, f1) = self.integrator.derivatives();
+            self.f_start.copy_from_slice(f0);
+            self.f_end.copy_from_slice(f1);
         }
         self.time = t_end;
         if t_end == self.step_end {
             self.state.copy_from_slice(&self.y_end);
         } else {
             let h = self.step_end - self.step_start;
-            let (f0, f1) = self.integrator.derivatives();
-            interpolate(
-                self.mechanism.n_coordinates(),
+            let contact = self.mechanism.contact_state();
+            self.mechanism.set_contact_state(self.contact_start);
+            let dense = self.integrator.state_within(
+                &mut self.mechanism,
+                self.step_start,
                 h,
                 &self.y_start,
-                f0,
+                &self.f_start,
                 &self.y_end,
-                f1,
+                &self.f_end,
                 (t_end - self.step_start) / h,
                 &mut self.state,
             );
+            self.mechanism.set_contact_state(contact);
+            dense?;
         }
         Ok(())
     }
@@ -360,8 +371,13 @@ impl Simulation {
         Snapshot {
             time: self.time,
             state: self.state.clone(),
-            step_start: (self.step_start, self.y_start.clone(), self.contact_start),
-            step_end: (self.step_end, self.y_end.clone()),
+            step_start: (
+                self.step_start,
+                self.y_start.clone(),
+                self.f_start.clone(),
+                self.contact_start,
+            ),
+            step_end: (self.step_end, self.y_end.clone(), self.f_end.clone()),
             integrator: self.integrator.state(),
             contact: self.mechanism.contact_state(),
             inputs: self.mechanism.inputs,
@@ -376,7 +392,9 @@ impl Simulation {
         let lengths = [
             snapshot.state.len(),
             snapshot.step_start.1.len(),
+            snapshot.step_start.2.len(),
             snapshot.step_end.1.len(),
+            snapshot.step_end.2.len(),
         ];
         if lengths.iter().any(|&l| l != n) {
             return Err(ModelError::Numerical(format!(
@@ -388,9 +406,11 @@ impl Simulation {
         self.state.copy_from_slice(&snapshot.state);
         self.step_start = snapshot.step_start.0;
         self.y_start.copy_from_slice(&snapshot.step_start.1);
-        self.contact_start = snapshot.step_start.2;
+        self.f_start.copy_from_slice(&snapshot.step_start.2);
+        self.contact_start = snapshot.step_start.3;
         self.step_end = snapshot.step_end.0;
         self.y_end.copy_from_slice(&snapshot.step_end.1);
+        self.f_end.copy_from_slice(&snapshot.step_end.2);
         self.mechanism.set_contact_state(snapshot.contact);
         self.mechanism.inputs = snapshot.inputs;
         self.speed_changed = snapshot.speed_changed;

@@ -3,7 +3,7 @@ benchmark B at 5000 rpm, 1e-4 s communication step) for the rod and joint models
 acceptance list, all in one run. Prints a Markdown table of wall time (best of three), the ratio to
 the rigid rod with the same joint, and the integrator's steps and right-hand-side evaluations.
 
-usage: benchmark.py FMU [--quick]
+usage: benchmark.py FMU [--quick] [NAME=VALUE ...]   (start values applied to every case)
 """
 import sys
 import time
@@ -41,7 +41,7 @@ def run(fmu, stop, start_values):
     return best, int(result["solver.steps"][-1]), int(result["solver.evaluations"][-1])
 
 
-def main(fmu: str, quick: bool) -> None:
+def main(fmu: str, quick: bool, common: dict) -> None:
     md = read_model_description(fmu)
     stop = float(md.defaultExperiment.stopTime)
     cases = CASES[:4] + CASES[8:10] if quick else CASES
@@ -49,11 +49,12 @@ def main(fmu: str, quick: bool) -> None:
     print("|---|---|---|---|---|---|---|")
     rigid = {}
     for label, joint, values in cases:
-        wall, steps, evaluations = run(fmu, stop, {"joint.model": joint, **values})
+        wall, steps, evaluations = run(fmu, stop, {"joint.model": joint, **common, **values})
         rigid.setdefault(joint, wall)
         print(f"| {label} | {JOINT_NAMES[joint]} | {wall:.3f} | {wall / rigid[joint]:.2f} | "
               f"{stop / wall:.3f} | {steps} | {evaluations} |", flush=True)
 
 
 if __name__ == "__main__":
-    main(sys.argv[1], "--quick" in sys.argv[2:])
+    settings = dict(a.split("=", 1) for a in sys.argv[2:] if "=" in a)
+    main(sys.argv[1], "--quick" in sys.argv[2:], {k: float(v) for k, v in settings.items()})

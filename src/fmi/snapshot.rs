@@ -209,9 +209,11 @@ impl FmuSnapshot {
             w.f64s(&s.state);
             w.f64(s.step_start.0);
             w.f64s(&s.step_start.1);
-            w.contact(&s.step_start.2);
+            w.f64s(&s.step_start.2);
+            w.contact(&s.step_start.3);
             w.f64(s.step_end.0);
             w.f64s(&s.step_end.1);
+            w.f64s(&s.step_end.2);
             match &s.integrator {
                 IntegratorState::DormandPrince {
                     h,
@@ -312,8 +314,8 @@ impl FmuSnapshot {
         let simulation = if r.flag()? {
             let sim_time = r.f64()?;
             let state_vector = r.f64s()?;
-            let step_start = (r.f64()?, r.f64s()?, r.contact()?);
-            let step_end = (r.f64()?, r.f64s()?);
+            let step_start = (r.f64()?, r.f64s()?, r.f64s()?, r.contact()?);
+            let step_end = (r.f64()?, r.f64s()?, r.f64s()?);
             let integrator = match r.u8()? {
                 0 => IntegratorState::DormandPrince {
                     h: r.f64()?,

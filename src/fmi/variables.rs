@@ -628,9 +628,9 @@ pub const VARIABLES: &[Variable] = &[
     parameter(
         Vr::SolverRelativeTolerance,
         "solver.relativeTolerance",
-        1e-3,
-        1e-12,
         1e-2,
+        1e-12,
+        1e-1,
         "1",
         "Relative tolerance of the internal error-controlled integrator",
     ),

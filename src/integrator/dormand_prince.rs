@@ -8,7 +8,7 @@
 //! # References
 //! - Dormand & Prince (1980); Hairer, Nørsett & Wanner (1993), Table II.5.2 and code DOPRI5.
 
-use super::{OdeSystem, Stats, Tolerances, initial_step};
+use super::{ErrorScales, OdeSystem, Stats, Tolerances, initial_step};
 use crate::error::ModelError;
 
 const C: [f64; 7] = [0.0, 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0, 1.0, 1.0];
@@ -57,8 +57,8 @@ const E: [f64; 7] = [
 #[derive(Clone, Debug)]
 pub struct DormandPrince {
     tolerances: Tolerances,
-    /// Per-component scales: absolute tolerance = `tolerances.absolute` × scale.
-    scales: Vec<f64>,
+    /// Per-component error weights.
+    scales: ErrorScales,
     k: [Vec<f64>; 7],
     y_stage: Vec<f64>,
     /// Proposed next step size (0: not yet known).
@@ -74,7 +74,7 @@ impl DormandPrince {
         tolerances.validate()?;
         Ok(Self {
             tolerances,
-            scales: vec![1.0; n],
+            scales: ErrorScales::uniform(n),
             k: std::array::from_fn(|_| vec![0.0; n]),
             y_stage: vec![0.0; n],
             h: 0.0,
@@ -83,8 +83,8 @@ impl DormandPrince {
         })
     }
 
-    /// Sets per-component scales (absolute tolerance = `absolute` × scale), one per state.
-    pub fn with_scales(mut self, scales: Vec<f64>) -> Result<Self, ModelError> {
+    /// Sets per-component error weights, one per state.
+    pub fn with_scales(mut self, scales: ErrorScales) -> Result<Self, ModelError> {
         if scales.len() != self.scales.len() {
             return Err(ModelError::Numerical(format!(
                 "{} scales for {} states",
@@ -272,9 +272,10 @@ impl DormandPrince {
             relative, absolute, ..
         } = self.tolerances;
         let mut sum = 0.0;
-        for (i, ((&y_i, &stage), &s)) in y.iter().zip(&self.y_stage).zip(&self.scales).enumerate() {
+        for (i, (&y_i, &stage)) in y.iter().zip(&self.y_stage).enumerate() {
             let err: f64 = h * (0..7).map(|j| E[j] * self.k[j][i]).sum::<f64>();
-            let scale = absolute * s + relative * y_i.abs().max(stage.abs());
+            let scale = absolute * self.scales.absolute[i]
+                + relative * self.scales.relative[i] * y_i.abs().max(stage.abs());
             sum += (err / scale).powi(2);
         }
         let norm = (sum / y.len().max(1) as f64).sqrt();

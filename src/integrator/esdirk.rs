@@ -33,7 +33,7 @@
 //!   (simplified Newton, convergence rate, Jacobian reuse, error-estimate filtering).
 
 use super::lu::Lu;
-use super::{MechanicalSystem, Stats, Tolerances, initial_step, scaled_norm};
+use super::{ErrorScales, MechanicalSystem, Stats, Tolerances, initial_step, scaled_norm};
 use crate::error::ModelError;
 
 /// Largest number of stages of a tableau.
@@ -48,7 +48,7 @@ const REUSE_RATE: f64 = 0.1;
 const HISTORY: usize = usize::MAX;
 
 /// An ESDIRK Butcher tableau: explicit first stage, γ on the diagonal, stiffly accurate (last row
-/// of A = b), padded to [`MAX_STAGES`].
+/// of A = b), padded to the largest supported stage count.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Tableau {
     /// Number of stages s.
@@ -201,7 +201,7 @@ pub struct EsdirkState {
 #[derive(Clone, Debug)]
 pub struct Esdirk {
     tolerances: Tolerances,
-    scales: Vec<f64>,
+    scales: ErrorScales,
     n_q: usize,
     state: EsdirkState,
     /// Whether the Jacobian was computed at the start of the current step.
@@ -227,7 +227,7 @@ impl Esdirk {
         n: usize,
         n_q: usize,
         tolerances: Tolerances,
-        scales: Vec<f64>,
+        scales: ErrorScales,
     ) -> Result<Self, ModelError> {
         tolerances.validate()?;
         if scales.len() != n || 2 * n_q > n {
@@ -355,7 +355,7 @@ impl Esdirk {
                 Some(end) if last => (end - *t, end),
                 _ => (proposal, *t + proposal),
             };
-            match self.try_step(f, *t, y, h) {
+            match self.try_step(f, *t, y, h, true) {
                 Err(failure) => {
                     self.state.stats.rejected += 1;
                     rejected_last = true;
@@ -392,6 +392,64 @@ impl Esdirk {
                 )));
             }
         }
+    }
+
+    /// The state at t₀ + Δt inside the last accepted step (t₀, y₀) → (t₁, y₁), written to
+    /// `out`: one step of the method itself from y₀ (`f0` = f(t₀, y₀)), without error control.
+    ///
+    /// This is the implicit method's dense output. A polynomial through the step's ends would
+    /// amplify the unresolved stiff components (their accelerations are ω² times their
+    /// amplitudes, ωh ≫ 1 once the step has grown past them); the method's own step damps them
+    /// as the step itself did. It leaves the step sequence untouched (Newton memory, history,
+    /// statistics other than evaluations); the Newton matrix is refactorised for the next step.
+    pub fn state_within<F: MechanicalSystem>(
+        &mut self,
+        f: &mut F,
+        t0: f64,
+        y0: &[f64],
+        f0: &[f64],
+        dt: f64,
+        out: &mut [f64],
+    ) -> Result<(), ModelError> {
+        let (rate, steps, rejected) = (
+            self.state.newton_rate,
+            self.state.stats.steps,
+            self.state.stats.rejected,
+        );
+        let factorizations = self.state.stats.factorizations;
+        out.copy_from_slice(y0);
+        self.k[0].copy_from_slice(f0);
+        let mut pieces = 1u32;
+        let mut done = 0u32;
+        let mut t = t0;
+        let result = loop {
+            let h = dt / f64::from(pieces);
+            match self.try_step(f, t, out, h, false) {
+                Ok(_) => {
+                    out.copy_from_slice(&self.y_new);
+                    t += h;
+                    done += 1;
+                    if done == pieces {
+                        break Ok(());
+                    }
+                    let (first, rest) = self.k.split_at_mut(1);
+                    first[0].copy_from_slice(&rest[rest.len() - 1]);
+                }
+                Err(_) if pieces < 8 && done == 0 => pieces *= 2,
+                Err(_) => {
+                    break Err(ModelError::Numerical(format!(
+                        "dense output at t = {} s: Newton did not converge",
+                        t0 + dt
+                    )));
+                }
+            }
+        };
+        self.state.newton_rate = rate;
+        self.state.stats.steps = steps;
+        self.state.stats.rejected = rejected;
+        self.state.stats.factorizations = factorizations;
+        self.state.h_factored = 0.0;
+        result
     }
 
     /// Accepts the step just computed: hooks, state, FSAL, next step size, Jacobian policy.
@@ -447,7 +505,12 @@ impl Esdirk {
         let n_q = self.n_q;
         f.rhs(t, y, &mut self.base);
         self.stage.copy_from_slice(y);
-        for (j, (&y_j, &scale)) in y.iter().zip(&self.scales).take(2 * n_q).enumerate() {
+        for (j, (&y_j, &scale)) in y
+            .iter()
+            .zip(&self.scales.absolute)
+            .take(2 * n_q)
+            .enumerate()
+        {
             let delta = f64::EPSILON.sqrt() * y_j.abs().max(scale);
             self.stage[j] = y_j + delta;
             f.rhs(t, &self.stage, &mut self.rates);
@@ -492,6 +555,7 @@ impl Esdirk {
         t: f64,
         y: &[f64],
         h: f64,
+        use_history: bool,
     ) -> Result<f64, Failure> {
         self.step_rate = 0.0;
         if self.state.h_factored != h {
@@ -515,9 +579,12 @@ impl Esdirk {
             ..
         } = *self.table;
         for i in 1..stages {
-            for (m, base) in self.base.iter_mut().enumerate() {
-                let sum: f64 = (0..i).map(|j| a[i][j] * self.k[j][m]).sum();
-                *base = y[m] + h * sum;
+            self.base.copy_from_slice(y);
+            for (j, k) in self.k.iter().enumerate().take(i) {
+                let w = h * a[i][j];
+                for (base, kj) in self.base.iter_mut().zip(k) {
+                    *base += w * kj;
+                }
             }
             // Predictor: the cubic Hermite interpolant of the velocities (v, a known at stages
             // j < i and at the start of the last accepted step): between the closest known
@@ -538,7 +605,7 @@ impl Esdirk {
             let pair = match (below, above) {
                 (Some(a), Some(b)) => Some((a, b)),
                 _ if nearest > 0 => Some((0, nearest)),
-                _ if !self.state.history.is_empty() => Some((HISTORY, 0)),
+                _ if use_history && !self.state.history.is_empty() => Some((HISTORY, 0)),
                 _ => None,
             };
             let point = |j: usize| -> (f64, &[f64], &[f64]) {
@@ -596,8 +663,10 @@ impl Esdirk {
                     }
                     let v = &mut self.stage[n_q + m];
                     *v += dv;
-                    let sc_v = absolute * self.scales[n_q + m] + relative * v.abs();
-                    let sc_q = absolute * self.scales[m] + relative * self.stage[m].abs();
+                    let sc_v = absolute * self.scales.absolute[n_q + m]
+                        + relative * self.scales.relative[n_q + m] * v.abs();
+                    let sc_q = absolute * self.scales.absolute[m]
+                        + relative * self.scales.relative[m] * self.stage[m].abs();
                     sum += (dv / sc_v).powi(2) + (hg * dv / sc_q).powi(2);
                 }
                 let norm = (sum / (2 * n_q) as f64).sqrt();
@@ -692,7 +761,8 @@ mod tests {
                 omega,
                 damping: 0.0,
             };
-            let mut es = Esdirk::new(&ESDIRK54, 3, 1, tolerances(rtol), vec![1.0; 3]).unwrap();
+            let mut es =
+                Esdirk::new(&ESDIRK54, 3, 1, tolerances(rtol), ErrorScales::uniform(3)).unwrap();
             let (mut t, mut y) = (0.0, [1.0, 0.0, 0.0]);
             while t < t_end {
                 es.step(&mut f, &mut t, &mut y, Some(t_end)).unwrap();

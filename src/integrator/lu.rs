@@ -78,23 +78,22 @@ impl Lu {
     /// Solves A x = b in place.
     pub fn solve(&self, b: &mut [f64]) {
         let n = self.n;
-        let a = &self.factors;
-        for k in 0..n {
-            b.swap(k, self.pivots[k]);
+        for (k, &p) in self.pivots.iter().enumerate() {
+            b.swap(k, p);
         }
-        for k in 0..n {
+        for (k, column) in self.factors.chunks_exact(n).enumerate() {
             let bk = b[k];
             if bk != 0.0 {
-                for i in k + 1..n {
-                    b[i] -= a[k * n + i] * bk;
+                for (bi, l) in b[k + 1..].iter_mut().zip(&column[k + 1..]) {
+                    *bi -= l * bk;
                 }
             }
         }
-        for k in (0..n).rev() {
-            b[k] /= a[k * n + k];
+        for (k, column) in self.factors.chunks_exact(n).enumerate().rev() {
+            b[k] /= column[k];
             let bk = b[k];
-            for i in 0..k {
-                b[i] -= a[k * n + i] * bk;
+            for (bi, u) in b[..k].iter_mut().zip(&column[..k]) {
+                *bi -= u * bk;
             }
         }
     }

@@ -9,9 +9,11 @@
 //!   or of the oil film.
 //!
 //! Both measure the local error in one weighted norm: component i is compared with
-//! `absolute · sᵢ + relative · |yᵢ|`, where the scales sᵢ carry each state's units (positions,
-//! slopes, modal amplitudes, velocities and energies differ by orders of magnitude; the mechanism
-//! provides them, [`crate::mechanism::SliderCrank::error_scales`]).
+//! `absolute · sᵢ + relative · rᵢ |yᵢ|` ([`ErrorScales`]), where the scales sᵢ carry each state's
+//! units (positions, slopes, modal amplitudes, velocities and energies differ by orders of
+//! magnitude) and rᵢ says whether a relative tolerance means anything for it (not for positions,
+//! whose size depends on the origin); the mechanism provides them,
+//! [`crate::mechanism::SliderCrank::error_scales`].
 //!
 //! The choice between the two methods and the default were made by measurement (BENCHMARKS.md,
 //! "Integrators"): the implicit method is the default for the flexible rods and the lubricated
@@ -69,8 +71,8 @@ pub trait MechanicalSystem: OdeSystem {
 }
 
 /// Error tolerances: a step is accepted when the RMS over i of
-/// err_i / (absolute · s_i + relative · max(|y_i|, |y_new,i|)) is at most 1, with s_i the
-/// component's scale (1 unless the system provides scales).
+/// err_i / (absolute · sᵢ + relative · rᵢ · max(|y_i|, |y_new,i|)) is at most 1, with sᵢ and rᵢ the
+/// component's [`ErrorScales`] (1 and 1 unless the system provides them).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Tolerances {
     /// Relative tolerance.
@@ -91,6 +93,42 @@ impl Tolerances {
         require_positive("solver.maxStepSize", self.max_step)?;
         require_positive("solver.minStepSize", self.min_step)?;
         Ok(())
+    }
+}
+
+/// Per-component weights of the error norm: component i is compared with
+/// `absolute · absolute[i] + relative · relative[i] · |yᵢ|`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ErrorScales {
+    /// Scale of each component's absolute tolerance, in its units.
+    pub absolute: Vec<f64>,
+    /// Weight of each component's relative tolerance (1: relative to its size, 0: absolute only,
+    /// for quantities whose size depends on an arbitrary origin, such as positions).
+    pub relative: Vec<f64>,
+}
+
+impl ErrorScales {
+    /// Scales 1 and relative weights 1 for `n` components (a classical mixed tolerance).
+    pub fn uniform(n: usize) -> Self {
+        Self {
+            absolute: vec![1.0; n],
+            relative: vec![1.0; n],
+        }
+    }
+
+    /// Number of components.
+    pub fn len(&self) -> usize {
+        self.absolute.len()
+    }
+
+    /// Whether there are no components.
+    pub fn is_empty(&self) -> bool {
+        self.absolute.is_empty()
+    }
+
+    /// The tolerance of component `i` at values `a`, `b` (its size is the larger).
+    fn weight(&self, i: usize, tol: &Tolerances, a: f64, b: f64) -> f64 {
+        tol.absolute * self.absolute[i] + tol.relative * self.relative[i] * a.abs().max(b.abs())
     }
 }
 
@@ -152,7 +190,7 @@ impl Integrator {
         n: usize,
         n_q: usize,
         tolerances: Tolerances,
-        scales: Vec<f64>,
+        scales: ErrorScales,
     ) -> Result<Self, ModelError> {
         Ok(match method {
             Method::DormandPrince => Self::DormandPrince(Box::new(
@@ -179,11 +217,44 @@ impl Integrator {
         }
     }
 
-    /// f at the start and at the end of the last accepted step (for dense output).
+    /// f at the start and at the end of the last accepted step.
     pub fn derivatives(&self) -> (&[f64], &[f64]) {
         match self {
             Self::DormandPrince(dp) => dp.derivatives(),
             Self::Esdirk(es) => es.derivatives(),
+        }
+    }
+
+    /// Dense output: the state at t₀ + s·h inside the accepted step (t₀, y₀, f₀) → (t₀ + h, y₁,
+    /// f₁), written to `out`. The explicit method, whose steps resolve every frequency, uses the
+    /// quintic Hermite interpolant ([`dense::interpolate`]); the implicit one takes one step of
+    /// its own from y₀ ([`Esdirk::state_within`]), or the interpolant if its Newton iteration
+    /// fails.
+    #[allow(clippy::too_many_arguments)]
+    pub fn state_within<F: MechanicalSystem>(
+        &mut self,
+        f: &mut F,
+        t0: f64,
+        h: f64,
+        y0: &[f64],
+        f0: &[f64],
+        y1: &[f64],
+        f1: &[f64],
+        s: f64,
+        out: &mut [f64],
+    ) -> Result<(), ModelError> {
+        match self {
+            Self::DormandPrince(_) => {
+                dense::interpolate(f.n_coordinates(), h, y0, f0, y1, f1, s, out);
+                Ok(())
+            }
+            Self::Esdirk(es) => {
+                if es.state_within(f, t0, y0, f0, s * h, out).is_err() {
+                    // Newton failed with the step's Jacobian: the interpolant instead.
+                    dense::interpolate(f.n_coordinates(), h, y0, f0, y1, f1, s, out);
+                }
+                Ok(())
+            }
         }
     }
 
@@ -238,13 +309,11 @@ impl Integrator {
     }
 }
 
-/// The error norm: RMS over i of err_i / (absolute·s_i + relative·max(|y0_i|, |y1_i|)), or ∞ when
-/// not finite.
-fn scaled_norm(err: &[f64], y0: &[f64], y1: &[f64], scales: &[f64], tol: &Tolerances) -> f64 {
+/// The error norm: RMS over i of err_i / [`ErrorScales`] weight, or ∞ when not finite.
+fn scaled_norm(err: &[f64], y0: &[f64], y1: &[f64], scales: &ErrorScales, tol: &Tolerances) -> f64 {
     let mut sum = 0.0;
-    for (((e, a), b), s) in err.iter().zip(y0).zip(y1).zip(scales) {
-        let scale = tol.absolute * s + tol.relative * a.abs().max(b.abs());
-        sum += (e / scale).powi(2);
+    for (i, ((e, a), b)) in err.iter().zip(y0).zip(y1).enumerate() {
+        sum += (e / scales.weight(i, tol, *a, *b)).powi(2);
     }
     let norm = (sum / err.len().max(1) as f64).sqrt();
     if norm.is_finite() {
@@ -265,20 +334,20 @@ fn initial_step<F: OdeSystem>(
     f0: &[f64],
     t_end: f64,
     tol: &Tolerances,
-    scales: &[f64],
+    scales: &ErrorScales,
     order: i32,
     y1: &mut [f64],
     f1: &mut [f64],
 ) -> f64 {
     let n = y.len().max(1) as f64;
-    let scale = |v: f64, s: f64| tol.absolute * s + tol.relative * v.abs();
+    let scale = |i: usize, v: f64| scales.weight(i, tol, v, v);
     let rms = |it: &mut dyn Iterator<Item = f64>| (it.map(|v| v * v).sum::<f64>() / n).sqrt();
-    let d0 = rms(&mut y.iter().zip(scales).map(|(&v, &s)| v / scale(v, s)));
+    let d0 = rms(&mut y.iter().enumerate().map(|(i, &v)| v / scale(i, v)));
     let d1 = rms(&mut y
         .iter()
-        .zip(scales)
         .zip(f0)
-        .map(|((&v, &s), &d)| d / scale(v, s)));
+        .enumerate()
+        .map(|(i, (&v, &d))| d / scale(i, v)));
     let h0 = if d0 < 1e-5 || d1 < 1e-5 {
         1e-6
     } else {
@@ -291,9 +360,9 @@ fn initial_step<F: OdeSystem>(
     f.rhs(t + h0, y1, f1);
     let d2 = rms(&mut y
         .iter()
-        .zip(scales)
         .zip(f1.iter().zip(f0))
-        .map(|((&v, &s), (&a, &b))| (a - b) / scale(v, s)))
+        .enumerate()
+        .map(|(i, (&v, (&a, &b)))| (a - b) / scale(i, v)))
         / h0;
     let h1 = if d1.max(d2) <= 1e-15 {
         (h0 * 1e-3).max(1e-6)

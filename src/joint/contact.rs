@@ -59,7 +59,7 @@ impl DryContact {
         }
         let chi = 0.75 * (1.0 - self.restitution * self.restitution);
         let damping = 1.0 + chi * delta_dot / impact_velocity.max(MIN_IMPACT_VELOCITY);
-        (self.stiffness * delta.powf(1.5) * damping).max(0.0)
+        (self.stiffness * delta * delta.sqrt() * damping).max(0.0)
     }
 
     /// Dynamic correction c_d(|v_T|) of the friction coefficient.
@@ -88,7 +88,7 @@ impl DryContact {
         JointForce {
             force: -f_n * n + f_t * t,
             moment: self.journal_radius * f_t,
-            potential: self.stiffness * delta.powf(2.5) / 2.5,
+            potential: self.stiffness * delta * delta * delta.sqrt() / 2.5,
         }
     }
 }

@@ -29,9 +29,9 @@ use self::constraints::{Active, ConstraintState, Constraints, Vector6};
 use self::rod_body::RodBody;
 use crate::error::ModelError;
 use crate::integrator::lu::Lu;
-use crate::integrator::{MechanicalSystem, OdeSystem};
+use crate::integrator::{ErrorScales, MechanicalSystem, OdeSystem};
 use crate::joint::{Joint, JointForce, JointKinematics, MIN_IMPACT_VELOCITY};
-use crate::params::{DriveMode, JointModel, Parameters};
+use crate::params::{DriveMode, JointModel, Parameters, RodFormulation};
 
 /// Largest penetration accepted at the first step of a contact event \[m\]: 1e-3 of the Hertz
 /// maximum penetration of a 0.1 kg, 1 m/s impact (≈ 20 µm, MODEL.md §6), so that the impact
@@ -110,6 +110,34 @@ impl Energies {
     }
 }
 
+/// The length ℓ at which the joint's force law changes (the error scales' unit of length):
+/// 1 % of the crank length at most, and
+/// - dry joint: the clearance c (contact starts when the journal crosses it);
+/// - lubricated joint: the film thickness at the switch, c (1 − ε_b) (the film force grows as
+///   (1 − ε)^−5/2 towards it);
+/// - ideal joint on a flexible rod: the rod's axial deformation under the inertial load,
+///   F L / EA with F = (m_rod + m_slider) ω₀² r_c (the joint force is the rod's axial force),
+///   per element (L/n) for the full rod, whose coordinates resolve each element's stretch.
+fn position_scale(p: &Parameters) -> f64 {
+    let base = 0.01 * p.crank_length;
+    match (p.joint_model, p.rod_formulation) {
+        (JointModel::Dry, _) => p.clearance.min(base),
+        (JointModel::Lubricated, _) => p.clearance.min(base) * (1.0 - p.switch_eccentricity),
+        (JointModel::Ideal, RodFormulation::Rigid) => base,
+        (JointModel::Ideal, rod) => {
+            let speed = p.crank_initial_speed.abs().max(1.0);
+            let load = (p.rod.mass() + p.slider_mass) * speed * speed * p.crank_length;
+            // The full rod's coordinates resolve each element's stretch, the reduced rod's the
+            // stretch between the pins.
+            let length = match rod {
+                RodFormulation::Ancf => p.rod.length / p.n_elements as f64,
+                _ => p.rod.length,
+            };
+            base.min(load * length / (p.rod.youngs_modulus * p.rod.area))
+        }
+    }
+}
+
 /// The slider-crank mechanism as a first-order system.
 #[derive(Clone, Debug)]
 pub struct SliderCrank {
@@ -126,6 +154,8 @@ pub struct SliderCrank {
     rod_mass: f64,
     /// Reference crank speed for the error scales (the initial speed, at least 1 rad/s).
     reference_speed: f64,
+    /// Length scale ℓ of the error scales \[m\].
+    position_scale: f64,
     /// M_rod⁻¹ e_j for j ∈ {A_x, A_y, B_x, B_y}, column-major (n_rod × 4).
     rod_compliance: Vec<f64>,
     /// W = E_sᵀ M⁻¹ E_s.
@@ -179,6 +209,7 @@ impl SliderCrank {
             rod_length: p.rod.length,
             rod_mass: p.rod.mass(),
             reference_speed: p.crank_initial_speed.abs().max(1.0),
+            position_scale: position_scale(p),
             rod_compliance,
             w,
             inputs: Inputs {
@@ -206,28 +237,26 @@ impl SliderCrank {
         2 * self.n_coordinates() + 4
     }
 
-    /// Scale of each state component: the integrators compare its error with
-    /// `rtol · (scale + |y|)` (MODEL.md §6; BENCHMARKS.md "Integrators").
+    /// Error weights of each state component ([`ErrorScales`]): the integrators compare its
+    /// local error with `rtol · sᵢ` for coordinates and velocities (absolute only: positions and
+    /// velocities have no natural origin) and with `rtol · (sᵢ + |yᵢ|)` for the work integrals.
     ///
     /// Every state is measured by the displacement (or velocity) it causes in the mechanism, in
-    /// units of the crank length ℓ = r_c and of the crank-pin speed V = ω₀ r_c
+    /// units of the joint's length scale ℓ (see `position_scale`) and of the speed V = ω₀ ℓ
     /// (ω₀ = |crank.initialSpeed|, at least 1 rad/s):
     /// ```text
-    /// θ, θ_d          1 rad                 θ̇            ω₀
+    /// θ, θ_d          ℓ / r_c               θ̇            V / r_c
     /// rod coordinate  ℓ / d_j               its rate     V / d_j
     /// x_s             ℓ                     ẋ_s          V
-    /// works           ½ m V²,  m = I_O/r_c² + m_rod + m_slider
+    /// works           ½ m (ω₀ r_c)² ℓ / r_c,   m = I_O/r_c² + m_rod + m_slider
     /// ```
     /// with d_j the largest displacement along the rod per unit of coordinate j (1 for positions,
     /// ≈ (4/27) l_e for ANCF slopes, the mode shape's largest value for modal amplitudes). A
     /// coordinate whose unit moves the rod little gets a proportionally larger scale, so the
     /// error control asks the same physical accuracy of every coordinate.
-    pub fn error_scales(&self) -> Vec<f64> {
+    pub fn error_scales(&self) -> ErrorScales {
         let n = self.n_coordinates();
-        let length = match self.joint.dry_contact() {
-            Some(dry) => dry.clearance.min(0.01 * self.crank_length),
-            None => 0.01 * self.crank_length,
-        };
+        let length = self.position_scale;
         let speed = self.reference_speed * length;
         let pin_speed = self.reference_speed * self.crank_length;
         let mass =
@@ -245,7 +274,13 @@ impl SliderCrank {
         for s in &mut scales[2 * n + 1..] {
             *s = 0.5 * mass * pin_speed * pin_speed * length / self.crank_length;
         }
-        scales
+        let relative = (0..scales.len())
+            .map(|i| if i > 2 * n { 1.0 } else { 0.0 })
+            .collect();
+        ErrorScales {
+            absolute: scales,
+            relative,
+        }
     }
 
     /// The rod body.
@@ -324,7 +359,7 @@ impl SliderCrank {
             .collect();
         let m = others.len() + 1;
         let base = y.to_vec();
-        let scales = self.error_scales();
+        let scales = self.error_scales().absolute;
         let mut u = vec![0.0; m];
         let mut residual = vec![0.0; m];
         let mut shifted = vec![0.0; m];
@@ -337,7 +372,9 @@ impl SliderCrank {
             if first_norm.is_nan() {
                 first_norm = norm;
             }
-            if norm <= 1e-8 * first_norm || norm == 0.0 {
+            // 1e-7 of the initial residual: below the round-off of the finite-difference Jacobian
+            // of a 64-element rod, far below any acceleration the start could excite.
+            if norm <= 1e-7 * first_norm || norm == 0.0 {
                 return Ok(());
             }
             for j in 0..m {
@@ -457,26 +494,39 @@ impl SliderCrank {
 
     /// Solves (C W Cᵀ) x = r on the k active rows (inactive rows padded with identity).
     fn solve_schur(&self, c: &Constraints, r: Vector6) -> Result<Vector6, ModelError> {
-        // S = C W Cᵀ on the k active rows only (rows of C beyond k are zero).
+        // S = C W Cᵀ on the k active rows only (rows of C beyond k are zero), then S = L Lᵀ.
         let k = c.rows;
-        let mut cw = SMatrix::<f64, 6, 6>::zeros();
-        for i in 0..k {
-            for j in 0..6 {
-                cw[(i, j)] = (0..6).map(|m| c.jacobian[(i, m)] * self.w[(m, j)]).sum();
+        let mut cw = [[0.0; 6]; 6];
+        for (i, row) in cw.iter_mut().enumerate().take(k) {
+            for (j, v) in row.iter_mut().enumerate() {
+                *v = (0..6).map(|m| c.jacobian[(i, m)] * self.w[(m, j)]).sum();
             }
         }
-        let mut s = SMatrix::<f64, 6, 6>::identity();
+        let mut l = [[0.0; 6]; 6];
         for i in 0..k {
             for j in 0..=i {
-                let v = (0..6).map(|m| cw[(i, m)] * c.jacobian[(j, m)]).sum();
-                s[(i, j)] = v;
-                s[(j, i)] = v;
+                let s_ij: f64 = (0..6).map(|m| cw[i][m] * c.jacobian[(j, m)]).sum();
+                let sum = s_ij - (0..j).map(|m| l[i][m] * l[j][m]).sum::<f64>();
+                if i == j {
+                    if !(sum > 0.0 && sum.is_finite()) {
+                        return Err(ModelError::Numerical(
+                            "singular constraint Jacobian (locked configuration)".into(),
+                        ));
+                    }
+                    l[i][i] = sum.sqrt();
+                } else {
+                    l[i][j] = sum / l[j][j];
+                }
             }
         }
-        let chol = s.cholesky().ok_or_else(|| {
-            ModelError::Numerical("singular constraint Jacobian (locked configuration)".into())
-        })?;
-        Ok(chol.solve(&r))
+        let mut x = Vector6::zeros();
+        for i in 0..k {
+            x[i] = (r[i] - (0..i).map(|m| l[i][m] * x[m]).sum::<f64>()) / l[i][i];
+        }
+        for i in (0..k).rev() {
+            x[i] = (x[i] - (i + 1..k).map(|m| l[m][i] * x[m]).sum::<f64>()) / l[i][i];
+        }
+        Ok(x)
     }
 
     /// Adds −G μ to the accelerations (or velocities) `out` for μ on s: M⁻¹ Cᵀλ applied.

@@ -33,6 +33,13 @@ impl Modes {
 /// Solves K φ = λ M φ for symmetric `k` and symmetric positive definite `m`.
 pub fn generalized_eigen(k: MatRef<'_, f64>, m: MatRef<'_, f64>) -> Result<Modes, ModelError> {
     let n = k.nrows();
+    if n == 0 {
+        // No coordinates, no modes (faer's eigensolver does not accept an empty matrix).
+        return Ok(Modes {
+            eigenvalues: Vec::new(),
+            shapes: Mat::zeros(0, 0),
+        });
+    }
     let llt = m.llt(Side::Lower).map_err(|e| {
         ModelError::Numerical(format!(
             "mass matrix ({n}×{n}) is not positive definite: {e:?}"
@@ -60,6 +67,15 @@ pub fn generalized_eigen(k: MatRef<'_, f64>, m: MatRef<'_, f64>) -> Result<Modes
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A system without coordinates has no modes (a pinned–pinned rod reduced to its pins).
+    #[test]
+    fn empty_system_has_no_modes() {
+        let empty = Mat::<f64>::zeros(0, 0);
+        let modes = generalized_eigen(empty.as_ref(), empty.as_ref()).unwrap();
+        assert!(modes.eigenvalues.is_empty());
+        assert_eq!(modes.shapes.nrows(), 0);
+    }
 
     /// Two masses, three springs: ω² = k/m and 3k/m; shapes mass-normalised.
     #[test]
