@@ -63,6 +63,62 @@ pub struct Outputs {
     pub dissipated_energy: f64,
     /// Constraint drift ‖Φ‖.
     pub constraint_drift: f64,
+    /// Largest |joint force| over the last communication interval \[N\] ([`PeakHold`]).
+    pub joint_force_peak: f64,
+    /// Largest |slider acceleration| over the last communication interval \[m/s²\].
+    pub slider_acceleration_peak: f64,
+    /// Contact onsets in the last communication interval.
+    pub contact_onsets: u64,
+    /// Contact onsets since the start.
+    pub contact_onsets_total: u64,
+}
+
+/// Extremes of the solution over a stretch of time, and the contact onsets in it.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Peaks {
+    /// Largest |joint force| \[N\].
+    pub joint_force: f64,
+    /// Largest |slider acceleration| \[m/s²\].
+    pub slider_acceleration: f64,
+    /// Number of contact onsets.
+    pub contact_onsets: u64,
+}
+
+impl Peaks {
+    fn absorb(&mut self, other: &Peaks) {
+        self.joint_force = self.joint_force.max(other.joint_force);
+        self.slider_acceleration = self.slider_acceleration.max(other.slider_acceleration);
+        self.contact_onsets += other.contact_onsets;
+    }
+}
+
+/// Peak-hold bookkeeping: what a sampled output misses between communication points.
+///
+/// An impact lasts tens of microseconds, less than a typical communication step, so the joint
+/// force and slider acceleration read at communication points alias their peaks. The peak-hold
+/// outputs are the maxima over the communication interval (t_prev, t] of every accepted internal
+/// step's end point and of the value at t itself; the contact onsets are counted at the accepted
+/// step in which the journal starts touching. The internal steps follow the solution, not the
+/// master's grid, so the maxima do not depend on the communication step.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct PeakHold {
+    /// Over the current communication interval, from the step ends inside it.
+    pub interval: Peaks,
+    /// At the end of the last accepted step.
+    pub step_end: Peaks,
+    /// Whether `step_end` lies beyond the current time (it belongs to a later interval).
+    pub pending: bool,
+    /// Contact onsets up to the current time.
+    pub total_onsets: u64,
+}
+
+impl PeakHold {
+    /// Moves the last step end's extremes into the current interval.
+    fn take_step_end(&mut self) {
+        self.interval.absorb(&self.step_end);
+        self.total_onsets += self.step_end.contact_onsets;
+        self.pending = false;
+    }
 }
 
 /// A complete, restorable state of a [`Simulation`] (parameters excepted).
@@ -87,6 +143,8 @@ pub struct Snapshot {
     pub speed_changed: bool,
     /// Whether the step sequence restarts at `time` (an input changed).
     pub restart: bool,
+    /// Peak-hold outputs.
+    pub peaks: PeakHold,
 }
 
 /// The slider-crank simulation.
@@ -113,6 +171,7 @@ pub struct Simulation {
     scratch: Vec<f64>,
     speed_changed: bool,
     restart: bool,
+    peaks: PeakHold,
 }
 
 impl Simulation {
@@ -149,6 +208,7 @@ impl Simulation {
             step_end: 0.0,
             speed_changed: false,
             restart: false,
+            peaks: PeakHold::default(),
         })
     }
 
@@ -246,6 +306,7 @@ impl Simulation {
             self.mechanism.set_contact_state(contact);
             self.y_end.copy_from_slice(&self.state);
             self.step_end = self.time;
+            self.peaks.pending = false;
         }
         self.step_start = self.step_end;
         self.y_start.copy_from_slice(&self.y_end);
@@ -275,6 +336,10 @@ impl Simulation {
             self.y_start.copy_from_slice(&self.y_end);
             self.speed_changed = false;
         }
+        self.peaks.interval = Peaks::default();
+        if self.peaks.pending && self.step_end <= t_end {
+            self.peaks.take_step_end();
+        }
         while self.step_end < t_end {
             self.step_start = self.step_end;
             self.y_start.copy_from_slice(&self.y_end);
@@ -292,6 +357,10 @@ impl Simulation {
             let (f0, f1) = self.integrator.derivatives();
             self.f_start.copy_from_slice(f0);
             self.f_end.copy_from_slice(f1);
+            self.record_step_end()?;
+            if self.step_end <= t_end {
+                self.peaks.take_step_end();
+            }
         }
         self.time = t_end;
         if t_end == self.step_end {
@@ -315,6 +384,24 @@ impl Simulation {
             dense?;
         }
         Ok(())
+    }
+
+    /// Evaluates the end of the step just accepted for the peak-hold outputs.
+    fn record_step_end(&mut self) -> Result<(), ModelError> {
+        let onset = !self.contact_start.in_contact && self.mechanism.contact_state().in_contact;
+        let ev = self.mechanism.evaluate(&self.y_end, &mut self.scratch)?;
+        self.peaks.step_end = Peaks {
+            joint_force: ev.joint_force.norm(),
+            slider_acceleration: ev.slider_acceleration.abs(),
+            contact_onsets: u64::from(onset),
+        };
+        self.peaks.pending = true;
+        Ok(())
+    }
+
+    /// Peak-hold extremes and contact onsets ([`PeakHold`]).
+    pub fn peaks(&self) -> &PeakHold {
+        &self.peaks
     }
 
     /// Energies of the current state.
@@ -363,6 +450,14 @@ impl Simulation {
             drive_work: energies.drive_work,
             dissipated_energy: energies.dissipated(),
             constraint_drift: ev.drift,
+            joint_force_peak: self.peaks.interval.joint_force.max(ev.joint_force.norm()),
+            slider_acceleration_peak: self
+                .peaks
+                .interval
+                .slider_acceleration
+                .max(ev.slider_acceleration.abs()),
+            contact_onsets: self.peaks.interval.contact_onsets,
+            contact_onsets_total: self.peaks.total_onsets,
         })
     }
 
@@ -383,6 +478,7 @@ impl Simulation {
             inputs: self.mechanism.inputs,
             speed_changed: self.speed_changed,
             restart: self.restart,
+            peaks: self.peaks,
         }
     }
 
@@ -415,6 +511,7 @@ impl Simulation {
         self.mechanism.inputs = snapshot.inputs;
         self.speed_changed = snapshot.speed_changed;
         self.restart = snapshot.restart;
+        self.peaks = snapshot.peaks;
         Ok(())
     }
 }

@@ -283,6 +283,8 @@ impl Instance {
                 Vr::EnergyKinetic => o.kinetic_energy,
                 Vr::EnergyDriveWork => o.drive_work,
                 Vr::EnergyDissipated => o.dissipated_energy,
+                Vr::JointForcePeak => o.joint_force_peak,
+                Vr::SliderAccelerationPeak => o.slider_acceleration_peak,
                 _ => unreachable_type(v)?,
             };
         }
@@ -351,6 +353,14 @@ impl Instance {
                 Vr::SolverEvaluations => {
                     let evaluations = self.simulation()?.stats().evaluations;
                     i32::try_from(evaluations).unwrap_or(i32::MAX)
+                }
+                Vr::JointContactOnsets => {
+                    let onsets = self.outputs()?.contact_onsets;
+                    i32::try_from(onsets).unwrap_or(i32::MAX)
+                }
+                Vr::JointContactOnsetsTotal => {
+                    let onsets = self.outputs()?.contact_onsets_total;
+                    i32::try_from(onsets).unwrap_or(i32::MAX)
                 }
                 _ => unreachable_type(v)?,
             };

@@ -14,10 +14,10 @@ use super::variables::{Causality, Kind, VARIABLES};
 use crate::integrator::{EsdirkState, IntegratorState, Stats};
 use crate::mechanism::{ContactState, Inputs};
 use crate::params::Parameters;
-use crate::simulation::Snapshot;
+use crate::simulation::{PeakHold, Peaks, Snapshot};
 
 const MAGIC: &[u8; 4] = b"FSCS";
-const VERSION: u32 = 2;
+const VERSION: u32 = 3;
 /// Largest accepted vector length (states, Jacobian entries) in a state.
 const MAX_LENGTH: usize = 1 << 20;
 const STATES: [State; 6] = [
@@ -88,6 +88,11 @@ impl Writer {
         self.u8(u8::from(c.in_contact));
         self.f64(c.impact_velocity);
     }
+    fn peaks(&mut self, p: &Peaks) {
+        self.f64(p.joint_force);
+        self.f64(p.slider_acceleration);
+        self.u64(p.contact_onsets);
+    }
     fn stats(&mut self, s: &Stats) {
         for x in [
             s.steps,
@@ -149,6 +154,13 @@ impl Reader<'_> {
         Ok(ContactState {
             in_contact: self.flag()?,
             impact_velocity: self.f64()?,
+        })
+    }
+    fn peaks(&mut self) -> Result<Peaks, FmuError> {
+        Ok(Peaks {
+            joint_force: self.f64()?,
+            slider_acceleration: self.f64()?,
+            contact_onsets: self.u64()?,
         })
     }
     fn stats(&mut self) -> Result<Stats, FmuError> {
@@ -245,6 +257,10 @@ impl FmuSnapshot {
             w.f64(s.inputs.slider_force);
             w.u8(u8::from(s.speed_changed));
             w.u8(u8::from(s.restart));
+            w.peaks(&s.peaks.interval);
+            w.peaks(&s.peaks.step_end);
+            w.u8(u8::from(s.peaks.pending));
+            w.u64(s.peaks.total_onsets);
         }
         let checksum = fnv64(&w.0);
         w.u64(checksum);
@@ -352,6 +368,12 @@ impl FmuSnapshot {
                 inputs: sim_inputs,
                 speed_changed: r.flag()?,
                 restart: r.flag()?,
+                peaks: PeakHold {
+                    interval: r.peaks()?,
+                    step_end: r.peaks()?,
+                    pending: r.flag()?,
+                    total_onsets: r.u64()?,
+                },
             })
         } else {
             None

@@ -180,8 +180,10 @@ pub const UNITS: &[(&str, Option<[i32; 4]>)] = &[
     ("N/m1.5", None),
 ];
 
-/// Default experiment: two crank revolutions of benchmark B (5000 rpm) with a 1e-4 s step.
-pub const DEFAULT_EXPERIMENT: (f64, f64, f64, f64) = (0.0, 0.024, 1e-6, 1e-4);
+/// Default experiment: two crank revolutions of benchmark B (5000 rpm) with a 1e-4 s step; the
+/// tolerance is the default of `solver.relativeTolerance` (the FMU integrates with that parameter,
+/// not with the master's fmi2SetupExperiment tolerance).
+pub const DEFAULT_EXPERIMENT: (f64, f64, f64, f64) = (0.0, 0.024, 1e-2, 1e-4);
 
 /// Log categories: name and description.
 pub const LOG_CATEGORIES: &[(&str, &str)] = &[
@@ -259,6 +261,10 @@ pub enum Vr {
     SolverMethod,
     SolverEvaluations,
     RodInitialState,
+    JointForcePeak,
+    SliderAccelerationPeak,
+    JointContactOnsets,
+    JointContactOnsetsTotal,
 }
 
 const fn parameter(
@@ -301,6 +307,35 @@ const fn output(
             min: f64::NEG_INFINITY,
             max: f64::INFINITY,
             unit,
+        },
+        description,
+    }
+}
+
+/// A peak-hold output: a Real that changes only at communication points.
+const fn peak(
+    vr: Vr,
+    name: &'static str,
+    unit: &'static str,
+    description: &'static str,
+) -> Variable {
+    Variable {
+        variability: Variability::Discrete,
+        ..output(vr, name, unit, description)
+    }
+}
+
+/// A counter output (Integer, discrete, non-negative).
+const fn count(vr: Vr, name: &'static str, description: &'static str) -> Variable {
+    Variable {
+        vr,
+        name,
+        causality: Causality::Output,
+        variability: Variability::Discrete,
+        kind: Kind::Integer {
+            start: None,
+            min: 0,
+            max: i32::MAX,
         },
         description,
     }
@@ -632,7 +667,7 @@ pub const VARIABLES: &[Variable] = &[
         1e-12,
         1e-1,
         "1",
-        "Relative tolerance of the internal error-controlled integrator",
+        "Relative tolerance of the internal error-controlled integrator (at most 1e-4 with solver.method = explicit)",
     ),
     parameter(
         Vr::SolverMaxStepSize,
@@ -788,18 +823,11 @@ pub const VARIABLES: &[Variable] = &[
         "J",
         "Energy dissipated in the joint",
     ),
-    Variable {
-        vr: Vr::SolverSteps,
-        name: "solver.steps",
-        causality: Causality::Output,
-        variability: Variability::Discrete,
-        kind: Kind::Integer {
-            start: None,
-            min: 0,
-            max: i32::MAX,
-        },
-        description: "Accepted internal integrator steps",
-    },
+    count(
+        Vr::SolverSteps,
+        "solver.steps",
+        "Accepted internal integrator steps",
+    ),
     enumeration(
         Vr::RodBoundary,
         "rod.boundary",
@@ -814,24 +842,39 @@ pub const VARIABLES: &[Variable] = &[
         5,
         "Internal time-integration method",
     ),
-    Variable {
-        vr: Vr::SolverEvaluations,
-        name: "solver.evaluations",
-        causality: Causality::Output,
-        variability: Variability::Discrete,
-        kind: Kind::Integer {
-            start: None,
-            min: 0,
-            max: i32::MAX,
-        },
-        description: "Right-hand-side evaluations of the internal integrator (with those of Jacobians)",
-    },
+    count(
+        Vr::SolverEvaluations,
+        "solver.evaluations",
+        "Right-hand-side evaluations of the internal integrator (with those of Jacobians)",
+    ),
     enumeration(
         Vr::RodInitialState,
         "rod.initialState",
         1,
         4,
         "How the rod starts (the crank, slider and pins start with the ideal mechanism's motion)",
+    ),
+    peak(
+        Vr::JointForcePeak,
+        "joint.forcePeak",
+        "N",
+        "Largest joint.force over the last communication interval (every internal step; plot this for peaks)",
+    ),
+    peak(
+        Vr::SliderAccelerationPeak,
+        "slider.accelerationPeak",
+        "m/s2",
+        "Largest |slider.acceleration| over the last communication interval (every internal step)",
+    ),
+    count(
+        Vr::JointContactOnsets,
+        "joint.contactOnsets",
+        "Contact onsets (journal starts touching the bearing) in the last communication interval",
+    ),
+    count(
+        Vr::JointContactOnsetsTotal,
+        "joint.contactOnsetsTotal",
+        "Contact onsets since the start",
     ),
 ];
 
