@@ -31,6 +31,19 @@ pub enum JointModel {
     Lubricated,
 }
 
+/// Hysteresis-damping law of the dry contact force F_N = K δ^1.5 (1 + χ δ̇/δ̇⁻)
+/// ([`crate::joint::DryContact`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ContactLaw {
+    /// Lankarani & Nikravesh (1990), χ = 3(1 − c_e²)/4: derived for restitution near 1 (the seed
+    /// paper's law).
+    LankaraniNikravesh,
+    /// Flores, Machado, Silva & Martins (2011), χ = 8(1 − c_e)/(5 c_e): any restitution.
+    Flores,
+    /// Hu & Guo (2015), χ = 3(1 − c_e)/(2 c_e): any restitution.
+    HuGuo,
+}
+
 /// How the rod starts.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum InitialState {
@@ -89,6 +102,8 @@ pub struct Parameters {
     pub joint_poisson_ratio: f64,
     /// Coefficient of restitution c_e ∈ (0, 1].
     pub restitution: f64,
+    /// Hysteresis-damping law of the dry contact.
+    pub contact_law: ContactLaw,
     /// Coulomb friction coefficient μ.
     pub friction: f64,
     /// Tangential speed below which friction vanishes v₀ \[m/s\].
@@ -146,6 +161,7 @@ impl Default for Parameters {
             joint_youngs_modulus: 207e9,
             joint_poisson_ratio: 0.3,
             restitution: 0.9,
+            contact_law: ContactLaw::LankaraniNikravesh,
             friction: 0.0,
             friction_v0: 1e-4,
             friction_v1: 1e-3,
@@ -206,6 +222,19 @@ impl Parameters {
         }
     }
 
+    /// Benchmark D (issue 9, the lubricated → dry hand-over): the defaults (4-mode rod) with the
+    /// lubricated joint, a 40× thinner lubricant (0.01 Pa s) and a 0.5 kg slider, so that the
+    /// journal crosses the switch eccentricity ratio and reaches metal contact many times per
+    /// revolution.
+    pub fn benchmark_d() -> Self {
+        Self {
+            joint_model: JointModel::Lubricated,
+            viscosity: 0.01,
+            slider_mass: 0.5,
+            ..Self::default()
+        }
+    }
+
     /// Bearing (hole) radius R_i = R_j + c \[m\].
     pub fn bearing_radius(&self) -> f64 {
         self.journal_radius + self.clearance
@@ -226,6 +255,26 @@ impl Parameters {
             max_step: self.max_step_size,
             min_step: 1e-14,
         }
+    }
+
+    /// Largest bearing length-to-diameter ratio L/D for which the short-bearing (Ocvirk) film is
+    /// a fair approximation.
+    pub const SHORT_BEARING_MAX_RATIO: f64 = 0.5;
+
+    /// Valid parameters that take the model outside the range of one of its laws: one message per
+    /// cause, for the FMU to log as a warning when it builds the model.
+    pub fn warnings(&self) -> Vec<String> {
+        let mut warnings = Vec::new();
+        let ratio = self.bearing_length / (2.0 * self.journal_radius);
+        if self.joint_model == JointModel::Lubricated && ratio > Self::SHORT_BEARING_MAX_RATIO {
+            warnings.push(format!(
+                "joint.bearingLength / (2 joint.journalRadius) = {ratio:.3} is outside the \
+                 short-bearing range L/D <= {}: the film force is the infinitely-short-bearing \
+                 model's, which overestimates a long bearing's squeeze and wedge forces",
+                Self::SHORT_BEARING_MAX_RATIO
+            ));
+        }
+        warnings
     }
 
     /// Checks every parameter and their consistency.
@@ -338,6 +387,22 @@ impl Parameters {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The short-bearing film is flagged outside L/D <= 0.5 (benchmark C: L/D = 2.1), only for
+    /// the lubricated joint.
+    #[test]
+    fn long_bearings_are_flagged() {
+        let c = Parameters::benchmark_c();
+        let warnings = c.warnings();
+        assert_eq!(warnings.len(), 1);
+        assert!(warnings[0].contains("2.105") && warnings[0].contains("L/D <= 0.5"));
+        let short = Parameters {
+            bearing_length: 0.009,
+            ..c
+        };
+        assert!(short.warnings().is_empty());
+        assert!(Parameters::default().warnings().is_empty());
+    }
 
     #[test]
     fn defaults_are_valid_and_benchmark_b() {

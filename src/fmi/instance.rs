@@ -9,7 +9,7 @@ use super::state::State;
 use super::variables::{Causality, ENUMERATIONS, Kind, VARIABLES, Variable, Vr, variable};
 use crate::integrator::Method;
 use crate::joint::hertz_stiffness;
-use crate::params::{DriveMode, InitialState, JointModel, Parameters, RodFormulation};
+use crate::params::{ContactLaw, DriveMode, InitialState, JointModel, Parameters, RodFormulation};
 use crate::reduction::Boundary;
 use crate::simulation::{Outputs, Simulation};
 
@@ -78,6 +78,11 @@ const DRIVES: [DriveMode; 2] = [DriveMode::Speed, DriveMode::Torque];
 const BOUNDARIES: [Boundary; 2] = [Boundary::Pins, Boundary::PositionsAndSlopes];
 const METHODS: [Method; 2] = [Method::Esdirk, Method::DormandPrince];
 const INITIAL_STATES: [InitialState; 2] = [InitialState::Equilibrated, InitialState::Straight];
+const CONTACT_LAWS: [ContactLaw; 3] = [
+    ContactLaw::LankaraniNikravesh,
+    ContactLaw::Flores,
+    ContactLaw::HuGuo,
+];
 
 impl Instance {
     /// A fresh instance with the start values of the variable table.
@@ -146,6 +151,9 @@ impl Instance {
                 self.parameters.drive_mode,
                 sim.state().len()
             ));
+            for warning in self.parameters.warnings() {
+                self.logger.warning(&warning);
+            }
             self.simulation = Some(sim);
         }
         self.simulation
@@ -536,6 +544,7 @@ pub fn integer_parameter(p: &Parameters, vr: Vr) -> Option<i32> {
         Vr::RodBoundary => enum_value(&BOUNDARIES, &p.boundary),
         Vr::SolverMethod => enum_value(&METHODS, &p.method),
         Vr::RodInitialState => enum_value(&INITIAL_STATES, &p.initial_state),
+        Vr::JointContactLaw => enum_value(&CONTACT_LAWS, &p.contact_law),
         Vr::RodNElements => i32::try_from(p.n_elements).unwrap_or(i32::MAX),
         Vr::RodNModes => i32::try_from(p.n_modes).unwrap_or(i32::MAX),
         _ => return None,
@@ -558,6 +567,7 @@ pub fn set_integer_parameter(p: &mut Parameters, vr: Vr, value: i32) -> bool {
         Vr::RodBoundary => item(&BOUNDARIES, value).map(|x| p.boundary = x),
         Vr::SolverMethod => item(&METHODS, value).map(|x| p.method = x),
         Vr::RodInitialState => item(&INITIAL_STATES, value).map(|x| p.initial_state = x),
+        Vr::JointContactLaw => item(&CONTACT_LAWS, value).map(|x| p.contact_law = x),
         Vr::RodNElements => count.map(|n| p.n_elements = n),
         Vr::RodNModes => count.map(|n| p.n_modes = n),
         _ => None,

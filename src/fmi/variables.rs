@@ -155,6 +155,23 @@ pub const ENUMERATIONS: &[Enumeration] = &[
             ),
         ],
     },
+    Enumeration {
+        name: "ContactLaw",
+        items: &[
+            (
+                "lankaraniNikravesh",
+                "Lankarani-Nikravesh (1990) hysteresis damping, for restitution near 1",
+            ),
+            (
+                "flores",
+                "Flores et al. (2011) hysteresis damping, any restitution",
+            ),
+            (
+                "huGuo",
+                "Hu and Guo (2015) hysteresis damping, any restitution",
+            ),
+        ],
+    },
 ];
 
 /// Units: name and SI base-unit exponents (kg, m, s, rad), or None where FMI 2's integer
@@ -265,6 +282,7 @@ pub enum Vr {
     SliderAccelerationPeak,
     JointContactOnsets,
     JointContactOnsetsTotal,
+    JointContactLaw,
 }
 
 const fn parameter(
@@ -594,7 +612,7 @@ pub const VARIABLES: &[Variable] = &[
         1e-3,
         1.0,
         "1",
-        "Coefficient of restitution (Lankarani-Nikravesh)",
+        "Coefficient of restitution of the dry contact (see joint.contactLaw)",
     ),
     parameter(
         Vr::JointFriction,
@@ -875,6 +893,13 @@ pub const VARIABLES: &[Variable] = &[
         Vr::JointContactOnsetsTotal,
         "joint.contactOnsetsTotal",
         "Contact onsets since the start",
+    ),
+    enumeration(
+        Vr::JointContactLaw,
+        "joint.contactLaw",
+        1,
+        6,
+        "Hysteresis-damping law of the dry contact force (dry joint, and the lubricated joint near the wall)",
     ),
 ];
 

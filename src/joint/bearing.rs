@@ -146,6 +146,7 @@ impl JournalBearing {
 mod tests {
     use super::*;
     use crate::joint::hertz_stiffness;
+    use crate::params::ContactLaw;
 
     fn bearing() -> JournalBearing {
         JournalBearing {
@@ -157,6 +158,7 @@ mod tests {
                 clearance: 0.5e-3,
                 journal_radius: 0.0095,
                 restitution: 0.9,
+                law: ContactLaw::LankaraniNikravesh,
                 friction: 0.0,
                 friction_v0: 1e-4,
                 friction_v1: 1e-3,

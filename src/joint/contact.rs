@@ -1,8 +1,12 @@
-//! Dry contact of a pin in a hole: Lankarani–Nikravesh normal force and Coulomb friction with
-//! Ambrósio's velocity correction.
+//! Dry contact of a pin in a hole: Hertz force with hysteresis damping (Lankarani–Nikravesh by
+//! default, or a law valid for any restitution) and Coulomb friction with Ambrósio's velocity
+//! correction.
 //!
 //! ```text
-//! F_N = K δ^1.5 [1 + 3(1 − c_e²)/4 · δ̇/δ̇⁽⁻⁾]                        (δ > 0, clamped ≥ 0)
+//! F_N = K δ^1.5 [1 + χ(c_e) · δ̇/δ̇⁽⁻⁾]                                (δ > 0, clamped ≥ 0)
+//! χ   = 3(1 − c_e²)/4       Lankarani–Nikravesh (1990), for c_e near 1
+//!     = 8(1 − c_e)/(5 c_e)  Flores et al. (2011)
+//!     = 3(1 − c_e)/(2 c_e)  Hu & Guo (2015)
 //! K   = 4 / (3(σ_i + σ_j)) · (R_i R_j / (R_i − R_j))^½,   σ_k = (1 − ν_k²)/E_k
 //! F_T = −μ c_d(|v_T|) F_N sgn(v_T),  c_d = 0 (|v_T| ≤ v₀), (|v_T| − v₀)/(v₁ − v₀), 1 (|v_T| ≥ v₁)
 //! v_T = ė · t + R_j ω_j                                  (the bearing does not rotate)
@@ -14,10 +18,21 @@
 //! - J. Ambrósio (2003), Impact of rigid and flexible multibody systems, in Virtual Nonlinear
 //!   Multibody Systems, Springer (friction correction c_d).
 //! - Flores et al. (2008), book, ch. 4–5; MODEL.md §3.
+//! - P. Flores, M. Machado, M. T. Silva, J. M. Martins (2011), On the continuous contact force
+//!   models for soft materials in multibody dynamics, Multibody Syst. Dyn. 25, 357–375.
+//! - S. Hu, X. Guo (2015), A dissipative contact force model for impact analysis in multibody
+//!   dynamics, Multibody Syst. Dyn. 35, 131–151.
+//!
+//! Low impact speeds: δ̇⁽⁻⁾ is the normal speed at the onset of the contact event, floored at
+//! [`MIN_IMPACT_VELOCITY`]. Below it the event is a continuous (resting or sliding) contact and
+//! the damping term uses the floor, so the ratio δ̇/δ̇⁽⁻⁾ stays bounded; the normal force is never
+//! tensile (clamped at 0 during separation, where δ̇ < 0 and low restitution make the bracket
+//! negative).
 
 use nalgebra::Vector2;
 
 use super::{JointForce, JointKinematics, MIN_IMPACT_VELOCITY};
+use crate::params::ContactLaw;
 
 /// Hertz-type stiffness K \[N/m^1.5\] of a journal of radius `r_journal` in a bearing of radius
 /// `r_bearing`, both of Young's modulus `e` and Poisson ratio `nu`.
@@ -37,6 +52,8 @@ pub struct DryContact {
     pub journal_radius: f64,
     /// Coefficient of restitution c_e.
     pub restitution: f64,
+    /// Hysteresis-damping law.
+    pub law: ContactLaw,
     /// Friction coefficient μ.
     pub friction: f64,
     /// Friction dead band v₀ \[m/s\].
@@ -51,13 +68,24 @@ impl DryContact {
         k.e.norm() - self.clearance
     }
 
-    /// Lankarani–Nikravesh normal force for penetration `delta` > 0, rate `delta_dot` and impact
-    /// velocity `impact_velocity` (floored at 1e-4 m/s); 0 without penetration.
+    /// Hysteresis factor χ of the contact law.
+    pub fn hysteresis_factor(&self) -> f64 {
+        let e = self.restitution;
+        match self.law {
+            ContactLaw::LankaraniNikravesh => 0.75 * (1.0 - e * e),
+            ContactLaw::Flores => 1.6 * (1.0 - e) / e,
+            ContactLaw::HuGuo => 1.5 * (1.0 - e) / e,
+        }
+    }
+
+    /// Normal force for penetration `delta` > 0, rate `delta_dot` and impact velocity
+    /// `impact_velocity` (floored at [`MIN_IMPACT_VELOCITY`]); 0 without penetration, never
+    /// negative.
     pub fn normal_force(&self, delta: f64, delta_dot: f64, impact_velocity: f64) -> f64 {
         if delta <= 0.0 {
             return 0.0;
         }
-        let chi = 0.75 * (1.0 - self.restitution * self.restitution);
+        let chi = self.hysteresis_factor();
         let damping = 1.0 + chi * delta_dot / impact_velocity.max(MIN_IMPACT_VELOCITY);
         (self.stiffness * delta * delta.sqrt() * damping).max(0.0)
     }
@@ -97,12 +125,83 @@ impl DryContact {
 mod tests {
     use super::*;
 
+    /// Restitution reached by an isolated central impact of a mass m at speed v₀ on the bearing
+    /// wall, m δ̈ = −F_N(δ, δ̇, v₀), integrated with classical Runge–Kutta at 1/20 000 of the
+    /// contact duration: the exit speed over v₀ once δ is back to 0.
+    fn effective_restitution(contact: &DryContact, mass: f64, v0: f64) -> f64 {
+        let k = contact.stiffness;
+        // Hertz contact duration ≈ 2.94 (m²/(K² v₀))^(1/5) (elastic impact).
+        let duration = 2.94 * (mass * mass / (k * k * v0)).powf(0.2);
+        let h = duration / 20_000.0;
+        let accel = |d: f64, v: f64| -contact.normal_force(d, v, v0) / mass;
+        let (mut d, mut v) = (0.0f64, v0);
+        for _ in 0..200_000 {
+            let (k1d, k1v) = (v, accel(d, v));
+            let (k2d, k2v) = (
+                v + 0.5 * h * k1v,
+                accel(d + 0.5 * h * k1d, v + 0.5 * h * k1v),
+            );
+            let (k3d, k3v) = (
+                v + 0.5 * h * k2v,
+                accel(d + 0.5 * h * k2d, v + 0.5 * h * k2v),
+            );
+            let (k4d, k4v) = (v + h * k3v, accel(d + h * k3d, v + h * k3v));
+            d += h / 6.0 * (k1d + 2.0 * k2d + 2.0 * k3d + k4d);
+            v += h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
+            if d <= 0.0 && v < 0.0 {
+                return -v / v0;
+            }
+        }
+        panic!("the impact did not end");
+    }
+
+    /// Issue 9, acceptance 3: the kinetic energy lost in an isolated impact, 1 − e_eff², is the
+    /// 1 − c_e² the Flores and Hu–Guo laws are built for, within 10 %, for c_e = 0.3, 0.6, 0.9.
+    /// Lankarani–Nikravesh, derived for c_e near 1, dissipates too little: measured −42 %, −33 %
+    /// and −13 % of the predicted loss (e_eff = 0.684, 0.756, 0.913); asserted to stay short by
+    /// more than 10 %. The force is never tensile on the way out.
+    #[test]
+    fn isolated_impact_loses_the_energy_each_law_predicts() {
+        for law in [
+            ContactLaw::LankaraniNikravesh,
+            ContactLaw::Flores,
+            ContactLaw::HuGuo,
+        ] {
+            for restitution in [0.3, 0.6, 0.9] {
+                let c = DryContact {
+                    law,
+                    restitution,
+                    ..contact()
+                };
+                let e = effective_restitution(&c, 0.21, 1.0);
+                let (lost, predicted) = (1.0 - e * e, 1.0 - restitution * restitution);
+                let error = (lost - predicted) / predicted;
+                println!(
+                    "{law:?}, c_e = {restitution}: e_eff = {e:.4}, energy lost {lost:.4} vs {predicted:.4} ({:+.1} %)",
+                    100.0 * error
+                );
+                if law == ContactLaw::LankaraniNikravesh {
+                    assert!(error < -0.1, "LN unexpectedly right at c_e = {restitution}");
+                } else {
+                    assert!(
+                        error.abs() <= 0.1,
+                        "{law:?} at c_e = {restitution}: {error}"
+                    );
+                }
+                for v in [-1.0, -0.1, -1e-3] {
+                    assert!(c.normal_force(1e-5, v, 1e-4) >= 0.0);
+                }
+            }
+        }
+    }
+
     fn contact() -> DryContact {
         DryContact {
             stiffness: hertz_stiffness(0.010, 0.0095, 207e9, 0.3),
             clearance: 0.5e-3,
             journal_radius: 0.0095,
             restitution: 0.9,
+            law: ContactLaw::LankaraniNikravesh,
             friction: 0.01,
             friction_v0: 1e-4,
             friction_v1: 1e-3,

@@ -85,6 +85,7 @@ impl Joint {
             clearance: p.clearance,
             journal_radius: p.journal_radius,
             restitution: p.restitution,
+            law: p.contact_law,
             friction: p.friction,
             friction_v0: p.friction_v0,
             friction_v1: p.friction_v1,
