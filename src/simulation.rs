@@ -61,6 +61,10 @@ pub struct Outputs {
     pub drive_work: f64,
     /// Energy dissipated in the joint since the start \[J\].
     pub dissipated_energy: f64,
+    /// Elastic energy stored in the contact, K δ^2.5 / 2.5 \[J\].
+    pub contact_energy: f64,
+    /// Gravitational potential energy (zero at y = 0) \[J\].
+    pub gravity_energy: f64,
     /// Constraint drift ‖Φ‖.
     pub constraint_drift: f64,
     /// Largest |joint force| over the last communication interval \[N\] ([`PeakHold`]).
@@ -340,7 +344,15 @@ impl Simulation {
         if self.peaks.pending && self.step_end <= t_end {
             self.peaks.take_step_end();
         }
+        let (t_start, work_start) = (self.time, self.work());
         while self.step_end < t_end {
+            if self.work() - work_start >= self.parameters.max_steps_per_interval as u64 {
+                let error = self.work_limit_error(t_start, t_end);
+                self.time = self.step_end;
+                self.state.copy_from_slice(&self.y_end);
+                self.peaks.pending = false;
+                return Err(error);
+            }
             self.step_start = self.step_end;
             self.y_start.copy_from_slice(&self.y_end);
             self.contact_start = self.mechanism.contact_state();
@@ -384,6 +396,31 @@ impl Simulation {
             dense?;
         }
         Ok(())
+    }
+
+    /// Internal step attempts so far (accepted and rejected).
+    fn work(&self) -> u64 {
+        let stats = self.integrator.stats();
+        stats.steps + stats.rejected
+    }
+
+    /// The error of an interval that ran out of work ([`Parameters::max_steps_per_interval`]):
+    /// where it stopped, at what step size, and the parameters that usually cause it.
+    fn work_limit_error(&self, t_start: f64, t_end: f64) -> ModelError {
+        let p = &self.parameters;
+        ModelError::Numerical(format!(
+            "solver.maxStepsPerInterval = {} internal steps exhausted in the communication interval \
+             [{t_start}, {t_end}] s, stopped at t = {} s with a step of {:.3e} s. Likely causes: \
+             sticking friction (joint.friction = {}), strong material damping \
+             (rod.stiffnessDamping = {} s), a very stiff contact or tight tolerance \
+             (solver.relativeTolerance = {:e}); raise solver.maxStepsPerInterval to go on",
+            p.max_steps_per_interval,
+            self.step_end,
+            self.integrator.step_size(),
+            p.friction,
+            p.rod.stiffness_damping,
+            p.relative_tolerance
+        ))
     }
 
     /// Evaluates the end of the step just accepted for the peak-hold outputs.
@@ -449,6 +486,8 @@ impl Simulation {
             kinetic_energy: energies.kinetic,
             drive_work: energies.drive_work,
             dissipated_energy: energies.dissipated(),
+            contact_energy: energies.contact,
+            gravity_energy: energies.gravity,
             constraint_drift: ev.drift,
             joint_force_peak: self.peaks.interval.joint_force.max(ev.joint_force.norm()),
             slider_acceleration_peak: self

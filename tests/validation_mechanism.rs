@@ -426,3 +426,75 @@ fn inconsistent_geometry_is_rejected() {
     let err = Simulation::new(p).unwrap_err().to_string();
     assert!(err.starts_with("rod.length = 0.12 is outside"), "{err}");
 }
+
+/// Issue 11 (bounded work): an interval that needs more internal steps than
+/// `solver.maxStepsPerInterval` ends with an error that names the limit and the likely causes,
+/// at the last accepted step, and the simulation stays usable (snapshot, restore with a higher
+/// limit, advance).
+#[test]
+fn work_limit_ends_an_interval_with_a_named_cause() {
+    let p = Parameters {
+        friction: 0.3,
+        max_steps_per_interval: 20,
+        ..Parameters::default()
+    };
+    let mut sim = Simulation::new(p.clone()).unwrap();
+    let message = sim.advance_to(2e-3).unwrap_err().to_string();
+    println!("{message}");
+    for name in [
+        "solver.maxStepsPerInterval = 20",
+        "joint.friction = 0.3",
+        "rod.stiffnessDamping",
+        "solver.relativeTolerance",
+    ] {
+        assert!(message.contains(name), "{message}");
+    }
+    let stopped = sim.time();
+    assert!(stopped > 0.0 && stopped < 2e-3, "{stopped}");
+    let attempts = sim.stats().steps + sim.stats().rejected;
+    assert_eq!(attempts, 20);
+    // Raising the limit goes on from where the interval stopped.
+    let snapshot = sim.snapshot();
+    let mut other = Simulation::new(Parameters {
+        max_steps_per_interval: 50_000,
+        ..p
+    })
+    .unwrap();
+    other.restore(&snapshot).unwrap();
+    other.advance_to(2e-3).unwrap();
+    assert!(other.outputs().unwrap().slider_position.is_finite());
+}
+
+/// Issue 11 (energy account): from the outputs alone, energy.kinetic + rod.deformationEnergy +
+/// energy.contact + energy.gravity + energy.dissipated − energy.driveWork stays constant with the
+/// dry joint and gravity (before energy.contact was an output, this sum was off by 2.6e-3 of the
+/// kinetic energy on benchmark B).
+#[test]
+fn energy_outputs_close_the_balance() {
+    let p = Parameters {
+        gravity: 9.81,
+        relative_tolerance: 1e-8,
+        ..Parameters::default()
+    };
+    let (_, rows) = run(p, REVOLUTION, 200);
+    let total = |o: &Outputs| {
+        o.kinetic_energy
+            + o.deformation_energy
+            + o.contact_energy
+            + o.gravity_energy
+            + o.dissipated_energy
+            - o.drive_work
+    };
+    let kinetic = rows.iter().fold(0.0f64, |m, o| m.max(o.kinetic_energy));
+    let residual = rows
+        .iter()
+        .fold(0.0f64, |m, o| m.max((total(o) - total(&rows[0])).abs()));
+    let contact = rows.iter().fold(0.0f64, |m, o| m.max(o.contact_energy));
+    println!(
+        "outputs' energy balance over one revolution: residual {:.1e} of the kinetic energy \
+         (largest contact energy {contact:.3} J)",
+        residual / kinetic
+    );
+    assert!(contact > 1e-3 * kinetic);
+    assert!(residual < 1e-6 * kinetic, "{:e}", residual / kinetic);
+}

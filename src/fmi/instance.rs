@@ -292,6 +292,8 @@ impl Instance {
                 Vr::EnergyDriveWork => o.drive_work,
                 Vr::EnergyDissipated => o.dissipated_energy,
                 Vr::JointForcePeak => o.joint_force_peak,
+                Vr::EnergyContact => o.contact_energy,
+                Vr::EnergyGravity => o.gravity_energy,
                 Vr::SliderAccelerationPeak => o.slider_acceleration_peak,
                 _ => unreachable_type(v)?,
             };
@@ -439,6 +441,7 @@ impl Instance {
 
     /// Restores a captured state; the model is rebuilt only if its parameters differ.
     pub fn restore(&mut self, s: &FmuSnapshot) -> Result<(), FmuError> {
+        s.validate()?;
         let same_model = self.parameters == s.parameters && self.simulation.is_some();
         let mut simulation = if same_model {
             self.simulation.take()
@@ -547,6 +550,9 @@ pub fn integer_parameter(p: &Parameters, vr: Vr) -> Option<i32> {
         Vr::JointContactLaw => enum_value(&CONTACT_LAWS, &p.contact_law),
         Vr::RodNElements => i32::try_from(p.n_elements).unwrap_or(i32::MAX),
         Vr::RodNModes => i32::try_from(p.n_modes).unwrap_or(i32::MAX),
+        Vr::SolverMaxStepsPerInterval => {
+            i32::try_from(p.max_steps_per_interval).unwrap_or(i32::MAX)
+        }
         _ => return None,
     })
 }
@@ -570,6 +576,7 @@ pub fn set_integer_parameter(p: &mut Parameters, vr: Vr, value: i32) -> bool {
         Vr::JointContactLaw => item(&CONTACT_LAWS, value).map(|x| p.contact_law = x),
         Vr::RodNElements => count.map(|n| p.n_elements = n),
         Vr::RodNModes => count.map(|n| p.n_modes = n),
+        Vr::SolverMaxStepsPerInterval => count.map(|n| p.max_steps_per_interval = n),
         _ => None,
     };
     done.is_some()

@@ -10,7 +10,7 @@ use super::instance::{
     InputValues, integer_parameter, real_parameter, set_integer_parameter, set_real_parameter,
 };
 use super::state::State;
-use super::variables::{Causality, Kind, VARIABLES};
+use super::variables::{Causality, Kind, VARIABLES, Vr};
 use crate::integrator::{EsdirkState, IntegratorState, Stats};
 use crate::mechanism::{ContactState, Inputs};
 use crate::params::Parameters;
@@ -184,7 +184,83 @@ impl Reader<'_> {
     }
 }
 
+/// `value` checked against the declared range of variable `vr` (finite, within [min, max]).
+fn check_range(vr: Vr, value: f64) -> Result<(), FmuError> {
+    let v = &VARIABLES[vr as usize];
+    let (min, max) = match v.kind {
+        Kind::Real { min, max, .. } => (min, max),
+        Kind::Integer { min, max, .. } => (f64::from(min), f64::from(max)),
+        _ => (f64::NEG_INFINITY, f64::INFINITY),
+    };
+    if value.is_finite() && min <= value && value <= max {
+        Ok(())
+    } else {
+        Err(FmuError::Invalid(format!(
+            "FMU state rejected: {} = {value:e} is outside the allowed range [{min:e}, {max:e}]",
+            v.name
+        )))
+    }
+}
+
 impl FmuSnapshot {
+    /// Checks what a hand-edited or foreign state could carry, as fmi2SetReal checks inputs:
+    /// every parameter and input inside its declared range, finite times and states, the
+    /// simulation's inputs equal to the instance's, and (once the model is built) consistent
+    /// parameters.
+    pub fn validate(&self) -> Result<(), FmuError> {
+        for v in VARIABLES
+            .iter()
+            .filter(|v| v.causality == Causality::Parameter)
+        {
+            let value = match v.kind {
+                Kind::Real { .. } => real_parameter(&self.parameters, v.vr),
+                _ => integer_parameter(&self.parameters, v.vr).map(f64::from),
+            };
+            if let Some(value) = value {
+                check_range(v.vr, value)?;
+            }
+        }
+        let i = &self.inputs;
+        check_range(Vr::DriveSpeed, i.drive_speed)?;
+        check_range(Vr::DriveTorque, i.drive_torque)?;
+        check_range(Vr::SliderForce, i.slider_force)?;
+        let bad = |what: &str| Err(FmuError::Invalid(format!("FMU state rejected: {what}")));
+        let times = [self.start_time, self.time, self.last_successful_time];
+        if times.iter().any(|t| !t.is_finite()) || self.stop_time.is_some_and(|t| !t.is_finite()) {
+            return bad("a non-finite time");
+        }
+        if let Some(s) = &self.simulation {
+            self.parameters
+                .validate()
+                .map_err(|e| FmuError::Invalid(format!("FMU state rejected: {e}")))?;
+            let finite = |v: &[f64]| v.iter().all(|x| x.is_finite());
+            let vectors = [
+                &s.state,
+                &s.step_start.1,
+                &s.step_start.2,
+                &s.step_end.1,
+                &s.step_end.2,
+            ];
+            if !(s.time.is_finite()
+                && s.step_start.0.is_finite()
+                && s.step_end.0.is_finite()
+                && vectors.iter().all(|v| finite(v)))
+            {
+                return bad("a non-finite simulation time or state");
+            }
+            let inputs = (i.drive_speed, i.drive_torque, i.slider_force);
+            if (
+                s.inputs.drive_speed,
+                s.inputs.drive_torque,
+                s.inputs.slider_force,
+            ) != inputs
+            {
+                return bad("the simulation's inputs differ from the instance's");
+            }
+        }
+        Ok(())
+    }
+
     /// Pointer-free bytes of the snapshot.
     pub fn to_bytes(&self) -> Vec<u8> {
         let mut w = Writer(Vec::with_capacity(1024));
@@ -391,5 +467,61 @@ impl FmuSnapshot {
             last_successful_time,
             simulation,
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Simulation;
+
+    fn snapshot() -> FmuSnapshot {
+        let parameters = Parameters::default();
+        let simulation = Simulation::new(parameters.clone()).unwrap().snapshot();
+        FmuSnapshot {
+            state: State::StepComplete,
+            parameters,
+            inputs: InputValues::default(),
+            start_time: 0.0,
+            stop_time: Some(0.024),
+            time: 0.0,
+            last_successful_time: 0.0,
+            simulation: Some(simulation),
+        }
+    }
+
+    fn rejected(s: &FmuSnapshot) -> String {
+        match s.validate() {
+            Err(e) => e.to_string(),
+            Ok(()) => panic!("accepted {s:?}"),
+        }
+    }
+
+    /// Issue 11: a state that passes the checksum but carries values fmi2SetReal would refuse
+    /// (non-finite or out-of-range inputs and parameters, non-finite times, an inconsistent
+    /// simulation) is rejected with a message naming what is wrong.
+    #[test]
+    fn restored_states_are_range_checked() {
+        snapshot().validate().unwrap();
+        let mut s = snapshot();
+        s.inputs.drive_speed = f64::NAN;
+        assert!(rejected(&s).contains("drive.speed = NaN"));
+        let mut s = snapshot();
+        s.inputs.drive_speed = 1e9;
+        assert!(rejected(&s).contains("drive.speed = 1e9"));
+        let mut s = snapshot();
+        s.time = f64::NAN;
+        assert!(rejected(&s).contains("non-finite time"));
+        let mut s = snapshot();
+        s.parameters.clearance = 1.0;
+        assert!(rejected(&s).contains("joint.clearance"));
+        let mut s = snapshot();
+        s.inputs.drive_torque = 5.0;
+        assert!(rejected(&s).contains("inputs differ"));
+        let mut s = snapshot();
+        if let Some(sim) = &mut s.simulation {
+            sim.state[0] = f64::INFINITY;
+        }
+        assert!(rejected(&s).contains("non-finite simulation"));
     }
 }

@@ -283,6 +283,9 @@ pub enum Vr {
     JointContactOnsets,
     JointContactOnsetsTotal,
     JointContactLaw,
+    SolverMaxStepsPerInterval,
+    EnergyContact,
+    EnergyGravity,
 }
 
 const fn parameter(
@@ -900,6 +903,26 @@ pub const VARIABLES: &[Variable] = &[
         1,
         6,
         "Hysteresis-damping law of the dry contact force (dry joint, and the lubricated joint near the wall)",
+    ),
+    integer(
+        Vr::SolverMaxStepsPerInterval,
+        "solver.maxStepsPerInterval",
+        50_000,
+        1,
+        i32::MAX,
+        "Work limit: internal step attempts per communication interval; beyond it fmi2DoStep returns fmi2Discard naming the likely cause",
+    ),
+    output(
+        Vr::EnergyContact,
+        "energy.contact",
+        "J",
+        "Elastic energy stored in the joint contact, K penetration^2.5 / 2.5",
+    ),
+    output(
+        Vr::EnergyGravity,
+        "energy.gravity",
+        "J",
+        "Gravitational potential energy of crank, rod and slider (zero at y = 0)",
     ),
 ];
 

@@ -101,6 +101,11 @@ impl DormandPrince {
         self.stats
     }
 
+    /// The step size the next step will try \[s\].
+    pub fn step_size(&self) -> f64 {
+        self.h
+    }
+
     /// The state later steps depend on: proposed step, f at the current point (empty if not
     /// known) and statistics.
     pub fn state(&self) -> (f64, Vec<f64>, Stats) {

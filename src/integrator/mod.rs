@@ -278,6 +278,14 @@ impl Integrator {
         }
     }
 
+    /// The step size the next step will try \[s\].
+    pub fn step_size(&self) -> f64 {
+        match self {
+            Self::DormandPrince(dp) => dp.step_size(),
+            Self::Esdirk(es) => es.state().h,
+        }
+    }
+
     /// The state later steps depend on.
     pub fn state(&self) -> IntegratorState {
         match self {
