@@ -1,0 +1,2 @@
+"""Tools around the FlexibleSliderCrank FMU. `python -m fsc sweep STUDY.toml` runs a parameter study
+on Dask (see README, "Parameter studies")."""

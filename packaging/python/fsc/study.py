@@ -1,0 +1,186 @@
+"""Study files: what to vary, what to keep, checked against the FMU's modelDescription before any run.
+
+A study is a TOML file:
+
+    fmu = "../target/fmu/FlexibleSliderCrank.fmu"   # relative to the study file (optional)
+    stop_time = 0.024                               # default: the DefaultExperiment's
+    output_interval = 1e-4                          # default: the DefaultExperiment's step
+    series = ["slider.acceleration"]                # time series to keep (optional)
+
+    [fixed]                                         # start values of every case
+    "rod.formulation" = 3
+
+    [grid]                                          # full factorial product
+    "joint.clearance" = [1e-4, 5e-4, 1e-3]
+    [grid.speed]                                    # parameters that vary together (one axis)
+    "crank.initialSpeed" = [104.72, 523.6]
+    "drive.speed" = [104.72, 523.6]
+
+    [[cases]]                                       # explicit cases (each combined with the grid)
+    "rod.nModes" = 4
+
+    [random]                                        # seeded samples (each combined with the grid)
+    samples = 20
+    seed = 1
+    [random.uniform]
+    "joint.friction" = [0.0, 0.2]
+
+Enumerations take their item number or name. A case is identified by a hash of its start values,
+the FMU's GUID, the stop time and the output interval.
+"""
+import hashlib
+import itertools
+import json
+import tomllib
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+from fmpy import read_model_description
+
+#: Metrics computed for every case (see runner.metrics).
+METRICS = ["peak_joint_force", "contact_onsets", "slider_acceleration_rms",
+           "slider_acceleration_peak", "max_deformation_energy", "energy_dissipated",
+           "solver_steps", "wall_time"]
+
+
+class StudyError(ValueError):
+    """A study file that cannot run, with the entry it is about."""
+
+
+@dataclass
+class Study:
+    """A checked study: the FMU, the experiment and the cases."""
+    path: Path
+    fmu: Path
+    guid: str
+    stop_time: float
+    output_interval: float
+    series: list
+    swept: list                     # names of the parameters that vary (grid, then random)
+    cases: list = field(default_factory=list)   # list of dict name -> value
+
+    def case_id(self, values: dict) -> str:
+        key = json.dumps({"values": values, "guid": self.guid, "stop_time": self.stop_time,
+                          "output_interval": self.output_interval}, sort_keys=True)
+        return hashlib.sha256(key.encode()).hexdigest()[:16]
+
+
+def _variables(md):
+    return {v.name: v for v in md.modelVariables}
+
+
+def _check_value(where: str, name: str, value, variables: dict, enums: dict):
+    """The value converted to the variable's type, or a StudyError naming the entry."""
+    v = variables.get(name)
+    if v is None:
+        raise StudyError(f"{where}: unknown variable {name!r}")
+    if v.causality not in ("parameter", "input") or v.variability == "constant":
+        raise StudyError(f"{where}: {name} is an {v.causality}, not a parameter or input")
+    if v.type == "Enumeration":
+        items = enums[v.declaredType.name]
+        if isinstance(value, str):
+            if value not in items:
+                raise StudyError(f"{where}: {name} = {value!r} is not one of {sorted(items)}")
+            return items[value]
+        if not isinstance(value, int) or isinstance(value, bool) or value not in items.values():
+            raise StudyError(f"{where}: {name} = {value!r} must be one of {sorted(items)} "
+                             f"or 1..{len(items)}")
+        return value
+    if v.type == "Integer":
+        if not isinstance(value, int) or isinstance(value, bool):
+            raise StudyError(f"{where}: {name} = {value!r} must be an integer")
+    elif v.type == "Real":
+        if not isinstance(value, (int, float)) or isinstance(value, bool):
+            raise StudyError(f"{where}: {name} = {value!r} must be a number")
+        value = float(value)
+    elif v.type == "Boolean":
+        if not isinstance(value, bool):
+            raise StudyError(f"{where}: {name} = {value!r} must be true or false")
+        return value
+    lo = float(v.min) if v.min is not None else -np.inf
+    hi = float(v.max) if v.max is not None else np.inf
+    if not (np.isfinite(value) and lo <= value <= hi):
+        unit = f" {v.unit}" if getattr(v, "unit", None) else ""
+        raise StudyError(f"{where}: {name} = {value!r} is outside the allowed range "
+                         f"[{v.min}, {v.max}]{unit}")
+    return value
+
+
+def load(path, fmu=None) -> Study:
+    """Reads and checks a study file; every entry is checked before any case runs."""
+    path = Path(path)
+    try:
+        spec = tomllib.loads(path.read_text())
+    except (OSError, tomllib.TOMLDecodeError) as e:
+        raise StudyError(f"{path}: {e}") from e
+    known = {"fmu", "stop_time", "output_interval", "series", "fixed", "grid", "cases", "random"}
+    for key in spec:
+        if key not in known:
+            raise StudyError(f"{path}: unknown entry {key!r} (known: {sorted(known)})")
+    fmu_path = Path(fmu) if fmu else path.parent / spec.get("fmu", "")
+    if not fmu_path.is_file():
+        raise StudyError(f"{path}: FMU {fmu_path} not found")
+    md = read_model_description(str(fmu_path))
+    variables = _variables(md)
+    enums = {t.name: {i.name: int(i.value) for i in t.items}
+             for t in md.typeDefinitions if t.type == "Enumeration"}
+    ex = md.defaultExperiment
+    stop_time = float(spec.get("stop_time", ex.stopTime if ex else 1.0))
+    interval = float(spec.get("output_interval", ex.stepSize if ex else stop_time / 500))
+    if not (stop_time > 0 and 0 < interval <= stop_time):
+        raise StudyError(f"{path}: need 0 < output_interval <= stop_time, got {interval}, {stop_time}")
+    series = list(spec.get("series", []))
+    for name in series:
+        if name not in variables:
+            raise StudyError(f"{path}: series: unknown variable {name!r}")
+
+    fixed = {n: _check_value(f"fixed.{n!r}", n, x, variables, enums)
+             for n, x in spec.get("fixed", {}).items()}
+    # Each grid axis is a list of cases (dicts): one parameter's values, or several parameters'
+    # equal-length lists that vary together (a table: [grid.speed] "a" = [...], "b" = [...]).
+    axes, swept = [], []
+    for n, values in spec.get("grid", {}).items():
+        linked = values if isinstance(values, dict) else {n: values}
+        lengths = {len(v) if isinstance(v, list) else 0 for v in linked.values()}
+        if 0 in lengths or len(lengths) != 1:
+            raise StudyError(f"grid.{n!r}: must be a non-empty list, or a table of "
+                             f"equal-length non-empty lists")
+        checked = {m: [_check_value(f"grid.{n!r}.{m!r}[{k}]" if m != n else f"grid.{n!r}[{k}]",
+                                    m, x, variables, enums) for k, x in enumerate(v)]
+                   for m, v in linked.items()}
+        axes.append([dict(zip(checked, row)) for row in zip(*checked.values())])
+        swept.append(next(iter(checked)))
+    explicit = [{n: _check_value(f"cases[{k}].{n!r}", n, x, variables, enums)
+                 for n, x in case.items()} for k, case in enumerate(spec.get("cases", [{}]))]
+    random_cases = [{}]
+    if "random" in spec:
+        r = spec["random"]
+        samples, seed = int(r.get("samples", 10)), int(r.get("seed", 0))
+        rng = np.random.default_rng(seed)
+        bounds = {}
+        for n, (lo, hi) in r.get("uniform", {}).items():
+            _check_value(f"random.uniform.{n!r}[0]", n, lo, variables, enums)
+            _check_value(f"random.uniform.{n!r}[1]", n, hi, variables, enums)
+            bounds[n] = (float(lo), float(hi))
+        random_cases = []
+        for _ in range(samples):
+            case = {}
+            for n, (lo, hi) in bounds.items():
+                x = rng.uniform(lo, hi)
+                case[n] = int(round(x)) if variables[n].type == "Integer" else float(x)
+            random_cases.append(case)
+        swept += list(bounds)
+
+    cases = []
+    for combination in itertools.product(*axes):
+        for extra in explicit:
+            for sample in random_cases:
+                case = dict(fixed)
+                for axis_values in combination:
+                    case.update(axis_values)
+                case.update(extra)
+                case.update(sample)
+                cases.append(case)
+    return Study(path=path, fmu=fmu_path, guid=md.guid, stop_time=stop_time,
+                 output_interval=interval, series=series, swept=swept, cases=cases)

@@ -1,0 +1,192 @@
+"""Tests of the parameter-study tool (`python -m fsc sweep`, issue 10) on the packaged FMU."""
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import psutil
+import pytest
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from fsc import study as study_mod  # noqa: E402
+from fsc.runner import run_case  # noqa: E402
+from fsc.sweep import read_results, run  # noqa: E402
+
+ROOT = Path(__file__).resolve().parents[2]
+FMU = ROOT / "target" / "fmu" / "FlexibleSliderCrank.fmu"
+PYTHON = sys.executable
+
+
+def write_study(tmp_path, body, name="study.toml"):
+    path = tmp_path / name
+    path.write_text(f'fmu = "{FMU}"\n' + body)
+    return path
+
+
+SMALL = """stop_time = 0.004
+output_interval = 1e-4
+series = ["slider.position"]
+[fixed]
+"rod.formulation" = "rigid"
+[grid]
+"joint.clearance" = [2e-4, 5e-4]
+[grid.speed]
+"drive.speed" = [300.0, 523.6]
+"crank.initialSpeed" = [300.0, 523.6]
+"""
+
+
+def rows_by_case(out):
+    rows = read_results(out).to_pylist()
+    for r in rows:
+        r.pop("wall_time")
+    return {r["case_id"]: r for r in rows}
+
+
+def serial(study):
+    """The cases run one by one in this process (no Dask)."""
+    fmu = study.fmu.read_bytes()
+    return {study.case_id(v): run_case(fmu, study.guid, v, study.stop_time, study.output_interval,
+                                       study.series)
+            for v in study.cases}
+
+
+def test_local_cluster_equals_serial_runs(tmp_path):
+    """Acceptance 1: a 2×2 study on a LocalCluster with 2 workers gives, case by case, bit for bit
+    the metrics and kept series of the same cases run serially through fmpy in this process."""
+    study = study_mod.load(write_study(tmp_path, SMALL))
+    assert len(study.cases) == 4
+    assert run(study, tmp_path / "out", workers=2, progress=False) == 4
+    rows = rows_by_case(tmp_path / "out")
+    for case_id, (status, _, metrics, series) in serial(study).items():
+        row = rows[case_id]
+        assert status == row["status"] == "ok"
+        for name, value in metrics.items():
+            if name != "wall_time":
+                assert row[name] == value, name
+        import pyarrow.parquet as pq
+        kept = pq.read_table(tmp_path / "out" / "series" / f"case={case_id}").to_pydict()
+        assert kept["slider.position"] == list(series["slider.position"])
+
+
+def test_failing_case_is_a_row(tmp_path):
+    """Acceptance 3: clearance 0 with the dry joint is an error row with the FMU's message; the
+    other cases are correct."""
+    body = SMALL.replace("[2e-4, 5e-4]", "[0.0, 5e-4]")
+    study = study_mod.load(write_study(tmp_path, body))
+    run(study, tmp_path / "out", workers=2, progress=False)
+    rows = rows_by_case(tmp_path / "out")
+    reference = serial(study)
+    for case_id, row in rows.items():
+        status, message, metrics, _ = reference[case_id]
+        assert row["status"] == status
+        if json.loads(row["parameters"])["joint.clearance"] == 0.0:
+            assert status == "error"
+            assert "joint.clearance = 0" in row["message"] and "joint.model = dry" in row["message"]
+        else:
+            assert status == "ok" and row["peak_joint_force"] == metrics["peak_joint_force"]
+
+
+def test_interrupted_study_resumes(tmp_path):
+    """Acceptance 4: finished cases are not run again, and the final dataset equals an
+    uninterrupted run's."""
+    study = study_mod.load(write_study(tmp_path, SMALL))
+    out = tmp_path / "out"
+    assert run(study, out, workers=2, progress=False) == 4
+    complete = rows_by_case(out)
+    # An interruption after two cases: their files exist, the other two do not.
+    for path in sorted((out / "results").glob("*.parquet"))[:2]:
+        path.unlink()
+    assert run(study, out, workers=2, progress=False) == 2
+    assert run(study, out, workers=2, progress=False) == 0
+    assert rows_by_case(out) == complete
+
+
+@pytest.mark.parametrize("entry, expected", [
+    ('[grid]\n"joint.clearence" = [1e-4]\n', "grid.'joint.clearence'[0]: unknown variable"),
+    ('[grid]\n"joint.clearance" = [1e-4, 2.0]\n',
+     "grid.'joint.clearance'[1]: joint.clearance = 2.0 is outside the allowed range [0.0, 0.1]"),
+    ('[fixed]\n"rod.nModes" = 2.5\n', "fixed.'rod.nModes': rod.nModes = 2.5 must be an integer"),
+    ('[fixed]\n"joint.model" = "greased"\n', "fixed.'joint.model': joint.model = 'greased' is not one of"),
+    ('[fixed]\n"joint.force" = 1.0\n', "joint.force is an output"),
+])
+def test_bad_study_fails_before_any_run(tmp_path, entry, expected):
+    """Acceptance 5: an unknown variable, an out-of-range value or a wrong type fails before any
+    run, naming the entry (and the range)."""
+    path = write_study(tmp_path, "stop_time = 0.001\n" + entry)
+    with pytest.raises(study_mod.StudyError, match=None) as e:
+        study_mod.load(path)
+    assert expected in str(e.value), str(e.value)
+    cli = subprocess.run([PYTHON, "-m", "fsc", "sweep", str(path), "--out", str(tmp_path / "o")],
+                         cwd=Path(__file__).parent, capture_output=True, text=True)
+    assert cli.returncode == 2 and expected in cli.stderr
+    assert not (tmp_path / "o").exists()
+
+
+def test_killed_worker_does_not_lose_cases(tmp_path):
+    """Acceptance 2: killing one worker process in the middle of a study still completes every
+    case, with the results of an undisturbed run."""
+    body = SMALL.replace("stop_time = 0.004", "stop_time = 0.012").replace(
+        "[2e-4, 5e-4]", "[1e-4, 2e-4, 3e-4, 5e-4]")
+    study = study_mod.load(write_study(tmp_path, body))
+    killed = []
+
+    def kill_one(_case_id, _status):
+        if not killed:
+            workers = [p for p in psutil.Process().children(recursive=True)
+                       if "python" in p.name().lower()]
+            victim = workers[0]
+            killed.append(victim.pid)
+            os.kill(victim.pid, signal.SIGKILL)
+
+    assert run(study, tmp_path / "out", workers=2, progress=False, on_result=kill_one) == 8
+    assert killed
+    rows = rows_by_case(tmp_path / "out")
+    assert len(rows) == 8
+    for case_id, (status, _, metrics, _) in serial(study).items():
+        assert rows[case_id]["status"] == status == "ok"
+        assert rows[case_id]["peak_joint_force"] == metrics["peak_joint_force"]
+
+
+def test_existing_scheduler(tmp_path):
+    """Acceptance 6: `--scheduler` runs the study on a separately started `dask scheduler` and
+    `dask worker` (with this package on their path; the FMU reaches them through Dask)."""
+    port = 8786 + os.getpid() % 1000
+    address = f"tcp://127.0.0.1:{port}"
+    env = dict(os.environ, PYTHONPATH=str(Path(__file__).resolve().parent))
+    dask = [str(Path(PYTHON).parent / "dask")]
+    scheduler = subprocess.Popen(dask + ["scheduler", "--host", "127.0.0.1", "--port", str(port),
+                                         "--no-dashboard"], env=env, cwd=tmp_path,
+                                 stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    worker = subprocess.Popen(dask + ["worker", address, "--nthreads", "1", "--no-dashboard"],
+                              env=env, cwd=tmp_path, stdout=subprocess.DEVNULL,
+                              stderr=subprocess.DEVNULL)
+    try:
+        from dask.distributed import Client
+        deadline = time.time() + 60
+        while True:
+            try:
+                with Client(address, timeout=5) as c:
+                    c.wait_for_workers(1, timeout=30)
+                break
+            except OSError:
+                if time.time() > deadline:
+                    raise
+                time.sleep(0.5)
+        path = write_study(tmp_path, SMALL)
+        cli = subprocess.run([PYTHON, "-m", "fsc", "sweep", str(path), "--out",
+                              str(tmp_path / "out"), "--scheduler", address],
+                             cwd=Path(__file__).parent, capture_output=True, text=True,
+                             timeout=300)
+        assert cli.returncode == 0, cli.stderr
+        study = study_mod.load(path)
+        rows = rows_by_case(tmp_path / "out")
+        for case_id, (status, _, metrics, _) in serial(study).items():
+            assert rows[case_id]["peak_joint_force"] == metrics["peak_joint_force"]
+    finally:
+        for p in (worker, scheduler):
+            p.terminate()
+            p.wait(timeout=30)
