@@ -1,0 +1,69 @@
+"""The README's parameter, input and output tables, generated from modelDescription.xml.
+
+`python packaging/python/readme_tables.py` prints them; test_readme.py checks that the README's
+tables are exactly these, so documentation and FMU cannot disagree.
+"""
+import sys
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1].parent
+XML = ROOT / "modelDescription" / "modelDescription.xml"
+#: README heading of each table, by causality.
+HEADINGS = {
+    "parameter": "#### Parameters (fixed: set before fmi2ExitInitializationMode)",
+    "calculatedParameter": "#### Calculated parameter",
+    "input": "#### Inputs (continuous, settable at every communication point)",
+    "output": "#### Outputs",
+}
+
+
+def tables(xml=XML) -> dict:
+    """Markdown rows of each causality's table."""
+    root = ET.parse(xml).getroot()
+    enums = {}
+    for t in root.find("TypeDefinitions"):
+        e = t.find("Enumeration")
+        if e is not None:
+            enums[t.get("name")] = [(i.get("value"), i.get("name")) for i in e]
+    rows = {c: [] for c in HEADINGS}
+    for v in root.find("ModelVariables"):
+        causality, kind = v.get("causality"), v[0]
+        unit = kind.get("unit") or ""
+        if kind.tag in ("Integer", "Boolean") and causality == "output":
+            unit = kind.tag
+        start = kind.get("start", "")
+        if kind.tag == "Enumeration":
+            items = enums[kind.get("declaredType")]
+            start = dict(items).get(start, start)
+            allowed = ", ".join(f"{value}={name}" for value, name in items)
+        elif kind.get("min") or kind.get("max"):
+            allowed = f"[{kind.get('min', '')}, {kind.get('max', '')}]"
+        else:
+            allowed = ""
+        description = v.get("description").replace("|", "\\|")
+        name = v.get("name")
+        if causality == "output":
+            rows[causality].append(f"| `{name}` | {unit} | {description} |")
+        else:
+            rows[causality].append(f"| `{name}` | {unit} | {start} | {allowed} | {description} |")
+    return rows
+
+
+def readme_rows(readme: str, heading: str) -> list:
+    """The table rows under `heading` in the README (without header and separator)."""
+    lines = readme[readme.index(heading):].splitlines()[1:]
+    table = []
+    for line in lines:
+        if line.startswith("|"):
+            table.append(line)
+        elif table:
+            break
+    return table[2:]
+
+
+if __name__ == "__main__":
+    for causality, rows in tables(sys.argv[1] if len(sys.argv) > 1 else XML).items():
+        print(HEADINGS[causality])
+        print("\n".join(rows))
+        print()
