@@ -4,7 +4,7 @@
 use crate::error::ModelError;
 use crate::integrator::{Integrator, IntegratorState, Stats};
 use crate::mechanism::{ContactState, Energies, Inputs, SliderCrank};
-use crate::params::{DriveMode, InitialState, Parameters};
+use crate::params::{DriveMode, InitialState, Parameters, RodFormulation};
 
 /// Resolution of the simulation clock: 2⁻⁴⁰ s ≈ 0.91 ps.
 ///
@@ -125,6 +125,30 @@ impl PeakHold {
     }
 }
 
+/// Validity monitors: limits beyond which the model has left the domain its laws were made for.
+/// Each cause is reported once per simulation, as a message for the FMU's logger
+/// ([`Simulation::take_warnings`]).
+pub mod validity {
+    /// Largest contact penetration, as a fraction of the journal radius: Hertz theory assumes a
+    /// contact zone small against the radii.
+    pub const PENETRATION_PER_RADIUS: f64 = 0.01;
+    /// Largest rod mid-span deflection, as a fraction of the rod length: beyond it a reduced
+    /// (Craig–Bampton) rod leaves the small-deformation range of its modes.
+    pub const DEFLECTION_PER_LENGTH: f64 = 0.05;
+    /// Largest crank speed \[rad/s\]: the range of `drive.speed`.
+    pub const CRANK_SPEED: f64 = 1e4;
+    /// Largest excursion of the slider beyond its rigid-mechanism stroke [l − r − c, l + r + c], as
+    /// a fraction of the crank length.
+    pub const STROKE_EXCESS_PER_CRANK: f64 = 0.01;
+}
+
+/// Which validity warnings were already given.
+#[derive(Clone, Debug, Default)]
+struct Monitor {
+    fired: [bool; 4],
+    messages: Vec<String>,
+}
+
 /// A complete, restorable state of a [`Simulation`] (parameters excepted).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Snapshot {
@@ -176,6 +200,7 @@ pub struct Simulation {
     speed_changed: bool,
     restart: bool,
     peaks: PeakHold,
+    monitor: Monitor,
 }
 
 impl Simulation {
@@ -213,6 +238,7 @@ impl Simulation {
             speed_changed: false,
             restart: false,
             peaks: PeakHold::default(),
+            monitor: Monitor::default(),
         })
     }
 
@@ -433,7 +459,68 @@ impl Simulation {
             contact_onsets: u64::from(onset),
         };
         self.peaks.pending = true;
+        self.check_validity();
         Ok(())
+    }
+
+    /// Checks the step end against the [`validity`] limits; each cause warns once.
+    fn check_validity(&mut self) {
+        use validity::*;
+        let p = &self.parameters;
+        let y = &self.y_end;
+        let n = self.mechanism.n_coordinates();
+        let t = self.step_end;
+        let penetration = self.mechanism.penetration(y);
+        let (r_c, l, c) = (p.crank_length, p.rod.length, p.clearance);
+        let x = y[n - 1];
+        let excess = ((l - r_c - c) - x).max(x - (l + r_c + c));
+        let speed = y[n];
+        let deflection = if p.rod_formulation == RodFormulation::Rigid {
+            0.0
+        } else {
+            self.mechanism.midspan_deflection(&self.y_end)
+        };
+        let left = [
+            penetration > PENETRATION_PER_RADIUS * p.journal_radius,
+            deflection.abs() > DEFLECTION_PER_LENGTH * l,
+            speed.abs() > CRANK_SPEED,
+            excess > STROKE_EXCESS_PER_CRANK * r_c,
+        ];
+        for (i, &left) in left.iter().enumerate() {
+            if !left || self.monitor.fired[i] {
+                continue;
+            }
+            self.monitor.fired[i] = true;
+            let message = match i {
+                0 => format!(
+                    "joint penetration {penetration:.3e} m exceeds {} % of joint.journalRadius = {} m \
+                     (Hertz contact assumes a small contact zone)",
+                    100.0 * PENETRATION_PER_RADIUS,
+                    p.journal_radius
+                ),
+                1 => format!(
+                    "rod mid-span deflection {deflection:.3e} m exceeds {} % of rod.length = {l} m",
+                    100.0 * DEFLECTION_PER_LENGTH
+                ),
+                2 => format!(
+                    "crank speed {speed:.4e} rad/s is beyond the drive's range ±{CRANK_SPEED:e} rad/s"
+                ),
+                _ => format!(
+                    "slider position {x:.6} m is {excess:.3e} m beyond its kinematic stroke \
+                     [{:.6}, {:.6}] m",
+                    l - r_c - c,
+                    l + r_c + c
+                ),
+            };
+            self.monitor.messages.push(format!(
+                "t = {t:.6e} s: the model left its domain: {message}"
+            ));
+        }
+    }
+
+    /// Validity warnings raised since the last call (each cause once per simulation).
+    pub fn take_warnings(&mut self) -> Vec<String> {
+        std::mem::take(&mut self.monitor.messages)
     }
 
     /// Peak-hold extremes and contact onsets ([`PeakHold`]).

@@ -500,3 +500,91 @@ fn energy_outputs_close_the_balance() {
     assert!(contact > 1e-3 * kinetic);
     assert!(residual < 1e-6 * kinetic, "{:e}", residual / kinetic);
 }
+
+/// Issue 11 (validity monitors): the accepted extremes of the issue leave the model's domain with
+/// a warning naming the value and the limit, once per cause; the benchmarks stay silent.
+#[test]
+fn leaving_the_domain_is_reported_once_per_cause() {
+    let quiet = [
+        Parameters::default(),
+        Parameters::benchmark_a(),
+        Parameters::benchmark_c(),
+        Parameters::benchmark_d(),
+    ];
+    for p in quiet {
+        let mut sim = Simulation::new(p).unwrap();
+        sim.advance_to(REVOLUTION).unwrap();
+        assert!(sim.take_warnings().is_empty(), "{:?}", sim.take_warnings());
+    }
+    let mut stiff_drive = Parameters {
+        drive_mode: DriveMode::Torque,
+        ..Parameters::default()
+    };
+    stiff_drive.crank_initial_speed = 0.0;
+    let cases = [
+        (
+            "joint penetration",
+            Parameters {
+                journal_radius: 1e-4,
+                ..Parameters::default()
+            },
+        ),
+        (
+            "crank speed",
+            Parameters {
+                crank_initial_speed: 1e4,
+                ..Parameters::default()
+            },
+        ),
+    ];
+    for (cause, p) in cases {
+        let mut sim = Simulation::new(p).unwrap();
+        let mut warnings = Vec::new();
+        for i in 1..=20 {
+            if sim.advance_to(1e-4 * f64::from(i)).is_err() {
+                break;
+            }
+            warnings.extend(sim.take_warnings());
+        }
+        println!("{warnings:?}");
+        assert_eq!(
+            warnings.iter().filter(|w| w.contains(cause)).count(),
+            1,
+            "{cause}: {warnings:?}"
+        );
+    }
+    let mut sim = Simulation::new(stiff_drive).unwrap();
+    sim.set_drive_torque(1e6);
+    let mut warnings = Vec::new();
+    for i in 1..=20 {
+        if sim.advance_to(1e-4 * f64::from(i)).is_err() {
+            break;
+        }
+        warnings.extend(sim.take_warnings());
+    }
+    println!("{warnings:?}");
+    assert!(
+        warnings.iter().any(|w| w.contains("crank speed")),
+        "{warnings:?}"
+    );
+}
+
+/// A start from rest (crank.initialSpeed = 0) equilibrates: the straight rod is already in
+/// equilibrium and the Newton residual starts at its round-off floor (regression: this failed
+/// with "Newton did not converge").
+#[test]
+fn start_from_rest_is_equilibrated() {
+    for drive_mode in [DriveMode::Speed, DriveMode::Torque] {
+        for rod_formulation in [RodFormulation::CraigBampton, RodFormulation::Ancf] {
+            let p = Parameters {
+                drive_mode,
+                rod_formulation,
+                crank_initial_speed: 0.0,
+                ..Parameters::default()
+            };
+            let mut sim = Simulation::new(p).unwrap();
+            assert!(sim.outputs().unwrap().deformation_energy < 1e-15);
+            sim.advance_to(1e-3).unwrap();
+        }
+    }
+}

@@ -190,14 +190,18 @@ impl Instance {
         }
         let sim = self.simulation()?;
         sim.set_time(t);
-        match sim.advance_to(end) {
+        let result = sim.advance_to(end);
+        let (time, warnings) = (sim.time(), sim.take_warnings());
+        for warning in &warnings {
+            self.logger.warning(warning);
+        }
+        match result {
             Ok(()) => {
                 self.time = end;
                 self.last_successful_time = end;
                 Ok(())
             }
             Err(e) => {
-                let time = sim.time();
                 self.time = time;
                 self.last_successful_time = time;
                 Err(FmuError::Discard {
