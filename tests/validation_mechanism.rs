@@ -588,3 +588,17 @@ fn start_from_rest_is_equilibrated() {
         }
     }
 }
+
+/// A tiny clearance (1e-9 m, lubricated) still gets an equilibrated start: the finite differences
+/// of the quasi-static Newton use at least 1e-4 of the rod's length scale (regression: "singular
+/// Newton matrix" at instantiation).
+#[test]
+fn tiny_clearance_is_equilibrated() {
+    let p = Parameters {
+        joint_model: JointModel::Lubricated,
+        clearance: 1e-9,
+        ..Parameters::default()
+    };
+    let sim = Simulation::new(p).unwrap();
+    assert!(sim.state().iter().all(|x| x.is_finite()));
+}

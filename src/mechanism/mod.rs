@@ -383,7 +383,10 @@ impl SliderCrank {
                 } else {
                     scales[n - 1]
                 };
-                let delta = 1e-7 * (u[j].abs() + scale);
+                // At least 1e-4 of the rod's own scale: a tiny clearance (joint length scale
+                // below 1e-4 of the rod length) must not shrink the differences to round-off.
+                let floor = (1e-4 * self.rod_length / self.position_scale).max(1.0);
+                let delta = 1e-7 * (u[j].abs() + scale * floor);
                 let mut perturbed = u.clone();
                 perturbed[j] += delta;
                 self.quasi_static_residual(&base, &others, &perturbed, y, &mut dy, &mut shifted)?;
