@@ -258,12 +258,7 @@ impl Parameters {
     /// absolute one in units of each state's scale, [`crate::mechanism::SliderCrank::error_scales`]),
     /// the maximum step, and a 1e-14 s floor.
     pub fn tolerances(&self) -> Tolerances {
-        Tolerances {
-            relative: self.relative_tolerance,
-            absolute: self.relative_tolerance,
-            max_step: self.max_step_size,
-            min_step: 1e-14,
-        }
+        Tolerances::from_relative(self.relative_tolerance, self.max_step_size)
     }
 
     /// Largest bearing length-to-diameter ratio L/D for which the short-bearing (Ocvirk) film is

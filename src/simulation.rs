@@ -374,10 +374,7 @@ impl Simulation {
         while self.step_end < t_end {
             if self.work() - work_start >= self.parameters.max_steps_per_interval as u64 {
                 let error = self.work_limit_error(t_start, t_end);
-                self.time = self.step_end;
-                self.state.copy_from_slice(&self.y_end);
-                self.peaks.pending = false;
-                return Err(error);
+                return Err(self.stop_at_step_end(error));
             }
             self.step_start = self.step_end;
             self.y_start.copy_from_slice(&self.y_end);
@@ -388,9 +385,7 @@ impl Simulation {
                 &mut self.y_end,
                 None,
             ) {
-                self.time = self.step_end;
-                self.state.copy_from_slice(&self.y_end);
-                return Err(e);
+                return Err(self.stop_at_step_end(e));
             }
             let (f0, f1) = self.integrator.derivatives();
             self.f_start.copy_from_slice(f0);
@@ -422,6 +417,14 @@ impl Simulation {
             dense?;
         }
         Ok(())
+    }
+
+    /// Ends a failed interval at the last accepted step (where the simulation stays usable) and
+    /// passes the error on.
+    fn stop_at_step_end(&mut self, error: ModelError) -> ModelError {
+        self.time = self.step_end;
+        self.state.copy_from_slice(&self.y_end);
+        error
     }
 
     /// Internal step attempts so far (accepted and rejected).

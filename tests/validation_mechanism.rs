@@ -501,6 +501,19 @@ fn energy_outputs_close_the_balance() {
     assert!(residual < 1e-6 * kinetic, "{:e}", residual / kinetic);
 }
 
+/// Validity warnings over 2 ms in steps of 0.1 ms (until a step fails).
+fn warnings_over_2_ms(mut sim: Simulation) -> Vec<String> {
+    let mut warnings = Vec::new();
+    for i in 1..=20 {
+        if sim.advance_to(1e-4 * f64::from(i)).is_err() {
+            break;
+        }
+        warnings.extend(sim.take_warnings());
+    }
+    println!("{warnings:?}");
+    warnings
+}
+
 /// Issue 11 (validity monitors): the accepted extremes of the issue leave the model's domain with
 /// a warning naming the value and the limit, once per cause; the benchmarks stay silent.
 #[test]
@@ -538,15 +551,7 @@ fn leaving_the_domain_is_reported_once_per_cause() {
         ),
     ];
     for (cause, p) in cases {
-        let mut sim = Simulation::new(p).unwrap();
-        let mut warnings = Vec::new();
-        for i in 1..=20 {
-            if sim.advance_to(1e-4 * f64::from(i)).is_err() {
-                break;
-            }
-            warnings.extend(sim.take_warnings());
-        }
-        println!("{warnings:?}");
+        let warnings = warnings_over_2_ms(Simulation::new(p).unwrap());
         assert_eq!(
             warnings.iter().filter(|w| w.contains(cause)).count(),
             1,
@@ -555,14 +560,7 @@ fn leaving_the_domain_is_reported_once_per_cause() {
     }
     let mut sim = Simulation::new(stiff_drive).unwrap();
     sim.set_drive_torque(1e6);
-    let mut warnings = Vec::new();
-    for i in 1..=20 {
-        if sim.advance_to(1e-4 * f64::from(i)).is_err() {
-            break;
-        }
-        warnings.extend(sim.take_warnings());
-    }
-    println!("{warnings:?}");
+    let warnings = warnings_over_2_ms(sim);
     assert!(
         warnings.iter().any(|w| w.contains("crank speed")),
         "{warnings:?}"

@@ -754,12 +754,7 @@ mod tests {
     }
 
     fn tolerances(rtol: f64) -> Tolerances {
-        Tolerances {
-            relative: rtol,
-            absolute: rtol,
-            max_step: 1.0,
-            min_step: 1e-14,
-        }
+        Tolerances::from_relative(rtol, 1.0)
     }
 
     /// Harmonic oscillator over 10 periods: the global error follows the tolerance, and the energy

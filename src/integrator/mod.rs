@@ -89,6 +89,17 @@ pub struct Tolerances {
 }
 
 impl Tolerances {
+    /// `rtol` for both the relative and the absolute part (the latter in units of each
+    /// component's scale), steps up to `max_step` and a 1e-14 s floor.
+    pub fn from_relative(rtol: f64, max_step: f64) -> Self {
+        Self {
+            relative: rtol,
+            absolute: rtol,
+            max_step,
+            min_step: 1e-14,
+        }
+    }
+
     /// Checks every field; errors name the FMU parameter.
     pub fn validate(&self) -> Result<(), ModelError> {
         require_positive("solver.relativeTolerance", self.relative)?;
