@@ -244,6 +244,58 @@ impl Parameters {
         }
     }
 
+    /// Smallest slenderness L/r (r = √(I/A), the radius of gyration) of a flexible rod.
+    pub const MIN_SLENDERNESS: f64 = 10.0;
+
+    /// The ANCF element is an Euler–Bernoulli beam (no shear deformation, no rotary inertia): a
+    /// rod whose radius of gyration exceeds a tenth of its length is a block, not a beam (shear
+    /// would change its first bending frequency by tens of percent). Benchmark B: L/r = 27.8.
+    fn check_slenderness(&self) -> Result<(), ModelError> {
+        let r = (self.rod.second_moment_of_area / self.rod.area).sqrt();
+        if self.rod.length < Self::MIN_SLENDERNESS * r {
+            return Err(ModelError::invalid(
+                "rod.secondMomentOfArea",
+                self.rod.second_moment_of_area,
+                format!(
+                    "(0, {:.4e}] m4 for a flexible rod with rod.area = {:e} m2 and rod.length = \
+                     {} m: the slenderness rod.length / sqrt(I/A) = {:.3} must be at least {} \
+                     for the Euler-Bernoulli beam the ANCF element is",
+                    self.rod.area * (self.rod.length / Self::MIN_SLENDERNESS).powi(2),
+                    self.rod.area,
+                    self.rod.length,
+                    self.rod.length / r,
+                    Self::MIN_SLENDERNESS
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    /// Stiffness-proportional damping gives mode i the damping ratio ζᵢ = β ωᵢ / 2. Beyond
+    /// ζ₁ = 1 the rod's first bending mode, and with it every mode, is overdamped: no structural
+    /// material behaves so, and the equations become too stiff for the work integrals to follow
+    /// the tolerance (measured: energy-balance residual 0.3 of the kinetic energy at ζ₁ = 76,
+    /// β = 1e-2 s on benchmark B, rtol 1e-2; 8e-3 at ζ₁ = 1). So β ≤ 2/ω₁.
+    fn check_material_damping(&self) -> Result<(), ModelError> {
+        let beta = self.rod.stiffness_damping;
+        let omega = self.rod.first_bending_frequency();
+        if beta * omega > 2.0 {
+            return Err(ModelError::invalid(
+                "rod.stiffnessDamping",
+                beta,
+                format!(
+                    "[0, {:.3e}] s for this rod: its first bending mode (ω₁ = π²/L² √(EI/ρA) = \
+                     {omega:.4e} rad/s from rod.length, rod.youngsModulus, rod.secondMomentOfArea, \
+                     rod.density, rod.area) would get the damping ratio β ω₁/2 = {:.3e} > 1, \
+                     overdamping every mode",
+                    2.0 / omega,
+                    0.5 * beta * omega
+                ),
+            ));
+        }
+        Ok(())
+    }
+
     /// Bearing (hole) radius R_i = R_j + c \[m\].
     pub fn bearing_radius(&self) -> f64 {
         self.journal_radius + self.clearance
@@ -296,6 +348,10 @@ impl Parameters {
             check_mode_count(self.n_elements, self.n_modes, self.boundary)?;
         }
         self.rod.validate()?;
+        if self.rod_formulation != RodFormulation::Rigid {
+            self.check_slenderness()?;
+            self.check_material_damping()?;
+        }
         require_positive("crank.length", self.crank_length)?;
         if self.rod.length <= self.crank_length {
             return Err(ModelError::invalid(
@@ -421,6 +477,66 @@ mod tests {
         };
         assert!(short.warnings().is_empty());
         assert!(Parameters::default().warnings().is_empty());
+    }
+
+    /// Material damping is accepted up to a critically damped first bending mode (β ω₁ = 2,
+    /// ω₁ = 15 270 rad/s for benchmark B's rod) and only for a flexible rod; the message names
+    /// the limit for this rod.
+    #[test]
+    fn overdamped_rods_are_rejected() {
+        let omega = Parameters::default().rod.first_bending_frequency();
+        assert!((omega - 15_270.0).abs() < 10.0, "{omega}");
+        let with = |beta: f64, rod_formulation| Parameters {
+            rod: RodProperties {
+                stiffness_damping: beta,
+                ..RodProperties::benchmark_b()
+            },
+            rod_formulation,
+            ..Parameters::default()
+        };
+        with(0.99 * 2.0 / omega, RodFormulation::CraigBampton)
+            .validate()
+            .unwrap();
+        with(1.0, RodFormulation::Rigid).validate().unwrap();
+        for rod in [RodFormulation::CraigBampton, RodFormulation::Ancf] {
+            let message = with(1.01 * 2.0 / omega, rod)
+                .validate()
+                .unwrap_err()
+                .to_string();
+            assert!(
+                message.contains("rod.stiffnessDamping") && message.contains("[0, 1.310e-4] s"),
+                "{message}"
+            );
+        }
+    }
+
+    /// A flexible rod must be slender (L/r ≥ 10); the rigid rod need not be.
+    #[test]
+    fn thick_rods_are_rejected() {
+        let p = Parameters::default();
+        let r = (p.rod.second_moment_of_area / p.rod.area).sqrt();
+        assert!((p.rod.length / r - 27.8).abs() < 0.05);
+        let with = |i: f64, rod_formulation| Parameters {
+            rod: RodProperties {
+                second_moment_of_area: i,
+                ..RodProperties::benchmark_b()
+            },
+            rod_formulation,
+            ..Parameters::default()
+        };
+        let limit = p.rod.area * (p.rod.length / 10.0).powi(2);
+        with(0.99 * limit, RodFormulation::Ancf).validate().unwrap();
+        with(1.01 * limit, RodFormulation::Rigid)
+            .validate()
+            .unwrap();
+        let message = with(1.01 * limit, RodFormulation::CraigBampton)
+            .validate()
+            .unwrap_err()
+            .to_string();
+        assert!(
+            message.contains("rod.secondMomentOfArea") && message.contains("at least 10"),
+            "{message}"
+        );
     }
 
     #[test]

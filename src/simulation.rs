@@ -65,6 +65,10 @@ pub struct Outputs {
     pub contact_energy: f64,
     /// Gravitational potential energy (zero at y = 0) \[J\].
     pub gravity_energy: f64,
+    /// Work done by the external slider force since the start \[J\].
+    pub slider_work: f64,
+    /// Energy dissipated by the rod's material damping since the start \[J\].
+    pub material_damping: f64,
     /// Constraint drift ‖Φ‖.
     pub constraint_drift: f64,
     /// Largest |joint force| over the last communication interval \[N\] ([`PeakHold`]).
@@ -269,7 +273,8 @@ impl Simulation {
         &self.mechanism
     }
 
-    /// The state vector [q, q̇, θ_d, W_drive, W_joint, W_external] at the current time.
+    /// The state vector [q, q̇, θ_d, W_drive, W_joint, W_external (, D_material)] at the current
+    /// time (see [`crate::mechanism`]).
     pub fn state(&self) -> &[f64] {
         &self.state
     }
@@ -385,7 +390,8 @@ impl Simulation {
                 &mut self.y_end,
                 None,
             ) {
-                return Err(self.stop_at_step_end(e));
+                let error = self.step_failure(e);
+                return Err(self.stop_at_step_end(error));
             }
             let (f0, f1) = self.integrator.derivatives();
             self.f_start.copy_from_slice(f0);
@@ -415,6 +421,7 @@ impl Simulation {
             );
             self.mechanism.set_contact_state(contact);
             dense?;
+            self.check_validity(false);
         }
         Ok(())
     }
@@ -436,20 +443,39 @@ impl Simulation {
     /// The error of an interval that ran out of work ([`Parameters::max_steps_per_interval`]):
     /// where it stopped, at what step size, and the parameters that usually cause it.
     fn work_limit_error(&self, t_start: f64, t_end: f64) -> ModelError {
-        let p = &self.parameters;
         ModelError::Numerical(format!(
             "solver.maxStepsPerInterval = {} internal steps exhausted in the communication interval \
-             [{t_start}, {t_end}] s, stopped at t = {} s with a step of {:.3e} s. Likely causes: \
-             sticking friction (joint.friction = {}), strong material damping \
-             (rod.stiffnessDamping = {} s), a very stiff contact or tight tolerance \
-             (solver.relativeTolerance = {:e}); raise solver.maxStepsPerInterval to go on",
-            p.max_steps_per_interval,
+             [{t_start}, {t_end}] s, stopped at t = {} s with a step of {:.3e} s. {}; raise \
+             solver.maxStepsPerInterval to go on",
+            self.parameters.max_steps_per_interval,
             self.step_end,
             self.integrator.step_size(),
-            p.friction,
-            p.rod.stiffness_damping,
-            p.relative_tolerance
+            self.likely_causes()
         ))
+    }
+
+    /// An integrator failure (step-size floor, singular Newton matrix) with the parameters that
+    /// usually cause it.
+    fn step_failure(&self, error: ModelError) -> ModelError {
+        match error {
+            ModelError::Numerical(message) => {
+                ModelError::Numerical(format!("{message}. {}", self.likely_causes()))
+            }
+            other => other,
+        }
+    }
+
+    /// The parameters that make the equations stiff or non-smooth, with their values.
+    fn likely_causes(&self) -> String {
+        let p = &self.parameters;
+        let joint = format!("{:?}", p.joint_model).to_lowercase();
+        format!(
+            "Likely causes: sticking friction (joint.friction = {}), strong material damping \
+             (rod.stiffnessDamping = {} s), a very stiff contact or film (joint.clearance = {:e} m \
+             with joint.model = {joint}: the contact and film stiffness grow as the clearance \
+             shrinks) or a tight tolerance (solver.relativeTolerance = {:e})",
+            p.friction, p.rod.stiffness_damping, p.clearance, p.relative_tolerance
+        )
     }
 
     /// Evaluates the end of the step just accepted for the peak-hold outputs.
@@ -462,17 +488,21 @@ impl Simulation {
             contact_onsets: u64::from(onset),
         };
         self.peaks.pending = true;
-        self.check_validity();
+        self.check_validity(true);
         Ok(())
     }
 
-    /// Checks the step end against the [`validity`] limits; each cause warns once.
-    fn check_validity(&mut self) {
+    /// Checks the end of the accepted step (or the state at the communication point, which the
+    /// outputs show) against the [`validity`] limits; each cause warns once.
+    fn check_validity(&mut self, at_step_end: bool) {
         use validity::*;
         let p = &self.parameters;
-        let y = &self.y_end;
+        let (t, y) = if at_step_end {
+            (self.step_end, &self.y_end)
+        } else {
+            (self.time, &self.state)
+        };
         let n = self.mechanism.n_coordinates();
-        let t = self.step_end;
         let penetration = self.mechanism.penetration(y);
         let (r_c, l, c) = (p.crank_length, p.rod.length, p.clearance);
         let x = y[n - 1];
@@ -481,7 +511,7 @@ impl Simulation {
         let deflection = if p.rod_formulation == RodFormulation::Rigid {
             0.0
         } else {
-            self.mechanism.midspan_deflection(&self.y_end)
+            self.mechanism.midspan_deflection(y)
         };
         let left = [
             penetration > PENETRATION_PER_RADIUS * p.journal_radius,
@@ -578,6 +608,8 @@ impl Simulation {
             dissipated_energy: energies.dissipated(),
             contact_energy: energies.contact,
             gravity_energy: energies.gravity,
+            slider_work: energies.external_work,
+            material_damping: energies.material_damping,
             constraint_drift: ev.drift,
             joint_force_peak: self.peaks.interval.joint_force.max(ev.joint_force.norm()),
             slider_acceleration_peak: self

@@ -16,6 +16,8 @@
 //!
 //! Optional strain-rate (stiffness-proportional) damping with coefficient β \[s\]:
 //! N_d = β EA ε̇, M_d = β EI κ̇, Q_d = ∫ (N_d ε_eᵀ + M_d κ_eᵀ) dx. It vanishes under rigid motion.
+//! Its dissipated power is ėᵀQ_d = ∫ β (EA ε̇² + EI κ̇²) dx ≥ 0 (ε̇ = ε_e ė, κ̇ = κ_e ė), summed at
+//! the same Gauss points, so that it equals ėᵀQ_d of the discrete force exactly.
 //!
 //! # References
 //! - Gerstmayr & Irschik (2008), J. Sound Vib. 318, 461; MODEL.md §1.2–1.4.
@@ -228,19 +230,27 @@ impl Element {
     /// Written per node k as Q_k = Σ w [N s'_k t + M (s'_k a + s''_k b)], since ε_e = s' ⊗ t and
     /// κ_e = f_e/g − f g_e/g² = s' ⊗ a + s'' ⊗ b with a = (r''_y, −r''_x)/g − 2f r'/g² and
     /// b = (−r'_y, r'_x)/g: the kron form of the module docs without building 8-vectors (this is
-    /// the hot path of every flexible model).
-    fn resultant_force(&self, e: &ElementVector, e_dot: Option<&ElementVector>) -> ElementVector {
+    /// the hot path of every flexible model). Also returns the damping power
+    /// Σ w β (EA ε̇² + EI κ̇²) (0 without `e_dot`).
+    fn resultant_force(
+        &self,
+        e: &ElementVector,
+        e_dot: Option<&ElementVector>,
+    ) -> (ElementVector, f64) {
         let Section {
             ea, ei, damping, ..
         } = self.section;
         let mut q = [Vector2::zeros(); 4];
+        let mut power = 0.0;
         for p in &self.axial {
             let r_x = field(&p.s_x, e);
             let norm = r_x.norm();
             let t = r_x / norm;
             let mut n = ea * (norm - 1.0);
             if let Some(e_dot) = e_dot {
-                n += ea * damping * t.dot(&field(&p.s_x, e_dot));
+                let eps_dot = t.dot(&field(&p.s_x, e_dot));
+                n += ea * damping * eps_dot;
+                power += p.weight * ea * damping * eps_dot * eps_dot;
             }
             let c = p.weight * n;
             for (k, qk) in q.iter_mut().enumerate() {
@@ -258,24 +268,26 @@ impl Element {
             if let Some(e_dot) = e_dot {
                 let kappa_dot = a.dot(&field(&p.s_x, e_dot)) + b.dot(&field(&p.s_xx, e_dot));
                 m += ei * damping * kappa_dot;
+                power += p.weight * ei * damping * kappa_dot * kappa_dot;
             }
             let c = p.weight * m;
             for (k, qk) in q.iter_mut().enumerate() {
                 *qk += c * (p.s_x[k] * a + p.s_xx[k] * b);
             }
         }
-        ElementVector::from_fn(|i, _| q[i / 2][i % 2])
+        (ElementVector::from_fn(|i, _| q[i / 2][i % 2]), power)
     }
 
     /// Elastic force Q_e(e) = ∂U/∂e.
     pub fn elastic_force(&self, e: &ElementVector) -> ElementVector {
-        self.resultant_force(e, None)
+        self.resultant_force(e, None).0
     }
 
-    /// Internal force: elastic force plus strain-rate damping β(EA ε̇ ε_eᵀ + EI κ̇ κ_eᵀ).
-    pub fn internal_force(&self, e: &ElementVector, e_dot: &ElementVector) -> ElementVector {
+    /// Internal force: elastic force plus strain-rate damping β(EA ε̇ ε_eᵀ + EI κ̇ κ_eᵀ), and
+    /// the power the damping dissipates, ėᵀQ_d = ∫ β (EA ε̇² + EI κ̇²) dx \[W\].
+    pub fn internal_force(&self, e: &ElementVector, e_dot: &ElementVector) -> (ElementVector, f64) {
         if self.section.damping == 0.0 {
-            return self.elastic_force(e);
+            return (self.elastic_force(e), 0.0);
         }
         self.resultant_force(e, Some(e_dot))
     }
@@ -396,5 +408,42 @@ mod tests {
         assert!((u - expected).abs() < 1e-12 * expected);
         let k = el.tangent_stiffness(&e);
         assert!((k - k.transpose()).norm() < 1e-10 * k.norm());
+    }
+
+    /// The returned damping power is ėᵀQ_d with Q_d = internal − elastic force, positive; a
+    /// rigid-body velocity (translation + rotation) dissipates nothing.
+    #[test]
+    fn damping_power_is_the_damping_force_times_the_rate() {
+        let el = Element::new(
+            Section {
+                damping: 1e-3,
+                ..element().section
+            },
+            0.03,
+        );
+        let l = el.length();
+        let e = ElementVector::from_column_slice(&[0.0, 0.0, 1.01, 0.02, l, 1e-3, 0.99, -0.03]);
+        let e_dot = ElementVector::from_column_slice(&[0.1, -0.2, 0.5, 0.3, 0.2, 0.1, -0.4, 0.6]);
+        let (q, power) = el.internal_force(&e, &e_dot);
+        let expected = e_dot.dot(&(q - el.elastic_force(&e)));
+        assert!(power > 0.0);
+        assert!(
+            (power - expected).abs() < 1e-12 * expected.abs(),
+            "{power} vs {expected}"
+        );
+        // Rigid rotation at rate w about the first node plus a translation: ṙ = v + w k × r.
+        let (v, w) = (Vector2::new(0.3, -0.7), 2.0);
+        let rigid = ElementVector::from_fn(|i, _| {
+            let (node, component) = (i / 2, i % 2);
+            let r = Vector2::new(e[2 * node], e[2 * node + 1]);
+            let rotated = w * Vector2::new(-r.y, r.x);
+            if node % 2 == 0 {
+                v[component] + rotated[component]
+            } else {
+                rotated[component]
+            }
+        });
+        let (_, rigid_power) = el.internal_force(&e, &rigid);
+        assert!(rigid_power.abs() < 1e-12 * power, "{rigid_power}");
     }
 }

@@ -65,6 +65,13 @@ impl RodProperties {
     pub fn mass(&self) -> f64 {
         self.density * self.area * self.length
     }
+
+    /// First bending frequency of the rod pinned at both ends (Euler–Bernoulli),
+    /// ω₁ = (π/L)² √(EI/ρA) \[rad/s\].
+    pub fn first_bending_frequency(&self) -> f64 {
+        (std::f64::consts::PI / self.length).powi(2)
+            * (self.youngs_modulus * self.second_moment_of_area / (self.density * self.area)).sqrt()
+    }
 }
 
 /// An assembled ANCF rod of `n` equal elements.
@@ -144,7 +151,7 @@ impl Rod {
     }
 
     /// Assembles element vectors: out = Σⱼ (element j's vector on its slice 4j .. 4j + 8).
-    fn assemble(&self, out: &mut [f64], element_vector: impl Fn(usize) -> ElementVector) {
+    fn assemble(&self, out: &mut [f64], mut element_vector: impl FnMut(usize) -> ElementVector) {
         out.fill(0.0);
         for j in 0..self.n_elements {
             let q = element_vector(j);
@@ -154,14 +161,19 @@ impl Rod {
         }
     }
 
-    /// Internal force (elastic + strain-rate damping) Q(e, ė), written to `out`.
-    pub fn internal_force(&self, e: &[f64], e_dot: &[f64], out: &mut [f64]) {
+    /// Internal force (elastic + strain-rate damping) Q(e, ė), written to `out`; returns the
+    /// power the damping dissipates, ėᵀQ_d ≥ 0 \[W\].
+    pub fn internal_force(&self, e: &[f64], e_dot: &[f64], out: &mut [f64]) -> f64 {
+        let mut power = 0.0;
         self.assemble(out, |j| {
-            self.element.internal_force(
+            let (q, p) = self.element.internal_force(
                 &Self::element_coordinates(e, j),
                 &Self::element_coordinates(e_dot, j),
-            )
+            );
+            power += p;
+            q
         });
+        power
     }
 
     /// Elastic force Q_e(e) = ∂U/∂e, written to `out`.

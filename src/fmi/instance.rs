@@ -298,6 +298,8 @@ impl Instance {
                 Vr::JointForcePeak => o.joint_force_peak,
                 Vr::EnergyContact => o.contact_energy,
                 Vr::EnergyGravity => o.gravity_energy,
+                Vr::EnergySliderWork => o.slider_work,
+                Vr::EnergyMaterialDamping => o.material_damping,
                 Vr::SliderAccelerationPeak => o.slider_acceleration_peak,
                 _ => unreachable_type(v)?,
             };

@@ -17,7 +17,7 @@ use crate::params::Parameters;
 use crate::simulation::{PeakHold, Peaks, Snapshot};
 
 const MAGIC: &[u8; 4] = b"FSCS";
-const VERSION: u32 = 3;
+const VERSION: u32 = 4;
 /// Largest accepted vector length (states, Jacobian entries) in a state.
 const MAX_LENGTH: usize = 1 << 20;
 const STATES: [State; 6] = [

@@ -286,6 +286,8 @@ pub enum Vr {
     SolverMaxStepsPerInterval,
     EnergyContact,
     EnergyGravity,
+    EnergySliderWork,
+    EnergyMaterialDamping,
 }
 
 const fn parameter(
@@ -500,7 +502,7 @@ pub const VARIABLES: &[Variable] = &[
         1e-20,
         1.0,
         "m4",
-        "Rod second moment of area",
+        "Rod second moment of area; a flexible rod must be slender: rod.length / sqrt(I / rod.area) >= 10",
     ),
     parameter(
         Vr::RodStiffnessDamping,
@@ -509,7 +511,7 @@ pub const VARIABLES: &[Variable] = &[
         0.0,
         1.0,
         "s",
-        "Strain-rate (stiffness-proportional) damping coefficient",
+        "Strain-rate (stiffness-proportional) damping coefficient; a flexible rod takes at most 2/omega1, its first pinned-pinned bending mode critically damped (1.31e-4 s for the default rod)",
     ),
     parameter(
         Vr::CrankLength,
@@ -923,6 +925,18 @@ pub const VARIABLES: &[Variable] = &[
         "energy.gravity",
         "J",
         "Gravitational potential energy of crank, rod and slider (zero at y = 0)",
+    ),
+    output(
+        Vr::EnergySliderWork,
+        "energy.sliderWork",
+        "J",
+        "Work done by the input slider.force",
+    ),
+    output(
+        Vr::EnergyMaterialDamping,
+        "energy.materialDamping",
+        "J",
+        "Energy dissipated in the rod by its material damping (rod.stiffnessDamping)",
     ),
 ];
 

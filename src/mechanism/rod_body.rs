@@ -113,10 +113,14 @@ impl RodBody {
         }
     }
 
-    /// Internal (elastic + damping) force, written to `out` (zero for the rigid rod).
-    pub fn internal_force(&mut self, p: &[f64], p_dot: &[f64], out: &mut [f64]) {
+    /// Internal (elastic + damping) force, written to `out` (zero for the rigid rod); returns the
+    /// power the material damping dissipates \[W\].
+    pub fn internal_force(&mut self, p: &[f64], p_dot: &[f64], out: &mut [f64]) -> f64 {
         match self {
-            Self::Rigid { .. } => out.fill(0.0),
+            Self::Rigid { .. } => {
+                out.fill(0.0);
+                0.0
+            }
             Self::Flexible(model) => model.internal_force(p, p_dot, out),
         }
     }

@@ -150,18 +150,21 @@ impl RodModel {
         }
     }
 
-    /// Internal (elastic + damping) force in model coordinates, written to `out`.
-    pub fn internal_force(&mut self, p: &[f64], p_dot: &[f64], out: &mut [f64]) {
+    /// Internal (elastic + damping) force in model coordinates, written to `out`; returns the
+    /// power the damping dissipates, ṗᵀQ_d = ėᵀQ_d (the projection preserves power) \[W\].
+    pub fn internal_force(&mut self, p: &[f64], p_dot: &[f64], out: &mut [f64]) -> f64 {
         match &self.reduction {
             Some(cb) => {
                 cb.expand(p, &mut self.e);
-                if self.rod.element().section().damping == 0.0 {
+                let power = if self.rod.element().section().damping == 0.0 {
                     self.rod.elastic_force(&self.e, &mut self.q);
+                    0.0
                 } else {
                     cb.expand(p_dot, &mut self.e_dot);
-                    self.rod.internal_force(&self.e, &self.e_dot, &mut self.q);
-                }
+                    self.rod.internal_force(&self.e, &self.e_dot, &mut self.q)
+                };
                 cb.project(&self.q, out);
+                power
             }
             None => self.rod.internal_force(p, p_dot, out),
         }
