@@ -348,10 +348,6 @@ impl Parameters {
             check_mode_count(self.n_elements, self.n_modes, self.boundary)?;
         }
         self.rod.validate()?;
-        if self.rod_formulation != RodFormulation::Rigid {
-            self.check_slenderness()?;
-            self.check_material_damping()?;
-        }
         require_positive("crank.length", self.crank_length)?;
         if self.rod.length <= self.crank_length {
             return Err(ModelError::invalid(
@@ -362,6 +358,10 @@ impl Parameters {
                     self.crank_length
                 ),
             ));
+        }
+        if self.rod_formulation != RodFormulation::Rigid {
+            self.check_slenderness()?;
+            self.check_material_damping()?;
         }
         require_positive("crank.mass", self.crank_mass)?;
         require_positive("crank.inertia", self.crank_inertia)?;

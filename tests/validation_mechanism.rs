@@ -638,7 +638,7 @@ fn leaving_the_domain_is_reported_once_per_cause() {
             },
         ),
         (
-            "crank speed",
+            "slider position",
             Parameters {
                 crank_initial_speed: 1e4,
                 ..Parameters::default()
@@ -653,6 +653,15 @@ fn leaving_the_domain_is_reported_once_per_cause() {
             "{cause}: {warnings:?}"
         );
     }
+    // A speed drive at the declared limit (1e4 rad/s) is within the drive's range.
+    let at_limit = warnings_over_2_ms(
+        Simulation::new(Parameters {
+            crank_initial_speed: 1e4,
+            ..Parameters::default()
+        })
+        .unwrap(),
+    );
+    assert!(!at_limit.iter().any(|w| w.contains("crank speed")));
     let mut sim = Simulation::new(stiff_drive).unwrap();
     sim.set_drive_torque(1e6);
     let warnings = warnings_over_2_ms(sim);
