@@ -242,10 +242,12 @@ impl Element {
         } = self.section;
         let mut q = [Vector2::zeros(); 4];
         let mut power = 0.0;
-        for p in &self.axial {
-            let r_x = field(&p.s_x, e);
-            let norm = r_x.norm();
-            let t = r_x / norm;
+        // The pointwise kinematics first, for all points: the square roots and divisions are
+        // independent and overlap instead of stalling each point's accumulation.
+        let norms: [f64; 5] = std::array::from_fn(|i| field(&self.axial[i].s_x, e).norm());
+        let tangents: [Vector2<f64>; 5] =
+            std::array::from_fn(|i| field(&self.axial[i].s_x, e) / norms[i]);
+        for ((p, t), norm) in self.axial.iter().zip(tangents).zip(norms) {
             let mut n = ea * (norm - 1.0);
             if let Some(e_dot) = e_dot {
                 let eps_dot = t.dot(&field(&p.s_x, e_dot));
@@ -257,14 +259,17 @@ impl Element {
                 *qk += (c * p.s_x[k]) * t;
             }
         }
-        for p in &self.bending {
+        let curvature: [_; 3] = std::array::from_fn(|i| {
+            let p = &self.bending[i];
             let r_x = field(&p.s_x, e);
             let r_xx = field(&p.s_xx, e);
             let f = cross(r_x, r_xx);
             let g = r_x.norm_squared();
             let a = Vector2::new(r_xx.y, -r_xx.x) / g - (2.0 * f / (g * g)) * r_x;
             let b = Vector2::new(-r_x.y, r_x.x) / g;
-            let mut m = ei * f / g;
+            (a, b, ei * f / g)
+        });
+        for (p, (a, b, mut m)) in self.bending.iter().zip(curvature) {
             if let Some(e_dot) = e_dot {
                 let kappa_dot = a.dot(&field(&p.s_x, e_dot)) + b.dot(&field(&p.s_xx, e_dot));
                 m += ei * damping * kappa_dot;

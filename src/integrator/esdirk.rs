@@ -552,9 +552,14 @@ impl Esdirk {
     fn factorize(&mut self, h: f64) -> Result<(), ModelError> {
         let hg = h * self.table.gamma;
         let m = self.lu.matrix_mut();
-        for (i, e) in m.iter_mut().enumerate() {
-            let diagonal = if i % (self.n_q + 1) == 0 { 1.0 } else { 0.0 };
-            *e = diagonal - hg * self.state.jacobian_v[i] - hg * hg * self.state.jacobian_q[i];
+        for (e, (jv, jq)) in m
+            .iter_mut()
+            .zip(self.state.jacobian_v.iter().zip(&self.state.jacobian_q))
+        {
+            *e = -hg * jv - hg * hg * jq;
+        }
+        for i in (0..m.len()).step_by(self.n_q + 1) {
+            m[i] = 1.0 - hg * self.state.jacobian_v[i] - hg * hg * self.state.jacobian_q[i];
         }
         self.state.h_factored = h;
         self.lu.factorize()

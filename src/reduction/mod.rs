@@ -42,6 +42,52 @@ pub struct RodModel {
     q: Vec<f64>,
     k_full: Mat<f64>,
     k_work: Mat<f64>,
+    memo: ForceMemo,
+}
+
+/// The last internal force with its arguments. Most difference quotients of the integrator's
+/// Jacobian (those in the velocities of an undamped rod, in the crank angle and the slider
+/// position) leave the rod's coordinates unchanged: they reuse the force, bit for bit.
+#[derive(Clone, Debug)]
+struct ForceMemo {
+    valid: bool,
+    p: Vec<f64>,
+    /// ṗ, when the force depends on it (a damped rod); empty otherwise.
+    p_dot: Vec<f64>,
+    force: Vec<f64>,
+    power: f64,
+}
+
+impl ForceMemo {
+    fn new(n: usize) -> Self {
+        Self {
+            valid: false,
+            p: vec![0.0; n],
+            p_dot: Vec::with_capacity(n),
+            force: vec![0.0; n],
+            power: 0.0,
+        }
+    }
+
+    /// The stored power if the arguments equal the stored ones bit for bit (force copied to `out`).
+    fn recall(&self, p: &[f64], p_dot: &[f64], out: &mut [f64]) -> Option<f64> {
+        let same = |a: &[f64], b: &[f64]| a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits());
+        let hit =
+            self.valid && same(&self.p, p) && (self.p_dot.is_empty() || same(&self.p_dot, p_dot));
+        hit.then(|| {
+            out.copy_from_slice(&self.force);
+            self.power
+        })
+    }
+
+    fn store(&mut self, p: &[f64], p_dot: Option<&[f64]>, force: &[f64], power: f64) {
+        self.p.copy_from_slice(p);
+        self.p_dot.clear();
+        self.p_dot.extend_from_slice(p_dot.unwrap_or_default());
+        self.force.copy_from_slice(force);
+        self.power = power;
+        self.valid = true;
+    }
 }
 
 impl RodModel {
@@ -85,6 +131,7 @@ impl RodModel {
             q: vec![0.0; n_full],
             k_full: Mat::zeros(n_full, n_full),
             k_work: Mat::zeros(n_full, n),
+            memo: ForceMemo::new(n),
             rod,
         })
     }
@@ -153,21 +200,27 @@ impl RodModel {
     /// Internal (elastic + damping) force in model coordinates, written to `out`; returns the
     /// power the damping dissipates, ṗᵀQ_d = ėᵀQ_d (the projection preserves power) \[W\].
     pub fn internal_force(&mut self, p: &[f64], p_dot: &[f64], out: &mut [f64]) -> f64 {
-        match &self.reduction {
+        if let Some(power) = self.memo.recall(p, p_dot, out) {
+            return power;
+        }
+        let damped = self.rod.element().section().damping != 0.0;
+        let power = match &self.reduction {
             Some(cb) => {
                 cb.expand(p, &mut self.e);
-                let power = if self.rod.element().section().damping == 0.0 {
-                    self.rod.elastic_force(&self.e, &mut self.q);
-                    0.0
-                } else {
+                let power = if damped {
                     cb.expand(p_dot, &mut self.e_dot);
                     self.rod.internal_force(&self.e, &self.e_dot, &mut self.q)
+                } else {
+                    self.rod.elastic_force(&self.e, &mut self.q);
+                    0.0
                 };
                 cb.project(&self.q, out);
                 power
             }
             None => self.rod.internal_force(p, p_dot, out),
-        }
+        };
+        self.memo.store(p, damped.then_some(p_dot), out, power);
+        power
     }
 
     /// Tangent stiffness ∂Q_e/∂p in model coordinates, written to `out`.
