@@ -551,15 +551,14 @@ impl Esdirk {
     /// Factorises E = I − hγ ∂a/∂q̇ − (hγ)² ∂a/∂q (not counted: restoring a state refactorises).
     fn factorize(&mut self, h: f64) -> Result<(), ModelError> {
         let hg = h * self.table.gamma;
-        let m = self.lu.matrix_mut();
-        for (e, (jv, jq)) in m
-            .iter_mut()
-            .zip(self.state.jacobian_v.iter().zip(&self.state.jacobian_q))
-        {
-            *e = -hg * jv - hg * hg * jq;
-        }
-        for i in (0..m.len()).step_by(self.n_q + 1) {
-            m[i] = 1.0 - hg * self.state.jacobian_v[i] - hg * hg * self.state.jacobian_q[i];
+        let n = self.n_q;
+        let (jv, jq) = (&self.state.jacobian_v, &self.state.jacobian_q);
+        for (j, column) in self.lu.matrix_mut().chunks_exact_mut(n).enumerate() {
+            for (i, e) in column.iter_mut().enumerate() {
+                let identity = if i == j { 1.0 } else { 0.0 };
+                let k = j * n + i;
+                *e = identity - hg * jv[k] - hg * hg * jq[k];
+            }
         }
         self.state.h_factored = h;
         self.lu.factorize()
