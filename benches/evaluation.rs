@@ -6,7 +6,7 @@
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use flexible_slider_crank::integrator::{ESDIRK54, Esdirk, OdeSystem};
+use flexible_slider_crank::integrator::{ESDIRK54, Implicit, OdeSystem, Scheme};
 use flexible_slider_crank::mechanism::SliderCrank;
 use flexible_slider_crank::params::{JointModel, RodFormulation};
 use flexible_slider_crank::reduction::Boundary;
@@ -80,8 +80,8 @@ fn evaluation(c: &mut Criterion) {
                 mechanism.rhs(T, black_box(&states[turn]), &mut dy)
             })
         });
-        let mut esdirk = match Esdirk::new(
-            &ESDIRK54,
+        let mut esdirk = match Implicit::new(
+            Scheme::Esdirk(&ESDIRK54),
             y.len(),
             mechanism.n_coordinates(),
             p.tolerances(),

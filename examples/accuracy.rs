@@ -101,7 +101,11 @@ fn main() -> Result<(), Box<dyn Error>> {
     println!("|---|---|---|---|---|---|---|---|---|");
     for rtol in tolerances {
         for (rod, modes) in [(RodFormulation::CraigBampton, 4), (RodFormulation::Ancf, 0)] {
-            for method in [Method::Esdirk, Method::DormandPrince] {
+            for method in [
+                Method::Esdirk,
+                Method::GeneralizedAlpha,
+                Method::DormandPrince,
+            ] {
                 for boundary in [Boundary::Pins, Boundary::PositionsAndSlopes] {
                     let skip = (rod == RodFormulation::Ancf
                         && boundary == Boundary::PositionsAndSlopes)

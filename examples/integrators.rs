@@ -1,6 +1,7 @@
 //! Integrator comparison (issue 8): every rod model × joint model of benchmark B/C (two revolutions
 //! at 5000 rpm, the DefaultExperiment), integrated with the explicit Dormand–Prince 5(4) at its
-//! loosest accepted tolerance and with the implicit ESDIRK5(4) at the default tolerance.
+//! loosest accepted tolerance, with the implicit ESDIRK5(4) at the default tolerance, and with the
+//! generalized-α method (default ρ∞) at the default and at its loosest accepted tolerance.
 //!
 //! For each run: wall time, accepted and rejected steps, right-hand-side evaluations (Jacobians
 //! included), Newton iterations, Jacobians, LU factorisations, and the accuracy reached: the
@@ -86,6 +87,12 @@ fn main() -> Result<(), Box<dyn Error>> {
             Method::Esdirk,
             Parameters::default().relative_tolerance,
         ),
+        (
+            "generalized-α",
+            Method::GeneralizedAlpha,
+            Parameters::default().relative_tolerance,
+        ),
+        ("generalized-α", Method::GeneralizedAlpha, 3e-2),
     ];
     println!(
         "| rod (8 elements) | joint | method | rtol | wall [s] | steps | rejected | evaluations | Newton it. | Jacobians | LU | peak force error | peak penetration error |"

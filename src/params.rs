@@ -122,6 +122,9 @@ pub struct Parameters {
     pub gravity: f64,
     /// Time-integration method.
     pub method: Method,
+    /// Spectral radius at infinity ρ∞ ∈ [0, 1] of the generalized-α method (1: no numerical
+    /// dissipation, 0: unresolved frequencies annihilated in one step).
+    pub spectral_radius: f64,
     /// Relative tolerance of the error-controlled integrator.
     pub relative_tolerance: f64,
     /// Largest internal step \[s\].
@@ -139,6 +142,17 @@ pub struct Parameters {
 /// bound by stability, not accuracy, and the rod's stiff content rings undamped in the constraint
 /// force. The implicit method damps that content and stays within 2.1 % up to rtol 0.1.
 pub const EXPLICIT_MAX_TOLERANCE: f64 = 1e-4;
+
+/// Loosest relative tolerance accepted with the generalized-α method (`solver.method` =
+/// generalizedAlpha).
+///
+/// Measured over two revolutions of benchmarks B/C (BENCHMARKS.md, "Integrators"): at 3e-2 the peak
+/// joint force and penetration of every rod × joint model are within 2.2 % of converged runs; at
+/// 5e-2 the rigid rod's dry impacts are not (peak force +60 %), at 1e-1 they are +250 %.
+pub const GENERALIZED_ALPHA_MAX_TOLERANCE: f64 = 3e-2;
+
+/// Default spectral radius at infinity of the generalized-α method (`solver.spectralRadius`).
+pub const DEFAULT_SPECTRAL_RADIUS: f64 = 0.8;
 
 /// Default work limit per communication interval (`solver.maxStepsPerInterval`): ample for every
 /// documented case (the worst interval measured: 7 065 attempts with joint.friction = 1, about 0.3 s
@@ -179,6 +193,7 @@ impl Default for Parameters {
             drive_mode: DriveMode::Speed,
             gravity: 0.0,
             method: Method::Esdirk,
+            spectral_radius: DEFAULT_SPECTRAL_RADIUS,
             relative_tolerance: 1e-2,
             max_step_size: 1e-4,
             max_steps_per_interval: DEFAULT_MAX_STEPS_PER_INTERVAL,
@@ -423,6 +438,13 @@ impl Parameters {
         )?;
         require_in("gravity", self.gravity, -1e3, 1e3, "[-1000, 1000]")?;
         require_in(
+            "solver.spectralRadius",
+            self.spectral_radius,
+            0.0,
+            1.0,
+            "[0, 1]",
+        )?;
+        require_in(
             "solver.relativeTolerance",
             self.relative_tolerance,
             1e-12,
@@ -438,6 +460,19 @@ impl Parameters {
                     "[1e-12, {EXPLICIT_MAX_TOLERANCE:e}] with solver.method = explicit: looser \
                      explicit runs leave the flexible rod's stiff content ringing at the edge of \
                      stability (peak ideal-joint force +25 % at 1e-3 with 8 modes)"
+                ),
+            ));
+        }
+        if self.method == Method::GeneralizedAlpha
+            && self.relative_tolerance > GENERALIZED_ALPHA_MAX_TOLERANCE
+        {
+            return Err(ModelError::invalid(
+                "solver.relativeTolerance",
+                self.relative_tolerance,
+                format!(
+                    "[1e-12, {GENERALIZED_ALPHA_MAX_TOLERANCE:e}] with solver.method = \
+                     generalizedAlpha: looser second-order steps mis-resolve the dry impacts \
+                     (rigid rod: peak joint force +60 % at 5e-2)"
                 ),
             ));
         }
@@ -651,6 +686,21 @@ mod tests {
                 Parameters {
                     method: Method::DormandPrince,
                     relative_tolerance: 1e-2,
+                    ..base.clone()
+                },
+            ),
+            (
+                "solver.relativeTolerance",
+                Parameters {
+                    method: Method::GeneralizedAlpha,
+                    relative_tolerance: 5e-2,
+                    ..base.clone()
+                },
+            ),
+            (
+                "solver.spectralRadius",
+                Parameters {
+                    spectral_radius: 1.5,
                     ..base.clone()
                 },
             ),

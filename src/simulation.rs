@@ -221,6 +221,7 @@ impl Simulation {
         }
         let integrator = Integrator::new(
             parameters.method,
+            parameters.spectral_radius,
             state.len(),
             mechanism.n_coordinates(),
             parameters.tolerances(),

@@ -76,7 +76,11 @@ const FORMULATIONS: [RodFormulation; 3] = [
 const JOINTS: [JointModel; 3] = [JointModel::Ideal, JointModel::Dry, JointModel::Lubricated];
 const DRIVES: [DriveMode; 2] = [DriveMode::Speed, DriveMode::Torque];
 const BOUNDARIES: [Boundary; 2] = [Boundary::Pins, Boundary::PositionsAndSlopes];
-const METHODS: [Method; 2] = [Method::Esdirk, Method::DormandPrince];
+const METHODS: [Method; 3] = [
+    Method::Esdirk,
+    Method::DormandPrince,
+    Method::GeneralizedAlpha,
+];
 const INITIAL_STATES: [InitialState; 2] = [InitialState::Equilibrated, InitialState::Straight];
 const CONTACT_LAWS: [ContactLaw; 3] = [
     ContactLaw::LankaraniNikravesh,
@@ -505,6 +509,7 @@ pub fn real_parameter(p: &Parameters, vr: Vr) -> Option<f64> {
         Vr::Gravity => p.gravity,
         Vr::SolverRelativeTolerance => p.relative_tolerance,
         Vr::SolverMaxStepSize => p.max_step_size,
+        Vr::SolverSpectralRadius => p.spectral_radius,
         _ => return None,
     })
 }
@@ -538,6 +543,7 @@ pub fn set_real_parameter(p: &mut Parameters, vr: Vr, value: f64) -> bool {
         Vr::Gravity => &mut p.gravity,
         Vr::SolverRelativeTolerance => &mut p.relative_tolerance,
         Vr::SolverMaxStepSize => &mut p.max_step_size,
+        Vr::SolverSpectralRadius => &mut p.spectral_radius,
         _ => return false,
     };
     *field = value;

@@ -11,13 +11,13 @@ use super::instance::{
 };
 use super::state::State;
 use super::variables::{Causality, Kind, VARIABLES, Vr};
-use crate::integrator::{EsdirkState, IntegratorState, Stats};
+use crate::integrator::{ImplicitState, IntegratorState, Stats};
 use crate::mechanism::{ContactState, Inputs};
 use crate::params::Parameters;
 use crate::simulation::{PeakHold, Peaks, Snapshot};
 
 const MAGIC: &[u8; 4] = b"FSCS";
-const VERSION: u32 = 4;
+const VERSION: u32 = 5;
 /// Largest accepted vector length (states, Jacobian entries) in a state.
 const MAX_LENGTH: usize = 1 << 20;
 const STATES: [State; 6] = [
@@ -313,7 +313,7 @@ impl FmuSnapshot {
                     w.f64s(derivative);
                     w.stats(stats);
                 }
-                IntegratorState::Esdirk(e) => {
+                IntegratorState::Implicit(e) => {
                     w.u8(1);
                     w.f64(e.h);
                     w.f64(e.h_factored);
@@ -324,6 +324,8 @@ impl FmuSnapshot {
                     w.f64s(&e.history);
                     w.f64(e.history_step);
                     w.f64s(&e.derivative);
+                    w.f64s(&e.acceleration);
+                    w.f64s(&e.acceleration_start);
                     w.stats(&e.stats);
                 }
             }
@@ -414,7 +416,7 @@ impl FmuSnapshot {
                     derivative: r.f64s()?,
                     stats: r.stats()?,
                 },
-                1 => IntegratorState::Esdirk(EsdirkState {
+                1 => IntegratorState::Implicit(ImplicitState {
                     h: r.f64()?,
                     h_factored: r.f64()?,
                     jacobian_q: r.f64s()?,
@@ -424,6 +426,8 @@ impl FmuSnapshot {
                     history: r.f64s()?,
                     history_step: r.f64()?,
                     derivative: r.f64s()?,
+                    acceleration: r.f64s()?,
+                    acceleration_start: r.f64s()?,
                     stats: r.stats()?,
                 }),
                 m => return Err(bad(format!("unknown integrator {m}"))),

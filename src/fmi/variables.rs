@@ -153,6 +153,10 @@ pub const ENUMERATIONS: &[Enumeration] = &[
                 "explicit",
                 "Dormand-Prince 5(4), the reference method: steps bound by the highest frequency",
             ),
+            (
+                "generalizedAlpha",
+                "generalized-alpha (Chung-Hulbert), 2nd order, numerical dissipation set by solver.spectralRadius",
+            ),
         ],
     },
     Enumeration {
@@ -288,6 +292,7 @@ pub enum Vr {
     EnergyGravity,
     EnergySliderWork,
     EnergyMaterialDamping,
+    SolverSpectralRadius,
 }
 
 const fn parameter(
@@ -690,7 +695,7 @@ pub const VARIABLES: &[Variable] = &[
         1e-12,
         1e-1,
         "1",
-        "Relative tolerance of the internal error-controlled integrator (at most 1e-4 with solver.method = explicit)",
+        "Relative tolerance of the internal error-controlled integrator (at most 1e-4 with solver.method = explicit, 3e-2 with generalizedAlpha)",
     ),
     parameter(
         Vr::SolverMaxStepSize,
@@ -937,6 +942,15 @@ pub const VARIABLES: &[Variable] = &[
         "energy.materialDamping",
         "J",
         "Energy dissipated in the rod by its material damping (rod.stiffnessDamping)",
+    ),
+    parameter(
+        Vr::SolverSpectralRadius,
+        "solver.spectralRadius",
+        0.8,
+        0.0,
+        1.0,
+        "1",
+        "Numerical dissipation of solver.method = generalizedAlpha: spectral radius at infinity (1: none, 0: unresolved frequencies removed in one step)",
     ),
 ];
 
