@@ -19,8 +19,8 @@
 //! [`crate::mechanism::SliderCrank::error_scales`].
 //!
 //! The default is the implicit method, chosen by measurement (BENCHMARKS.md, "Integrators"): over
-//! two revolutions of benchmark B/C at the default tolerance it is 1.5–16× faster than the explicit
-//! method at its loosest accepted tolerance on every flexible rod and on the lubricated joint
+//! two revolutions of benchmark B/C at the default tolerance it is 1.6–20× faster than the explicit
+//! method at its loosest accepted tolerance on every flexible rod, with every joint model
 //! (4-mode rod, dry joint: 2 775 steps against 14 074; full rod, lubricated: 341 against 150 147),
 //! with peak joint forces within 0.65 % of converged runs. The explicit method stays the reference
 //! (conservation tests) and is cheaper only for the rigid rod, where nothing is stiff. The
