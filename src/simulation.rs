@@ -512,8 +512,13 @@ impl Simulation {
     /// Evaluates the end of the step just accepted for the peak-hold outputs.
     fn record_step_end(&mut self) -> Result<(), ModelError> {
         let onset = !self.contact_start.in_contact && self.mechanism.contact_state().in_contact;
-        let ev = self.mechanism.evaluate(&self.y_end, &mut self.scratch)?;
-        let (force, acceleration) = (ev.joint_force.norm(), ev.slider_acceleration.abs());
+        let (force, acceleration) = match self.mechanism.clearance_joint_load(&self.y_end) {
+            Some(load) => load,
+            None => {
+                let ev = self.mechanism.evaluate(&self.y_end, &mut self.scratch)?;
+                (ev.joint_force.norm(), ev.slider_acceleration.abs())
+            }
+        };
         let (force_within, acceleration_within) = self.peaks_within_step();
         self.peaks.step_end = Peaks {
             joint_force: force.max(force_within),
