@@ -119,10 +119,14 @@ const PEAK_SAMPLES: usize = 4;
 /// benchmark B at the default tolerance: 36.6 kN at step ends against 45.9 kN converged). The
 /// load is sampled at [`PEAK_SAMPLES`] equally spaced interior points of the quintic Hermite
 /// interpolant ([`dense::interpolate`]) and once more at the vertex of the parabola through the
-/// largest sample and its neighbours ([`parabola_vertex`]).
+/// largest sample and its neighbours ([`parabola_vertex`]). That interpolant uses the end
+/// accelerations, which after a large implicit step carry amplified unresolved stiff content; on
+/// benchmark B its peaks agree within 0.1 % with sampling the implicit method's own dense output
+/// (a partial step per sample, 3× the run's cost) at the default tolerance, for every rod, and
+/// exceed them by at most 3.5 % at rtol 1e-1.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct PeakHold {
-    /// Over the current communication interval, from the step ends inside it.
+    /// Over the current communication interval, from the steps that end inside it.
     pub interval: Peaks,
     /// At the end of the last accepted step.
     pub step_end: Peaks,
@@ -544,10 +548,8 @@ impl Simulation {
         for k in 0..force.len() {
             (force[k], acceleration[k]) = self.load_within(k as f64);
         }
-        let mut peaks = (0.0f64, 0.0f64);
-        for k in 0..force.len() {
-            peaks = (peaks.0.max(force[k]), peaks.1.max(acceleration[k]));
-        }
+        let largest = |v: &[f64]| v.iter().copied().fold(0.0, f64::max);
+        let mut peaks = (largest(&force), largest(&acceleration));
         if let Some(k) = parabola_vertex(&force) {
             peaks.0 = peaks.0.max(self.load_within(k).0);
         }
