@@ -117,9 +117,9 @@ const PEAK_SAMPLES: usize = 4;
 /// Inside a step the load is read from the step's dense output: a stiff rod's impact lasts only a
 /// few internal steps, whose ends alone can miss its peak by tens of percent (the rigid rod's
 /// benchmark B at the default tolerance: 36.6 kN at step ends against 45.9 kN converged). The
-/// load is sampled at [`PEAK_SAMPLES`] equally spaced interior points of the quintic Hermite
-/// interpolant ([`dense::interpolate`]) and once more at the vertex of the parabola through the
-/// largest sample and its neighbours ([`parabola_vertex`]). That interpolant uses the end
+/// load is sampled at four equally spaced interior points of the quintic Hermite interpolant
+/// ([`dense::interpolate`]) and once more at the vertex of the parabola through the largest sample
+/// and its neighbours. That interpolant uses the end
 /// accelerations, which after a large implicit step carry amplified unresolved stiff content; on
 /// benchmark B its peaks agree within 0.1 % with sampling the implicit method's own dense output
 /// (a partial step per sample, 3× the run's cost) at the default tolerance, for every rod, and
