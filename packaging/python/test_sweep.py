@@ -100,6 +100,31 @@ def test_reused_instance_equals_fresh_simulate_fmu(tmp_path):
         assert list(series["slider.position"]) == list(fresh["slider.position"])
 
 
+def test_cases_in_parallel_threads_keep_their_own_instance_and_messages(tmp_path):
+    """A worker of an existing cluster may run several cases at once in threads: each takes an idle
+    instance of its own (or a new one), so failing and good cases running together keep their own
+    results and error messages."""
+    from concurrent.futures import ThreadPoolExecutor
+    study = study_mod.load(write_study(tmp_path, SMALL))
+    fmu = study.fmu.read_bytes()
+    expected = serial(study)
+    cases = [v for v in study.cases for _ in range(2)] + [{"joint.clearance": 0.0}] * 4
+
+    def one(values):
+        return values, run_case(fmu, study.guid, values, study.stop_time, study.output_interval,
+                                study.series)
+
+    with ThreadPoolExecutor(max_workers=4) as pool:
+        for values, (status, message, metrics, _) in pool.map(one, cases):
+            if values["joint.clearance"] == 0.0:
+                assert status == "error" and "joint.clearance = 0" in message, message
+            else:
+                reference = expected[study.case_id(values)][2]
+                assert status == "ok" and message == ""
+                assert metrics["peak_joint_force"] == reference["peak_joint_force"]
+                assert metrics["solver_steps"] == reference["solver_steps"]
+
+
 def test_failing_case_is_a_row(tmp_path):
     """Acceptance 3: clearance 0 with the dry joint is an error row with the FMU's message; the
     other cases are correct."""

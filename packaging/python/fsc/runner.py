@@ -2,19 +2,25 @@
 
 `run_case` is what Dask ships to the workers. The FMU arrives as bytes (through Dask, no shared
 filesystem); each worker process unpacks it once per GUID and reuses the directory, the parsed
-modelDescription and one FMU instance for every later case: the instance is reset between cases
-(`fmi2Reset`) instead of loaded and instantiated anew, as fmpy's `efficient_loops` example does,
-and is discarded after a failing case.
+modelDescription and its FMU instances for every later case: an idle instance is reset
+(`fmi2Reset`) instead of loaded and instantiated anew, as fmpy's `efficient_loops` example does
+(one instance per thread that runs cases at the same time), and an instance whose case failed is
+discarded.
 """
+import itertools
 import os
 import tempfile
 import time
 import zipfile
+from ctypes import byref
 from io import BytesIO
 
 import numpy as np
-from fmpy import read_model_description, simulate_fmu
-from fmpy.simulation import instantiate_fmu
+
+from fmpy import calloc, free, read_model_description, simulate_fmu
+from fmpy.fmi2 import (FMU2Slave, fmi2CallbackAllocateMemoryTYPE, fmi2CallbackFreeMemoryTYPE,
+                       fmi2CallbackFunctions, fmi2CallbackLoggerTYPE)
+from fmpy.logging import addLoggerProxy
 
 #: Outputs the metrics are computed from (those the FMU does not have are skipped).
 METRIC_OUTPUTS = ["joint.force", "joint.forcePeak", "joint.contactOnsetsTotal", "slider.acceleration",
@@ -22,14 +28,46 @@ METRIC_OUTPUTS = ["joint.force", "joint.forcePeak", "joint.contactOnsetsTotal", 
                   "solver.steps"]
 
 _unpacked = {}   # GUID -> (directory, model description), per worker process
-_instances = {}  # GUID -> FMU instance, reset between cases, per worker process
-_messages = []   # errors the FMU logged during the current case
+_idle = {}       # GUID -> FMU instances not running a case, per worker process
+_errors = {}     # instance name -> errors (discard, error, fatal) it logged in its current case
+_names = itertools.count()
 
 
-def _logger(_env, _instance, status, _category, message):
-    if status >= 2:   # discard, error, fatal
-        _messages.append(message.decode(errors="replace") if isinstance(message, bytes)
-                         else str(message))
+def _log(_env, instance, status, _category, message):
+    if status >= 2:
+        text = message.decode(errors="replace") if isinstance(message, bytes) else str(message)
+        _errors.setdefault(instance.decode(errors="replace"), []).append(text)
+
+
+# One logger for every instance of this process, alive as long as the process: fmpy's native proxy
+# (which formats the variadic message) keeps the Python logger in one process-wide slot, so a
+# logger that dies with its instance would leave that slot dangling for the other instances.
+_LOGGER = fmi2CallbackLoggerTYPE(_log)
+_CALLBACKS = fmi2CallbackFunctions()
+_CALLBACKS.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
+_CALLBACKS.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
+
+
+def _install_logger():
+    """Points fmpy's logger proxy (the process-wide slot) at this module's logger; anything else in
+    the process that passed its own logger to fmpy may have pointed it elsewhere."""
+    _CALLBACKS.logger = _LOGGER
+    addLoggerProxy(byref(_CALLBACKS))
+
+
+def _instance(directory, md):
+    """An idle instance of the FMU, reset, or a new one with a name of its own (its logged errors
+    are told apart by that name, also when cases run in parallel threads of one worker)."""
+    idle = _idle.setdefault(md.guid, [])
+    if idle:
+        fmu = idle.pop()
+        fmu.reset()
+        return fmu
+    fmu = FMU2Slave(guid=md.guid, unzipDirectory=directory,
+                    modelIdentifier=md.coSimulation.modelIdentifier,
+                    instanceName=f"fsc-{os.getpid()}-{next(_names)}")
+    fmu.instantiate(callbacks=_CALLBACKS)
+    return fmu
 
 
 def unpacked(fmu_bytes: bytes, guid: str):
@@ -72,26 +110,24 @@ def run_case(fmu_bytes: bytes, guid: str, values: dict, stop_time: float,
     exception)."""
     directory, md, have = unpacked(fmu_bytes, guid)
     outputs = [n for n in dict.fromkeys(METRIC_OUTPUTS + list(series)) if n in have]
-    _messages.clear()
     start = time.perf_counter()
-    fmu = _instances.pop(guid, None)
+    _install_logger()
+    fmu = None
     try:
-        if fmu is None:
-            fmu = instantiate_fmu(directory, md, logger=_logger)
-        else:
-            fmu.reset()
+        fmu = _instance(directory, md)
         result = simulate_fmu(directory, model_description=md, start_values=values,
                               stop_time=stop_time, output_interval=output_interval,
                               output=outputs, fmu_instance=fmu)
     except Exception as e:   # noqa: BLE001 - a failing case is a row, never the end of the study
-        message = "; ".join(_messages) or str(e)
+        message = "; ".join(_errors.pop(fmu.instanceName, []) if fmu else []) or str(e)
         if fmu is not None:
             try:
                 fmu.freeInstance()
             except Exception:   # noqa: BLE001 - the instance is discarded either way
                 pass
         return "error", message, None, None
-    _instances[guid] = fmu
+    _errors.pop(fmu.instanceName, None)
+    _idle[md.guid].append(fmu)
     wall = time.perf_counter() - start
     m = metrics(result)
     m["wall_time"] = wall
