@@ -412,21 +412,27 @@ impl Simulation {
         }
         let (t_start, work_start) = (self.time, self.work());
         while self.step_end < t_end {
-            if self.work() - work_start >= self.parameters.max_steps_per_interval as u64 {
-                let error = self.work_limit_error(t_start, t_end);
-                return Err(self.stop_at_step_end(error));
-            }
+            let used = self.work() - work_start;
+            let budget = (self.parameters.max_steps_per_interval as u64).saturating_sub(used);
             self.step_start = self.step_end;
             self.y_start.copy_from_slice(&self.y_end);
             self.contact_start = self.mechanism.contact_state();
-            if let Err(e) = self.integrator.step(
+            match self.integrator.step(
                 &mut self.mechanism,
                 &mut self.step_end,
                 &mut self.y_end,
                 None,
+                budget,
             ) {
-                let error = self.step_failure(e);
-                return Err(self.stop_at_step_end(error));
+                Ok(true) => {}
+                Ok(false) => {
+                    let error = self.work_limit_error(t_start, t_end);
+                    return Err(self.stop_at_step_end(error));
+                }
+                Err(e) => {
+                    let error = self.step_failure(e);
+                    return Err(self.stop_at_step_end(error));
+                }
             }
             let (f0, f1) = self.integrator.derivatives();
             self.f_start.copy_from_slice(f0);

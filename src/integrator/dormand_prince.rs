@@ -166,20 +166,23 @@ impl DormandPrince {
     ) -> Result<(), ModelError> {
         self.fsal = false;
         while *t < t_end {
-            self.step(f, t, y, Some(t_end))?;
+            self.step(f, t, y, Some(t_end), u64::MAX)?;
         }
         Ok(())
     }
 
-    /// Takes one accepted step from (`*t`, `y`), retrying rejected ones; with a `limit` the step
-    /// ends there at the latest (exactly, when the proposal reaches it or nearly does).
+    /// Takes one accepted step from (`*t`, `y`), retrying rejected ones, in at most
+    /// `max_attempts` trial steps; with a `limit` the step ends there at the latest (exactly,
+    /// when the proposal reaches it or nearly does). Returns `false` when the attempts ran out
+    /// before a step was accepted (`*t` and `y` unchanged).
     pub fn step<F: OdeSystem>(
         &mut self,
         f: &mut F,
         t: &mut f64,
         y: &mut [f64],
         limit: Option<f64>,
-    ) -> Result<(), ModelError> {
+        max_attempts: u64,
+    ) -> Result<bool, ModelError> {
         if !self.fsal {
             f.rhs(*t, y, &mut self.k[0]);
             self.stats.evaluations += 1;
@@ -205,7 +208,7 @@ impl DormandPrince {
             self.stats.evaluations += 1;
         }
         let mut rejected_last = false;
-        loop {
+        for _ in 0..max_attempts {
             let proposal = self.h.min(max_step);
             // Take the limit exactly when the proposal reaches it or nearly does.
             let last = limit.is_some_and(|end| 1.01 * proposal >= end - *t);
@@ -229,7 +232,7 @@ impl DormandPrince {
                 self.h = h * factor.clamp(1e-3, 0.99);
             } else if err <= 1.0 {
                 self.stats.steps += 1;
-                f.accept_step(*t, y, t_new, &self.y_stage);
+                let next_limit = f.accept_step(*t, y, t_new, &self.y_stage);
                 *t = t_new;
                 y.copy_from_slice(&self.y_stage);
                 self.k.swap(0, 6);
@@ -241,7 +244,10 @@ impl DormandPrince {
                 if !last || h >= self.h {
                     self.h = h * factor;
                 }
-                return Ok(());
+                if let Some(next_limit) = next_limit {
+                    self.h = self.h.min(next_limit);
+                }
+                return Ok(true);
             } else {
                 self.stats.rejected += 1;
                 rejected_last = true;
@@ -260,6 +266,7 @@ impl DormandPrince {
                 )));
             }
         }
+        Ok(false)
     }
 
     /// One trial step of size `h` from (t, y); the candidate is left in `y_stage` and k[6] holds

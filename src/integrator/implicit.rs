@@ -277,16 +277,18 @@ impl Implicit {
         (&self.k[self.scheme.stages() - 1], &self.k[0])
     }
 
-    /// Takes one accepted step from (`*t`, `y`), retrying rejected ones; with a `limit` the step
-    /// ends there at the latest (exactly, when the proposal reaches it or nearly does). On
-    /// failure `*t` and `y` hold the last accepted point.
+    /// Takes one accepted step from (`*t`, `y`), retrying rejected ones, in at most
+    /// `max_attempts` trial steps; with a `limit` the step ends there at the latest (exactly,
+    /// when the proposal reaches it or nearly does). Returns `false` when the attempts ran out
+    /// before a step was accepted; then, as on failure, `*t` and `y` hold the last accepted point.
     pub fn step<F: MechanicalSystem>(
         &mut self,
         f: &mut F,
         t: &mut f64,
         y: &mut [f64],
         limit: Option<f64>,
-    ) -> Result<(), ModelError> {
+        max_attempts: u64,
+    ) -> Result<bool, ModelError> {
         if self.state.derivative.is_empty() {
             f.rhs(*t, y, &mut self.k[0]);
             self.state.stats.evaluations += 1;
@@ -314,7 +316,7 @@ impl Implicit {
             self.state.stats.evaluations += 1;
         }
         let mut rejected_last = false;
-        loop {
+        for _ in 0..max_attempts {
             if self.state.jacobian_stale {
                 self.jacobian(f, *t, y);
             }
@@ -349,7 +351,7 @@ impl Implicit {
                         self.state.h = h * factor.clamp(1e-3, 0.99);
                     } else {
                         self.accept(f, t, y, t_new, h, err, last, rejected_last);
-                        return Ok(());
+                        return Ok(true);
                     }
                 }
             }
@@ -361,6 +363,7 @@ impl Implicit {
                 )));
             }
         }
+        Ok(false)
     }
 
     /// The state at t₀ + Δt inside the last accepted step (t₀, y₀) → (t₁, y₁), written to
@@ -442,7 +445,7 @@ impl Implicit {
         self.state.history[..n_q].copy_from_slice(&y[n_q..2 * n_q]);
         self.state.history[n_q..].copy_from_slice(&self.k[0][n_q..2 * n_q]);
         self.state.history_step = h;
-        f.accept_step(*t, y, t_new, &self.y_new);
+        let next_limit = f.accept_step(*t, y, t_new, &self.y_new);
         *t = t_new;
         y.copy_from_slice(&self.y_new);
         self.k.swap(0, self.scheme.stages() - 1);
@@ -470,6 +473,9 @@ impl Implicit {
         // Keep the unclamped proposal when the last step was shortened to hit t_end.
         if !last || h >= self.state.h {
             self.state.h = h * factor;
+        }
+        if let Some(next_limit) = next_limit {
+            self.state.h = self.state.h.min(next_limit);
         }
     }
 
@@ -825,7 +831,7 @@ mod tests {
         let (mut t, mut y) = (0.0, [1.0, 0.0, 0.0]);
         while t < t_end {
             integrator
-                .step(&mut f, &mut t, &mut y, Some(t_end))
+                .step(&mut f, &mut t, &mut y, Some(t_end), u64::MAX)
                 .unwrap();
         }
         let error = ((y[0] - (omega * t).cos()).powi(2)

@@ -55,8 +55,9 @@ use crate::error::{ModelError, require_positive};
 /// A first-order system y' = f(t, y) with optional hooks on step acceptance.
 ///
 /// The hooks let a system with impacts refuse a step that would start a contact too deep
-/// (Flores & Ambrósio 2010: keep the first penetration small) and update discrete state (the
-/// impact velocity of a contact event) only at accepted steps, never at trial stages.
+/// (Flores & Ambrósio 2010: keep the first penetration small), aim the next step at an
+/// approaching contact instead of overshooting it, and update discrete state (the impact
+/// velocity of a contact event) only at accepted steps, never at trial stages.
 pub trait OdeSystem {
     /// Writes f(t, y) to `dy`.
     fn rhs(&mut self, t: f64, y: &[f64], dy: &mut [f64]);
@@ -67,8 +68,11 @@ pub trait OdeSystem {
         None
     }
 
-    /// Called once a step (t₀, y₀) → (t₁, y₁) has been accepted.
-    fn accept_step(&mut self, _t0: f64, _y0: &[f64], _t1: f64, _y1: &[f64]) {}
+    /// Called once a step (t₀, y₀) → (t₁, y₁) has been accepted; returns the largest size of
+    /// the next step (`None`: no limit beyond the error control's).
+    fn accept_step(&mut self, _t0: f64, _y0: &[f64], _t1: f64, _y1: &[f64]) -> Option<f64> {
+        None
+    }
 }
 
 impl<F: FnMut(f64, &[f64], &mut [f64])> OdeSystem for F {
@@ -237,18 +241,20 @@ impl Integrator {
         )?)))
     }
 
-    /// Takes one accepted step from (`*t`, `y`), ending at `limit` at the latest; on failure
-    /// `*t`, `y` hold the last accepted point.
+    /// Takes one accepted step from (`*t`, `y`), ending at `limit` at the latest, in at most
+    /// `max_attempts` trial steps (accepted or rejected); returns `false` when they ran out
+    /// first. On failure or `false`, `*t`, `y` hold the last accepted point.
     pub fn step<F: MechanicalSystem>(
         &mut self,
         f: &mut F,
         t: &mut f64,
         y: &mut [f64],
         limit: Option<f64>,
-    ) -> Result<(), ModelError> {
+        max_attempts: u64,
+    ) -> Result<bool, ModelError> {
         match self {
-            Self::DormandPrince(dp) => dp.step(f, t, y, limit),
-            Self::Implicit(es) => es.step(f, t, y, limit),
+            Self::DormandPrince(dp) => dp.step(f, t, y, limit, max_attempts),
+            Self::Implicit(es) => es.step(f, t, y, limit, max_attempts),
         }
     }
 

@@ -760,11 +760,19 @@ impl OdeSystem for SliderCrank {
 
     /// Latches the impact velocity at the located onset of a contact event (linear interpolation
     /// of δ̇ to the crossing of δ = 0), and clears the contact flag at separation.
-    fn accept_step(&mut self, _t0: f64, y0: &[f64], _t1: f64, y1: &[f64]) {
+    ///
+    /// Out of contact and approaching the wall (δ₁ < 0 < δ̇₁), the next step is limited to the
+    /// linear estimate of the time at which δ reaches half the onset depth,
+    /// (−δ₁ + δ_on/2)/δ̇₁: the step that starts the contact is aimed at the window
+    /// 0 < δ ≤ δ_on that [`OdeSystem::check_step`] accepts, instead of overshooting it and being
+    /// refused (event anticipation; without it the 4-mode rod of benchmark B refused about 370
+    /// steps per two revolutions, 3.3 attempts per onset).
+    fn accept_step(&mut self, _t0: f64, y0: &[f64], _t1: f64, y1: &[f64]) -> Option<f64> {
         let (d0, d1) = (self.penetration(y0), self.penetration(y1));
+        let v1 = self.normal_velocity(y1);
         if d1 > 0.0 && !self.contact.in_contact {
             let s = if d0 < 0.0 { -d0 / (d1 - d0) } else { 0.0 };
-            let (v0, v1) = (self.normal_velocity(y0), self.normal_velocity(y1));
+            let v0 = self.normal_velocity(y0);
             self.contact = ContactState {
                 in_contact: true,
                 impact_velocity: (v0 + s * (v1 - v0)).max(MIN_IMPACT_VELOCITY),
@@ -772,6 +780,8 @@ impl OdeSystem for SliderCrank {
         } else if d1 <= 0.0 {
             self.contact.in_contact = false;
         }
+        (!self.contact.in_contact && d1.is_finite() && d1 < 0.0 && v1 > 0.0)
+            .then(|| (0.5 * CONTACT_ONSET_PENETRATION - d1) / v1)
     }
 }
 
