@@ -19,13 +19,13 @@
 //! [`crate::mechanism::SliderCrank::error_scales`].
 //!
 //! The default is the implicit method, chosen by measurement (BENCHMARKS.md, "Integrators"): over
-//! two revolutions of benchmark B/C at the default tolerance it is 1.6–20× faster than the explicit
+//! two revolutions of benchmark B/C at the default tolerance it is 1.7–20× faster than the explicit
 //! method at its loosest accepted tolerance on every flexible rod, with every joint model
-//! (4-mode rod, dry joint: 2 775 steps against 14 074; full rod, lubricated: 341 against 150 147),
+//! (4-mode rod, dry joint: 2 873 steps against 14 788; full rod, lubricated: 341 against 150 147),
 //! with peak joint forces within 0.65 % of converged runs. The explicit method stays the reference
 //! (conservation tests) and is cheaper only for the rigid rod, where nothing is stiff. The
 //! generalized-α method is faster still on the flexible rods with the dry joint, with peak forces
-//! within 3.6 %, but filters part of the rod's vibration (slider-acceleration RMS error 21 % against
+//! within 5.6 %, but filters part of the rod's vibration (slider-acceleration RMS error 18 % against
 //! 3 % over the first 40° of benchmark B): it is offered for its dissipation parameter, not as the
 //! default.
 //!
