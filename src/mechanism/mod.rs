@@ -769,10 +769,9 @@ impl OdeSystem for SliderCrank {
     /// steps per two revolutions, 3.3 attempts per onset).
     fn accept_step(&mut self, _t0: f64, y0: &[f64], _t1: f64, y1: &[f64]) -> Option<f64> {
         let (d0, d1) = (self.penetration(y0), self.penetration(y1));
-        let v1 = self.normal_velocity(y1);
         if d1 > 0.0 && !self.contact.in_contact {
             let s = if d0 < 0.0 { -d0 / (d1 - d0) } else { 0.0 };
-            let v0 = self.normal_velocity(y0);
+            let (v0, v1) = (self.normal_velocity(y0), self.normal_velocity(y1));
             self.contact = ContactState {
                 in_contact: true,
                 impact_velocity: (v0 + s * (v1 - v0)).max(MIN_IMPACT_VELOCITY),
@@ -780,8 +779,11 @@ impl OdeSystem for SliderCrank {
         } else if d1 <= 0.0 {
             self.contact.in_contact = false;
         }
-        (!self.contact.in_contact && d1.is_finite() && d1 < 0.0 && v1 > 0.0)
-            .then(|| (0.5 * CONTACT_ONSET_PENETRATION - d1) / v1)
+        if self.contact.in_contact || !(d1 < 0.0 && d1.is_finite()) {
+            return None;
+        }
+        let v1 = self.normal_velocity(y1);
+        (v1 > 0.0).then(|| (0.5 * CONTACT_ONSET_PENETRATION - d1) / v1)
     }
 }
 
@@ -789,6 +791,40 @@ impl OdeSystem for SliderCrank {
 mod tests {
     use super::*;
     use crate::params::{JointModel, RodFormulation};
+
+    /// Contact-onset anticipation: a step that ends 1 µm short of the wall and approaching it
+    /// limits the next one to the time at which δ reaches half the onset depth; moving away, in
+    /// contact, or with the ideal joint there is no limit.
+    #[test]
+    fn approaching_the_wall_limits_the_next_step() {
+        let p = Parameters::default();
+        let mut m = SliderCrank::new(&p).expect("default parameters build");
+        let n = m.n_coordinates();
+        let mut y = m.initial_state(0.3, 400.0);
+        y[n - 1] -= p.clearance - 1e-6;
+        let y0 = y.clone();
+        let mut approaching = y.clone();
+        approaching[2 * n - 1] -= 0.5;
+        let (d, v) = (m.penetration(&approaching), m.normal_velocity(&approaching));
+        assert!(d < 0.0 && d > -2e-6 && v > 0.4, "δ = {d}, δ̇ = {v}");
+        let limit = m.accept_step(0.0, &y0, 1e-6, &approaching);
+        assert_eq!(limit, Some((0.5 * CONTACT_ONSET_PENETRATION - d) / v));
+        assert!(!m.contact_state().in_contact);
+        let mut leaving = y.clone();
+        leaving[2 * n - 1] += 0.5;
+        assert_eq!(m.accept_step(0.0, &y0, 1e-6, &leaving), None);
+        let mut inside = approaching.clone();
+        inside[n - 1] -= 2e-6;
+        assert_eq!(m.accept_step(0.0, &y0, 1e-6, &inside), None);
+        assert!(m.contact_state().in_contact);
+        let mut ideal = SliderCrank::new(&Parameters {
+            joint_model: JointModel::Ideal,
+            ..p
+        })
+        .expect("ideal joint builds");
+        let y = ideal.initial_state(0.3, 400.0);
+        assert_eq!(ideal.accept_step(0.0, &y, 1e-6, &y), None);
+    }
 
     /// The joint load from the kinematics alone equals the full right-hand side's, for every
     /// clearance joint and rod, in contact (inside and at the start of an event) and with a
