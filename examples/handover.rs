@@ -8,6 +8,7 @@
 
 use std::error::Error;
 
+use flexible_slider_crank::math;
 use flexible_slider_crank::{Parameters, Simulation};
 use plotters::prelude::*;
 
@@ -25,7 +26,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         let t = STOP * i as f64 / SAMPLES as f64;
         sim.advance_to(t)?;
         let o = sim.outputs()?;
-        ratio.push((1e3 * t, o.eccentricity_x.hypot(o.eccentricity_y) / c));
+        ratio.push((1e3 * t, math::hypot(o.eccentricity_x, o.eccentricity_y) / c));
         force.push((1e3 * t, 1e-3 * o.joint_force));
     }
     let o = sim.outputs()?;

@@ -6,6 +6,7 @@
 // Test code: a failed unwrap is a failed test, with its message.
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
+use flexible_slider_crank::math;
 use flexible_slider_crank::params::BENCHMARK_SPEED;
 use flexible_slider_crank::{Parameters, Simulation};
 
@@ -23,7 +24,10 @@ fn lubricated_joint_hands_over_to_dry_contact_continuously() {
     let (c, switch) = (p.clearance, p.switch_eccentricity);
     let ratio = |sim: &mut Simulation| {
         let o = sim.outputs().unwrap();
-        (o.eccentricity_x.hypot(o.eccentricity_y) / c, o.joint_force)
+        (
+            math::hypot(o.eccentricity_x, o.eccentricity_y) / c,
+            o.joint_force,
+        )
     };
     let mut sim = Simulation::new(p.clone()).unwrap();
     let e0 = sim.energies().balance();

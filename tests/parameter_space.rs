@@ -5,6 +5,7 @@
 // Test code: a failed unwrap is a failed test, with its message.
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
+use flexible_slider_crank::math;
 use flexible_slider_crank::params::{ContactLaw, JointModel, RodFormulation};
 use flexible_slider_crank::{ModelError, Parameters, Simulation};
 
@@ -22,7 +23,7 @@ impl Random {
 
     /// `value` times a log-uniform factor in [1/4, 4].
     fn scale(&mut self, value: f64) -> f64 {
-        value * 4f64.powf(2.0 * self.next() - 1.0)
+        value * math::powf(4.0, 2.0 * self.next() - 1.0)
     }
 }
 

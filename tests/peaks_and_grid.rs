@@ -6,6 +6,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use flexible_slider_crank::integrator::Method;
+use flexible_slider_crank::math;
 use flexible_slider_crank::params::RodFormulation;
 use flexible_slider_crank::{Parameters, Simulation};
 
@@ -178,7 +179,7 @@ fn constant_inputs_give_grid_independent_results() {
         assert_eq!(r.steps, runs[0].steps);
         assert_eq!(r.onsets_total, runs[0].onsets_total);
     }
-    let speed = |t: f64| p.crank_initial_speed * (1.0 + 0.01 * (2e3 * t).sin());
+    let speed = |t: f64| p.crank_initial_speed * (1.0 + 0.01 * math::sin(2e3 * t));
     let varying = run(p.clone(), 1e-4, |sim, t| sim.set_drive_speed(speed(t)));
     println!(
         "speed input changed at every communication point: {} steps (constant input: {}), \

@@ -7,6 +7,7 @@
 
 use flexible_slider_crank::ancf::RodProperties;
 use flexible_slider_crank::integrator::Method;
+use flexible_slider_crank::math;
 use flexible_slider_crank::params::{
     BENCHMARK_SPEED, ContactLaw, DriveMode, JointModel, RodFormulation,
 };
@@ -41,7 +42,7 @@ fn rigid_ideal_slider_follows_closed_form_kinematics() {
     let (mut ex, mut ev, mut ea) = (0.0f64, 0.0f64, 0.0f64);
     for o in &rows {
         let th = w * o.time;
-        let (s, c) = th.sin_cos();
+        let (s, c) = math::sin_cos(th);
         let root = (l * l - r * r * s * s).sqrt();
         let x = r * c + root;
         let v = -r * w * s - r * r * w * s * c / root;
@@ -396,7 +397,7 @@ fn lubricated_orbit_stays_inside_the_clearance() {
     let (_, rows) = run(p, 2.0 * period, 12_000);
     let max_ratio = rows
         .iter()
-        .map(|o| o.eccentricity_x.hypot(o.eccentricity_y) / c)
+        .map(|o| math::hypot(o.eccentricity_x, o.eccentricity_y) / c)
         .fold(0.0, f64::max);
     let peak = rows.iter().map(|o| o.joint_force).fold(0.0, f64::max);
     let jump = rows[6_000..]

@@ -15,6 +15,7 @@ use nalgebra::Vector2;
 
 use super::element::{Element, ElementVector, Section};
 use crate::error::{ModelError, require_non_negative, require_positive};
+use crate::math;
 
 /// Largest number of elements a rod may have.
 pub const MAX_ELEMENTS: usize = 64;
@@ -136,7 +137,7 @@ impl Rod {
     /// Coordinates of a straight, unstressed rod starting at `origin` with unit direction at `angle`
     /// \[rad\]: node k at origin + xₖ t, slope t.
     pub fn straight_configuration(&self, origin: Vector2<f64>, angle: f64) -> Vec<f64> {
-        let t = Vector2::new(angle.cos(), angle.sin());
+        let t = Vector2::new(math::cos(angle), math::sin(angle));
         let l = self.element.length();
         (0..=self.n_elements)
             .flat_map(|k| {
@@ -337,7 +338,7 @@ mod tests {
         let e = rod.straight_configuration(Vector2::new(1.0, 2.0), 0.5);
         for x in [0.0, 0.013, 0.06, 0.119, 0.12] {
             let r = rod.position(&e, x);
-            let expected = Vector2::new(1.0 + x * 0.5f64.cos(), 2.0 + x * 0.5f64.sin());
+            let expected = Vector2::new(1.0 + x * math::cos(0.5), 2.0 + x * math::sin(0.5));
             assert!((r - expected).norm() < 1e-15 * 10.0);
         }
     }

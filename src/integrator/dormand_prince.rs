@@ -10,6 +10,7 @@
 
 use super::{ErrorScales, OdeSystem, Stats, Tolerances, initial_step};
 use crate::error::ModelError;
+use crate::math;
 
 const C: [f64; 7] = [0.0, 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0, 1.0, 1.0];
 const A: [[f64; 6]; 7] = [
@@ -236,7 +237,7 @@ impl DormandPrince {
                 *t = t_new;
                 y.copy_from_slice(&self.y_stage);
                 self.k.swap(0, 6);
-                let mut factor = (0.9 * err.max(1e-10).powf(-0.2)).clamp(0.2, 5.0);
+                let mut factor = (0.9 * math::powf(err.max(1e-10), -0.2)).clamp(0.2, 5.0);
                 if rejected_last {
                     factor = factor.min(1.0);
                 }
@@ -252,7 +253,7 @@ impl DormandPrince {
                 self.stats.rejected += 1;
                 rejected_last = true;
                 let factor = if err.is_finite() {
-                    (0.9 * err.powf(-0.2)).max(0.2)
+                    (0.9 * math::powf(err, -0.2)).max(0.2)
                 } else {
                     0.2
                 };
@@ -326,8 +327,8 @@ mod tests {
                     .unwrap();
                 assert_eq!(t, piece.min(t_end));
             }
-            let err = ((y[0] - (omega * t).cos()).powi(2)
-                + (y[1] / omega + (omega * t).sin()).powi(2))
+            let err = ((y[0] - math::cos(omega * t)).powi(2)
+                + (y[1] / omega + math::sin(omega * t)).powi(2))
             .sqrt();
             errors.push(err);
             let stats = dp.stats();

@@ -36,6 +36,7 @@ use super::generalized_alpha::GeneralizedAlpha;
 use super::lu::Lu;
 use super::{ErrorScales, MechanicalSystem, Stats, Tolerances, initial_step, scaled_norm};
 use crate::error::ModelError;
+use crate::math;
 
 /// Largest number of Newton iterations per stage.
 const MAX_ITERATIONS: usize = 7;
@@ -341,7 +342,7 @@ impl Implicit {
                     self.state.stats.rejected += 1;
                     rejected_last = true;
                     self.state.h = h
-                        * (0.9 * err.powf(-1.0 / f64::from(self.scheme.error_order())))
+                        * (0.9 * math::powf(err, -1.0 / f64::from(self.scheme.error_order())))
                             .clamp(0.2, 1.0);
                 }
                 Ok(err) => {
@@ -459,9 +460,7 @@ impl Implicit {
             self.state.jacobian_stale = true;
         }
         let mut factor = (0.9
-            * err
-                .max(1e-10)
-                .powf(-1.0 / f64::from(self.scheme.error_order())))
+            * math::powf(err.max(1e-10), -1.0 / f64::from(self.scheme.error_order())))
         .clamp(0.2, 5.0);
         if rejected_last {
             factor = factor.min(1.0);
@@ -739,7 +738,7 @@ impl Implicit {
             relative, absolute, ..
         } = self.tolerances;
         let mut previous_norm = f64::INFINITY;
-        let mut rate = self.state.newton_rate.max(f64::EPSILON).powf(0.8);
+        let mut rate = math::powf(self.state.newton_rate.max(f64::EPSILON), 0.8);
         for iteration in 0..MAX_ITERATIONS {
             for m in 0..n_q {
                 self.stage[m] = self.base[m] + kappa * self.stage[n_q + m];
@@ -834,8 +833,8 @@ mod tests {
                 .step(&mut f, &mut t, &mut y, Some(t_end), u64::MAX)
                 .unwrap();
         }
-        let error = ((y[0] - (omega * t).cos()).powi(2)
-            + (y[1] / omega + (omega * t).sin()).powi(2))
+        let error = ((y[0] - math::cos(omega * t)).powi(2)
+            + (y[1] / omega + math::sin(omega * t)).powi(2))
         .sqrt();
         let energy = y[0] * y[0] + (y[1] / omega).powi(2);
         (error, (1.0 - energy).abs())

@@ -416,7 +416,7 @@ fn initial_step<F: OdeSystem>(
     let h1 = if d1.max(d2) <= 1e-15 {
         (h0 * 1e-3).max(1e-6)
     } else {
-        (0.01 / d1.max(d2)).powf(1.0 / f64::from(order))
+        crate::math::powf(0.01 / d1.max(d2), 1.0 / f64::from(order))
     };
     (100.0 * h0).min(h1).min(tol.max_step)
 }

@@ -34,6 +34,7 @@
 use nalgebra::Vector2;
 
 use super::{DryContact, JointForce, JointKinematics};
+use crate::math;
 use crate::quadrature::GAUSS_5;
 
 /// Panels of the composite Gauss–Legendre rule over the pressure region.
@@ -61,7 +62,7 @@ impl FilmRule {
         };
         for i in 0..FILM_PANELS {
             for (k, (xi, weight)) in GAUSS_5.on_unit_interval(panel).enumerate() {
-                let (sin, cos) = ((i as f64 + xi) * panel).sin_cos();
+                let (sin, cos) = math::sin_cos((i as f64 + xi) * panel);
                 let m = 5 * i + k;
                 rule.weight[m] = weight;
                 rule.sin[m] = sin;
@@ -111,7 +112,7 @@ impl JournalBearing {
         let eps_dot = k.e.dot(&k.e_dot) / (e_norm * c);
         let gamma_dot = (k.e.x * k.e_dot.y - k.e.y * k.e_dot.x) / (e_norm * e_norm);
         let w = k.omega_journal - 2.0 * gamma_dot;
-        let amplitude = (eps * w).hypot(2.0 * eps_dot);
+        let amplitude = math::hypot(eps * w, 2.0 * eps_dot);
         if amplitude == 0.0 {
             return Vector2::zeros();
         }
@@ -207,7 +208,7 @@ mod tests {
             let f = b.film_force(&k);
             let s = 1.0 - eps * eps;
             let f_r = -kh * 2.0 * eps * eps * w / (s * s);
-            let f_t = kh * std::f64::consts::PI * eps * w / (2.0 * s.powf(1.5));
+            let f_t = kh * std::f64::consts::PI * eps * w / (2.0 * math::powf(s, 1.5));
             // n = +y, t = −x.
             assert!(
                 (f.y - f_r).abs() <= 1e-8 * f_r.abs(),
@@ -241,7 +242,8 @@ mod tests {
         let reference: f64 = (0..m)
             .map(|i| {
                 let th = 0.5 * pi + (i as f64 + 0.5) * pi / m as f64;
-                -2.0 * eps_dot * th.cos() * th.cos() / (1.0 + eps * th.cos()).powi(3) * pi
+                -2.0 * eps_dot * math::cos(th) * math::cos(th) / (1.0 + eps * math::cos(th)).powi(3)
+                    * pi
                     / m as f64
             })
             .sum::<f64>()

@@ -131,7 +131,7 @@ mod tests {
     fn effective_restitution(contact: &DryContact, mass: f64, v0: f64) -> f64 {
         let k = contact.stiffness;
         // Hertz contact duration ≈ 2.94 (m²/(K² v₀))^(1/5) (elastic impact).
-        let duration = 2.94 * (mass * mass / (k * k * v0)).powf(0.2);
+        let duration = 2.94 * crate::math::powf(mass * mass / (k * k * v0), 0.2);
         let h = duration / 20_000.0;
         let accel = |d: f64, v: f64| -contact.normal_force(d, v, v0) / mass;
         let (mut d, mut v) = (0.0f64, v0);

@@ -93,7 +93,7 @@ impl Constraints {
             ideal_row: None,
             drive_row: None,
         };
-        let (sin, cos) = s.theta.sin_cos();
+        let (sin, cos) = crate::math::sin_cos(s.theta);
         let mut push = |row: [f64; 6], phi: f64, phi_dot: f64, gamma: f64| {
             let k = c.rows;
             for (j, v) in row.iter().enumerate() {

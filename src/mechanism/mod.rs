@@ -34,6 +34,7 @@ use crate::error::ModelError;
 use crate::integrator::lu::Lu;
 use crate::integrator::{ErrorScales, MechanicalSystem, OdeSystem};
 use crate::joint::{Joint, JointForce, JointKinematics, MIN_IMPACT_VELOCITY};
+use crate::math;
 use crate::params::{DriveMode, JointModel, Parameters, RodFormulation};
 
 /// Largest penetration accepted at the first step of a contact event \[m\]: 1e-3 of the Hertz
@@ -321,7 +322,7 @@ impl SliderCrank {
     /// centred, every velocity that of the ideal mechanism (MODEL.md §10).
     pub fn initial_state(&self, angle: f64, speed: f64) -> Vec<f64> {
         let (r_c, l) = (self.crank_length, self.rod_length);
-        let (sin, cos) = angle.sin_cos();
+        let (sin, cos) = math::sin_cos(angle);
         let a = r_c * Vector2::new(cos, sin);
         let sin_beta = -r_c * sin / l;
         let cos_beta = (1.0 - sin_beta * sin_beta).sqrt();
@@ -623,7 +624,8 @@ impl SliderCrank {
             DriveMode::Torque => self.inputs.drive_torque,
             DriveMode::Speed => 0.0,
         };
-        let gravity_torque = -self.crank_mass * self.gravity * 0.5 * self.crank_length * q[0].cos();
+        let gravity_torque =
+            -self.crank_mass * self.gravity * 0.5 * self.crank_length * math::cos(q[0]);
 
         let (dq, rest) = dy.split_at_mut(n);
         let (acc, extra) = rest.split_at_mut(n);
@@ -711,7 +713,7 @@ impl SliderCrank {
             kinetic: self.kinetic_energy(y),
             strain: self.rod.strain_energy(p),
             contact: contact.potential,
-            gravity: self.crank_mass * self.gravity * 0.5 * self.crank_length * y[0].sin()
+            gravity: self.crank_mass * self.gravity * 0.5 * self.crank_length * math::sin(y[0])
                 - rod_gravity,
             drive_work: y[2 * n + 1],
             joint_work: y[2 * n + 2],

@@ -142,7 +142,7 @@ mod tests {
             });
             let chol = BandCholesky::new(m.as_ref()).unwrap();
             assert_eq!(chol.bandwidth, if dense { n - 1 } else { 1 });
-            let x: Vec<f64> = (0..n).map(|i| (i as f64).sin() + 2.0).collect();
+            let x: Vec<f64> = (0..n).map(|i| crate::math::sin(i as f64) + 2.0).collect();
             let mut b: Vec<f64> = (0..n)
                 .map(|i| (0..n).map(|j| m[(i, j)] * x[j]).sum())
                 .collect();

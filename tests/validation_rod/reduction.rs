@@ -3,6 +3,7 @@
 
 use faer::{Mat, Side};
 use flexible_slider_crank::ancf::{Rod, RodProperties};
+use flexible_slider_crank::math;
 use flexible_slider_crank::reduction::{Boundary, RodModel, max_modes};
 use nalgebra::{Rotation2, Vector2};
 
@@ -58,8 +59,12 @@ fn arc(rod: &Rod, origin: Vector2<f64>, angle: f64, bend: f64) -> Vec<f64> {
         .flat_map(|k| {
             let x = k as f64 * h;
             let r = origin
-                + rot * Vector2::new((kappa * x).sin() / kappa, (1.0 - (kappa * x).cos()) / kappa);
-            let t = rot * Vector2::new((kappa * x).cos(), (kappa * x).sin());
+                + rot
+                    * Vector2::new(
+                        math::sin(kappa * x) / kappa,
+                        (1.0 - math::cos(kappa * x)) / kappa,
+                    );
+            let t = rot * Vector2::new(math::cos(kappa * x), math::sin(kappa * x));
             [r.x, r.y, t.x, t.y]
         })
         .collect()
@@ -218,7 +223,7 @@ fn rigid_motion_of_the_end_nodes_is_exact() {
             let stretch = 1.0 + 0.01 * rng.next();
             let angle = std::f64::consts::PI * rng.next();
             let origin = Vector2::new(rng.next(), rng.next());
-            let t = stretch * Vector2::new(angle.cos(), angle.sin());
+            let t = stretch * Vector2::new(math::cos(angle), math::sin(angle));
             let length = model.rod().properties().length;
             let end = origin + length * t;
             let mut p = vec![0.0; model.n_coordinates()];
