@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # The README's second command: runs every test of the project — formatting, lints, documentation,
-# unit and validation tests, FMI conformance through the built library, and the Python tests of the
-# packaged FMU through fmpy and libcosimpy. Installs what it needs itself (packaging/bootstrap.sh),
-# so it works on a fresh Debian machine with Rust.
+# unit and validation tests, FMI conformance through the built library, the Python tests of the
+# packaged FMU through fmpy and libcosimpy, and the release FMU's binaries for every platform
+# (packaging/release.sh; win64 under wine, linux64 on an older Debian, darwin64 inspected).
+# Installs what it needs itself (packaging/bootstrap.sh, packaging/release.sh), so it works on a
+# fresh Debian machine with Rust.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -20,7 +22,17 @@ echo "== benches and examples compile"
 cargo test --benches --examples --no-run --quiet
 echo "== cargo test (unit, validation and FMI tests)"
 cargo test --workspace --lib --tests
-echo "== pytest (packaged FMU through fmpy and libcosimpy)"
+echo "== release FMU: linux64 (glibc 2.28), win64, darwin64"
+bash packaging/release.sh
+echo "== platform test tools: wine (win64 DLL), debootstrap (an older Debian for linux64)"
+need=()
+for p in wine64 debootstrap; do dpkg -s "$p" >/dev/null 2>&1 || need+=("$p"); done
+if [ ${#need[@]} -gt 0 ]; then
+  sudo=""
+  [ "$(id -u)" -ne 0 ] && sudo=sudo
+  $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${need[@]}" >/dev/null
+fi
+echo "== pytest (packaged FMU through fmpy and libcosimpy; release binaries on every platform)"
 set +e
 .venv/bin/python -m pytest -q packaging/python
 status=$?

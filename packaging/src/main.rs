@@ -1,7 +1,14 @@
-//! Packaging: builds the release shared library and zips it with `modelDescription.xml` and the
-//! documentation into `target/fmu/FlexibleSliderCrank.fmu` (FMI 2.0.4 §2.3).
+//! Packaging: zips the shared libraries with `modelDescription.xml` and the documentation into an
+//! FMU (FMI 2.0.4 §2.3).
 //!
-//! `cargo run --release -p packaging`
+//! - `cargo run --release -p packaging`: builds the library for this machine and writes
+//!   `target/fmu/FlexibleSliderCrank.fmu` with its one binary (`binaries/linux64` on Linux).
+//! - `cargo run --release -p packaging -- --binaries DIR`: takes the libraries the release build
+//!   (`packaging/release.sh`) made, `DIR/<platform>/FlexibleSliderCrank.<so|dll|dylib>` for
+//!   every FMI platform folder present (linux64, win64, darwin64), and writes
+//!   `target/fmu/release/FlexibleSliderCrank.fmu`.
+//!
+//! The archive is reproducible: its entries come in a fixed order with a fixed time stamp.
 
 use std::error::Error;
 use std::fmt::Write as _;
@@ -144,18 +151,64 @@ fn validation_summary(root: &Path) -> String {
     format!("<pre style=\"white-space:pre-wrap\">{escaped}</pre>")
 }
 
+/// FMI 2.0 platform folders and the file extension of their shared libraries.
+const PLATFORMS: [(&str, &str); 3] = [("linux64", "so"), ("win64", "dll"), ("darwin64", "dylib")];
+
+/// The binaries to package: (platform folder, path of the library).
+fn binaries(
+    root: &Path,
+    from: Option<&Path>,
+) -> Result<Vec<(&'static str, PathBuf)>, Box<dyn Error>> {
+    let Some(dir) = from else {
+        return Ok(vec![("linux64", build_library(root)?)]);
+    };
+    let found: Vec<_> = PLATFORMS
+        .iter()
+        .map(|(platform, ext)| {
+            (
+                *platform,
+                dir.join(platform).join(format!("{MODEL_IDENTIFIER}.{ext}")),
+            )
+        })
+        .filter(|(_, path)| path.exists())
+        .collect();
+    if found.is_empty() {
+        return Err(format!(
+            "no {MODEL_IDENTIFIER}.<so|dll|dylib> under {}/<platform>",
+            dir.display()
+        )
+        .into());
+    }
+    Ok(found)
+}
+
 fn main() -> Result<(), Box<dyn Error>> {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..");
-    let library = build_library(&root)?;
-    let out_dir = root.join("target").join("fmu");
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let from = match args.as_slice() {
+        [] => None,
+        [flag, dir] if flag == "--binaries" => Some(PathBuf::from(dir)),
+        _ => return Err("usage: packaging [--binaries DIR]".into()),
+    };
+    let binaries = binaries(&root, from.as_deref())?;
+    let out_dir = match from {
+        None => root.join("target").join("fmu"),
+        Some(_) => root.join("target").join("fmu").join("release"),
+    };
     std::fs::create_dir_all(&out_dir)?;
     let fmu = out_dir.join(format!("{MODEL_IDENTIFIER}.fmu"));
     let mut zip = zip::ZipWriter::new(std::fs::File::create(&fmu)?);
     let options = SimpleFileOptions::default().compression_method(zip::CompressionMethod::Deflated);
     zip.start_file("modelDescription.xml", options)?;
     zip.write_all(MODEL_DESCRIPTION.as_bytes())?;
-    zip.start_file(format!("binaries/linux64/{MODEL_IDENTIFIER}.so"), options)?;
-    zip.write_all(&std::fs::read(&library)?)?;
+    for (platform, library) in &binaries {
+        let ext = library.extension().and_then(|e| e.to_str()).unwrap_or("so");
+        zip.start_file(
+            format!("binaries/{platform}/{MODEL_IDENTIFIER}.{ext}"),
+            options,
+        )?;
+        zip.write_all(&std::fs::read(library)?)?;
+    }
     zip.start_file("documentation/index.html", options)?;
     zip.write_all(documentation(&validation_summary(&root)).as_bytes())?;
     for image in ["demo.png", "mode_study.png"] {

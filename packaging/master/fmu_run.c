@@ -1,0 +1,176 @@
+/* fmu_run: a minimal FMI 2.0 co-simulation master in portable C, for comparing the FMU's binaries
+ * across platforms bit for bit.
+ *
+ *   fmu_run LIBRARY GUID STOP_TIME STEP REAL_VRS OUT [--save-at K STATE] [--restore-at K STATE]
+ *
+ * Loads LIBRARY (dlopen, or LoadLibrary on Windows), instantiates it with GUID, runs from 0 to
+ * STOP_TIME in communication steps STEP, and writes one line per communication point to OUT:
+ * the point's index and, for every value reference of the comma-separated list REAL_VRS, the 64
+ * bits of its value in hexadecimal (so that the files compare bit for bit, whatever the C
+ * library's printf). --save-at K STATE serializes the FMU state at point K into the file STATE;
+ * --restore-at K STATE starts instead by restoring that state and continues from point K.
+ * Exit status 0 on success; every failing call is reported on stderr with its status.
+ */
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#ifdef _WIN32
+#include <windows.h>
+#define LOAD(path) ((void *)LoadLibraryA(path))
+#define SYMBOL(lib, name) ((void *)GetProcAddress((HMODULE)(lib), name))
+#else
+#include <dlfcn.h>
+#define LOAD(path) dlopen(path, RTLD_NOW | RTLD_LOCAL)
+#define SYMBOL(lib, name) dlsym(lib, name)
+#endif
+
+typedef void *fmi2Component;
+typedef void *fmi2FMUstate;
+typedef unsigned int fmi2ValueReference;
+typedef int fmi2Boolean;
+typedef int fmi2Status;
+typedef void (*fmi2CallbackLogger)(void *, const char *, fmi2Status, const char *, const char *, ...);
+typedef struct {
+    fmi2CallbackLogger logger;
+    void *(*allocateMemory)(size_t, size_t);
+    void (*freeMemory)(void *);
+    void (*stepFinished)(void *, fmi2Status);
+    void *componentEnvironment;
+} fmi2CallbackFunctions;
+
+typedef fmi2Component (*Instantiate)(const char *, int, const char *, const char *,
+                                     const fmi2CallbackFunctions *, fmi2Boolean, fmi2Boolean);
+typedef fmi2Status (*SetupExperiment)(fmi2Component, fmi2Boolean, double, double, fmi2Boolean, double);
+typedef fmi2Status (*OneArg)(fmi2Component);
+typedef fmi2Status (*GetReal)(fmi2Component, const fmi2ValueReference *, size_t, double *);
+typedef fmi2Status (*DoStep)(fmi2Component, double, double, fmi2Boolean);
+typedef fmi2Status (*GetState)(fmi2Component, fmi2FMUstate *);
+typedef fmi2Status (*StateSize)(fmi2Component, fmi2FMUstate, size_t *);
+typedef fmi2Status (*Serialize)(fmi2Component, fmi2FMUstate, char *, size_t);
+typedef fmi2Status (*Deserialize)(fmi2Component, const char *, size_t, fmi2FMUstate *);
+typedef fmi2Status (*SetState)(fmi2Component, fmi2FMUstate);
+typedef void (*FreeInstance)(fmi2Component);
+
+static void logger(void *env, const char *name, fmi2Status status, const char *category,
+                   const char *message, ...) {
+    va_list args;
+    (void)env;
+    fprintf(stderr, "[%s] %s (status %d): ", name, category, status);
+    va_start(args, message);
+    vfprintf(stderr, message, args);
+    va_end(args);
+    fputc('\n', stderr);
+}
+
+static void *library;
+
+static void *symbol(const char *name) {
+    void *f = SYMBOL(library, name);
+    if (!f) {
+        fprintf(stderr, "fmu_run: %s not exported\n", name);
+        exit(2);
+    }
+    return f;
+}
+
+static void check(fmi2Status status, const char *call) {
+    if (status != 0) {
+        fprintf(stderr, "fmu_run: %s returned status %d\n", call, status);
+        exit(1);
+    }
+}
+
+int main(int argc, char **argv) {
+    if (argc < 7) {
+        fprintf(stderr, "usage: fmu_run LIBRARY GUID STOP_TIME STEP REAL_VRS OUT "
+                        "[--save-at K STATE | --restore-at K STATE]\n");
+        return 2;
+    }
+    const char *guid = argv[2];
+    double stop = strtod(argv[3], NULL), h = strtod(argv[4], NULL);
+    fmi2ValueReference vrs[256];
+    size_t nvr = 0;
+    for (char *p = argv[5]; *p && nvr < 256;) {
+        vrs[nvr++] = (fmi2ValueReference)strtoul(p, &p, 10);
+        if (*p == ',') p++;
+    }
+    long save_at = -1, restore_at = -1;
+    const char *state_file = NULL;
+    if (argc == 10 && strcmp(argv[7], "--save-at") == 0) save_at = atol(argv[8]);
+    if (argc == 10 && strcmp(argv[7], "--restore-at") == 0) restore_at = atol(argv[8]);
+    if (argc == 10) state_file = argv[9];
+
+    library = LOAD(argv[1]);
+    if (!library) {
+        fprintf(stderr, "fmu_run: cannot load %s\n", argv[1]);
+        return 2;
+    }
+    fmi2CallbackFunctions callbacks = {logger, calloc, free, NULL, NULL};
+    fmi2Component c = ((Instantiate)symbol("fmi2Instantiate"))("run", 1, guid, "file:///", &callbacks, 0, 0);
+    if (!c) {
+        fprintf(stderr, "fmu_run: fmi2Instantiate failed\n");
+        return 1;
+    }
+    check(((SetupExperiment)symbol("fmi2SetupExperiment"))(c, 0, 0.0, 0.0, 1, stop), "fmi2SetupExperiment");
+    check(((OneArg)symbol("fmi2EnterInitializationMode"))(c), "fmi2EnterInitializationMode");
+    check(((OneArg)symbol("fmi2ExitInitializationMode"))(c), "fmi2ExitInitializationMode");
+
+    long n = (long)(stop / h + 0.5), first = 0;
+    if (restore_at >= 0) {
+        FILE *f = fopen(state_file, "rb");
+        if (!f) {
+            fprintf(stderr, "fmu_run: cannot read %s\n", state_file);
+            return 2;
+        }
+        static char bytes[1 << 24];
+        size_t size = fread(bytes, 1, sizeof bytes, f);
+        fclose(f);
+        fmi2FMUstate s = NULL;
+        check(((Deserialize)symbol("fmi2DeSerializeFMUstate"))(c, bytes, size, &s), "fmi2DeSerializeFMUstate");
+        check(((SetState)symbol("fmi2SetFMUstate"))(c, s), "fmi2SetFMUstate");
+        first = restore_at;
+    }
+    FILE *out = fopen(argv[6], "w");
+    if (!out) {
+        fprintf(stderr, "fmu_run: cannot write %s\n", argv[6]);
+        return 2;
+    }
+    GetReal get_real = (GetReal)symbol("fmi2GetReal");
+    DoStep do_step = (DoStep)symbol("fmi2DoStep");
+    double values[256];
+    for (long k = first;; k++) {
+        check(get_real(c, vrs, nvr, values), "fmi2GetReal");
+        fprintf(out, "%ld", k);
+        for (size_t i = 0; i < nvr; i++) {
+            uint64_t bits;
+            memcpy(&bits, &values[i], sizeof bits);
+            fprintf(out, " %016llx", (unsigned long long)bits);
+        }
+        fputc('\n', out);
+        if (k == save_at) {
+            fmi2FMUstate s = NULL;
+            size_t size = 0;
+            check(((GetState)symbol("fmi2GetFMUstate"))(c, &s), "fmi2GetFMUstate");
+            check(((StateSize)symbol("fmi2SerializedFMUstateSize"))(c, s, &size), "fmi2SerializedFMUstateSize");
+            char *bytes = malloc(size);
+            check(((Serialize)symbol("fmi2SerializeFMUstate"))(c, s, bytes, size), "fmi2SerializeFMUstate");
+            FILE *f = fopen(state_file, "wb");
+            if (!f || fwrite(bytes, 1, size, f) != size) {
+                fprintf(stderr, "fmu_run: cannot write %s\n", state_file);
+                return 2;
+            }
+            fclose(f);
+            free(bytes);
+        }
+        if (k == n) break;
+        /* The communication points as a master computes them: k h, in floating point. */
+        check(do_step(c, (double)k * h, h, 1), "fmi2DoStep");
+    }
+    fclose(out);
+    check(((OneArg)symbol("fmi2Terminate"))(c), "fmi2Terminate");
+    ((FreeInstance)symbol("fmi2FreeInstance"))(c);
+    return 0;
+}

@@ -1,0 +1,155 @@
+"""Tests of the release FMU's binaries (packaging/release.sh): the archive, the linux64 glibc
+baseline, the win64 DLL under wine and the darwin64 universal binary, and bit-identical results on
+every platform that runs here.
+
+Every run is benchmark B's DefaultExperiment (24 ms in 240 communication steps of 1e-4 s) through
+the portable C master packaging/master/fmu_run.c, which writes every Real output at every
+communication point as its 64 bits in hexadecimal, so that two runs compare bit for bit.
+"""
+import os
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+from fmpy import read_model_description, supported_platforms
+from fmpy.validation import validate_fmu
+
+ROOT = Path(__file__).resolve().parents[2]
+RELEASE_FMU = ROOT / "target" / "fmu" / "release" / "FlexibleSliderCrank.fmu"
+BINARIES = ROOT / "target" / "cross" / "binaries"
+HOST_LIBRARY = ROOT / "target" / "release" / "libflexible_slider_crank.so"
+WORK = ROOT / "target" / "platform-tests"
+MASTER = ROOT / "packaging" / "master"
+# The oldest Debian release the package mirrors still serve: glibc 2.31, older than this machine's.
+OLD_DEBIAN = "bullseye"
+FMI2_FUNCTIONS = 34
+SAVE_AT = 120
+
+md = read_model_description(str(ROOT / "target" / "fmu" / "FlexibleSliderCrank.fmu"))
+GUID = md.guid
+REAL_OUTPUTS = ",".join(str(v.valueReference) for v in md.modelVariables
+                        if v.causality == "output" and v.type == "Real")
+EXPERIMENT = ["0.024", "1e-4", REAL_OUTPUTS]
+
+
+def run(args, **kwargs):
+    return subprocess.run(args, check=True, capture_output=True, text=True, **kwargs)
+
+
+@pytest.fixture(scope="module")
+def work():
+    WORK.mkdir(parents=True, exist_ok=True)
+    return WORK
+
+
+@pytest.fixture(scope="module")
+def linux_run(work):
+    """The release linux64 binary's run, and the FMU state it serialized at point SAVE_AT."""
+    master = work / "fmu_run"
+    run(["gcc", "-O2", "-Wall", "-Werror", str(MASTER / "fmu_run.c"), "-o", str(master), "-ldl"])
+    out, state = work / "linux64.txt", work / "linux64.state"
+    run([str(master), str(BINARIES / "linux64" / "FlexibleSliderCrank.so"), GUID, *EXPERIMENT,
+         str(out), "--save-at", str(SAVE_AT), str(state)])
+    return out.read_text(), state
+
+
+def lines_differing(a, b):
+    a, b = a.splitlines(), b.splitlines()
+    assert len(a) == len(b), (len(a), len(b))
+    return [i for i, (x, y) in enumerate(zip(a, b)) if x != y]
+
+
+def test_release_fmu_validates_and_holds_every_platform():
+    assert validate_fmu(str(RELEASE_FMU)) == []
+    platforms = supported_platforms(str(RELEASE_FMU))
+    for platform in ["linux64", "win64", "darwin64"]:
+        assert platform in platforms, platforms
+
+
+def test_linux64_needs_glibc_2_28_at_most():
+    symbols = run(["objdump", "-T", str(BINARIES / "linux64" / "FlexibleSliderCrank.so")]).stdout
+    versions = {tuple(int(x) for x in v.split(".")) for v in re.findall(r"GLIBC_([0-9.]+)", symbols)}
+    assert versions and max(versions) <= (2, 28), sorted(versions)
+    assert len(set(re.findall(r"\bfmi2\w+", symbols))) == FMI2_FUNCTIONS
+
+
+def test_linux64_equals_the_host_build(linux_run, work):
+    out = work / "host.txt"
+    run([str(work / "fmu_run"), str(HOST_LIBRARY), GUID, *EXPERIMENT, str(out)])
+    assert lines_differing(out.read_text(), linux_run[0]) == []
+
+
+@pytest.mark.skipif(os.geteuid() != 0, reason="debootstrap and chroot need root")
+def test_linux64_runs_on_an_older_debian_bit_identically(linux_run, work):
+    root = work / OLD_DEBIAN
+    if not (root / "usr" / "bin" / "ldd").exists():
+        shutil.rmtree(root, ignore_errors=True)
+        run(["debootstrap", "--variant=minbase", OLD_DEBIAN, str(root),
+             "http://deb.debian.org/debian"])
+    glibc = run(["chroot", str(root), "ldd", "--version"]).stdout.splitlines()[0]
+    assert glibc.endswith("2.31"), glibc
+    zig = Path(run([str(ROOT / ".venv" / "bin" / "python"), "-c",
+                    "import ziglang, os; print(os.path.dirname(ziglang.__file__))"]).stdout.strip())
+    run([str(zig / "zig"), "cc", "-target", "x86_64-linux-gnu.2.28", "-O2",
+         str(MASTER / "fmu_run.c"), "-o", str(root / "fmu_run")])
+    shutil.copy(BINARIES / "linux64" / "FlexibleSliderCrank.so", root / "FlexibleSliderCrank.so")
+    run(["chroot", str(root), "/fmu_run", "/FlexibleSliderCrank.so", GUID, *EXPERIMENT, "/out.txt"])
+    assert lines_differing((root / "out.txt").read_text(), linux_run[0]) == []
+
+
+@pytest.fixture(scope="module")
+def wine(work):
+    """A directory with the win64 DLL, the C master built for Windows and the test-only
+    bcryptprimitives.dll that wine 8 lacks; and a function running the master there under wine."""
+    win = work / "win64"
+    win.mkdir(exist_ok=True)
+    gcc = "x86_64-w64-mingw32-gcc"
+    run([gcc, "-O2", "-Wall", "-Werror", str(MASTER / "fmu_run.c"), "-o", str(win / "fmu_run.exe")])
+    run([gcc, "-O2", "-shared", str(MASTER / "bcryptprimitives.c"), "-ladvapi32",
+         "-o", str(win / "bcryptprimitives.dll")])
+    shutil.copy(BINARIES / "win64" / "FlexibleSliderCrank.dll", win / "FlexibleSliderCrank.dll")
+    env = dict(os.environ, WINEPREFIX=str(work / "wineprefix"), WINEDEBUG="-all")
+
+    def master(*args):
+        return run(["wine", "fmu_run.exe", "FlexibleSliderCrank.dll", GUID, *EXPERIMENT, *args],
+                   cwd=win, env=env)
+    return win, master
+
+
+def test_win64_under_wine_equals_linux64_at_every_communication_point(linux_run, wine):
+    win, master = wine
+    master("win64.txt")
+    assert lines_differing((win / "win64.txt").read_text(), linux_run[0]) == []
+
+
+def test_state_saved_on_linux64_continues_bit_identically_on_win64(linux_run, wine):
+    win, master = wine
+    shutil.copy(linux_run[1], win / "linux64.state")
+    master("continued.txt", "--restore-at", str(SAVE_AT), "linux64.state")
+    continued = (win / "continued.txt").read_text()
+    assert lines_differing(continued, "".join(linux_run[0].splitlines(True)[SAVE_AT:])) == []
+
+
+def test_win64_exports_fmi2_and_imports_system_dlls_only():
+    headers = run(["x86_64-w64-mingw32-objdump", "-p",
+                   str(BINARIES / "win64" / "FlexibleSliderCrank.dll")]).stdout
+    assert len(set(re.findall(r"\]\s+(fmi2\w+)", headers))) == FMI2_FUNCTIONS
+    imports = {name.lower() for name in re.findall(r"DLL Name: (\S+)", headers)}
+    system = {"kernel32.dll", "ntdll.dll", "msvcrt.dll", "userenv.dll", "ws2_32.dll",
+              "bcryptprimitives.dll", "advapi32.dll", "api-ms-win-core-synch-l1-2-0.dll"}
+    assert imports <= system, imports - system
+
+
+def test_darwin64_is_universal_for_macos_11_with_the_fmi2_exports():
+    dylib = str(BINARIES / "darwin64" / "FlexibleSliderCrank.dylib")
+    assert run(["llvm-lipo-14", "-archs", dylib]).stdout.split() == ["x86_64", "arm64"]
+    for arch in ["x86_64", "arm64"]:
+        headers = run(["llvm-objdump-14", "--macho", f"--arch={arch}", "--private-headers",
+                       dylib]).stdout
+        assert re.search(r"cmd LC_BUILD_VERSION.*?platform macos.*?minos 11\.0", headers, re.S)
+        if arch == "arm64":
+            assert "LC_CODE_SIGNATURE" in headers
+        exports = run(["llvm-nm-14", f"--arch={arch}", "-gU", dylib]).stdout
+        assert len(set(re.findall(r"\b_(fmi2\w+)", exports))) == FMI2_FUNCTIONS

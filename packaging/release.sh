@@ -1,0 +1,110 @@
+#!/usr/bin/env bash
+# The release build: target/fmu/release/FlexibleSliderCrank.fmu with stripped binaries for
+#   binaries/linux64   x86_64 Linux, glibc 2.28 or later (RHEL/Rocky 8, Ubuntu 18.10, Debian 10 on)
+#   binaries/win64     x86_64 Windows 10 or later
+#   binaries/darwin64  macOS 11 or later, universal (x86_64 and arm64), ad-hoc signed
+# from this workspace, with only Debian packages, crates and PyPI packages:
+#   - linux64: this machine's Rust toolchain, linked by zig (PyPI `ziglang`) through cargo-zigbuild
+#     against glibc 2.28's symbol versions;
+#   - win64 and darwin64: Debian's rustc-web/cargo-web and the standard library's sources
+#     (rust-web-src), unpacked into target/toolchains, since no prebuilt Rust standard library for
+#     those targets can be installed here; std is compiled with the FMU (-Zbuild-std), linked by
+#     mingw-w64 (Windows) and zig (macOS), the two macOS slices merged by llvm-lipo.
+# Set-up needs the package registries; the builds then run offline. Paths are remapped and the zip's
+# entries have fixed time stamps, so the same sources and toolchains give the same bytes.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$PWD
+
+bash packaging/bootstrap.sh
+
+# --- set-up: system packages and the Debian Rust toolchain ------------------------------------
+need=()
+for p in gcc-mingw-w64-x86-64 clang llvm libllvm22 libgit2-1.5 libcurl4 libssh2-1 libsqlite3-0; do
+  dpkg -s "$p" >/dev/null 2>&1 || need+=("$p")
+done
+sudo=""
+[ "$(id -u)" -ne 0 ] && sudo=sudo
+if [ ${#need[@]} -gt 0 ]; then
+  echo "== installing ${need[*]}"
+  $sudo apt-get update -qq
+  $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${need[@]}" >/dev/null
+fi
+
+rust_web=1.96
+toolchain=$root/target/toolchains/rust-web-$rust_web
+if [ ! -x "$toolchain/usr/bin/cargo" ]; then
+  echo "== unpacking Debian's Rust $rust_web toolchain into $toolchain"
+  debs=$(mktemp -d)
+  (cd "$debs" && apt-get download -qq rustc-web cargo-web rust-web-src \
+    "libstd-rust-web-$rust_web" libstd-rust-web-dev 2>&1 | grep -v unsandboxed || true)
+  rm -rf "$toolchain" && mkdir -p "$toolchain"
+  for deb in "$debs"/*.deb; do dpkg-deb -x "$deb" "$toolchain"; done
+  rm -rf "$debs"
+fi
+zig_dir=$(.venv/bin/python -c 'import ziglang, os; print(os.path.dirname(ziglang.__file__))')
+export PATH="$root/.venv/bin:$zig_dir:$PATH"
+clang_include="$(clang -print-resource-dir)/include"
+cargo fetch --locked --quiet
+
+# --- builds: three jobs in parallel (each is mostly one serial chain of crates) ---------------
+out=$root/target/cross
+bin=$out/binaries
+mkdir -p "$bin/linux64" "$bin/win64" "$bin/darwin64" "$out/logs"
+remap="--remap-path-prefix=$root=/build --remap-path-prefix=${CARGO_HOME:-$HOME/.cargo}=/cargo"
+remap="$remap --remap-path-prefix=$toolchain/usr/lib/rustlib/src/rust=/rustc/$rust_web"
+lib=(--offline --locked --quiet --release --lib -p flexible-slider-crank)
+
+linux64() {
+  env CARGO_PROFILE_RELEASE_STRIP=symbols RUSTFLAGS="$remap" \
+    "BINDGEN_EXTRA_CLANG_ARGS_x86_64-unknown-linux-gnu=-I$clang_include -I/usr/include/x86_64-linux-gnu -I/usr/include" \
+    cargo zigbuild "${lib[@]}" --target x86_64-unknown-linux-gnu.2.28 --target-dir "$out/linux"
+  cp "$out/linux/x86_64-unknown-linux-gnu/release/libflexible_slider_crank.so" "$bin/linux64/FlexibleSliderCrank.so"
+}
+
+# Debian's toolchain (its std sources serve -Zbuild-std).
+debian() {
+  env PATH="$toolchain/usr/bin:$PATH" RUSTC_BOOTSTRAP=1 \
+    LD_LIBRARY_PATH="$toolchain/usr/lib/x86_64-linux-gnu${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" "$@"
+}
+
+win64() {
+  debian env CARGO_PROFILE_RELEASE_STRIP=symbols RUSTFLAGS="$remap" \
+    cargo build -Zbuild-std=std,panic_unwind "${lib[@]}" --target x86_64-pc-windows-gnu --target-dir "$out/win"
+  cp "$out/win/x86_64-pc-windows-gnu/release/flexible_slider_crank.dll" "$bin/win64/FlexibleSliderCrank.dll"
+}
+
+# zig's Mach-O linker exports every symbol of default visibility (it ignores rustc's export list,
+# hence hidden by default: only the fmi2 functions stay exported), strips local symbols (-x) and
+# signs the arm64 slice ad hoc; stripping after linking would break that signature.
+darwin64() {
+  local macos="-I$clang_include -I$zig_dir/lib/libc/include/any-darwin-any"
+  debian env CARGO_PROFILE_RELEASE_STRIP=false MACOSX_DEPLOYMENT_TARGET=11.0 \
+    RUSTFLAGS="$remap -Zdefault-visibility=hidden -C link-arg=-Wl,-x -C link-arg=-Wl,-install_name,@rpath/FlexibleSliderCrank.dylib" \
+    "BINDGEN_EXTRA_CLANG_ARGS_x86_64-apple-darwin=$macos" "BINDGEN_EXTRA_CLANG_ARGS_aarch64-apple-darwin=$macos" \
+    cargo zigbuild -Zbuild-std=std,panic_unwind "${lib[@]}" --target-dir "$out/darwin" \
+    --target x86_64-apple-darwin --target aarch64-apple-darwin
+  llvm-lipo-14 -create "$out/darwin/x86_64-apple-darwin/release/libflexible_slider_crank.dylib" \
+    "$out/darwin/aarch64-apple-darwin/release/libflexible_slider_crank.dylib" \
+    -output "$bin/darwin64/FlexibleSliderCrank.dylib"
+}
+
+pids=()
+for job in linux64 win64 darwin64; do
+  echo "== building $job (log: target/cross/logs/$job.log)"
+  $job >"$out/logs/$job.log" 2>&1 &
+  pids+=($!)
+done
+failed=0
+for i in 0 1 2; do
+  if ! wait "${pids[$i]}"; then
+    job=$(echo linux64 win64 darwin64 | cut -d' ' -f$((i + 1)))
+    echo "== $job failed:" >&2
+    cat "$out/logs/$job.log" >&2
+    failed=1
+  fi
+done
+[ "$failed" -eq 0 ]
+
+# --- the FMU -----------------------------------------------------------------------------------
+cargo run --release --quiet -p packaging -- --binaries "$bin"
