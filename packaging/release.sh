@@ -68,9 +68,15 @@ debian() {
     LD_LIBRARY_PATH="$toolchain/usr/lib/x86_64-linux-gnu${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" "$@"
 }
 
+# The standard library is built without backtrace symbolization (a panic inside the FMU is caught
+# and reported through the master's logger, never printed with a backtrace), which saves compiling
+# its DWARF readers; unwinding stays (catch_unwind at every fmi2 function needs it).
+build_std=(-Zbuild-std=std,panic_unwind -Zbuild-std-features=panic-unwind)
+
+# mingw-w64's linker stamps the time into the DLL unless told not to.
 win64() {
-  debian env CARGO_PROFILE_RELEASE_STRIP=symbols RUSTFLAGS="$remap" \
-    cargo build -Zbuild-std=std,panic_unwind "${lib[@]}" --target x86_64-pc-windows-gnu --target-dir "$out/win"
+  debian env CARGO_PROFILE_RELEASE_STRIP=symbols RUSTFLAGS="$remap -C link-arg=-Wl,--no-insert-timestamp" \
+    cargo build "${build_std[@]}" "${lib[@]}" --target x86_64-pc-windows-gnu --target-dir "$out/win"
   cp "$out/win/x86_64-pc-windows-gnu/release/flexible_slider_crank.dll" "$bin/win64/FlexibleSliderCrank.dll"
 }
 
@@ -82,7 +88,7 @@ darwin64() {
   debian env CARGO_PROFILE_RELEASE_STRIP=false MACOSX_DEPLOYMENT_TARGET=11.0 \
     RUSTFLAGS="$remap -Zdefault-visibility=hidden -C link-arg=-Wl,-x -C link-arg=-Wl,-install_name,@rpath/FlexibleSliderCrank.dylib" \
     "BINDGEN_EXTRA_CLANG_ARGS_x86_64-apple-darwin=$macos" "BINDGEN_EXTRA_CLANG_ARGS_aarch64-apple-darwin=$macos" \
-    cargo zigbuild -Zbuild-std=std,panic_unwind "${lib[@]}" --target-dir "$out/darwin" \
+    cargo zigbuild "${build_std[@]}" "${lib[@]}" --target-dir "$out/darwin" \
     --target x86_64-apple-darwin --target aarch64-apple-darwin
   llvm-lipo-14 -create "$out/darwin/x86_64-apple-darwin/release/libflexible_slider_crank.dylib" \
     "$out/darwin/aarch64-apple-darwin/release/libflexible_slider_crank.dylib" \
@@ -92,7 +98,7 @@ darwin64() {
 pids=()
 for job in linux64 win64 darwin64; do
   echo "== building $job (log: target/cross/logs/$job.log)"
-  $job >"$out/logs/$job.log" 2>&1 &
+  (time $job) >"$out/logs/$job.log" 2>&1 &
   pids+=($!)
 done
 failed=0

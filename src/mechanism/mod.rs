@@ -624,8 +624,12 @@ impl SliderCrank {
             DriveMode::Torque => self.inputs.drive_torque,
             DriveMode::Speed => 0.0,
         };
-        let gravity_torque =
-            -self.crank_mass * self.gravity * 0.5 * self.crank_length * math::cos(q[0]);
+        // No cosine per evaluation without gravity (the common case).
+        let gravity_torque = if self.gravity == 0.0 {
+            0.0
+        } else {
+            -self.crank_mass * self.gravity * 0.5 * self.crank_length * math::cos(q[0])
+        };
 
         let (dq, rest) = dy.split_at_mut(n);
         let (acc, extra) = rest.split_at_mut(n);
