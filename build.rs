@@ -8,8 +8,8 @@ use std::fmt::Write as _;
 mod variables;
 
 use variables::{
-    Causality, DEFAULT_EXPERIMENT, ENUMERATIONS, Kind, LOG_CATEGORIES, UNITS, VARIABLES,
-    Variability,
+    Causality, DEFAULT_EXPERIMENT, ENUMERATIONS, FEEDTHROUGH, Kind, LOG_CATEGORIES, UNITS,
+    VARIABLES, Variability,
 };
 
 const GUID_PLACEHOLDER: &str = "@GUID@";
@@ -29,6 +29,16 @@ fn structured(name: &str) -> bool {
 }
 
 fn check() {
+    for (output, inputs) in FEEDTHROUGH {
+        let causality = |vr: &variables::Vr| VARIABLES[*vr as usize].causality;
+        if causality(output) != Causality::Output
+            || inputs.iter().any(|u| causality(u) != Causality::Input)
+        {
+            fail(format!(
+                "FEEDTHROUGH: {output:?} must be an output and {inputs:?} inputs"
+            ));
+        }
+    }
     for (i, v) in VARIABLES.iter().enumerate() {
         if v.vr as usize != i {
             fail(format!(
@@ -231,7 +241,19 @@ fn render() -> String {
             .collect()
     };
     for i in index(&|v| v.causality == Causality::Output) {
-        let _ = writeln!(x, r#"      <Unknown index="{i}"/>"#);
+        let inputs = FEEDTHROUGH
+            .iter()
+            .find(|(output, _)| *output as usize + 1 == i)
+            .map_or(&[][..], |(_, inputs)| inputs);
+        let dependencies: Vec<String> = inputs
+            .iter()
+            .map(|u| (*u as usize + 1).to_string())
+            .collect();
+        let _ = writeln!(
+            x,
+            r#"      <Unknown index="{i}" dependencies="{}"/>"#,
+            dependencies.join(" ")
+        );
     }
     x.push_str("    </Outputs>\n    <InitialUnknowns>\n");
     for i in index(&|v| {

@@ -320,20 +320,26 @@ impl Simulation {
     }
 
     /// Prescribed crank speed \[rad/s\] (speed drive). A change is applied at the next
-    /// `advance_to` as an impulsive velocity adjustment through the constraints.
+    /// `advance_to` as an impulsive velocity adjustment through the constraints; with the torque
+    /// drive the value is kept but acts on nothing, so it does not restart the step sequence.
     pub fn set_drive_speed(&mut self, speed: f64) {
         if speed != self.mechanism.inputs.drive_speed {
             self.mechanism.inputs.drive_speed = speed;
-            self.speed_changed = self.parameters.drive_mode == DriveMode::Speed;
-            self.restart = true;
+            if self.parameters.drive_mode == DriveMode::Speed {
+                self.speed_changed = true;
+                self.restart = true;
+            }
         }
     }
 
-    /// Crank torque \[N m\] (torque drive).
+    /// Crank torque \[N m\] (torque drive; with the speed drive it is kept but acts on nothing, so
+    /// it does not restart the step sequence).
     pub fn set_drive_torque(&mut self, torque: f64) {
         if torque != self.mechanism.inputs.drive_torque {
             self.mechanism.inputs.drive_torque = torque;
-            self.restart = true;
+            if self.parameters.drive_mode == DriveMode::Torque {
+                self.restart = true;
+            }
         }
     }
 
@@ -394,6 +400,10 @@ impl Simulation {
                 self.time
             )));
         }
+        // After a change from outside (an input, typically from a coupled model at every
+        // communication point) the steps end exactly at t_end: the next interval restarts there
+        // anyway, and a step beyond it would be computed only to be cut back by dense output.
+        let limit = self.restart.then_some(t_end);
         if self.restart {
             self.restart_here();
             self.restart = false;
@@ -421,7 +431,7 @@ impl Simulation {
                 &mut self.mechanism,
                 &mut self.step_end,
                 &mut self.y_end,
-                None,
+                limit,
                 budget,
             ) {
                 Ok(true) => {}

@@ -225,3 +225,69 @@ def test_peak_hold_catches_a_rigid_rod_impact_between_internal_steps():
                                                 "solver.relativeTolerance": 1e-8}, output=outputs)
     for name in outputs:
         assert abs(default[name].max() - converged[name].max()) <= 5e-3 * converged[name].max(), name
+
+
+def test_master_tolerance_tightens_but_never_loosens_the_integration():
+    """fmi2SetupExperiment's tolerance (fmpy's relative_tolerance) replaces
+    solver.relativeTolerance where it is smaller, and is ignored where it is larger."""
+    def steps(**kwargs):
+        res = simulate_fmu(FMU, stop_time=0.006, output=["solver.steps", "slider.position"], **kwargs)
+        return int(res["solver.steps"][-1]), float(res["slider.position"][-1])
+
+    default = steps()
+    assert steps(relative_tolerance=1e-1) == default
+    tight = steps(relative_tolerance=1e-6)
+    assert tight[0] > 3 * default[0]
+    assert tight == steps(relative_tolerance=1.0, start_values={"solver.relativeTolerance": 1e-6})
+    assert steps(relative_tolerance=1e-6, start_values={"solver.relativeTolerance": 1e-1}) == tight
+
+
+def feedthrough_measured():
+    """(output, input) pairs where setting the input changes the output at once, before a step:
+    over every drive x joint x rod model, 2 ms into benchmark B."""
+    md = read_model_description(FMU)
+    unzipdir = extract(FMU)
+    vr = {v.name: v.valueReference for v in md.modelVariables}
+    inputs = [v.name for v in md.modelVariables if v.causality == "input"]
+    outputs = [v for v in md.modelVariables if v.causality == "output"]
+    getters = {"Real": "getReal", "Integer": "getInteger", "Boolean": "getBoolean"}
+    pairs = set()
+    for drive in (1, 2):
+        for joint in JOINTS.values():
+            for formulation in (FORMULATIONS["rigid"], FORMULATIONS["craigBampton"]):
+                s = FMU2Slave(guid=md.guid, unzipDirectory=unzipdir,
+                              modelIdentifier=md.coSimulation.modelIdentifier, instanceName="dep")
+                s.instantiate()
+                s.setupExperiment(startTime=0.0)
+                s.setInteger([vr["drive.mode"], vr["joint.model"], vr["rod.formulation"]],
+                             [drive, joint, formulation])
+                s.enterInitializationMode()
+                s.exitInitializationMode()
+                t = 0.0
+                for _ in range(20):
+                    s.doStep(t, 1e-4)
+                    t += 1e-4
+
+                def read():
+                    return {o.name: getattr(s, getters[o.type])([o.valueReference])[0]
+                            for o in outputs}
+                before = read()
+                for u in inputs:
+                    x = s.getReal([vr[u]])[0]
+                    s.setReal([vr[u]], [1.01 * x + 1.0])
+                    after = read()
+                    pairs |= {(o, u) for o in after if after[o] != before[o]}
+                    s.setReal([vr[u]], [x])
+                    assert read() == before, (drive, joint, formulation, u)
+                s.terminate()
+                s.freeInstance()
+    return pairs
+
+
+def test_declared_output_dependencies_are_the_measured_ones():
+    """ModelStructure/Outputs declares, for each output, exactly the inputs it reacts to without a
+    step (direct feedthrough); the states (crank angle and speed, slider position, ...) list none."""
+    md = read_model_description(FMU)
+    declared = {(u.variable.name, d.name) for u in md.outputs for d in (u.dependencies or [])}
+    assert all(u.dependencies is not None for u in md.outputs)
+    assert declared == feedthrough_measured()

@@ -127,19 +127,23 @@ pub unsafe extern "C" fn fmi2SetDebugLogging(
 }
 const _: fmi2SetDebugLoggingTYPE = Some(fmi2SetDebugLogging);
 
-/// Stores start and stop time (FMI 2.0.4 §2.1.6).
+/// Stores the tolerance, start and stop time (FMI 2.0.4 §2.1.6).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn fmi2SetupExperiment(
     c: fmi2Component,
-    _toleranceDefined: fmi2Boolean,
-    _tolerance: fmi2Real,
+    toleranceDefined: fmi2Boolean,
+    tolerance: fmi2Real,
     startTime: fmi2Real,
     stopTimeDefined: fmi2Boolean,
     stopTime: fmi2Real,
 ) -> fmi2Status {
     with_instance(c, Call::SetupExperiment, |inst| {
-        inst.setup_experiment(startTime, (stopTimeDefined != 0).then_some(stopTime))
-            .map(ok)
+        inst.setup_experiment(
+            (toleranceDefined != 0).then_some(tolerance),
+            startTime,
+            (stopTimeDefined != 0).then_some(stopTime),
+        )
+        .map(ok)
     })
 }
 const _: fmi2SetupExperimentTYPE = Some(fmi2SetupExperiment);

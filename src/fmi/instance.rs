@@ -57,6 +57,8 @@ pub struct Instance {
     pub(crate) simulation: Option<Simulation>,
     pub(crate) start_time: f64,
     pub(crate) stop_time: Option<f64>,
+    /// The master's tolerance from fmi2SetupExperiment, if it gave one.
+    pub(crate) tolerance: Option<f64>,
     pub(crate) time: f64,
     pub(crate) last_successful_time: f64,
 }
@@ -101,6 +103,7 @@ impl Instance {
             simulation: None,
             start_time: 0.0,
             stop_time: None,
+            tolerance: None,
             time: 0.0,
             last_successful_time: 0.0,
         }
@@ -115,12 +118,26 @@ impl Instance {
         self.simulation = None;
         self.start_time = 0.0;
         self.stop_time = None;
+        self.tolerance = None;
         self.time = 0.0;
         self.last_successful_time = 0.0;
     }
 
-    /// fmi2SetupExperiment.
-    pub fn setup_experiment(&mut self, start: f64, stop: Option<f64>) -> Result<(), FmuError> {
+    /// fmi2SetupExperiment. A defined `tolerance` takes part in the integrator's relative
+    /// tolerance (see [`Instance::model_parameters`]).
+    pub fn setup_experiment(
+        &mut self,
+        tolerance: Option<f64>,
+        start: f64,
+        stop: Option<f64>,
+    ) -> Result<(), FmuError> {
+        if let Some(tolerance) = tolerance {
+            if !(tolerance.is_finite() && tolerance > 0.0) {
+                return Err(FmuError::Invalid(format!(
+                    "fmi2SetupExperiment: tolerance = {tolerance} must be finite and > 0"
+                )));
+            }
+        }
         if !start.is_finite() {
             return Err(FmuError::Invalid(format!(
                 "fmi2SetupExperiment: startTime = {start} is not finite"
@@ -135,15 +152,29 @@ impl Instance {
         }
         self.start_time = start;
         self.stop_time = stop;
+        self.tolerance = tolerance;
         self.time = start;
         self.last_successful_time = start;
         Ok(())
     }
 
+    /// The parameters the model is built with ([`model_parameters`]).
+    pub fn model_parameters(&self) -> Parameters {
+        model_parameters(&self.parameters, self.tolerance)
+    }
+
     /// The simulation, built from the current parameters if needed.
     fn simulation(&mut self) -> Result<&mut Simulation, FmuError> {
         if self.simulation.is_none() {
-            let mut sim = Simulation::new(self.parameters.clone())?;
+            let parameters = self.model_parameters();
+            if parameters.relative_tolerance != self.parameters.relative_tolerance {
+                self.logger.event(&format!(
+                    "solver.relativeTolerance = {:e} tightened to {:e} by the tolerance of \
+                     fmi2SetupExperiment",
+                    self.parameters.relative_tolerance, parameters.relative_tolerance
+                ));
+            }
+            let mut sim = Simulation::new(parameters)?;
             sim.set_time(self.time);
             sim.set_drive_speed(self.inputs.drive_speed);
             sim.set_drive_torque(self.inputs.drive_torque);
@@ -443,6 +474,7 @@ impl Instance {
             inputs: self.inputs,
             start_time: self.start_time,
             stop_time: self.stop_time,
+            tolerance: self.tolerance,
             time: self.time,
             last_successful_time: self.last_successful_time,
             simulation: self.simulation.as_ref().map(Simulation::snapshot),
@@ -452,7 +484,9 @@ impl Instance {
     /// Restores a captured state; the model is rebuilt only if its parameters differ.
     pub fn restore(&mut self, s: &FmuSnapshot) -> Result<(), FmuError> {
         s.validate()?;
-        let same_model = self.parameters == s.parameters && self.simulation.is_some();
+        let same_model = self.parameters == s.parameters
+            && self.tolerance == s.tolerance
+            && self.simulation.is_some();
         let mut simulation = if same_model {
             self.simulation.take()
         } else {
@@ -460,7 +494,10 @@ impl Instance {
         };
         if let Some(snap) = &s.simulation {
             if simulation.is_none() {
-                simulation = Some(Simulation::new(s.parameters.clone())?);
+                simulation = Some(Simulation::new(model_parameters(
+                    &s.parameters,
+                    s.tolerance,
+                ))?);
             }
             if let Some(sim) = &mut simulation {
                 sim.restore(snap)?;
@@ -474,10 +511,27 @@ impl Instance {
         self.state = s.state;
         self.start_time = s.start_time;
         self.stop_time = s.stop_time;
+        self.tolerance = s.tolerance;
         self.time = s.time;
         self.last_successful_time = s.last_successful_time;
         Ok(())
     }
+}
+
+/// The parameters a model is built with: `parameters` with `solver.relativeTolerance` tightened
+/// to the master's fmi2SetupExperiment `tolerance` where that is smaller. The master's tolerance
+/// never loosens the integration, and it counts only down to the smallest accepted
+/// `solver.relativeTolerance`.
+pub fn model_parameters(parameters: &Parameters, tolerance: Option<f64>) -> Parameters {
+    let mut p = parameters.clone();
+    if let Some(tolerance) = tolerance {
+        let floor = match VARIABLES[Vr::SolverRelativeTolerance as usize].kind {
+            Kind::Real { min, .. } => min,
+            _ => 0.0,
+        };
+        p.relative_tolerance = p.relative_tolerance.min(tolerance.max(floor));
+    }
+    p
 }
 
 /// Value of a Real parameter, None for other variables.

@@ -17,7 +17,7 @@ use crate::params::Parameters;
 use crate::simulation::{PeakHold, Peaks, Snapshot};
 
 const MAGIC: &[u8; 4] = b"FSCS";
-const VERSION: u32 = 5;
+const VERSION: u32 = 6;
 /// Largest accepted vector length (states, Jacobian entries) in a state.
 const MAX_LENGTH: usize = 1 << 20;
 const STATES: [State; 6] = [
@@ -42,6 +42,8 @@ pub struct FmuSnapshot {
     pub start_time: f64,
     /// Stop time, if defined \[s\].
     pub stop_time: Option<f64>,
+    /// The master's tolerance from fmi2SetupExperiment, if defined.
+    pub tolerance: Option<f64>,
     /// Current communication point \[s\].
     pub time: f64,
     /// Last successful time \[s\].
@@ -229,6 +231,9 @@ impl FmuSnapshot {
         if times.iter().any(|t| !t.is_finite()) || self.stop_time.is_some_and(|t| !t.is_finite()) {
             return bad("a non-finite time");
         }
+        if self.tolerance.is_some_and(|t| !(t.is_finite() && t > 0.0)) {
+            return bad("a tolerance that is not a finite positive number");
+        }
         if let Some(s) = &self.simulation {
             self.parameters
                 .validate()
@@ -287,8 +292,10 @@ impl FmuSnapshot {
         ] {
             w.f64(x);
         }
-        w.u8(u8::from(self.stop_time.is_some()));
-        w.f64(self.stop_time.unwrap_or(0.0));
+        for x in [self.stop_time, self.tolerance] {
+            w.u8(u8::from(x.is_some()));
+            w.f64(x.unwrap_or(0.0));
+        }
         w.f64(self.time);
         w.f64(self.last_successful_time);
         w.u8(u8::from(self.simulation.is_some()));
@@ -403,6 +410,8 @@ impl FmuSnapshot {
         let start_time = r.f64()?;
         let has_stop = r.flag()?;
         let stop = r.f64()?;
+        let has_tolerance = r.flag()?;
+        let tolerance = r.f64()?;
         let time = r.f64()?;
         let last_successful_time = r.f64()?;
         let simulation = if r.flag()? {
@@ -467,6 +476,7 @@ impl FmuSnapshot {
             inputs,
             start_time,
             stop_time: has_stop.then_some(stop),
+            tolerance: has_tolerance.then_some(tolerance),
             time,
             last_successful_time,
             simulation,
@@ -488,6 +498,7 @@ mod tests {
             inputs: InputValues::default(),
             start_time: 0.0,
             stop_time: Some(0.024),
+            tolerance: None,
             time: 0.0,
             last_successful_time: 0.0,
             simulation: Some(simulation),

@@ -202,9 +202,32 @@ pub const UNITS: &[(&str, Option<[i32; 4]>)] = &[
 ];
 
 /// Default experiment: two crank revolutions of benchmark B (5000 rpm) with a 1e-4 s step; the
-/// tolerance is the default of `solver.relativeTolerance` (the FMU integrates with that parameter,
-/// not with the master's fmi2SetupExperiment tolerance).
+/// tolerance is the default of `solver.relativeTolerance`, so a master that passes it to
+/// fmi2SetupExperiment runs the FMU's defaults (a smaller tolerance from the master tightens
+/// `solver.relativeTolerance`, see `instance::model_parameters`).
 pub const DEFAULT_EXPERIMENT: (f64, f64, f64, f64) = (0.0, 0.024, 1e-2, 1e-4);
+
+/// Direct feedthrough, declared as the `dependencies` of ModelStructure/Outputs: each output
+/// that shows a change of an input at once, before the next fmi2DoStep, with those inputs. Every
+/// other output reacts to the inputs only through the motion (after a step): the positions,
+/// speeds, energies and counters are states or integrals of the motion. The lists are the union
+/// over every drive, joint and rod model, as measured by `test_fmu.py`.
+pub const FEEDTHROUGH: &[(Vr, &[Vr])] = &[
+    (Vr::CrankTorque, ALL_INPUTS),
+    (Vr::SliderAcceleration, ALL_INPUTS),
+    (Vr::JointForce, ALL_INPUTS),
+    (Vr::JointForceX, ALL_INPUTS),
+    (Vr::JointForceY, ALL_INPUTS),
+    (Vr::JointForcePeak, ALL_INPUTS),
+    (Vr::SliderAccelerationPeak, ALL_INPUTS),
+];
+
+/// The accelerations and the forces that follow from them react to every input at once: the
+/// torque and the slider force through the equations of motion, the speed of the speed drive
+/// through the stabilised drive constraint (its velocity error enters the constraint
+/// acceleration). With a clearance joint the joint force depends on the motion only; the ideal
+/// joint's reaction depends on the inputs, hence the union.
+const ALL_INPUTS: &[Vr] = &[Vr::DriveSpeed, Vr::DriveTorque, Vr::SliderForce];
 
 /// Log categories: name and description.
 pub const LOG_CATEGORIES: &[(&str, &str)] = &[
