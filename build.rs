@@ -144,18 +144,25 @@ fn render() -> String {
         }
     }
     x.push_str("  </UnitDefinitions>\n  <TypeDefinitions>\n");
+    // Switches are Integer types, not FMI Enumerations, so that masters without Enumeration
+    // support (libcosim drops such variables) can set them; the items are named in the
+    // descriptions of the type (with each item's meaning) and of the variable.
     for e in ENUMERATIONS {
-        let _ = writeln!(x, r#"    <SimpleType name="{}">"#, e.name);
-        x.push_str("      <Enumeration>\n");
-        for (i, (item, description)) in e.items.iter().enumerate() {
-            let _ = writeln!(
-                x,
-                r#"        <Item name="{item}" value="{}" description="{}"/>"#,
-                i + 1,
-                escape(description)
-            );
-        }
-        x.push_str("      </Enumeration>\n    </SimpleType>\n");
+        let items: Vec<String> = e
+            .items
+            .iter()
+            .enumerate()
+            .map(|(i, (item, description))| format!("{} = {item}: {description}", i + 1))
+            .collect();
+        let _ = writeln!(
+            x,
+            r#"    <SimpleType name="{}" description="{}">
+      <Integer min="1" max="{}"/>
+    </SimpleType>"#,
+            e.name,
+            escape(&items.join("; ")),
+            e.items.len()
+        );
     }
     x.push_str("  </TypeDefinitions>\n  <LogCategories>\n");
     for (name, description) in LOG_CATEGORIES {
@@ -192,13 +199,21 @@ fn render() -> String {
             Causality::CalculatedParameter | Causality::Output => r#" initial="calculated""#,
             _ => "",
         };
+        let description = match v.kind {
+            Kind::Enumeration { type_index, .. } => format!(
+                "{} ({})",
+                v.description,
+                variables::item_list(&ENUMERATIONS[type_index])
+            ),
+            _ => v.description.to_string(),
+        };
         let _ = writeln!(
             x,
             r#"    <!-- {} --><ScalarVariable name="{}" valueReference="{}" description="{}" causality="{causality}" variability="{variability}"{initial}>"#,
             i + 1,
             v.name,
             v.vr as u32,
-            escape(v.description)
+            escape(&description)
         );
         let element = match v.kind {
             Kind::Real {
@@ -225,7 +240,7 @@ fn render() -> String {
             },
             Kind::Boolean => "<Boolean/>".to_string(),
             Kind::Enumeration { start, type_index } => format!(
-                r#"<Enumeration declaredType="{}" start="{start}"/>"#,
+                r#"<Integer declaredType="{}" start="{start}"/>"#,
                 ENUMERATIONS[type_index].name
             ),
         };

@@ -14,7 +14,7 @@ time. Two samples:
   and drive mode are drawn uniformly; drive.speed follows crank.initialSpeed.
 - ranges: the defaults with three variables (parameters or inputs) drawn across their declared
   ranges: log-uniform where the range spans decades, with a random sign for ranges around zero;
-  enumerations and booleans uniformly.
+  switches and booleans uniformly.
 
 Each case ends as `rejected` (an error before the first step: the message must name a variable),
 `stopped` (fmi2Discard/fmi2Error during the run, with a message) or `ran`, with or without
@@ -86,9 +86,9 @@ def near_default(rng, md):
     """Defaults times log-uniform factors in [1/4, 4] (see the module docs)."""
     values = {}
     for name, v in variables(md).items():
-        if v.type == "Enumeration" and name in ("rod.formulation", "joint.model",
-                                                "joint.contactLaw", "drive.mode"):
-            values[name] = rng.randint(1, len(v.declaredType.items))
+        if v.declaredType is not None and name in ("rod.formulation", "joint.model",
+                                                    "joint.contactLaw", "drive.mode"):
+            values[name] = rng.randint(1, int(v.declaredType.max))
         elif v.type == "Real" and v.causality == "parameter" and float(v.start) > 0:
             lo, hi = _number(v, v.min), _number(v, v.max)
             value = float(v.start) * 4 ** rng.uniform(-1, 1)
@@ -105,8 +105,8 @@ def across_ranges(rng, md, count=3):
     values = {}
     for name in rng.sample(sorted(variables(md)), count):
         v = variables(md)[name]
-        if v.type in ("Enumeration",):
-            values[name] = rng.randint(1, len(v.declaredType.items))
+        if v.type == "Integer" and v.declaredType is not None:  # a switch
+            values[name] = rng.randint(1, int(v.declaredType.max))
         elif v.type == "Boolean":
             values[name] = rng.random() < 0.5
         else:

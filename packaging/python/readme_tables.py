@@ -3,6 +3,7 @@
 `python packaging/python/readme_tables.py` prints them; test_readme.py checks that the README's
 tables are exactly these, so documentation and FMU cannot disagree.
 """
+import re
 import sys
 import xml.etree.ElementTree as ET
 from pathlib import Path
@@ -21,11 +22,9 @@ HEADINGS = {
 def tables(xml=XML) -> dict:
     """Markdown rows of each causality's table."""
     root = ET.parse(xml).getroot()
-    enums = {}
-    for t in root.find("TypeDefinitions"):
-        e = t.find("Enumeration")
-        if e is not None:
-            enums[t.get("name")] = [(i.get("value"), i.get("name")) for i in e]
+    # Switches: Integer types whose description names the items ("1 = rigid: ...; 2 = ancf: ...").
+    switches = {t.get("name"): re.findall(r"(\d+) = (\w+)", t.get("description", ""))
+                for t in root.find("TypeDefinitions")}
     rows = {c: [] for c in HEADINGS}
     for v in root.find("ModelVariables"):
         causality, kind = v.get("causality"), v[0]
@@ -33,15 +32,17 @@ def tables(xml=XML) -> dict:
         if kind.tag in ("Integer", "Boolean") and causality == "output":
             unit = kind.tag
         start = kind.get("start", "")
-        if kind.tag == "Enumeration":
-            items = enums[kind.get("declaredType")]
+        description = v.get("description")
+        if kind.get("declaredType") in switches:
+            items = switches[kind.get("declaredType")]
             start = dict(items).get(start, start)
             allowed = ", ".join(f"{value}={name}" for value, name in items)
+            description = description.rsplit(" (", 1)[0]
         elif kind.get("min") or kind.get("max"):
             allowed = f"[{kind.get('min', '')}, {kind.get('max', '')}]"
         else:
             allowed = ""
-        description = v.get("description").replace("|", "\\|")
+        description = description.replace("|", "\\|")
         name = v.get("name")
         if causality == "output":
             rows[causality].append(f"| `{name}` | {unit} | {description} |")

@@ -291,3 +291,42 @@ def test_declared_output_dependencies_are_the_measured_ones():
     declared = {(u.variable.name, d.name) for u in md.outputs for d in (u.dependencies or [])}
     assert all(u.dependencies is not None for u in md.outputs)
     assert declared == feedthrough_measured()
+
+
+SWITCHES = {"rod.formulation": 2, "rod.boundary": 2, "rod.initialState": 2, "joint.model": 3,
+            "joint.contactLaw": 2, "drive.mode": 2, "solver.method": 3}
+
+
+@pytest.mark.parametrize("switch", SWITCHES)
+def test_every_switch_is_set_through_libcosim_as_through_fmpy(switch):
+    """The switches are Integer parameters (not FMI Enumerations, which libcosim drops): a
+    non-default item set through libcosim changes the run exactly as the same start value through
+    fmpy, at every one of the first ten communication points."""
+    import os
+
+    from libcosimpy.CosimExecution import CosimExecution
+    from libcosimpy.CosimLogging import CosimLogLevel, log_output_level
+    from libcosimpy.CosimObserver import CosimObserver
+    from libcosimpy.CosimSlave import CosimLocalSlave
+
+    log_output_level(CosimLogLevel.ERROR)
+    md = read_model_description(FMU)
+    vr = {v.name: v.valueReference for v in md.modelVariables}
+    names = ["slider.position", "crank.speed", "joint.force", "crank.torque", "rod.deformationEnergy"]
+    start = {switch: SWITCHES[switch], "rod.nElements": 4, "rod.nModes": 2}
+    default = simulate_fmu(FMU, stop_time=1e-3, output_interval=1e-4, output=names,
+                           start_values={"rod.nElements": 4, "rod.nModes": 2})
+    switched = simulate_fmu(FMU, stop_time=1e-3, output_interval=1e-4, output=names,
+                            start_values=start)
+    assert any(default[n][-1] != switched[n][-1] for n in names), f"{switch} changed nothing"
+    execution = CosimExecution.from_step_size(step_size=100_000)
+    slave = execution.add_local_slave(
+        CosimLocalSlave(fmu_path=os.path.abspath(FMU), instance_name="libcosim"))
+    for name, value in start.items():
+        assert execution.integer_initial_value(slave, vr[name], value), name
+    observer = CosimObserver.create_last_value()
+    execution.add_observer(observer)
+    for k in range(1, 11):
+        assert execution.simulate_until(target_time=k * 100_000)
+        cosim = observer.last_real_values(slave, [vr[n] for n in names])
+        assert [float(switched[k][n]) for n in names] == cosim, f"{switch}: t = {k * 1e-4} s"

@@ -53,7 +53,9 @@ pub enum Kind {
     },
     /// Boolean.
     Boolean,
-    /// Enumeration item of one of [`ENUMERATIONS`], numbered from 1.
+    /// A switch: one of the items of one of [`ENUMERATIONS`], numbered from 1. Declared as an
+    /// FMI Integer of a named type with the items in its description (not as an FMI Enumeration,
+    /// which some masters, libcosim among them, cannot set).
     Enumeration {
         /// Start item.
         start: i32,
@@ -79,7 +81,22 @@ pub struct Variable {
     pub description: &'static str,
 }
 
-/// An enumeration type: name and items (name, description), numbered from 1.
+/// The items of a switch as the variable descriptions show them: "1 = rigid, 2 = ancf, ...".
+pub fn item_list(e: &Enumeration) -> String {
+    let mut list = String::new();
+    for (i, (item, _)) in e.items.iter().enumerate() {
+        if i > 0 {
+            list.push_str(", ");
+        }
+        list.push_str(&(i + 1).to_string());
+        list.push_str(" = ");
+        list.push_str(item);
+    }
+    list
+}
+
+/// A switch type (an enumeration in meaning, an FMI Integer type in the XML): name and items
+/// (name, description), numbered from 1.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Enumeration {
     /// Type name.
@@ -104,7 +121,7 @@ pub const ENUMERATIONS: &[Enumeration] = &[
             ("ideal", "ideal revolute joint"),
             (
                 "dry",
-                "dry clearance joint (Lankarani-Nikravesh contact, Coulomb friction)",
+                "dry clearance joint (Hertz contact with the damping law of joint.contactLaw, Coulomb friction)",
             ),
             (
                 "lubricated",

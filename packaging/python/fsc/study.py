@@ -25,12 +25,13 @@ A study is a TOML file:
     [random.uniform]
     "joint.friction" = [0.0, 0.2]
 
-Enumerations take their item number or name. A case is identified by a hash of its start values,
+Switches (Integer parameters with named items, such as joint.model) take their item number or name. A case is identified by a hash of its start values,
 the FMU's GUID, the stop time and the output interval.
 """
 import hashlib
 import itertools
 import json
+import re
 import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -70,15 +71,23 @@ def _variables(md):
     return {v.name: v for v in md.modelVariables}
 
 
-def _check_value(where: str, name: str, value, variables: dict, enums: dict):
+def switch_items(v) -> dict:
+    """The items of a switch, {name: value}: an Integer of a declared type whose description names
+    them ("Rod-slider joint model (1 = ideal, 2 = dry, 3 = lubricated)"); empty for other variables."""
+    if v.type != "Integer" or v.declaredType is None:
+        return {}
+    return {name: int(value) for value, name in re.findall(r"(\d+) = (\w+)", v.description or "")}
+
+
+def _check_value(where: str, name: str, value, variables: dict):
     """The value converted to the variable's type, or a StudyError naming the entry."""
     v = variables.get(name)
     if v is None:
         raise StudyError(f"{where}: unknown variable {name!r}")
     if v.causality not in ("parameter", "input") or v.variability == "constant":
         raise StudyError(f"{where}: {name} is an {v.causality}, not a parameter or input")
-    if v.type == "Enumeration":
-        items = enums[v.declaredType.name]
+    items = switch_items(v)
+    if items:
         if isinstance(value, str):
             if value not in items:
                 raise StudyError(f"{where}: {name} = {value!r} is not one of {sorted(items)}")
@@ -123,8 +132,6 @@ def load(path, fmu=None) -> Study:
         raise StudyError(f"{path}: FMU {fmu_path} not found")
     md = read_model_description(str(fmu_path))
     variables = _variables(md)
-    enums = {t.name: {i.name: int(i.value) for i in t.items}
-             for t in md.typeDefinitions if t.type == "Enumeration"}
     ex = md.defaultExperiment
     stop_time = float(spec.get("stop_time", ex.stopTime if ex else 1.0))
     interval = float(spec.get("output_interval", ex.stepSize if ex else stop_time / 500))
@@ -135,7 +142,7 @@ def load(path, fmu=None) -> Study:
         if name not in variables:
             raise StudyError(f"{path}: series: unknown variable {name!r}")
 
-    fixed = {n: _check_value(f"fixed.{n!r}", n, x, variables, enums)
+    fixed = {n: _check_value(f"fixed.{n!r}", n, x, variables)
              for n, x in spec.get("fixed", {}).items()}
     # Each grid axis is a list of cases (dicts): one parameter's values, or several parameters'
     # equal-length lists that vary together (a table: [grid.speed] "a" = [...], "b" = [...]).
@@ -147,11 +154,11 @@ def load(path, fmu=None) -> Study:
             raise StudyError(f"grid.{n!r}: must be a non-empty list, or a table of "
                              f"equal-length non-empty lists")
         checked = {m: [_check_value(f"grid.{n!r}.{m!r}[{k}]" if m != n else f"grid.{n!r}[{k}]",
-                                    m, x, variables, enums) for k, x in enumerate(v)]
+                                    m, x, variables) for k, x in enumerate(v)]
                    for m, v in linked.items()}
         axes.append([dict(zip(checked, row)) for row in zip(*checked.values())])
         swept.append(next(iter(checked)))
-    explicit = [{n: _check_value(f"cases[{k}].{n!r}", n, x, variables, enums)
+    explicit = [{n: _check_value(f"cases[{k}].{n!r}", n, x, variables)
                  for n, x in case.items()} for k, case in enumerate(spec.get("cases", [{}]))]
     random_cases = [{}]
     if "random" in spec:
@@ -160,8 +167,8 @@ def load(path, fmu=None) -> Study:
         rng = np.random.default_rng(seed)
         bounds = {}
         for n, (lo, hi) in r.get("uniform", {}).items():
-            _check_value(f"random.uniform.{n!r}[0]", n, lo, variables, enums)
-            _check_value(f"random.uniform.{n!r}[1]", n, hi, variables, enums)
+            _check_value(f"random.uniform.{n!r}[0]", n, lo, variables)
+            _check_value(f"random.uniform.{n!r}[1]", n, hi, variables)
             bounds[n] = (float(lo), float(hi))
         random_cases = []
         for _ in range(samples):
