@@ -22,8 +22,6 @@ echo "== benches and examples compile"
 cargo test --benches --examples --no-run --quiet
 echo "== cargo test (unit, validation and FMI tests)"
 cargo test --workspace --lib --tests
-echo "== release FMU: linux64 (glibc 2.28), win64, darwin64"
-bash packaging/release.sh
 echo "== platform test tools: wine (win64 DLL), debootstrap (an older Debian for linux64)"
 need=()
 for p in wine64 debootstrap; do dpkg -s "$p" >/dev/null 2>&1 || need+=("$p"); done
@@ -31,6 +29,23 @@ if [ ${#need[@]} -gt 0 ]; then
   sudo=""
   [ "$(id -u)" -ne 0 ] && sudo=sudo
   $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${need[@]}" >/dev/null
+fi
+# The older Debian root the linux64 binary is tested in, made while the release builds run (it
+# takes network and disk, hardly any processor).
+old_debian=target/platform-tests/bullseye
+root_pid=""
+if [ "$(id -u)" -eq 0 ] && [ ! -x "$old_debian/usr/bin/ldd" ]; then
+  mkdir -p target/platform-tests
+  rm -rf "$old_debian"
+  debootstrap --variant=minbase bullseye "$old_debian" http://deb.debian.org/debian \
+    >target/platform-tests/debootstrap.log 2>&1 &
+  root_pid=$!
+fi
+echo "== release FMU: linux64 (glibc 2.28), win64, darwin64"
+bash packaging/release.sh
+if [ -n "$root_pid" ] && ! wait "$root_pid"; then
+  cat target/platform-tests/debootstrap.log >&2
+  exit 1
 fi
 echo "== pytest (packaged FMU through fmpy and libcosimpy; release binaries on every platform)"
 set +e

@@ -27,7 +27,7 @@ OLD_DEBIAN = "bullseye"
 FMI2_FUNCTIONS = 34
 SAVE_AT = 120
 
-md = read_model_description(str(ROOT / "target" / "fmu" / "FlexibleSliderCrank.fmu"))
+md = read_model_description(str(RELEASE_FMU))
 GUID = md.guid
 REAL_OUTPUTS = ",".join(str(v.valueReference) for v in md.modelVariables
                         if v.causality == "output" and v.type == "Real")
@@ -76,6 +76,8 @@ def test_linux64_needs_glibc_2_28_at_most():
 
 
 def test_linux64_equals_the_host_build(linux_run, work):
+    host = read_model_description(str(ROOT / "target" / "fmu" / "FlexibleSliderCrank.fmu"))
+    assert host.guid == GUID, "the host FMU is from other sources: run cargo run --release -p packaging"
     out = work / "host.txt"
     run([str(work / "fmu_run"), str(HOST_LIBRARY), GUID, *EXPERIMENT, str(out)])
     assert lines_differing(out.read_text(), linux_run[0]) == []

@@ -205,7 +205,7 @@ pub unsafe extern "C" fn fmi2GetReal(
 }
 const _: fmi2GetRealTYPE = Some(fmi2GetReal);
 
-/// Reads Integer and Enumeration variables.
+/// Reads Integer variables (the switches among them).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn fmi2GetInteger(
     c: fmi2Component,
@@ -274,7 +274,7 @@ pub unsafe extern "C" fn fmi2SetReal(
 }
 const _: fmi2SetRealTYPE = Some(fmi2SetReal);
 
-/// Writes Integer and Enumeration parameters (before initialization ends).
+/// Writes Integer parameters, the switches among them (before initialization ends).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn fmi2SetInteger(
     c: fmi2Component,

@@ -388,7 +388,7 @@ impl Instance {
         Ok(())
     }
 
-    /// fmi2GetInteger (Integer and Enumeration variables).
+    /// fmi2GetInteger (Integer variables, the switches among them).
     pub fn get_integer(&mut self, vrs: &[u32], values: &mut [i32]) -> Result<(), FmuError> {
         for (vr, value) in vrs.iter().zip(values.iter_mut()) {
             let v = Self::lookup(*vr, "Integer")?;
@@ -419,7 +419,7 @@ impl Instance {
         Ok(())
     }
 
-    /// fmi2SetInteger (Integer and Enumeration parameters).
+    /// fmi2SetInteger (Integer parameters, the switches among them).
     pub fn set_integer(&mut self, vrs: &[u32], values: &[i32]) -> Result<(), FmuError> {
         for (vr, &value) in vrs.iter().zip(values) {
             let v = Self::lookup(*vr, "Integer")?;
