@@ -10,8 +10,10 @@
 #     (rust-web-src), unpacked into target/toolchains, since no prebuilt Rust standard library for
 #     those targets can be installed here; std is compiled with the FMU (-Zbuild-std), linked by
 #     mingw-w64 (Windows) and zig (macOS), the two macOS slices merged by llvm-lipo.
-# Set-up needs the package registries; the builds then run offline. Paths are remapped and the zip's
-# entries have fixed time stamps, so the same sources and toolchains give the same bytes.
+# Set-up needs the package registries; the builds then run offline. Paths are remapped, the DLL has
+# no link time stamps and the zip's entries have fixed time stamps, so the same sources give the same
+# bytes in the same checkout (BENCHMARKS.md, "Platforms": win64 and darwin64 still differ between
+# checkouts in different directories).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
