@@ -7,13 +7,12 @@
 #   - linux64: this machine's Rust toolchain, linked by zig (PyPI `ziglang`) through cargo-zigbuild
 #     against glibc 2.28's symbol versions;
 #   - win64 and darwin64: Debian's rustc-web/cargo-web and the standard library's sources
-#     (rust-web-src), unpacked into target/toolchains, since no prebuilt Rust standard library for
+#     (rust-web-src), unpacked into ~/.cache/flexible-slider-crank, since no prebuilt Rust standard library for
 #     those targets can be installed here; std is compiled with the FMU (-Zbuild-std), linked by
 #     mingw-w64 (Windows) and zig (macOS), the two macOS slices merged by llvm-lipo.
 # Set-up needs the package registries; the builds then run offline. Paths are remapped, the DLL has
 # no link time stamps and the zip's entries have fixed time stamps, so the same sources give the same
-# bytes in the same checkout (BENCHMARKS.md, "Platforms": win64 and darwin64 still differ between
-# checkouts in different directories).
+# bytes.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
@@ -34,7 +33,10 @@ if [ ${#need[@]} -gt 0 ]; then
 fi
 
 rust_web=1.96
-toolchain=$root/target/toolchains/rust-web-$rust_web
+# One fixed place for every checkout: cargo identifies the standard library's packages by their
+# absolute path, so a toolchain unpacked inside each checkout would make the binaries differ between
+# checkouts.
+toolchain=${XDG_CACHE_HOME:-$HOME/.cache}/flexible-slider-crank/rust-web-$rust_web
 if [ ! -x "$toolchain/usr/bin/cargo" ]; then
   echo "== unpacking Debian's Rust $rust_web toolchain into $toolchain"
   debs=$(mktemp -d)
