@@ -37,6 +37,9 @@ rust_web=1.96
 # absolute path, so a toolchain unpacked inside each checkout would make the binaries differ between
 # checkouts.
 toolchain=${XDG_CACHE_HOME:-$HOME/.cache}/flexible-slider-crank/rust-web-$rust_web
+mkdir -p "$(dirname "$toolchain")"
+exec 9>"$toolchain.lock"
+flock 9 # one unpacking at a time when several checkouts build at once
 if [ ! -x "$toolchain/usr/bin/cargo" ]; then
   echo "== unpacking Debian's Rust $rust_web toolchain into $toolchain"
   debs=$(mktemp -d)
@@ -46,6 +49,7 @@ if [ ! -x "$toolchain/usr/bin/cargo" ]; then
   for deb in "$debs"/*.deb; do dpkg-deb -x "$deb" "$toolchain"; done
   rm -rf "$debs"
 fi
+flock -u 9
 zig_dir=$(.venv/bin/python -c 'import ziglang, os; print(os.path.dirname(ziglang.__file__))')
 export PATH="$root/.venv/bin:$zig_dir:$PATH"
 clang_include="$(clang -print-resource-dir)/include"
