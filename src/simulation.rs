@@ -782,6 +782,22 @@ impl Simulation {
 mod tests {
     use super::*;
 
+    /// An input that does not act in the drive mode (the torque with the speed drive) leaves the
+    /// step sequence alone: the run equals one without it, bit for bit.
+    #[test]
+    fn an_input_that_does_not_act_restarts_nothing() {
+        let mut held = Simulation::new(Parameters::default()).unwrap();
+        let mut changed = held.clone();
+        for k in 1..=20 {
+            changed.set_drive_torque(f64::from(k));
+            let t = f64::from(k) * 1e-4;
+            held.advance_to(t).unwrap();
+            changed.advance_to(t).unwrap();
+        }
+        assert_eq!(held.state(), changed.state());
+        assert_eq!(held.stats(), changed.stats());
+    }
+
     /// Samples of a concave parabola give its vertex; a maximum at either end of the samples, or
     /// a flat top, gives none.
     #[test]

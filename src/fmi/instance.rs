@@ -124,7 +124,7 @@ impl Instance {
     }
 
     /// fmi2SetupExperiment. A defined `tolerance` takes part in the integrator's relative
-    /// tolerance (see [`Instance::model_parameters`]).
+    /// tolerance (see [`model_parameters`]).
     pub fn setup_experiment(
         &mut self,
         tolerance: Option<f64>,
@@ -158,15 +158,10 @@ impl Instance {
         Ok(())
     }
 
-    /// The parameters the model is built with ([`model_parameters`]).
-    pub fn model_parameters(&self) -> Parameters {
-        model_parameters(&self.parameters, self.tolerance)
-    }
-
     /// The simulation, built from the current parameters if needed.
     fn simulation(&mut self) -> Result<&mut Simulation, FmuError> {
         if self.simulation.is_none() {
-            let parameters = self.model_parameters();
+            let parameters = model_parameters(&self.parameters, self.tolerance);
             if parameters.relative_tolerance != self.parameters.relative_tolerance {
                 self.logger.event(&format!(
                     "solver.relativeTolerance = {:e} tightened to {:e} by the tolerance of \

@@ -83,16 +83,11 @@ pub struct Variable {
 
 /// The items of a switch as the variable descriptions show them: "1 = rigid, 2 = ancf, ...".
 pub fn item_list(e: &Enumeration) -> String {
-    let mut list = String::new();
-    for (i, (item, _)) in e.items.iter().enumerate() {
-        if i > 0 {
-            list.push_str(", ");
-        }
-        list.push_str(&(i + 1).to_string());
-        list.push_str(" = ");
-        list.push_str(item);
-    }
-    list
+    let items: Vec<String> = (1..)
+        .zip(e.items)
+        .map(|(i, (item, _))| format!("{i} = {item}"))
+        .collect();
+    items.join(", ")
 }
 
 /// A switch type (an enumeration in meaning, an FMI Integer type in the XML): name and items
