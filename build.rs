@@ -124,7 +124,7 @@ fn render() -> String {
     );
     let _ = writeln!(
         x,
-        r#"  <CoSimulation modelIdentifier="FlexibleSliderCrank" needsExecutionTool="false" canHandleVariableCommunicationStepSize="true" canInterpolateInputs="false" maxOutputDerivativeOrder="0" canRunAsynchronuously="false" canBeInstantiatedOnlyOncePerProcess="false" canNotUseMemoryManagementFunctions="true" canGetAndSetFMUstate="true" canSerializeFMUstate="true" providesDirectionalDerivative="false"/>"#
+        r#"  <CoSimulation modelIdentifier="FlexibleSliderCrank" needsExecutionTool="false" canHandleVariableCommunicationStepSize="true" canInterpolateInputs="true" maxOutputDerivativeOrder="2" canRunAsynchronuously="false" canBeInstantiatedOnlyOncePerProcess="false" canNotUseMemoryManagementFunctions="true" canGetAndSetFMUstate="true" canSerializeFMUstate="true" providesDirectionalDerivative="false"/>"#
     );
     x.push_str("  <UnitDefinitions>\n");
     for (name, base) in UNITS {

@@ -22,6 +22,6 @@ pub mod reduction;
 pub mod simulation;
 
 pub use params::Parameters;
-pub use simulation::{Outputs, Simulation, Snapshot};
+pub use simulation::{Input, InputSignal, Inputs, Outputs, Simulation, Snapshot};
 
 pub use error::ModelError;

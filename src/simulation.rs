@@ -3,7 +3,8 @@
 
 use crate::error::ModelError;
 use crate::integrator::{Integrator, IntegratorState, Stats, dense};
-use crate::mechanism::{ContactState, Energies, Inputs, SliderCrank};
+use crate::mechanism::{ContactState, Energies, SliderCrank};
+pub use crate::mechanism::{Input, InputSignal, Inputs};
 use crate::params::{DriveMode, InitialState, Parameters, RodFormulation};
 
 /// Resolution of the simulation clock: 2⁻⁴⁰ s ≈ 0.91 ps.
@@ -29,6 +30,8 @@ pub struct Outputs {
     pub crank_angle: f64,
     /// Crank speed θ̇ \[rad/s\].
     pub crank_speed: f64,
+    /// Crank angular acceleration θ̈ \[rad/s²\].
+    pub crank_acceleration: f64,
     /// Torque applied by the drive to the crank, CCW positive \[N m\].
     pub crank_torque: f64,
     /// Slider abscissa x_s \[m\].
@@ -47,6 +50,10 @@ pub struct Outputs {
     pub eccentricity_x: f64,
     /// Eccentricity, y \[m\].
     pub eccentricity_y: f64,
+    /// Rate of the eccentricity ė, x \[m/s\].
+    pub eccentricity_rate_x: f64,
+    /// Rate of the eccentricity, y \[m/s\].
+    pub eccentricity_rate_y: f64,
     /// Penetration max(|e| − c, 0) \[m\].
     pub penetration: f64,
     /// Whether journal and bearing touch.
@@ -201,12 +208,10 @@ pub struct Snapshot {
     pub integrator: IntegratorState,
     /// Contact state at the step end.
     pub contact: ContactState,
-    /// Inputs.
-    pub inputs: Inputs,
-    /// Whether a velocity projection is pending (speed input changed).
-    pub speed_changed: bool,
-    /// Whether the step sequence restarts at `time` (an input changed).
-    pub restart: bool,
+    /// The inputs of the current step sequence.
+    pub signal: InputSignal,
+    /// The inputs set for the next interval (`start` unused).
+    pub next: InputSignal,
     /// Peak-hold outputs.
     pub peaks: PeakHold,
 }
@@ -234,8 +239,8 @@ pub struct Simulation {
     f_end: Vec<f64>,
     scratch: Vec<f64>,
     y_sample: Vec<f64>,
-    speed_changed: bool,
-    restart: bool,
+    /// The inputs for the next interval (`start` unused).
+    next: InputSignal,
     peaks: PeakHold,
     monitor: Monitor,
 }
@@ -259,6 +264,7 @@ impl Simulation {
             parameters.tolerances(),
             mechanism.error_scales(),
         )?;
+        let next = *mechanism.input_signal();
         Ok(Self {
             scratch: vec![0.0; state.len()],
             y_sample: vec![0.0; state.len()],
@@ -274,8 +280,7 @@ impl Simulation {
             state,
             step_start: 0.0,
             step_end: 0.0,
-            speed_changed: false,
-            restart: false,
+            next,
             peaks: PeakHold::default(),
             monitor: Monitor::default(),
         })
@@ -314,40 +319,38 @@ impl Simulation {
         &self.state
     }
 
-    /// Current inputs.
-    pub fn inputs(&self) -> Inputs {
-        self.mechanism.inputs
+    /// The inputs set for the next [`Simulation::advance_to`] (values and derivatives).
+    pub fn next_inputs(&self) -> &InputSignal {
+        &self.next
     }
 
-    /// Prescribed crank speed \[rad/s\] (speed drive). A change is applied at the next
-    /// `advance_to` as an impulsive velocity adjustment through the constraints; with the torque
-    /// drive the value is kept but acts on nothing, so it does not restart the step sequence.
-    pub fn set_drive_speed(&mut self, speed: f64) {
-        if speed != self.mechanism.inputs.drive_speed {
-            self.mechanism.inputs.drive_speed = speed;
-            if self.parameters.drive_mode == DriveMode::Speed {
-                self.speed_changed = true;
-                self.restart = true;
+    /// Sets an input from the current time on. A change of an input that acts in the drive mode
+    /// restarts the step sequence at the next [`Simulation::advance_to`]; a change of the
+    /// prescribed speed is applied there as an impulsive velocity adjustment through the
+    /// constraints. An input that does not act (the torque with the speed drive, the speed with
+    /// the torque drive) is kept but restarts nothing.
+    pub fn set_input(&mut self, input: Input, value: f64) {
+        *self.next.value.get_mut(input) = value;
+    }
+
+    /// Sets the `order`-th time derivative (1 or 2) of an input at the current time. It holds for
+    /// the next [`Simulation::advance_to`] only, over which the input is the polynomial of
+    /// [`InputSignal`]; afterwards the derivatives are zero again (held inputs) until set anew.
+    pub fn set_input_derivative(
+        &mut self,
+        input: Input,
+        order: usize,
+        value: f64,
+    ) -> Result<(), ModelError> {
+        match self.next.derivatives.get_mut(order.wrapping_sub(1)) {
+            Some(d) if value.is_finite() => {
+                *d.get_mut(input) = value;
+                Ok(())
             }
-        }
-    }
-
-    /// Crank torque \[N m\] (torque drive; with the speed drive it is kept but acts on nothing, so
-    /// it does not restart the step sequence).
-    pub fn set_drive_torque(&mut self, torque: f64) {
-        if torque != self.mechanism.inputs.drive_torque {
-            self.mechanism.inputs.drive_torque = torque;
-            if self.parameters.drive_mode == DriveMode::Torque {
-                self.restart = true;
-            }
-        }
-    }
-
-    /// External force on the slider along the guide \[N\].
-    pub fn set_slider_force(&mut self, force: f64) {
-        if force != self.mechanism.inputs.slider_force {
-            self.mechanism.inputs.slider_force = force;
-            self.restart = true;
+            _ => Err(ModelError::Numerical(format!(
+                "derivative of order {order} = {value} of {input:?}: the order must be 1 or 2 and \
+                 the value finite"
+            ))),
         }
     }
 
@@ -400,27 +403,42 @@ impl Simulation {
                 self.time
             )));
         }
+        let t_start = self.time;
+        let next = InputSignal {
+            start: t_start,
+            ..self.next
+        };
+        self.next.derivatives = [Inputs::default(); 2];
+        let drive = self.parameters.drive_mode;
+        let acts = |input| match input {
+            Input::DriveSpeed => drive == DriveMode::Speed,
+            Input::DriveTorque => drive == DriveMode::Torque,
+            Input::SliderForce => true,
+        };
+        let current = *self.mechanism.input_signal();
+        let speed_jump =
+            acts(Input::DriveSpeed) && current.at(t_start).0.drive_speed != next.value.drive_speed;
         // After a change from outside (an input, typically from a coupled model at every
         // communication point) the steps end exactly at t_end: the next interval restarts there
         // anyway, and a step beyond it would be computed only to be cut back by dense output.
-        let limit = self.restart.then_some(t_end);
-        if self.restart {
+        let restart = !current.same_from(&next, t_start, acts);
+        let limit = restart.then_some(t_end);
+        if restart {
+            self.mechanism.set_input_signal(next, t_start);
             self.restart_here();
-            self.restart = false;
         }
-        if self.speed_changed {
+        if speed_jump {
             let work = self.mechanism.project_velocities(&mut self.y_end)?;
             let n = self.mechanism.n_coordinates();
             self.y_end[2 * n + 1] += work;
             self.state.copy_from_slice(&self.y_end);
             self.y_start.copy_from_slice(&self.y_end);
-            self.speed_changed = false;
         }
         self.peaks.interval = Peaks::default();
         if self.peaks.pending && self.step_end <= t_end {
             self.peaks.take_step_end();
         }
-        let (t_start, work_start) = (self.time, self.work());
+        let work_start = self.work();
         while self.step_end < t_end {
             let used = self.work() - work_start;
             let budget = (self.parameters.max_steps_per_interval as u64).saturating_sub(used);
@@ -532,6 +550,7 @@ impl Simulation {
     /// Evaluates the end of the step just accepted for the peak-hold outputs.
     fn record_step_end(&mut self) -> Result<(), ModelError> {
         let onset = !self.contact_start.in_contact && self.mechanism.contact_state().in_contact;
+        self.mechanism.set_time(self.step_end);
         let (force, acceleration) = match self.mechanism.clearance_joint_load(&self.y_end) {
             Some(load) => load,
             None => {
@@ -578,14 +597,17 @@ impl Simulation {
 
     /// Joint load at sample `k` (of [`PEAK_SAMPLES`] + 1 intervals) of the step just accepted.
     fn load_within(&mut self, k: f64) -> (f64, f64) {
+        let h = self.step_end - self.step_start;
+        let theta = k / (PEAK_SAMPLES + 1) as f64;
+        self.mechanism.set_time(self.step_start + theta * h);
         dense::interpolate(
             self.mechanism.n_coordinates(),
-            self.step_end - self.step_start,
+            h,
             &self.y_start,
             &self.f_start,
             &self.y_end,
             &self.f_end,
-            k / (PEAK_SAMPLES + 1) as f64,
+            theta,
             &mut self.y_sample,
         );
         self.mechanism
@@ -681,6 +703,7 @@ impl Simulation {
     }
 
     fn outputs_here(&mut self) -> Result<Outputs, ModelError> {
+        self.mechanism.set_time(self.time);
         let y = &self.state;
         let ev = *self.mechanism.evaluate(y, &mut self.scratch)?;
         let n = self.mechanism.n_coordinates();
@@ -691,6 +714,7 @@ impl Simulation {
             time: self.time,
             crank_angle: y[0],
             crank_speed: y[n],
+            crank_acceleration: self.scratch[n],
             crank_torque: ev.crank_torque,
             slider_position: y[n - 1],
             slider_velocity: y[2 * n - 1],
@@ -700,6 +724,8 @@ impl Simulation {
             joint_force: ev.joint_force.norm(),
             eccentricity_x: kin.e.x,
             eccentricity_y: kin.e.y,
+            eccentricity_rate_x: kin.e_dot.x,
+            eccentricity_rate_y: kin.e_dot.y,
             penetration: penetration.max(0.0),
             in_contact: penetration > 0.0,
             midspan_deflection: self.mechanism.midspan_deflection(y),
@@ -737,9 +763,8 @@ impl Simulation {
             step_end: (self.step_end, self.y_end.clone(), self.f_end.clone()),
             integrator: self.integrator.state(),
             contact: self.mechanism.contact_state(),
-            inputs: self.mechanism.inputs,
-            speed_changed: self.speed_changed,
-            restart: self.restart,
+            signal: *self.mechanism.input_signal(),
+            next: self.next,
             peaks: self.peaks,
         }
     }
@@ -770,9 +795,9 @@ impl Simulation {
         self.y_end.copy_from_slice(&snapshot.step_end.1);
         self.f_end.copy_from_slice(&snapshot.step_end.2);
         self.mechanism.set_contact_state(snapshot.contact);
-        self.mechanism.inputs = snapshot.inputs;
-        self.speed_changed = snapshot.speed_changed;
-        self.restart = snapshot.restart;
+        self.mechanism
+            .set_input_signal(snapshot.signal, snapshot.time);
+        self.next = snapshot.next;
         self.peaks = snapshot.peaks;
         Ok(())
     }
@@ -789,13 +814,39 @@ mod tests {
         let mut held = Simulation::new(Parameters::default()).unwrap();
         let mut changed = held.clone();
         for k in 1..=20 {
-            changed.set_drive_torque(f64::from(k));
+            changed.set_input(Input::DriveTorque, f64::from(k));
             let t = f64::from(k) * 1e-4;
             held.advance_to(t).unwrap();
             changed.advance_to(t).unwrap();
         }
         assert_eq!(held.state(), changed.state());
         assert_eq!(held.stats(), changed.stats());
+    }
+
+    /// Input derivatives make the prescribed speed the polynomial ω + ω̇ (t − t₀) + ω̈ (t − t₀)²/2
+    /// over one interval: the crank follows it (to the constraint stabilisation's accuracy), and
+    /// afterwards the input is held at its value again.
+    #[test]
+    fn input_derivatives_make_the_input_a_polynomial_for_one_interval() {
+        let mut sim = Simulation::new(Parameters::default()).unwrap();
+        sim.advance_to(1e-4).unwrap();
+        let speed = sim.next_inputs().value.drive_speed;
+        let (rate, curvature, h) = (2.0e4, -3.0e7, 2e-4);
+        sim.set_input_derivative(Input::DriveSpeed, 1, rate).unwrap();
+        sim.set_input_derivative(Input::DriveSpeed, 2, curvature).unwrap();
+        assert!(sim.set_input_derivative(Input::DriveSpeed, 3, 1.0).is_err());
+        sim.advance_to(1e-4 + h).unwrap();
+        let expected = speed + rate * h + 0.5 * curvature * h * h;
+        let n = sim.mechanism().n_coordinates();
+        let crank_speed = sim.state()[n];
+        assert!(
+            (crank_speed - expected).abs() < 1e-6 * expected,
+            "{crank_speed} vs {expected}"
+        );
+        assert_eq!(sim.next_inputs().derivatives, [Inputs::default(); 2]);
+        sim.advance_to(1e-4 + 2.0 * h).unwrap();
+        let held = sim.state()[n];
+        assert!((held - speed).abs() < 1e-9 * speed, "{held} vs {speed}");
     }
 
     /// Samples of a concave parabola give its vertex; a maximum at either end of the samples, or

@@ -10,7 +10,7 @@ use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 
 use flexible_slider_crank::params::{JointModel, RodFormulation};
-use flexible_slider_crank::{Parameters, Simulation};
+use flexible_slider_crank::{Input, Parameters, Simulation};
 
 /// Counts the allocations of each thread while its [`COUNT`] is `Some` (tests run in parallel).
 struct Counting;
@@ -78,7 +78,7 @@ fn stepping_does_not_allocate() {
             sim.outputs().unwrap();
             let n = allocations_in(|| {
                 for i in 1..=40 {
-                    sim.set_drive_speed(520.0 + f64::from(i));
+                    sim.set_input(Input::DriveSpeed, 520.0 + f64::from(i));
                     sim.advance_to(1e-4 + 5e-5 * f64::from(i)).unwrap();
                     sim.outputs().unwrap();
                 }

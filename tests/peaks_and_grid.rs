@@ -8,7 +8,7 @@
 use flexible_slider_crank::integrator::Method;
 use flexible_slider_crank::math;
 use flexible_slider_crank::params::RodFormulation;
-use flexible_slider_crank::{Parameters, Simulation};
+use flexible_slider_crank::{Input, Parameters, Simulation};
 
 /// The DefaultExperiment's stop time \[s\].
 const STOP: f64 = 0.024;
@@ -180,7 +180,9 @@ fn constant_inputs_give_grid_independent_results() {
         assert_eq!(r.onsets_total, runs[0].onsets_total);
     }
     let speed = |t: f64| p.crank_initial_speed * (1.0 + 0.01 * math::sin(2e3 * t));
-    let varying = run(p.clone(), 1e-4, |sim, t| sim.set_drive_speed(speed(t)));
+    let varying = run(p.clone(), 1e-4, |sim, t| {
+        sim.set_input(Input::DriveSpeed, speed(t))
+    });
     println!(
         "speed input changed at every communication point: {} steps (constant input: {}), \
          final crank speed {} rad/s (input {} rad/s)",

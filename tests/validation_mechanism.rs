@@ -11,7 +11,7 @@ use flexible_slider_crank::math;
 use flexible_slider_crank::params::{
     BENCHMARK_SPEED, ContactLaw, DriveMode, JointModel, RodFormulation,
 };
-use flexible_slider_crank::{Outputs, Parameters, Simulation};
+use flexible_slider_crank::{Input, Outputs, Parameters, Simulation};
 
 const REVOLUTION: f64 = std::f64::consts::TAU / BENCHMARK_SPEED;
 
@@ -630,8 +630,8 @@ fn energy_balance_converges_with_the_tolerance() {
                 ..p.clone()
             })
             .unwrap();
-            sim.set_drive_torque(torque);
-            sim.set_slider_force(slider_force);
+            sim.set_input(Input::DriveTorque, torque);
+            sim.set_input(Input::SliderForce, slider_force);
             let mut rows = vec![sim.outputs().unwrap()];
             for i in 1..=60 {
                 sim.advance_to(REVOLUTION * f64::from(i) / 60.0).unwrap();
@@ -721,7 +721,7 @@ fn leaving_the_domain_is_reported_once_per_cause() {
     );
     assert!(!at_limit.iter().any(|w| w.contains("crank speed")));
     let mut sim = Simulation::new(stiff_drive).unwrap();
-    sim.set_drive_torque(1e6);
+    sim.set_input(Input::DriveTorque, 1e6);
     let warnings = warnings_over_2_ms(sim);
     assert!(
         warnings.iter().any(|w| w.contains("crank speed")),

@@ -487,36 +487,49 @@ pub unsafe extern "C" fn fmi2GetDirectionalDerivative(
 }
 const _: fmi2GetDirectionalDerivativeTYPE = Some(fmi2GetDirectionalDerivative);
 
-/// Not supported: error.
+/// Sets first or second time derivatives of inputs at the current communication point; the
+/// inputs are the resulting polynomials over the next communication step.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn fmi2SetRealInputDerivatives(
     c: fmi2Component,
-    _vr: *const fmi2ValueReference,
-    _nvr: usize,
-    _order: *const fmi2Integer,
-    _value: *const fmi2Real,
+    vr: *const fmi2ValueReference,
+    nvr: usize,
+    order: *const fmi2Integer,
+    value: *const fmi2Real,
 ) -> fmi2Status {
-    with_instance(c, Call::SetRealInputDerivatives, |_| {
-        Err(FmuError::Invalid(
-            "input derivatives are not supported (canInterpolateInputs = false)".into(),
-        ))
+    with_instance(c, Call::SetRealInputDerivatives, |inst| {
+        // SAFETY: nvr elements each (FMI 2.0.4 §4.2.1).
+        let (vr, order, value) = unsafe {
+            (
+                slice(vr, nvr, "vr")?,
+                slice(order, nvr, "order")?,
+                slice(value, nvr, "value")?,
+            )
+        };
+        inst.set_real_input_derivatives(vr, order, value).map(ok)
     })
 }
 const _: fmi2SetRealInputDerivativesTYPE = Some(fmi2SetRealInputDerivatives);
 
-/// Not provided: error.
+/// Time derivatives of the kinematic outputs at the current communication point.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn fmi2GetRealOutputDerivatives(
     c: fmi2Component,
-    _vr: *const fmi2ValueReference,
-    _nvr: usize,
-    _order: *const fmi2Integer,
-    _value: *mut fmi2Real,
+    vr: *const fmi2ValueReference,
+    nvr: usize,
+    order: *const fmi2Integer,
+    value: *mut fmi2Real,
 ) -> fmi2Status {
-    with_instance(c, Call::GetRealOutputDerivatives, |_| {
-        Err(FmuError::Invalid(
-            "output derivatives are not provided (maxOutputDerivativeOrder = 0)".into(),
-        ))
+    with_instance(c, Call::GetRealOutputDerivatives, |inst| {
+        // SAFETY: nvr elements each (FMI 2.0.4 §4.2.1).
+        let (vr, order, value) = unsafe {
+            (
+                slice(vr, nvr, "vr")?,
+                slice(order, nvr, "order")?,
+                slice_mut(value, nvr, "value")?,
+            )
+        };
+        inst.get_real_output_derivatives(vr, order, value).map(ok)
     })
 }
 const _: fmi2GetRealOutputDerivativesTYPE = Some(fmi2GetRealOutputDerivatives);

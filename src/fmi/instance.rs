@@ -11,33 +11,31 @@ use crate::integrator::Method;
 use crate::joint::hertz_stiffness;
 use crate::params::{ContactLaw, DriveMode, InitialState, JointModel, Parameters, RodFormulation};
 use crate::reduction::Boundary;
-use crate::simulation::{Outputs, Simulation};
+use crate::simulation::{Input, InputSignal, Inputs, Outputs, Simulation};
 
 /// Tolerance on the communication point: |t − t_expected| ≤ 1e-9 (1 + |t|) (FMI.md §1.6).
 const TIME_TOLERANCE: f64 = 1e-9;
 
-/// Input values.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct InputValues {
-    /// drive.speed \[rad/s\].
-    pub drive_speed: f64,
-    /// drive.torque \[N m\].
-    pub drive_torque: f64,
-    /// slider.force \[N\].
-    pub slider_force: f64,
+/// The inputs at their start values, held.
+fn start_inputs() -> InputSignal {
+    let start = |vr: Vr| match VARIABLES[vr as usize].kind {
+        Kind::Real { start: Some(s), .. } => s,
+        _ => 0.0,
+    };
+    InputSignal::held(Inputs {
+        drive_speed: start(Vr::DriveSpeed),
+        drive_torque: start(Vr::DriveTorque),
+        slider_force: start(Vr::SliderForce),
+    })
 }
 
-impl Default for InputValues {
-    fn default() -> Self {
-        let start = |vr: Vr| match VARIABLES[vr as usize].kind {
-            Kind::Real { start: Some(s), .. } => s,
-            _ => 0.0,
-        };
-        Self {
-            drive_speed: start(Vr::DriveSpeed),
-            drive_torque: start(Vr::DriveTorque),
-            slider_force: start(Vr::SliderForce),
-        }
+/// The model input of an input variable.
+fn input(vr: Vr) -> Option<Input> {
+    match vr {
+        Vr::DriveSpeed => Some(Input::DriveSpeed),
+        Vr::DriveTorque => Some(Input::DriveTorque),
+        Vr::SliderForce => Some(Input::SliderForce),
+        _ => None,
     }
 }
 
@@ -53,7 +51,8 @@ pub struct Instance {
     /// Set after a caught panic: only Reset and FreeInstance are accepted.
     pub poisoned: bool,
     pub(crate) parameters: Parameters,
-    pub(crate) inputs: InputValues,
+    /// Input values, and the derivatives set for the next step (fmi2SetRealInputDerivatives).
+    pub(crate) inputs: InputSignal,
     pub(crate) simulation: Option<Simulation>,
     pub(crate) start_time: f64,
     pub(crate) stop_time: Option<f64>,
@@ -99,7 +98,7 @@ impl Instance {
             state: State::Instantiated,
             poisoned: false,
             parameters: Parameters::default(),
-            inputs: InputValues::default(),
+            inputs: start_inputs(),
             simulation: None,
             start_time: 0.0,
             stop_time: None,
@@ -114,7 +113,7 @@ impl Instance {
         self.state = State::Instantiated;
         self.poisoned = false;
         self.parameters = Parameters::default();
-        self.inputs = InputValues::default();
+        self.inputs = start_inputs();
         self.simulation = None;
         self.start_time = 0.0;
         self.stop_time = None;
@@ -171,9 +170,12 @@ impl Instance {
             }
             let mut sim = Simulation::new(parameters)?;
             sim.set_time(self.time);
-            sim.set_drive_speed(self.inputs.drive_speed);
-            sim.set_drive_torque(self.inputs.drive_torque);
-            sim.set_slider_force(self.inputs.slider_force);
+            for i in [Input::DriveSpeed, Input::DriveTorque, Input::SliderForce] {
+                sim.set_input(i, self.inputs.value.get(i));
+                for (k, d) in self.inputs.derivatives.iter().enumerate() {
+                    sim.set_input_derivative(i, k + 1, d.get(i))?;
+                }
+            }
             self.logger.event(&format!(
                 "model built: {:?} rod, {:?} joint, {:?} drive, {} states",
                 self.parameters.rod_formulation,
@@ -222,6 +224,8 @@ impl Instance {
         sim.set_time(t);
         let result = sim.advance_to(end);
         let (time, warnings) = (sim.time(), sim.take_warnings());
+        // Input derivatives hold for one communication step (as in the simulation).
+        self.inputs.derivatives = [Inputs::default(); 2];
         for warning in &warnings {
             self.logger.warning(warning);
         }
@@ -305,9 +309,9 @@ impl Instance {
                     p.joint_youngs_modulus,
                     p.joint_poisson_ratio,
                 ),
-                Vr::DriveSpeed => self.inputs.drive_speed,
-                Vr::DriveTorque => self.inputs.drive_torque,
-                Vr::SliderForce => self.inputs.slider_force,
+                Vr::DriveSpeed => self.inputs.value.drive_speed,
+                Vr::DriveTorque => self.inputs.value.drive_torque,
+                Vr::SliderForce => self.inputs.value.slider_force,
                 Vr::CrankAngle => o.crank_angle,
                 Vr::CrankSpeed => o.crank_speed,
                 Vr::CrankTorque => o.crank_torque,
@@ -355,29 +359,89 @@ impl Instance {
                 self.simulation = None;
                 continue;
             }
-            match v.vr {
-                Vr::DriveSpeed => {
-                    self.inputs.drive_speed = value;
+            match input(v.vr) {
+                Some(i) => {
+                    *self.inputs.value.get_mut(i) = value;
                     if let Some(sim) = &mut self.simulation {
-                        sim.set_drive_speed(value);
+                        sim.set_input(i, value);
                     }
-                    continue;
                 }
-                Vr::DriveTorque => {
-                    self.inputs.drive_torque = value;
-                    if let Some(sim) = &mut self.simulation {
-                        sim.set_drive_torque(value);
-                    }
-                    continue;
+                None => unreachable_type(v)?,
+            }
+        }
+        Ok(())
+    }
+
+    /// fmi2GetRealOutputDerivatives: time derivatives of the kinematic outputs at the current
+    /// communication point, from the equations of motion (order 1: crank.angle, crank.speed,
+    /// slider.position, slider.velocity, joint.eccentricityX/Y, energy.driveWork; order 2:
+    /// crank.angle, slider.position). Other outputs (forces, peaks, counters) have none.
+    pub fn get_real_output_derivatives(
+        &mut self,
+        vrs: &[u32],
+        orders: &[i32],
+        values: &mut [f64],
+    ) -> Result<(), FmuError> {
+        let o = self.outputs()?;
+        for ((vr, &order), value) in vrs.iter().zip(orders).zip(values.iter_mut()) {
+            let v = Self::lookup(*vr, "Real")?;
+            *value = match (v.vr, order) {
+                (Vr::CrankAngle, 1) => o.crank_speed,
+                (Vr::CrankAngle, 2) | (Vr::CrankSpeed, 1) => o.crank_acceleration,
+                (Vr::SliderPosition, 1) => o.slider_velocity,
+                (Vr::SliderPosition, 2) | (Vr::SliderVelocity, 1) => o.slider_acceleration,
+                (Vr::JointEccentricityX, 1) => o.eccentricity_rate_x,
+                (Vr::JointEccentricityY, 1) => o.eccentricity_rate_y,
+                (Vr::EnergyDriveWork, 1) => o.crank_torque * o.crank_speed,
+                _ => {
+                    return Err(FmuError::Invalid(format!(
+                        "fmi2GetRealOutputDerivatives: {} has no derivative of order {order} \
+                         (derivatives exist of order 1 for crank.angle, crank.speed, \
+                         slider.position, slider.velocity, joint.eccentricityX/Y and \
+                         energy.driveWork, of order 2 for crank.angle and slider.position)",
+                        v.name
+                    )));
                 }
-                Vr::SliderForce => {
-                    self.inputs.slider_force = value;
-                    if let Some(sim) = &mut self.simulation {
-                        sim.set_slider_force(value);
-                    }
-                    continue;
+            };
+        }
+        Ok(())
+    }
+
+    /// fmi2SetRealInputDerivatives: the `order`-th derivative (1 or 2) of inputs at the current
+    /// communication point, for the next fmi2DoStep only (see [`Simulation::set_input_derivative`]).
+    pub fn set_real_input_derivatives(
+        &mut self,
+        vrs: &[u32],
+        orders: &[i32],
+        values: &[f64],
+    ) -> Result<(), FmuError> {
+        for ((vr, &order), &value) in vrs.iter().zip(orders).zip(values) {
+            let v = Self::lookup(*vr, "Real")?;
+            let i = input(v.vr).ok_or_else(|| {
+                FmuError::Invalid(format!(
+                    "fmi2SetRealInputDerivatives: {} is not an input",
+                    v.name
+                ))
+            })?;
+            let d = match order {
+                1 | 2 => &mut self.inputs.derivatives[order as usize - 1],
+                _ => {
+                    return Err(FmuError::Invalid(format!(
+                        "fmi2SetRealInputDerivatives: order {order} of {} is not 1 or 2",
+                        v.name
+                    )));
                 }
-                _ => unreachable_type(v)?,
+            };
+            if !value.is_finite() {
+                return Err(FmuError::Invalid(format!(
+                    "fmi2SetRealInputDerivatives: derivative of order {order} of {} = {value} is \
+                     not finite",
+                    v.name
+                )));
+            }
+            *d.get_mut(i) = value;
+            if let Some(sim) = &mut self.simulation {
+                sim.set_input_derivative(i, order as usize, value)?;
             }
         }
         Ok(())
@@ -660,7 +724,7 @@ mod tests {
     #[test]
     fn table_start_values_equal_the_library_defaults() {
         let p = Parameters::default();
-        let inputs = InputValues::default();
+        let inputs = start_inputs().value;
         assert_eq!(
             inputs.drive_speed.to_bits(),
             p.crank_initial_speed.to_bits()

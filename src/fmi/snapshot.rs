@@ -7,17 +7,17 @@
 
 use super::error::FmuError;
 use super::instance::{
-    InputValues, integer_parameter, real_parameter, set_integer_parameter, set_real_parameter,
+    integer_parameter, real_parameter, set_integer_parameter, set_real_parameter,
 };
 use super::state::State;
 use super::variables::{Causality, Kind, VARIABLES, Vr};
 use crate::integrator::{ImplicitState, IntegratorState, Stats};
-use crate::mechanism::{ContactState, Inputs};
+use crate::mechanism::ContactState;
 use crate::params::Parameters;
-use crate::simulation::{PeakHold, Peaks, Snapshot};
+use crate::simulation::{InputSignal, Inputs, PeakHold, Peaks, Snapshot};
 
 const MAGIC: &[u8; 4] = b"FSCS";
-const VERSION: u32 = 6;
+const VERSION: u32 = 7;
 /// Largest accepted vector length (states, Jacobian entries) in a state.
 const MAX_LENGTH: usize = 1 << 20;
 const STATES: [State; 6] = [
@@ -36,8 +36,8 @@ pub struct FmuSnapshot {
     pub state: State,
     /// All parameters.
     pub parameters: Parameters,
-    /// Input values.
-    pub inputs: InputValues,
+    /// Input values and the derivatives set for the next step.
+    pub inputs: InputSignal,
     /// Start time \[s\].
     pub start_time: f64,
     /// Stop time, if defined \[s\].
@@ -63,6 +63,19 @@ fn fnv64(bytes: &[u8]) -> u64 {
     bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| {
         (h ^ u64::from(b)).wrapping_mul(0x100_0000_01b3)
     })
+}
+
+/// The ten numbers of an input signal: start, then value, first and second derivatives, each
+/// as (drive speed, drive torque, slider force).
+fn signal_values(s: &InputSignal) -> [f64; 10] {
+    let mut v = [s.start; 10];
+    for (k, i) in [s.value, s.derivatives[0], s.derivatives[1]]
+        .iter()
+        .enumerate()
+    {
+        v[1 + 3 * k..4 + 3 * k].copy_from_slice(&[i.drive_speed, i.drive_torque, i.slider_force]);
+    }
+    v
 }
 
 struct Writer(Vec<u8>);
@@ -94,6 +107,11 @@ impl Writer {
         self.f64(p.joint_force);
         self.f64(p.slider_acceleration);
         self.u64(p.contact_onsets);
+    }
+    fn signal(&mut self, s: &InputSignal) {
+        for x in signal_values(s) {
+            self.f64(x);
+        }
     }
     fn stats(&mut self, s: &Stats) {
         for x in [
@@ -165,6 +183,23 @@ impl Reader<'_> {
             contact_onsets: self.u64()?,
         })
     }
+    fn signal(&mut self) -> Result<InputSignal, FmuError> {
+        let start = self.f64()?;
+        let mut inputs = [Inputs::default(); 3];
+        for i in &mut inputs {
+            *i = Inputs {
+                drive_speed: self.f64()?,
+                drive_torque: self.f64()?,
+                slider_force: self.f64()?,
+            };
+        }
+        let [value, first, second] = inputs;
+        Ok(InputSignal {
+            start,
+            value,
+            derivatives: [first, second],
+        })
+    }
     fn stats(&mut self) -> Result<Stats, FmuError> {
         Ok(Stats {
             steps: self.u64()?,
@@ -223,9 +258,9 @@ impl FmuSnapshot {
             }
         }
         let i = &self.inputs;
-        check_range(Vr::DriveSpeed, i.drive_speed)?;
-        check_range(Vr::DriveTorque, i.drive_torque)?;
-        check_range(Vr::SliderForce, i.slider_force)?;
+        check_range(Vr::DriveSpeed, i.value.drive_speed)?;
+        check_range(Vr::DriveTorque, i.value.drive_torque)?;
+        check_range(Vr::SliderForce, i.value.slider_force)?;
         let bad = |what: &str| Err(FmuError::Invalid(format!("FMU state rejected: {what}")));
         let times = [self.start_time, self.time, self.last_successful_time];
         if times.iter().any(|t| !t.is_finite()) || self.stop_time.is_some_and(|t| !t.is_finite()) {
@@ -253,13 +288,11 @@ impl FmuSnapshot {
             {
                 return bad("a non-finite simulation time or state");
             }
-            let inputs = (i.drive_speed, i.drive_torque, i.slider_force);
-            if (
-                s.inputs.drive_speed,
-                s.inputs.drive_torque,
-                s.inputs.slider_force,
-            ) != inputs
-            {
+            let signals = [&s.signal, &s.next, i];
+            if !signals.iter().all(|x| finite(&signal_values(x))) {
+                return bad("a non-finite input or input derivative");
+            }
+            if (s.next.value, s.next.derivatives) != (i.value, i.derivatives) {
                 return bad("the simulation's inputs differ from the instance's");
             }
         }
@@ -283,15 +316,8 @@ impl FmuSnapshot {
                 _ => w.u32(integer_parameter(&self.parameters, v.vr).unwrap_or(0) as u32),
             }
         }
-        let i = &self.inputs;
-        for x in [
-            i.drive_speed,
-            i.drive_torque,
-            i.slider_force,
-            self.start_time,
-        ] {
-            w.f64(x);
-        }
+        w.signal(&self.inputs);
+        w.f64(self.start_time);
         for x in [self.stop_time, self.tolerance] {
             w.u8(u8::from(x.is_some()));
             w.f64(x.unwrap_or(0.0));
@@ -337,11 +363,8 @@ impl FmuSnapshot {
                 }
             }
             w.contact(&s.contact);
-            w.f64(s.inputs.drive_speed);
-            w.f64(s.inputs.drive_torque);
-            w.f64(s.inputs.slider_force);
-            w.u8(u8::from(s.speed_changed));
-            w.u8(u8::from(s.restart));
+            w.signal(&s.signal);
+            w.signal(&s.next);
             w.peaks(&s.peaks.interval);
             w.peaks(&s.peaks.step_end);
             w.u8(u8::from(s.peaks.pending));
@@ -402,11 +425,7 @@ impl FmuSnapshot {
                 n_modes, parameters.n_modes
             )));
         }
-        let inputs = InputValues {
-            drive_speed: r.f64()?,
-            drive_torque: r.f64()?,
-            slider_force: r.f64()?,
-        };
+        let inputs = r.signal()?;
         let start_time = r.f64()?;
         let has_stop = r.flag()?;
         let stop = r.f64()?;
@@ -442,11 +461,6 @@ impl FmuSnapshot {
                 m => return Err(bad(format!("unknown integrator {m}"))),
             };
             let contact = r.contact()?;
-            let sim_inputs = Inputs {
-                drive_speed: r.f64()?,
-                drive_torque: r.f64()?,
-                slider_force: r.f64()?,
-            };
             Some(Snapshot {
                 time: sim_time,
                 state: state_vector,
@@ -454,9 +468,8 @@ impl FmuSnapshot {
                 step_end,
                 integrator,
                 contact,
-                inputs: sim_inputs,
-                speed_changed: r.flag()?,
-                restart: r.flag()?,
+                signal: r.signal()?,
+                next: r.signal()?,
                 peaks: PeakHold {
                     interval: r.peaks()?,
                     step_end: r.peaks()?,
@@ -495,7 +508,7 @@ mod tests {
         FmuSnapshot {
             state: State::StepComplete,
             parameters,
-            inputs: InputValues::default(),
+            inputs: simulation.next,
             start_time: 0.0,
             stop_time: Some(0.024),
             tolerance: None,
@@ -519,10 +532,10 @@ mod tests {
     fn restored_states_are_range_checked() {
         snapshot().validate().unwrap();
         let mut s = snapshot();
-        s.inputs.drive_speed = f64::NAN;
+        s.inputs.value.drive_speed = f64::NAN;
         assert!(rejected(&s).contains("drive.speed = NaN"));
         let mut s = snapshot();
-        s.inputs.drive_speed = 1e9;
+        s.inputs.value.drive_speed = 1e9;
         assert!(rejected(&s).contains("drive.speed = 1e9"));
         let mut s = snapshot();
         s.time = f64::NAN;
@@ -531,7 +544,7 @@ mod tests {
         s.parameters.clearance = 1.0;
         assert!(rejected(&s).contains("joint.clearance"));
         let mut s = snapshot();
-        s.inputs.drive_torque = 5.0;
+        s.inputs.value.drive_torque = 5.0;
         assert!(rejected(&s).contains("inputs differ"));
         let mut s = snapshot();
         if let Some(sim) = &mut s.simulation {

@@ -67,6 +67,8 @@ pub struct ConstraintState {
     pub theta_drive: f64,
     /// Prescribed speed ω_in.
     pub drive_speed: f64,
+    /// Its rate dω_in/dt.
+    pub drive_acceleration: f64,
     /// r_A and ṙ_A.
     pub r_a: Vector2<f64>,
     /// ṙ_A.
@@ -143,7 +145,7 @@ impl Constraints {
                 [1.0, 0.0, 0.0, 0.0, 0.0, 0.0],
                 s.theta - s.theta_drive,
                 s.theta_dot - s.drive_speed,
-                0.0,
+                s.drive_acceleration,
             );
             c.drive_row = Some(k);
         }
@@ -178,6 +180,7 @@ mod tests {
             theta_dot: 0.0,
             theta_drive: 0.1,
             drive_speed: 0.0,
+            drive_acceleration: 0.0,
             r_a: Vector2::new(q[1], q[2]),
             v_a: Vector2::zeros(),
             r_b: Vector2::new(q[3], q[4]),

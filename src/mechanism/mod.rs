@@ -43,7 +43,7 @@ use crate::params::{DriveMode, JointModel, Parameters, RodFormulation};
 pub const CONTACT_ONSET_PENETRATION: f64 = 2e-8;
 
 /// Inputs that the caller may change between steps.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Inputs {
     /// Prescribed crank speed \[rad/s\] (speed drive).
     pub drive_speed: f64,
@@ -51,6 +51,96 @@ pub struct Inputs {
     pub drive_torque: f64,
     /// External force on the slider along the guide \[N\].
     pub slider_force: f64,
+}
+
+/// One of the [`Inputs`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Input {
+    /// [`Inputs::drive_speed`].
+    DriveSpeed,
+    /// [`Inputs::drive_torque`].
+    DriveTorque,
+    /// [`Inputs::slider_force`].
+    SliderForce,
+}
+
+impl Inputs {
+    /// The value of one input.
+    pub fn get(&self, input: Input) -> f64 {
+        match input {
+            Input::DriveSpeed => self.drive_speed,
+            Input::DriveTorque => self.drive_torque,
+            Input::SliderForce => self.slider_force,
+        }
+    }
+
+    /// The value of one input, to change.
+    pub fn get_mut(&mut self, input: Input) -> &mut f64 {
+        match input {
+            Input::DriveSpeed => &mut self.drive_speed,
+            Input::DriveTorque => &mut self.drive_torque,
+            Input::SliderForce => &mut self.slider_force,
+        }
+    }
+
+    fn combine(a: &Self, b: &Self, c: &Self, f: impl Fn(f64, f64, f64) -> f64) -> Self {
+        Self {
+            drive_speed: f(a.drive_speed, b.drive_speed, c.drive_speed),
+            drive_torque: f(a.drive_torque, b.drive_torque, c.drive_torque),
+            slider_force: f(a.slider_force, b.slider_force, c.slider_force),
+        }
+    }
+}
+
+/// The inputs as functions of time over a communication interval: their values and first and
+/// second time derivatives at `start`,
+/// ```text
+/// u(t) = u + u̇ (t − t₀) + ü (t − t₀)²/2
+/// ```
+/// (the polynomial input of FMI 2.0 co-simulation; held inputs have zero derivatives).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct InputSignal {
+    /// t₀ \[s\].
+    pub start: f64,
+    /// u(t₀).
+    pub value: Inputs,
+    /// u̇(t₀) and ü(t₀).
+    pub derivatives: [Inputs; 2],
+}
+
+impl InputSignal {
+    /// Inputs held at `value`.
+    pub fn held(value: Inputs) -> Self {
+        Self {
+            value,
+            ..Self::default()
+        }
+    }
+
+    /// Values u(t) and rates u̇(t).
+    pub fn at(&self, t: f64) -> (Inputs, Inputs) {
+        let dt = t - self.start;
+        let [first, second] = &self.derivatives;
+        let value = Inputs::combine(&self.value, first, second, |u, d1, d2| {
+            u + dt * (d1 + 0.5 * dt * d2)
+        });
+        let rate = Inputs::combine(first, second, second, |d1, d2, _| d1 + dt * d2);
+        (value, rate)
+    }
+
+    /// Whether the inputs that act (`acts`) are the same functions of time from `t` on in both.
+    pub fn same_from(&self, other: &Self, t: f64, acts: impl Fn(Input) -> bool) -> bool {
+        let (a, a_rate) = self.at(t);
+        let (b, b_rate) = other.at(t);
+        [Input::DriveSpeed, Input::DriveTorque, Input::SliderForce]
+            .into_iter()
+            .filter(|&i| acts(i))
+            .all(|i| {
+                a.get(i) == b.get(i)
+                    && a_rate.get(i) == b_rate.get(i)
+                    && self.derivatives[1].get(i) == other.derivatives[1].get(i)
+            })
+    }
 }
 
 /// Discrete contact state, updated at accepted steps only.
@@ -170,8 +260,12 @@ pub struct SliderCrank {
     rod_gravity: Vec<f64>,
     /// Whether the rod has material damping (and the state its dissipated energy).
     material_damping: bool,
-    /// Inputs used by the right-hand side.
-    pub inputs: Inputs,
+    /// The inputs as functions of time.
+    signal: InputSignal,
+    /// The inputs at the time of the last [`SliderCrank::set_time`].
+    inputs: Inputs,
+    /// dω_in/dt at that time \[rad/s²\] (speed drive).
+    drive_acceleration: f64,
     contact: ContactState,
     force: Vec<f64>,
     evaluation: Evaluation,
@@ -222,11 +316,15 @@ impl SliderCrank {
             position_scale: position_scale(p),
             rod_compliance,
             w,
+            signal: InputSignal::held(Inputs {
+                drive_speed: p.crank_initial_speed,
+                ..Inputs::default()
+            }),
             inputs: Inputs {
                 drive_speed: p.crank_initial_speed,
-                drive_torque: 0.0,
-                slider_force: 0.0,
+                ..Inputs::default()
             },
+            drive_acceleration: 0.0,
             contact: ContactState {
                 in_contact: false,
                 impact_velocity: MIN_IMPACT_VELOCITY,
@@ -298,11 +396,6 @@ impl SliderCrank {
         &self.rod
     }
 
-    /// The joint.
-    pub fn joint(&self) -> &Joint {
-        &self.joint
-    }
-
     /// Discrete contact state.
     pub fn contact_state(&self) -> ContactState {
         self.contact
@@ -311,6 +404,30 @@ impl SliderCrank {
     /// Restores the discrete contact state (snapshots).
     pub fn set_contact_state(&mut self, contact: ContactState) {
         self.contact = contact;
+    }
+
+    /// The inputs as functions of time.
+    pub fn input_signal(&self) -> &InputSignal {
+        &self.signal
+    }
+
+    /// Sets the inputs as functions of time; evaluations from now on use them at the current
+    /// time of [`SliderCrank::set_time`] (the integrator's stage time for its evaluations).
+    pub fn set_input_signal(&mut self, signal: InputSignal, t: f64) {
+        self.signal = signal;
+        self.set_time(t);
+    }
+
+    /// The inputs at `t`: evaluations outside the integrator (outputs, peaks) use them.
+    pub fn set_time(&mut self, t: f64) {
+        let (inputs, rates) = self.signal.at(t);
+        self.inputs = inputs;
+        self.drive_acceleration = rates.drive_speed;
+    }
+
+    /// The inputs at the time of the last [`SliderCrank::set_time`].
+    pub fn inputs(&self) -> Inputs {
+        self.inputs
     }
 
     /// Quantities of the last right-hand-side evaluation.
@@ -479,6 +596,7 @@ impl SliderCrank {
             theta_dot: y[n],
             theta_drive: y[2 * n],
             drive_speed: self.inputs.drive_speed,
+            drive_acceleration: self.drive_acceleration,
             r_a: Vector2::new(y[1], y[2]),
             v_a: Vector2::new(y[n + 1], y[n + 2]),
             r_b: Vector2::new(y[b], y[b + 1]),
@@ -745,7 +863,8 @@ impl MechanicalSystem for SliderCrank {
 }
 
 impl OdeSystem for SliderCrank {
-    fn rhs(&mut self, _t: f64, y: &[f64], dy: &mut [f64]) {
+    fn rhs(&mut self, t: f64, y: &[f64], dy: &mut [f64]) {
+        self.set_time(t);
         if self.derivative(y, dy).is_err() {
             // A locked configuration: make the step fail through the error estimate.
             dy.fill(f64::NAN);
@@ -845,7 +964,11 @@ mod tests {
                     ..Parameters::default()
                 };
                 let mut m = SliderCrank::new(&p).expect("default parameters build");
-                m.inputs.slider_force = -150.0;
+                let inputs = Inputs {
+                    slider_force: -150.0,
+                    ..m.inputs()
+                };
+                m.set_input_signal(InputSignal::held(inputs), 0.0);
                 let mut y = m.initial_state(0.3, 400.0);
                 let n = m.n_coordinates();
                 // Journal 20 µm into the wall, moving into it.
