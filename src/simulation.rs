@@ -832,8 +832,10 @@ mod tests {
         sim.advance_to(1e-4).unwrap();
         let speed = sim.next_inputs().value.drive_speed;
         let (rate, curvature, h) = (2.0e4, -3.0e7, 2e-4);
-        sim.set_input_derivative(Input::DriveSpeed, 1, rate).unwrap();
-        sim.set_input_derivative(Input::DriveSpeed, 2, curvature).unwrap();
+        sim.set_input_derivative(Input::DriveSpeed, 1, rate)
+            .unwrap();
+        sim.set_input_derivative(Input::DriveSpeed, 2, curvature)
+            .unwrap();
         assert!(sim.set_input_derivative(Input::DriveSpeed, 3, 1.0).is_err());
         sim.advance_to(1e-4 + h).unwrap();
         let expected = speed + rate * h + 0.5 * curvature * h * h;

@@ -1,12 +1,14 @@
-//! [`Instance`]: one FMU instance in safe Rust — parameters, inputs, the simulation, the clock and
-//! the state machine. Values are read and written by an exhaustive `match` on [`Vr`], with the
+//! [`SliderCrankFmu`]: the slider-crank as an FMI 2.0 [`Model`] — parameters, inputs, the
+//! simulation and the clock; the state machine and the C functions come from `fmi2-slave`. Values are read and written by an exhaustive `match` on [`Vr`], with the
 //! ranges of the variable table, so every message quotes what the master sees in the XML.
 
-use super::error::FmuError;
-use super::logger::Logger;
+use fmi2_slave::{FmuError, Logger, Model, State};
+
 use super::snapshot::FmuSnapshot;
-use super::state::State;
-use super::variables::{Causality, ENUMERATIONS, Kind, VARIABLES, Variable, Vr, variable};
+use super::variables::{
+    Causality, ENUMERATIONS, Kind, LOG_CATEGORIES, VARIABLES, Variable, Vr, variable,
+};
+use crate::error::ModelError;
 use crate::integrator::Method;
 use crate::joint::hertz_stiffness;
 use crate::params::{ContactLaw, DriveMode, InitialState, JointModel, Parameters, RodFormulation};
@@ -15,6 +17,12 @@ use crate::simulation::{Input, InputSignal, Inputs, Outputs, Simulation};
 
 /// Tolerance on the communication point: |t − t_expected| ≤ 1e-9 (1 + |t|) (FMI.md §1.6).
 const TIME_TOLERANCE: f64 = 1e-9;
+
+impl From<ModelError> for FmuError {
+    fn from(e: ModelError) -> Self {
+        Self::Model(e.to_string())
+    }
+}
 
 /// The inputs at their start values, held.
 fn start_inputs() -> InputSignal {
@@ -39,17 +47,9 @@ fn input(vr: Vr) -> Option<Input> {
     }
 }
 
-/// One FMU instance.
+/// The slider-crank behind the FMI functions: parameters, inputs, the simulation and the clock.
 #[derive(Debug)]
-pub struct Instance {
-    /// Instance name.
-    pub name: String,
-    /// The master's logger.
-    pub logger: Logger,
-    /// State-machine state.
-    pub state: State,
-    /// Set after a caught panic: only Reset and FreeInstance are accepted.
-    pub poisoned: bool,
+pub struct SliderCrankFmu {
     pub(crate) parameters: Parameters,
     /// Input values, and the derivatives set for the next step (fmi2SetRealInputDerivatives).
     pub(crate) inputs: InputSignal,
@@ -89,14 +89,142 @@ const CONTACT_LAWS: [ContactLaw; 3] = [
     ContactLaw::HuGuo,
 ];
 
-impl Instance {
-    /// A fresh instance with the start values of the variable table.
-    pub fn new(name: String, logger: Logger) -> Self {
+impl SliderCrankFmu {
+    fn lookup(vr: u32, base: &str) -> Result<&'static Variable, FmuError> {
+        let v = variable(vr)
+            .ok_or_else(|| FmuError::Invalid(format!("unknown value reference {vr}")))?;
+        let matches = matches!(
+            (v.kind, base),
+            (Kind::Real { .. }, "Real")
+                | (Kind::Integer { .. } | Kind::Enumeration { .. }, "Integer")
+                | (Kind::Boolean, "Boolean")
+        );
+        if matches {
+            Ok(v)
+        } else {
+            Err(FmuError::Invalid(format!(
+                "value reference {vr} ({}) is not of type {base}",
+                v.name
+            )))
+        }
+    }
+
+    /// The simulation, built from the current parameters if needed.
+    fn simulation(&mut self, log: &Logger) -> Result<&mut Simulation, FmuError> {
+        if self.simulation.is_none() {
+            let parameters = model_parameters(&self.parameters, self.tolerance);
+            if parameters.relative_tolerance != self.parameters.relative_tolerance {
+                log.event(&format!(
+                    "solver.relativeTolerance = {:e} tightened to {:e} by the tolerance of \
+                     fmi2SetupExperiment",
+                    self.parameters.relative_tolerance, parameters.relative_tolerance
+                ));
+            }
+            let mut sim = Simulation::new(parameters)?;
+            sim.set_time(self.time);
+            for i in [Input::DriveSpeed, Input::DriveTorque, Input::SliderForce] {
+                sim.set_input(i, self.inputs.value.get(i));
+                for (k, d) in self.inputs.derivatives.iter().enumerate() {
+                    sim.set_input_derivative(i, k + 1, d.get(i))?;
+                }
+            }
+            log.event(&format!(
+                "model built: {:?} rod, {:?} joint, {:?} drive, {} states",
+                self.parameters.rod_formulation,
+                self.parameters.joint_model,
+                self.parameters.drive_mode,
+                sim.state().len()
+            ));
+            for warning in self.parameters.warnings() {
+                log.warning(&warning);
+            }
+            self.simulation = Some(sim);
+        }
+        self.simulation
+            .as_mut()
+            .ok_or_else(|| FmuError::Invalid("no simulation".into()))
+    }
+
+    /// Checks that `v` may be set now.
+    fn check_settable(state: State, v: &Variable) -> Result<(), FmuError> {
+        let ok = match v.causality {
+            Causality::Parameter => {
+                matches!(state, State::Instantiated | State::InitializationMode)
+            }
+            Causality::Input => true,
+            _ => false,
+        };
+        if ok {
+            Ok(())
+        } else {
+            Err(FmuError::Invalid(format!(
+                "variable {} ({:?}) cannot be set in state {:?}",
+                v.name, v.causality, state
+            )))
+        }
+    }
+
+    fn outputs(&mut self, log: &Logger) -> Result<Outputs, FmuError> {
+        Ok(self.simulation(log)?.outputs()?)
+    }
+
+    /// Captures the complete state (parameters, inputs, clock, simulation).
+    fn snapshot(&self) -> FmuSnapshot {
+        FmuSnapshot {
+            parameters: self.parameters.clone(),
+            inputs: self.inputs,
+            start_time: self.start_time,
+            stop_time: self.stop_time,
+            tolerance: self.tolerance,
+            time: self.time,
+            last_successful_time: self.last_successful_time,
+            simulation: self.simulation.as_ref().map(Simulation::snapshot),
+        }
+    }
+
+    /// Restores a captured state; the model is rebuilt only if its parameters differ.
+    fn restore(&mut self, s: &FmuSnapshot) -> Result<(), FmuError> {
+        let same_model = self.parameters == s.parameters
+            && self.tolerance == s.tolerance
+            && self.simulation.is_some();
+        let mut simulation = if same_model {
+            self.simulation.take()
+        } else {
+            None
+        };
+        if let Some(snap) = &s.simulation {
+            if simulation.is_none() {
+                simulation = Some(Simulation::new(model_parameters(
+                    &s.parameters,
+                    s.tolerance,
+                ))?);
+            }
+            if let Some(sim) = &mut simulation {
+                sim.restore(snap)?;
+            }
+        } else {
+            simulation = None;
+        }
+        self.simulation = simulation;
+        self.parameters = s.parameters.clone();
+        self.inputs = s.inputs;
+        self.start_time = s.start_time;
+        self.stop_time = s.stop_time;
+        self.tolerance = s.tolerance;
+        self.time = s.time;
+        self.last_successful_time = s.last_successful_time;
+        Ok(())
+    }
+}
+
+impl Model for SliderCrankFmu {
+    const GUID: &'static str = super::GUID;
+    const LOG_CATEGORIES: &'static [(&'static str, &'static str)] = LOG_CATEGORIES;
+    const STATE_MAGIC: [u8; 4] = *b"FSCS";
+    const STATE_VERSION: u32 = 7;
+
+    fn new() -> Self {
         Self {
-            name,
-            logger,
-            state: State::Instantiated,
-            poisoned: false,
             parameters: Parameters::default(),
             inputs: start_inputs(),
             simulation: None,
@@ -108,24 +236,28 @@ impl Instance {
         }
     }
 
-    /// fmi2Reset: back to Instantiated with every start value.
-    pub fn reset(&mut self) {
-        self.state = State::Instantiated;
-        self.poisoned = false;
-        self.parameters = Parameters::default();
-        self.inputs = start_inputs();
-        self.simulation = None;
-        self.start_time = 0.0;
-        self.stop_time = None;
-        self.tolerance = None;
-        self.time = 0.0;
-        self.last_successful_time = 0.0;
+    fn last_successful_time(&self) -> f64 {
+        self.last_successful_time
+    }
+
+    fn save(&self, out: &mut Vec<u8>) {
+        self.snapshot().write(out);
+    }
+
+    fn load(&mut self, _log: &Logger, bytes: &[u8], apply: bool) -> Result<(), FmuError> {
+        let snapshot = FmuSnapshot::read(bytes)?;
+        snapshot.validate()?;
+        if apply {
+            self.restore(&snapshot)?;
+        }
+        Ok(())
     }
 
     /// fmi2SetupExperiment. A defined `tolerance` takes part in the integrator's relative
     /// tolerance (see [`model_parameters`]).
-    pub fn setup_experiment(
+    fn setup_experiment(
         &mut self,
+        _log: &Logger,
         tolerance: Option<f64>,
         start: f64,
         stop: Option<f64>,
@@ -157,50 +289,14 @@ impl Instance {
         Ok(())
     }
 
-    /// The simulation, built from the current parameters if needed.
-    fn simulation(&mut self) -> Result<&mut Simulation, FmuError> {
-        if self.simulation.is_none() {
-            let parameters = model_parameters(&self.parameters, self.tolerance);
-            if parameters.relative_tolerance != self.parameters.relative_tolerance {
-                self.logger.event(&format!(
-                    "solver.relativeTolerance = {:e} tightened to {:e} by the tolerance of \
-                     fmi2SetupExperiment",
-                    self.parameters.relative_tolerance, parameters.relative_tolerance
-                ));
-            }
-            let mut sim = Simulation::new(parameters)?;
-            sim.set_time(self.time);
-            for i in [Input::DriveSpeed, Input::DriveTorque, Input::SliderForce] {
-                sim.set_input(i, self.inputs.value.get(i));
-                for (k, d) in self.inputs.derivatives.iter().enumerate() {
-                    sim.set_input_derivative(i, k + 1, d.get(i))?;
-                }
-            }
-            self.logger.event(&format!(
-                "model built: {:?} rod, {:?} joint, {:?} drive, {} states",
-                self.parameters.rod_formulation,
-                self.parameters.joint_model,
-                self.parameters.drive_mode,
-                sim.state().len()
-            ));
-            for warning in self.parameters.warnings() {
-                self.logger.warning(&warning);
-            }
-            self.simulation = Some(sim);
-        }
-        self.simulation
-            .as_mut()
-            .ok_or_else(|| FmuError::Invalid("no simulation".into()))
-    }
-
     /// fmi2ExitInitializationMode: builds the model (all parameter checks happen here).
-    pub fn exit_initialization(&mut self) -> Result<(), FmuError> {
-        self.simulation()?;
+    fn exit_initialization(&mut self, log: &Logger) -> Result<(), FmuError> {
+        self.simulation(log)?;
         Ok(())
     }
 
     /// fmi2DoStep from `t` over `h`.
-    pub fn do_step(&mut self, t: f64, h: f64) -> Result<(), FmuError> {
+    fn do_step(&mut self, log: &Logger, t: f64, h: f64) -> Result<(), FmuError> {
         if (t - self.time).abs() > TIME_TOLERANCE * (1.0 + t.abs()) {
             return Err(FmuError::Invalid(format!(
                 "fmi2DoStep: Expected currentCommunicationPoint = {:.16e} but was {t:.16e}.",
@@ -220,14 +316,14 @@ impl Instance {
                 )));
             }
         }
-        let sim = self.simulation()?;
+        let sim = self.simulation(log)?;
         sim.set_time(t);
         let result = sim.advance_to(end);
         let (time, warnings) = (sim.time(), sim.take_warnings());
         // Input derivatives hold for one communication step (as in the simulation).
         self.inputs.derivatives = [Inputs::default(); 2];
         for warning in &warnings {
-            self.logger.warning(warning);
+            log.warning(warning);
         }
         match result {
             Ok(()) => {
@@ -246,55 +342,13 @@ impl Instance {
         }
     }
 
-    fn lookup(vr: u32, base: &str) -> Result<&'static Variable, FmuError> {
-        let v = variable(vr)
-            .ok_or_else(|| FmuError::Invalid(format!("unknown value reference {vr}")))?;
-        let matches = matches!(
-            (v.kind, base),
-            (Kind::Real { .. }, "Real")
-                | (Kind::Integer { .. } | Kind::Enumeration { .. }, "Integer")
-                | (Kind::Boolean, "Boolean")
-        );
-        if matches {
-            Ok(v)
-        } else {
-            Err(FmuError::Invalid(format!(
-                "value reference {vr} ({}) is not of type {base}",
-                v.name
-            )))
-        }
-    }
-
-    /// Checks that `v` may be set now.
-    fn check_settable(&self, v: &Variable) -> Result<(), FmuError> {
-        let ok = match v.causality {
-            Causality::Parameter => {
-                matches!(self.state, State::Instantiated | State::InitializationMode)
-            }
-            Causality::Input => true,
-            _ => false,
-        };
-        if ok {
-            Ok(())
-        } else {
-            Err(FmuError::Invalid(format!(
-                "variable {} ({:?}) cannot be set in state {:?}",
-                v.name, v.causality, self.state
-            )))
-        }
-    }
-
-    fn outputs(&mut self) -> Result<Outputs, FmuError> {
-        Ok(self.simulation()?.outputs()?)
-    }
-
     /// fmi2GetReal.
-    pub fn get_real(&mut self, vrs: &[u32], values: &mut [f64]) -> Result<(), FmuError> {
+    fn get_real(&mut self, log: &Logger, vrs: &[u32], values: &mut [f64]) -> Result<(), FmuError> {
         let mut outputs: Option<Outputs> = None;
         for (vr, value) in vrs.iter().zip(values.iter_mut()) {
             let v = Self::lookup(*vr, "Real")?;
             if v.causality == Causality::Output && outputs.is_none() {
-                outputs = Some(self.outputs()?);
+                outputs = Some(self.outputs(log)?);
             }
             let o = outputs.unwrap_or_default();
             if let Some(x) = real_parameter(&self.parameters, v.vr) {
@@ -342,10 +396,10 @@ impl Instance {
     }
 
     /// fmi2SetReal.
-    pub fn set_real(&mut self, vrs: &[u32], values: &[f64]) -> Result<(), FmuError> {
+    fn set_real(&mut self, state: State, vrs: &[u32], values: &[f64]) -> Result<(), FmuError> {
         for (vr, &value) in vrs.iter().zip(values) {
             let v = Self::lookup(*vr, "Real")?;
-            self.check_settable(v)?;
+            Self::check_settable(state, v)?;
             if let Kind::Real { min, max, unit, .. } = v.kind {
                 if !(value.is_finite() && min <= value && value <= max) {
                     return Err(FmuError::Invalid(format!(
@@ -376,13 +430,14 @@ impl Instance {
     /// communication point, from the equations of motion (order 1: crank.angle, crank.speed,
     /// slider.position, slider.velocity, joint.eccentricityX/Y, energy.driveWork; order 2:
     /// crank.angle, slider.position). Other outputs (forces, peaks, counters) have none.
-    pub fn get_real_output_derivatives(
+    fn get_real_output_derivatives(
         &mut self,
+        log: &Logger,
         vrs: &[u32],
         orders: &[i32],
         values: &mut [f64],
     ) -> Result<(), FmuError> {
-        let o = self.outputs()?;
+        let o = self.outputs(log)?;
         for ((vr, &order), value) in vrs.iter().zip(orders).zip(values.iter_mut()) {
             let v = Self::lookup(*vr, "Real")?;
             *value = match (v.vr, order) {
@@ -409,7 +464,7 @@ impl Instance {
 
     /// fmi2SetRealInputDerivatives: the `order`-th derivative (1 or 2) of inputs at the current
     /// communication point, for the next fmi2DoStep only (see [`Simulation::set_input_derivative`]).
-    pub fn set_real_input_derivatives(
+    fn set_real_input_derivatives(
         &mut self,
         vrs: &[u32],
         orders: &[i32],
@@ -448,7 +503,12 @@ impl Instance {
     }
 
     /// fmi2GetInteger (Integer variables, the switches among them).
-    pub fn get_integer(&mut self, vrs: &[u32], values: &mut [i32]) -> Result<(), FmuError> {
+    fn get_integer(
+        &mut self,
+        log: &Logger,
+        vrs: &[u32],
+        values: &mut [i32],
+    ) -> Result<(), FmuError> {
         for (vr, value) in vrs.iter().zip(values.iter_mut()) {
             let v = Self::lookup(*vr, "Integer")?;
             if let Some(x) = integer_parameter(&self.parameters, v.vr) {
@@ -457,19 +517,19 @@ impl Instance {
             }
             *value = match v.vr {
                 Vr::SolverSteps => {
-                    let steps = self.simulation()?.stats().steps;
+                    let steps = self.simulation(log)?.stats().steps;
                     i32::try_from(steps).unwrap_or(i32::MAX)
                 }
                 Vr::SolverEvaluations => {
-                    let evaluations = self.simulation()?.stats().evaluations;
+                    let evaluations = self.simulation(log)?.stats().evaluations;
                     i32::try_from(evaluations).unwrap_or(i32::MAX)
                 }
                 Vr::JointContactOnsets => {
-                    let onsets = self.outputs()?.contact_onsets;
+                    let onsets = self.outputs(log)?.contact_onsets;
                     i32::try_from(onsets).unwrap_or(i32::MAX)
                 }
                 Vr::JointContactOnsetsTotal => {
-                    let onsets = self.outputs()?.contact_onsets_total;
+                    let onsets = self.outputs(log)?.contact_onsets_total;
                     i32::try_from(onsets).unwrap_or(i32::MAX)
                 }
                 _ => unreachable_type(v)?,
@@ -479,10 +539,10 @@ impl Instance {
     }
 
     /// fmi2SetInteger (Integer parameters, the switches among them).
-    pub fn set_integer(&mut self, vrs: &[u32], values: &[i32]) -> Result<(), FmuError> {
+    fn set_integer(&mut self, state: State, vrs: &[u32], values: &[i32]) -> Result<(), FmuError> {
         for (vr, &value) in vrs.iter().zip(values) {
             let v = Self::lookup(*vr, "Integer")?;
-            self.check_settable(v)?;
+            Self::check_settable(state, v)?;
             let (min, max) = match v.kind {
                 Kind::Integer { min, max, .. } => (min, max),
                 Kind::Enumeration { type_index, .. } => {
@@ -505,11 +565,16 @@ impl Instance {
     }
 
     /// fmi2GetBoolean.
-    pub fn get_boolean(&mut self, vrs: &[u32], values: &mut [i32]) -> Result<(), FmuError> {
+    fn get_boolean(
+        &mut self,
+        log: &Logger,
+        vrs: &[u32],
+        values: &mut [i32],
+    ) -> Result<(), FmuError> {
         for (vr, value) in vrs.iter().zip(values.iter_mut()) {
             let v = Self::lookup(*vr, "Boolean")?;
             *value = match v.vr {
-                Vr::JointInContact => i32::from(self.outputs()?.in_contact),
+                Vr::JointInContact => i32::from(self.outputs(log)?.in_contact),
                 _ => unreachable_type(v)?,
             };
         }
@@ -517,62 +582,11 @@ impl Instance {
     }
 
     /// fmi2SetBoolean: no Boolean variable is settable.
-    pub fn set_boolean(&mut self, vrs: &[u32]) -> Result<(), FmuError> {
+    fn set_boolean(&mut self, state: State, vrs: &[u32], _values: &[i32]) -> Result<(), FmuError> {
         for vr in vrs {
             let v = Self::lookup(*vr, "Boolean")?;
-            self.check_settable(v)?;
+            Self::check_settable(state, v)?;
         }
-        Ok(())
-    }
-
-    /// Captures the complete state (parameters, inputs, clock, state machine, simulation).
-    pub fn snapshot(&self) -> FmuSnapshot {
-        FmuSnapshot {
-            state: self.state,
-            parameters: self.parameters.clone(),
-            inputs: self.inputs,
-            start_time: self.start_time,
-            stop_time: self.stop_time,
-            tolerance: self.tolerance,
-            time: self.time,
-            last_successful_time: self.last_successful_time,
-            simulation: self.simulation.as_ref().map(Simulation::snapshot),
-        }
-    }
-
-    /// Restores a captured state; the model is rebuilt only if its parameters differ.
-    pub fn restore(&mut self, s: &FmuSnapshot) -> Result<(), FmuError> {
-        s.validate()?;
-        let same_model = self.parameters == s.parameters
-            && self.tolerance == s.tolerance
-            && self.simulation.is_some();
-        let mut simulation = if same_model {
-            self.simulation.take()
-        } else {
-            None
-        };
-        if let Some(snap) = &s.simulation {
-            if simulation.is_none() {
-                simulation = Some(Simulation::new(model_parameters(
-                    &s.parameters,
-                    s.tolerance,
-                ))?);
-            }
-            if let Some(sim) = &mut simulation {
-                sim.restore(snap)?;
-            }
-        } else {
-            simulation = None;
-        }
-        self.simulation = simulation;
-        self.parameters = s.parameters.clone();
-        self.inputs = s.inputs;
-        self.state = s.state;
-        self.start_time = s.start_time;
-        self.stop_time = s.stop_time;
-        self.tolerance = s.tolerance;
-        self.time = s.time;
-        self.last_successful_time = s.last_successful_time;
         Ok(())
     }
 }

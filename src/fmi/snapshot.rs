@@ -1,39 +1,25 @@
-//! FMU state: a complete, pointer-free snapshot of an instance and its byte serialisation.
+//! FMU state: a complete, pointer-free snapshot of the model and its bytes.
 //!
-//! Layout (little-endian): magic `FSCS`, format version, the parameter count of the variable table
-//! and nModes (so a state from another build or model is rejected), the state machine, every
-//! parameter in table order, inputs, clock, the simulation snapshot, and an FNV-1a 64 checksum of
-//! everything before it (a corrupted byte is rejected, never restored).
+//! Layout (little-endian, inside the framing of `fmi2-slave`: magic, version, state machine,
+//! checksum): the parameter count of the variable table and nModes (so a state from another build
+//! or model is rejected), every parameter in table order, inputs, clock, the simulation snapshot.
 
-use super::error::FmuError;
+use fmi2_slave::FmuError;
+
 use super::instance::{
     integer_parameter, real_parameter, set_integer_parameter, set_real_parameter,
 };
-use super::state::State;
 use super::variables::{Causality, Kind, VARIABLES, Vr};
 use crate::integrator::{ImplicitState, IntegratorState, Stats};
 use crate::mechanism::ContactState;
 use crate::params::Parameters;
 use crate::simulation::{InputSignal, Inputs, PeakHold, Peaks, Snapshot};
 
-const MAGIC: &[u8; 4] = b"FSCS";
-const VERSION: u32 = 7;
 /// Largest accepted vector length (states, Jacobian entries) in a state.
 const MAX_LENGTH: usize = 1 << 20;
-const STATES: [State; 6] = [
-    State::Instantiated,
-    State::InitializationMode,
-    State::StepComplete,
-    State::StepFailed,
-    State::Terminated,
-    State::Error,
-];
-
 /// Everything needed to resume an instance exactly.
 #[derive(Clone, Debug, PartialEq)]
 pub struct FmuSnapshot {
-    /// State-machine state.
-    pub state: State,
     /// All parameters.
     pub parameters: Parameters,
     /// Input values and the derivatives set for the next step.
@@ -59,12 +45,6 @@ fn parameter_count() -> u32 {
         .count() as u32
 }
 
-fn fnv64(bytes: &[u8]) -> u64 {
-    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| {
-        (h ^ u64::from(b)).wrapping_mul(0x100_0000_01b3)
-    })
-}
-
 /// The ten numbers of an input signal: start, then value, first and second derivatives, each
 /// as (drive speed, drive torque, slider force).
 fn signal_values(s: &InputSignal) -> [f64; 10] {
@@ -78,9 +58,9 @@ fn signal_values(s: &InputSignal) -> [f64; 10] {
     v
 }
 
-struct Writer(Vec<u8>);
+struct Writer<'a>(&'a mut Vec<u8>);
 
-impl Writer {
+impl Writer<'_> {
     fn u8(&mut self, v: u8) {
         self.0.push(v);
     }
@@ -299,14 +279,11 @@ impl FmuSnapshot {
         Ok(())
     }
 
-    /// Pointer-free bytes of the snapshot.
-    pub fn to_bytes(&self) -> Vec<u8> {
-        let mut w = Writer(Vec::with_capacity(1024));
-        w.0.extend_from_slice(MAGIC);
-        w.u32(VERSION);
+    /// Appends the pointer-free bytes of the snapshot to `out`.
+    pub fn write(&self, out: &mut Vec<u8>) {
+        let mut w = Writer(out);
         w.u32(parameter_count());
         w.u32(self.parameters.n_modes as u32);
-        w.u8(STATES.iter().position(|s| *s == self.state).unwrap_or(0) as u8);
         for v in VARIABLES
             .iter()
             .filter(|v| v.causality == Causality::Parameter)
@@ -370,31 +347,13 @@ impl FmuSnapshot {
             w.u8(u8::from(s.peaks.pending));
             w.u64(s.peaks.total_onsets);
         }
-        let checksum = fnv64(&w.0);
-        w.u64(checksum);
-        w.0
     }
 
-    /// Parses and checks bytes written by [`FmuSnapshot::to_bytes`].
-    pub fn from_bytes(bytes: &[u8]) -> Result<Self, FmuError> {
+    /// Parses bytes written by [`FmuSnapshot::write`] (ranges are checked by
+    /// [`FmuSnapshot::validate`]).
+    pub fn read(body: &[u8]) -> Result<Self, FmuError> {
         let bad = |what: String| FmuError::Invalid(format!("FMU state rejected: {what}"));
-        if bytes.len() < 8 + 4 + 12 {
-            return Err(bad(format!("{} bytes is too short", bytes.len())));
-        }
-        let (body, tail) = bytes.split_at(bytes.len() - 8);
-        let mut sum = [0; 8];
-        sum.copy_from_slice(tail);
-        if fnv64(body) != u64::from_le_bytes(sum) {
-            return Err(bad("checksum mismatch (corrupted bytes)".into()));
-        }
         let mut r = Reader { bytes: body, at: 0 };
-        if r.take(4)? != MAGIC {
-            return Err(bad("wrong magic (not a FlexibleSliderCrank state)".into()));
-        }
-        let version = r.u32()?;
-        if version != VERSION {
-            return Err(bad(format!("format version {version}, expected {VERSION}")));
-        }
         let count = r.u32()?;
         if count != parameter_count() {
             return Err(bad(format!(
@@ -403,9 +362,6 @@ impl FmuSnapshot {
             )));
         }
         let n_modes = r.u32()?;
-        let state = *STATES
-            .get(usize::from(r.u8()?))
-            .ok_or_else(|| bad("invalid state".into()))?;
         let mut parameters = Parameters::default();
         for v in VARIABLES
             .iter()
@@ -484,7 +440,6 @@ impl FmuSnapshot {
             return Err(bad(format!("{} trailing bytes", body.len() - r.at)));
         }
         Ok(Self {
-            state,
             parameters,
             inputs,
             start_time,
@@ -506,7 +461,6 @@ mod tests {
         let parameters = Parameters::default();
         let simulation = Simulation::new(parameters.clone()).unwrap().snapshot();
         FmuSnapshot {
-            state: State::StepComplete,
             parameters,
             inputs: simulation.next,
             start_time: 0.0,

@@ -1,103 +1,38 @@
 //! THE variable table of the FMU: one row per FMI variable, in value-reference order.
 //!
-//! This file is plain data over `core` types: `build.rs` compiles it too and renders
-//! `modelDescription.xml` from it, and the FMI layer gets and sets values through an exhaustive
-//! `match` on [`Vr`], so the code and the XML cannot disagree.
+//! This file is plain data over the table types of `fmi2-slave`: `build.rs` compiles it too and
+//! renders `modelDescription.xml` from [`DESCRIPTION`], and the FMI layer gets and sets values
+//! through an exhaustive `match` on [`Vr`], so the code and the XML cannot disagree.
 
-/// FMI causality.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Causality {
-    /// Fixed parameter, set before initialisation ends.
-    Parameter,
-    /// Computed from parameters.
-    CalculatedParameter,
-    /// Continuous input.
-    Input,
-    /// Output.
-    Output,
-}
+pub use fmi2_slave::description::Description;
+pub use fmi2_slave::table::{Causality, Enumeration, Kind, ValueReference, Variability};
 
-/// FMI variability.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Variability {
-    /// Fixed after initialisation.
-    Fixed,
-    /// Changes at events (steps) only.
-    Discrete,
-    /// Continuous in time.
-    Continuous,
-}
+/// One variable of this FMU.
+pub type Variable = fmi2_slave::table::Variable<Vr>;
 
-/// Base type, start value and range of a variable.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Kind {
-    /// Real with unit and range.
-    Real {
-        /// Start value (None: calculated).
-        start: Option<f64>,
-        /// Smallest allowed value.
-        min: f64,
-        /// Largest allowed value.
-        max: f64,
-        /// Unit name, defined in [`UNITS`].
-        unit: &'static str,
-    },
-    /// Integer with range.
-    Integer {
-        /// Start value (None: calculated).
-        start: Option<i32>,
-        /// Smallest allowed value.
-        min: i32,
-        /// Largest allowed value.
-        max: i32,
-    },
-    /// Boolean.
-    Boolean,
-    /// A switch: one of the items of one of [`ENUMERATIONS`], numbered from 1. Declared as an
-    /// FMI Integer of a named type with the items in its description (not as an FMI Enumeration,
-    /// which some masters, libcosim among them, cannot set).
-    Enumeration {
-        /// Start item.
-        start: i32,
-        /// Index into [`ENUMERATIONS`].
-        type_index: usize,
-    },
-}
+/// Everything modelDescription.xml says.
+pub const DESCRIPTION: Description<Vr> = Description {
+    model_identifier: "FlexibleSliderCrank",
+    description: "Flexible slider-crank mechanism with a clearance joint: planar ANCF connecting rod reduced by Craig-Bampton component mode synthesis (Sun et al., Mech. Mach. Theory 85, 2015)",
+    author: "The FlexibleSliderCrank authors",
+    version: env!("CARGO_PKG_VERSION"),
+    copyright: "Copyright (c) 2026 The FlexibleSliderCrank authors",
+    license: "MIT",
+    generation_tool: "flexible-slider-crank build.rs (fmi2-slave)",
+    max_input_derivative_order: 2,
+    max_output_derivative_order: 2,
+    units: UNITS,
+    enumerations: ENUMERATIONS,
+    log_categories: LOG_CATEGORIES,
+    default_experiment: DEFAULT_EXPERIMENT,
+    variables: VARIABLES,
+    feedthrough: FEEDTHROUGH,
+};
 
-/// One FMI variable.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Variable {
-    /// Value reference (its position in [`VARIABLES`]).
-    pub vr: Vr,
-    /// Structured name.
-    pub name: &'static str,
-    /// Causality.
-    pub causality: Causality,
-    /// Variability.
-    pub variability: Variability,
-    /// Type, start and range.
-    pub kind: Kind,
-    /// Description.
-    pub description: &'static str,
-}
-
-/// The items of a switch as the variable descriptions show them: "1 = rigid, 2 = ancf, ...".
-pub fn item_list(e: &Enumeration) -> String {
-    let items: Vec<String> = (1..)
-        .zip(e.items)
-        .map(|(i, (item, _))| format!("{i} = {item}"))
-        .collect();
-    items.join(", ")
-}
-
-/// A switch type (an enumeration in meaning, an FMI Integer type in the XML): name and items
-/// (name, description), numbered from 1.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Enumeration {
-    /// Type name.
-    pub name: &'static str,
-    /// Items.
-    pub items: &'static [(&'static str, &'static str)],
+impl ValueReference for Vr {
+    fn index(self) -> u32 {
+        self as u32
+    }
 }
 
 /// Enumeration types.
@@ -190,26 +125,26 @@ pub const ENUMERATIONS: &[Enumeration] = &[
     },
 ];
 
-/// Units: name and SI base-unit exponents (kg, m, s, rad), or None where FMI 2's integer
+/// Units: name and SI base-unit exponents (kg, m, s, A, rad), or None where FMI 2's integer
 /// exponents cannot express the unit (N/m^1.5).
-pub const UNITS: &[(&str, Option<[i32; 4]>)] = &[
-    ("s", Some([0, 0, 1, 0])),
-    ("m", Some([0, 1, 0, 0])),
-    ("m/s", Some([0, 1, -1, 0])),
-    ("m/s2", Some([0, 1, -2, 0])),
-    ("m2", Some([0, 2, 0, 0])),
-    ("m4", Some([0, 4, 0, 0])),
-    ("kg", Some([1, 0, 0, 0])),
-    ("kg/m3", Some([1, -3, 0, 0])),
-    ("kg.m2", Some([1, 2, 0, 0])),
-    ("Pa", Some([1, -1, -2, 0])),
-    ("Pa.s", Some([1, -1, -1, 0])),
-    ("N", Some([1, 1, -2, 0])),
-    ("N.m", Some([1, 2, -2, 0])),
-    ("J", Some([1, 2, -2, 0])),
-    ("rad", Some([0, 0, 0, 1])),
-    ("rad/s", Some([0, 0, -1, 1])),
-    ("1", Some([0, 0, 0, 0])),
+pub const UNITS: &[(&str, Option<[i32; 5]>)] = &[
+    ("s", Some([0, 0, 1, 0, 0])),
+    ("m", Some([0, 1, 0, 0, 0])),
+    ("m/s", Some([0, 1, -1, 0, 0])),
+    ("m/s2", Some([0, 1, -2, 0, 0])),
+    ("m2", Some([0, 2, 0, 0, 0])),
+    ("m4", Some([0, 4, 0, 0, 0])),
+    ("kg", Some([1, 0, 0, 0, 0])),
+    ("kg/m3", Some([1, -3, 0, 0, 0])),
+    ("kg.m2", Some([1, 2, 0, 0, 0])),
+    ("Pa", Some([1, -1, -2, 0, 0])),
+    ("Pa.s", Some([1, -1, -1, 0, 0])),
+    ("N", Some([1, 1, -2, 0, 0])),
+    ("N.m", Some([1, 2, -2, 0, 0])),
+    ("J", Some([1, 2, -2, 0, 0])),
+    ("rad", Some([0, 0, 0, 0, 1])),
+    ("rad/s", Some([0, 0, -1, 0, 1])),
+    ("1", Some([0, 0, 0, 0, 0])),
     ("N/m1.5", None),
 ];
 

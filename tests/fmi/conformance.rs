@@ -3,7 +3,7 @@
 use std::ffi::CStr;
 
 use flexible_slider_crank::fmi::GUID;
-use flexible_slider_crank::fmi::state::{Call, State};
+use fmi2_slave::{Call, State};
 use fmi_sys::fmi2::*;
 
 use crate::harness::{

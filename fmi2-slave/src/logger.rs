@@ -11,7 +11,6 @@ use fmi_sys::fmi2::{
 };
 
 use super::ffi::call_logger;
-use super::variables::LOG_CATEGORIES;
 
 /// The logger callback of one instance.
 #[derive(Debug)]
@@ -20,11 +19,9 @@ pub struct Logger {
     environment: fmi2ComponentEnvironment,
     instance_name: CString,
     debug: bool,
-    enabled: [bool; LOG_CATEGORIES.len()],
-}
-
-fn category_index(name: &str) -> Option<usize> {
-    LOG_CATEGORIES.iter().position(|(n, _)| *n == name)
+    /// The model's log categories (name, description).
+    categories: &'static [(&'static str, &'static str)],
+    enabled: Vec<bool>,
 }
 
 impl Logger {
@@ -34,23 +31,29 @@ impl Logger {
         environment: fmi2ComponentEnvironment,
         instance_name: &str,
         debug: bool,
+        categories: &'static [(&'static str, &'static str)],
     ) -> Self {
         Self {
             callback,
             environment,
             instance_name: CString::new(instance_name.replace('\0', "")).unwrap_or_default(),
             debug,
-            enabled: [true; LOG_CATEGORIES.len()],
+            categories,
+            enabled: vec![true; categories.len()],
         }
+    }
+
+    fn category_index(&self, name: &str) -> Option<usize> {
+        self.categories.iter().position(|(n, _)| *n == name)
     }
 
     /// fmi2SetDebugLogging: switch debug logging and, if `categories` is not empty, enable
     /// only those. An unknown category is an error naming it.
     pub fn set_debug_logging(&mut self, on: bool, categories: &[String]) -> Result<(), String> {
-        let mut enabled = [categories.is_empty(); LOG_CATEGORIES.len()];
+        let mut enabled = vec![categories.is_empty(); self.categories.len()];
         for c in categories {
-            let i = category_index(c).ok_or_else(|| {
-                let known: Vec<&str> = LOG_CATEGORIES.iter().map(|(n, _)| *n).collect();
+            let i = self.category_index(c).ok_or_else(|| {
+                let known: Vec<&str> = self.categories.iter().map(|(n, _)| *n).collect();
                 format!(
                     "fmi2SetDebugLogging: unknown log category \"{c}\"; known: {}",
                     known.join(", ")
@@ -97,8 +100,12 @@ impl Logger {
     }
 
     fn debug_message(&self, status: fmi2Status, category: &str, message: &str) {
-        let on = category_index(category).is_some_and(|i| self.enabled[i])
-            || category_index("logAll").is_some_and(|i| self.enabled[i]);
+        let on = self
+            .category_index(category)
+            .is_some_and(|i| self.enabled[i])
+            || self
+                .category_index("logAll")
+                .is_some_and(|i| self.enabled[i]);
         if self.debug && on {
             self.emit(status, category, message);
         }

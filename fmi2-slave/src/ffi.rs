@@ -11,7 +11,7 @@ use fmi_sys::fmi2::{
 };
 
 use super::error::FmuError;
-use super::instance::Instance;
+use super::model::{Instance, Model};
 use super::state::{Call, State};
 
 /// Calls the master's logger with `"%s"` as the format, so the text is never interpreted.
@@ -109,17 +109,17 @@ pub fn panic_text(payload: &(dyn std::any::Any + Send)) -> String {
 /// Runs `f` on the instance behind `c` if `call` is legal in its state: errors are logged and move
 /// the instance to the Error state, a discarded step to StepFailed, and a panic is caught, logged
 /// and poisons the instance (only fmi2Reset and fmi2FreeInstance are accepted afterwards).
-pub fn with_instance(
+pub fn with_instance<M: Model>(
     c: fmi2Component,
     call: Call,
-    f: impl FnOnce(&mut Instance) -> Result<fmi2Status, FmuError>,
+    f: impl FnOnce(&mut Instance<M>) -> Result<fmi2Status, FmuError>,
 ) -> fmi2Status {
     if c.is_null() {
         return fmi2Status_fmi2Error;
     }
     // SAFETY: a non-NULL component is one returned by fmi2Instantiate (Box::into_raw) and not yet
     // freed, and the master calls one instance's functions one at a time (FMI 2.0.4 §2.1.5).
-    let instance = unsafe { &mut *c.cast::<Instance>() };
+    let instance = unsafe { &mut *c.cast::<Instance<M>>() };
     let result = catch_unwind(AssertUnwindSafe(|| {
         if instance.poisoned && call != Call::Reset {
             return Err(FmuError::Invalid(format!(

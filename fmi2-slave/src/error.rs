@@ -3,7 +3,6 @@
 use std::fmt;
 
 use super::state::Call;
-use crate::error::ModelError;
 
 /// Why an FMI call failed.
 #[derive(Clone, Debug, PartialEq)]
@@ -14,8 +13,8 @@ pub enum FmuError {
     Null(&'static str),
     /// Any other invalid argument or request; the message says which and why.
     Invalid(String),
-    /// The model rejected the parameters or failed numerically.
-    Model(ModelError),
+    /// The model rejected the parameters or failed numerically; the message says why.
+    Model(String),
     /// The integrator could not complete the step (fmi2Discard); simulation stopped at `time`.
     Discard {
         /// Last successful time \[s\].
@@ -25,19 +24,13 @@ pub enum FmuError {
     },
 }
 
-impl From<ModelError> for FmuError {
-    fn from(e: ModelError) -> Self {
-        Self::Model(e)
-    }
-}
-
 impl fmt::Display for FmuError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Self::IllegalCall(call) => write!(f, "{}: Illegal call sequence.", call.name()),
             Self::Null(argument) => write!(f, "Argument {argument} must not be NULL."),
             Self::Invalid(message) => f.write_str(message),
-            Self::Model(e) => write!(f, "{e}"),
+            Self::Model(message) => f.write_str(message),
             Self::Discard { time, reason } => {
                 write!(f, "step discarded, last successful time {time} s: {reason}")
             }

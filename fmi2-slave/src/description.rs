@@ -1,0 +1,354 @@
+//! modelDescription.xml from a variable table: checked, rendered, and identified by a GUID that
+//! is a hash of the rendered text (FMI 2.0.4 §2.2), so a changed interface gets a new GUID.
+
+use std::fmt::Write as _;
+
+use crate::table::{
+    Causality, Enumeration, Kind, ValueReference, Variability, Variable, item_list,
+};
+
+const GUID_PLACEHOLDER: &str = "@GUID@";
+
+/// Everything modelDescription.xml says about one model.
+#[derive(Clone, Copy, Debug)]
+pub struct Description<V: 'static> {
+    /// modelName and modelIdentifier (the shared library's name).
+    pub model_identifier: &'static str,
+    /// Model description.
+    pub description: &'static str,
+    /// Author.
+    pub author: &'static str,
+    /// Model version.
+    pub version: &'static str,
+    /// Copyright notice.
+    pub copyright: &'static str,
+    /// License.
+    pub license: &'static str,
+    /// generationTool.
+    pub generation_tool: &'static str,
+    /// Highest order of fmi2SetRealInputDerivatives (0: canInterpolateInputs = false).
+    pub max_input_derivative_order: u32,
+    /// maxOutputDerivativeOrder.
+    pub max_output_derivative_order: u32,
+    /// Units: name and SI base-unit exponents (kg, m, s, A, rad), or None where
+    /// FMI 2's integer exponents cannot express the unit.
+    pub units: &'static [(&'static str, Option<[i32; 5]>)],
+    /// Switch types.
+    pub enumerations: &'static [Enumeration],
+    /// Log categories: name and description.
+    pub log_categories: &'static [(&'static str, &'static str)],
+    /// DefaultExperiment: start, stop, tolerance, step size.
+    pub default_experiment: (f64, f64, f64, f64),
+    /// The variables, in value-reference order.
+    pub variables: &'static [Variable<V>],
+    /// Direct feedthrough: each output with the inputs it depends on without a step (outputs
+    /// not listed depend on none).
+    pub feedthrough: &'static [(V, &'static [V])],
+}
+
+/// The rendered XML and its GUID.
+pub fn model_description<V: ValueReference>(
+    d: &Description<V>,
+) -> Result<(String, String), String> {
+    check(d)?;
+    let template = render(d);
+    let guid = guid(&template);
+    Ok((template.replace(GUID_PLACEHOLDER, &guid), guid))
+}
+
+fn structured(name: &str) -> bool {
+    name.split('.').all(|part| {
+        let mut chars = part.chars();
+        chars
+            .next()
+            .is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+            && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
+    })
+}
+
+/// Checks the table: dense value references, unique structured names, defined units, starts
+/// inside ranges, starts exactly for parameters and inputs, feedthrough from inputs to outputs.
+pub fn check<V: ValueReference>(d: &Description<V>) -> Result<(), String> {
+    let (variables, enumerations) = (d.variables, d.enumerations);
+    for (output, inputs) in d.feedthrough {
+        let causality = |vr: &V| variables[vr.index() as usize].causality;
+        if causality(output) != Causality::Output
+            || inputs.iter().any(|u| causality(u) != Causality::Input)
+        {
+            return Err(format!(
+                "d.feedthrough: {output:?} must be an output and {inputs:?} inputs"
+            ));
+        }
+    }
+    for (i, v) in variables.iter().enumerate() {
+        if v.vr.index() as usize != i {
+            return Err(format!(
+                "{} has value reference {} at position {i}",
+                v.name,
+                v.vr.index()
+            ));
+        }
+        if !structured(v.name) {
+            return Err(format!("{} is not a structured name", v.name));
+        }
+        if variables.iter().filter(|w| w.name == v.name).count() != 1 {
+            return Err(format!("{} is not unique", v.name));
+        }
+        match v.kind {
+            Kind::Real {
+                start,
+                min,
+                max,
+                unit,
+            } => {
+                if !d.units.iter().any(|(u, _)| *u == unit) {
+                    return Err(format!("{}: unit {unit} is not defined", v.name));
+                }
+                if let Some(s) = start {
+                    if !(min <= s && s <= max) {
+                        return Err(format!("{}: start {s} outside [{min}, {max}]", v.name));
+                    }
+                }
+            }
+            Kind::Integer {
+                start: Some(s),
+                min,
+                max,
+            } if !(min <= s && s <= max) => {
+                return Err(format!("{}: start {s} outside [{min}, {max}]", v.name));
+            }
+            Kind::Enumeration { start, type_index } => {
+                let n = enumerations[type_index].items.len() as i32;
+                if !(1..=n).contains(&start) {
+                    return Err(format!("{}: start {start} outside [1, {n}]", v.name));
+                }
+            }
+            _ => {}
+        }
+        let has_start = match v.kind {
+            Kind::Real { start, .. } => start.is_some(),
+            Kind::Integer { start, .. } => start.is_some(),
+            Kind::Boolean => false,
+            Kind::Enumeration { .. } => true,
+        };
+        let needs_start = matches!(v.causality, Causality::Parameter | Causality::Input);
+        if has_start != needs_start {
+            return Err(format!(
+                "{}: start value {} for {:?}",
+                v.name,
+                if has_start { "given" } else { "missing" },
+                v.causality
+            ));
+        }
+    }
+    Ok(())
+}
+
+fn real(x: f64) -> String {
+    format!("{x:?}")
+}
+
+fn escape(s: &str) -> String {
+    s.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
+}
+
+fn render<V: ValueReference>(d: &Description<V>) -> String {
+    let mut x = String::new();
+    let _ = writeln!(x, r#"<?xml version="1.0" encoding="UTF-8"?>"#);
+    let _ = writeln!(
+        x,
+        r#"<fmiModelDescription fmiVersion="2.0" modelName="{}" guid="{GUID_PLACEHOLDER}"
+  description="{}"
+  author="{}" version="{}" copyright="{}" license="{}"
+  generationTool="{}" variableNamingConvention="structured" numberOfEventIndicators="0">"#,
+        d.model_identifier,
+        escape(d.description),
+        escape(d.author),
+        d.version,
+        escape(d.copyright),
+        escape(d.license),
+        escape(d.generation_tool),
+    );
+    let _ = writeln!(
+        x,
+        r#"  <CoSimulation modelIdentifier="{}" needsExecutionTool="false" canHandleVariableCommunicationStepSize="true" canInterpolateInputs="{}" maxOutputDerivativeOrder="{}" canRunAsynchronuously="false" canBeInstantiatedOnlyOncePerProcess="false" canNotUseMemoryManagementFunctions="true" canGetAndSetFMUstate="true" canSerializeFMUstate="true" providesDirectionalDerivative="false"/>"#,
+        d.model_identifier,
+        d.max_input_derivative_order > 0,
+        d.max_output_derivative_order
+    );
+    x.push_str("  <UnitDefinitions>\n");
+    for (name, base) in d.units {
+        match base {
+            Some(e) => {
+                let attrs: String = ["kg", "m", "s", "A", "rad"]
+                    .iter()
+                    .zip(e)
+                    .filter(|(_, v)| **v != 0)
+                    .map(|(k, v)| format!(r#" {k}="{v}""#))
+                    .collect();
+                let _ = writeln!(x, r#"    <Unit name="{name}"><BaseUnit{attrs}/></Unit>"#);
+            }
+            None => {
+                let _ = writeln!(x, r#"    <Unit name="{name}"/>"#);
+            }
+        }
+    }
+    x.push_str("  </UnitDefinitions>\n  <TypeDefinitions>\n");
+    // Switches are Integer types, not FMI Enumerations, so that masters without Enumeration
+    // support (libcosim drops such variables) can set them; the items are named in the
+    // descriptions of the type (with each item's meaning) and of the variable.
+    for e in d.enumerations {
+        let items: Vec<String> = e
+            .items
+            .iter()
+            .enumerate()
+            .map(|(i, (item, description))| format!("{} = {item}: {description}", i + 1))
+            .collect();
+        let _ = writeln!(
+            x,
+            r#"    <SimpleType name="{}" description="{}">
+      <Integer min="1" max="{}"/>
+    </SimpleType>"#,
+            e.name,
+            escape(&items.join("; ")),
+            e.items.len()
+        );
+    }
+    x.push_str("  </TypeDefinitions>\n  <LogCategories>\n");
+    for (name, description) in d.log_categories {
+        let _ = writeln!(
+            x,
+            r#"    <Category name="{name}" description="{description}"/>"#
+        );
+    }
+    let (start, stop, tolerance, step) = d.default_experiment;
+    let _ = writeln!(
+        x,
+        r#"  </LogCategories>
+  <DefaultExperiment startTime="{}" stopTime="{}" tolerance="{}" stepSize="{}"/>
+  <ModelVariables>"#,
+        real(start),
+        real(stop),
+        real(tolerance),
+        real(step)
+    );
+    for (i, v) in d.variables.iter().enumerate() {
+        let causality = match v.causality {
+            Causality::Parameter => "parameter",
+            Causality::CalculatedParameter => "calculatedParameter",
+            Causality::Input => "input",
+            Causality::Output => "output",
+        };
+        let variability = match v.variability {
+            Variability::Fixed => "fixed",
+            Variability::Discrete => "discrete",
+            Variability::Continuous => "continuous",
+        };
+        let initial = match v.causality {
+            Causality::Parameter => r#" initial="exact""#,
+            Causality::CalculatedParameter | Causality::Output => r#" initial="calculated""#,
+            _ => "",
+        };
+        let description = match v.kind {
+            Kind::Enumeration { type_index, .. } => format!(
+                "{} ({})",
+                v.description,
+                item_list(&d.enumerations[type_index])
+            ),
+            _ => v.description.to_string(),
+        };
+        let _ = writeln!(
+            x,
+            r#"    <!-- {} --><ScalarVariable name="{}" valueReference="{}" description="{}" causality="{causality}" variability="{variability}"{initial}>"#,
+            i + 1,
+            v.name,
+            v.vr.index(),
+            escape(&description)
+        );
+        let element = match v.kind {
+            Kind::Real {
+                start,
+                min,
+                max,
+                unit,
+            } => {
+                let mut a = format!(r#"<Real unit="{unit}""#);
+                if min.is_finite() {
+                    let _ = write!(a, r#" min="{}""#, real(min));
+                }
+                if max.is_finite() {
+                    let _ = write!(a, r#" max="{}""#, real(max));
+                }
+                if let Some(s) = start {
+                    let _ = write!(a, r#" start="{}""#, real(s));
+                }
+                a + "/>"
+            }
+            Kind::Integer { start, min, max } => match start {
+                Some(s) => format!(r#"<Integer min="{min}" max="{max}" start="{s}"/>"#),
+                None => "<Integer/>".to_string(),
+            },
+            Kind::Boolean => "<Boolean/>".to_string(),
+            Kind::Enumeration { start, type_index } => format!(
+                r#"<Integer declaredType="{}" start="{start}"/>"#,
+                d.enumerations[type_index].name
+            ),
+        };
+        let _ = writeln!(x, "      {element}\n    </ScalarVariable>");
+    }
+    x.push_str("  </ModelVariables>\n  <ModelStructure>\n    <Outputs>\n");
+    let index = |f: &dyn Fn(&Variable<V>) -> bool| -> Vec<usize> {
+        d.variables
+            .iter()
+            .enumerate()
+            .filter(|(_, v)| f(v))
+            .map(|(i, _)| i + 1)
+            .collect()
+    };
+    for i in index(&|v| v.causality == Causality::Output) {
+        let inputs = d
+            .feedthrough
+            .iter()
+            .find(|(output, _)| output.index() as usize + 1 == i)
+            .map_or(&[][..], |(_, inputs)| inputs);
+        let dependencies: Vec<String> =
+            inputs.iter().map(|u| (u.index() + 1).to_string()).collect();
+        let _ = writeln!(
+            x,
+            r#"      <Unknown index="{i}" dependencies="{}"/>"#,
+            dependencies.join(" ")
+        );
+    }
+    x.push_str("    </Outputs>\n    <InitialUnknowns>\n");
+    for i in index(&|v| {
+        matches!(
+            v.causality,
+            Causality::Output | Causality::CalculatedParameter
+        )
+    }) {
+        let _ = writeln!(x, r#"      <Unknown index="{i}"/>"#);
+    }
+    x.push_str("    </InitialUnknowns>\n  </ModelStructure>\n</fmiModelDescription>\n");
+    x
+}
+
+/// FNV-1a, 128 bits, written as a braced GUID.
+fn guid(text: &str) -> String {
+    let mut h: u128 = 0x6c62_272e_07bb_0142_62b8_2175_6295_c58d;
+    for b in text.bytes() {
+        h ^= u128::from(b);
+        h = h.wrapping_mul(0x0000_0000_0100_0000_0000_0000_0000_013b);
+    }
+    let s = format!("{h:032x}");
+    format!(
+        "{{{}-{}-{}-{}-{}}}",
+        &s[0..8],
+        &s[8..12],
+        &s[12..16],
+        &s[16..20],
+        &s[20..32]
+    )
+}

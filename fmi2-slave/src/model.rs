@@ -1,0 +1,198 @@
+//! [`Model`]: what a model supplies; [`Instance`]: one FMU instance of it — the model, the
+//! master's logger and the state machine — and the framing of its serialized states.
+
+use crate::error::FmuError;
+use crate::logger::Logger;
+use crate::state::State;
+
+/// A co-simulation model behind the FMI functions. Value references arrive unchecked: the model
+/// looks them up in its table and answers an unknown or mistyped one with [`FmuError::Invalid`].
+/// Every method that may need to log gets the instance's logger.
+pub trait Model: Sized + 'static {
+    /// The GUID of the model's modelDescription.xml.
+    const GUID: &'static str;
+    /// Log categories (name, description), as in modelDescription.xml.
+    const LOG_CATEGORIES: &'static [(&'static str, &'static str)];
+    /// Four bytes that open every serialized state of this model.
+    const STATE_MAGIC: [u8; 4];
+    /// Version of the state format; a state of another version is rejected.
+    const STATE_VERSION: u32;
+
+    /// A model with every start value (fmi2Instantiate, fmi2Reset).
+    fn new() -> Self;
+
+    /// fmi2SetupExperiment.
+    fn setup_experiment(
+        &mut self,
+        log: &Logger,
+        tolerance: Option<f64>,
+        start: f64,
+        stop: Option<f64>,
+    ) -> Result<(), FmuError>;
+
+    /// fmi2ExitInitializationMode: every parameter check happens here at the latest.
+    fn exit_initialization(&mut self, log: &Logger) -> Result<(), FmuError>;
+
+    /// fmi2DoStep from `t` over `h`; [`FmuError::Discard`] if the step stopped early.
+    fn do_step(&mut self, log: &Logger, t: f64, h: f64) -> Result<(), FmuError>;
+
+    /// The time up to which the last step succeeded (fmi2LastSuccessfulTime).
+    fn last_successful_time(&self) -> f64;
+
+    /// fmi2GetReal.
+    fn get_real(&mut self, log: &Logger, vr: &[u32], value: &mut [f64]) -> Result<(), FmuError>;
+
+    /// fmi2SetReal in machine state `state`.
+    fn set_real(&mut self, state: State, vr: &[u32], value: &[f64]) -> Result<(), FmuError>;
+
+    /// fmi2GetInteger.
+    fn get_integer(&mut self, log: &Logger, vr: &[u32], value: &mut [i32]) -> Result<(), FmuError>;
+
+    /// fmi2SetInteger in machine state `state`.
+    fn set_integer(&mut self, state: State, vr: &[u32], value: &[i32]) -> Result<(), FmuError>;
+
+    /// fmi2GetBoolean.
+    fn get_boolean(&mut self, log: &Logger, vr: &[u32], value: &mut [i32]) -> Result<(), FmuError>;
+
+    /// fmi2SetBoolean: by default no Boolean variable is settable.
+    fn set_boolean(&mut self, _state: State, vr: &[u32], _value: &[i32]) -> Result<(), FmuError> {
+        not_settable(vr, "Boolean")
+    }
+
+    /// fmi2SetRealInputDerivatives; by default inputs cannot be interpolated.
+    fn set_real_input_derivatives(
+        &mut self,
+        _vr: &[u32],
+        _order: &[i32],
+        _value: &[f64],
+    ) -> Result<(), FmuError> {
+        Err(FmuError::Invalid(
+            "input derivatives are not supported (canInterpolateInputs = false)".into(),
+        ))
+    }
+
+    /// fmi2GetRealOutputDerivatives; by default none are provided.
+    fn get_real_output_derivatives(
+        &mut self,
+        _log: &Logger,
+        _vr: &[u32],
+        _order: &[i32],
+        _value: &mut [f64],
+    ) -> Result<(), FmuError> {
+        Err(FmuError::Invalid(
+            "output derivatives are not provided (maxOutputDerivativeOrder = 0)".into(),
+        ))
+    }
+
+    /// Appends the model's complete state (pointer-free) to `out`.
+    fn save(&self, out: &mut Vec<u8>);
+
+    /// Parses and checks bytes written by [`Model::save`] and, if `apply`, resumes from them.
+    /// Nothing changes when they are rejected.
+    fn load(&mut self, log: &Logger, bytes: &[u8], apply: bool) -> Result<(), FmuError>;
+}
+
+/// An error for a non-empty set request on variables of a type the model has none settable of.
+pub fn not_settable(vr: &[u32], kind: &str) -> Result<(), FmuError> {
+    match vr.first() {
+        Some(r) => Err(FmuError::Invalid(format!(
+            "value reference {r} is not a settable {kind} variable"
+        ))),
+        None => Ok(()),
+    }
+}
+
+/// One FMU instance.
+#[derive(Debug)]
+pub struct Instance<M> {
+    /// The master's logger.
+    pub logger: Logger,
+    /// State-machine state.
+    pub state: State,
+    /// Set after a caught panic: only Reset and FreeInstance are accepted.
+    pub poisoned: bool,
+    /// The model.
+    pub model: M,
+}
+
+/// The states in the order of their byte in a serialized state.
+const STATES: [State; 6] = [
+    State::Instantiated,
+    State::InitializationMode,
+    State::StepComplete,
+    State::StepFailed,
+    State::Terminated,
+    State::Error,
+];
+
+fn fnv64(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| {
+        (h ^ u64::from(b)).wrapping_mul(0x100_0000_01b3)
+    })
+}
+
+impl<M: Model> Instance<M> {
+    /// A fresh instance with the start values.
+    pub fn new(logger: Logger) -> Self {
+        Self {
+            logger,
+            state: State::Instantiated,
+            poisoned: false,
+            model: M::new(),
+        }
+    }
+
+    /// fmi2Reset: back to Instantiated with every start value.
+    pub fn reset(&mut self) {
+        self.state = State::Instantiated;
+        self.poisoned = false;
+        self.model = M::new();
+    }
+
+    /// The serialized state: magic, version, state machine, the model's bytes, and an FNV-1a 64
+    /// checksum of everything before it (a corrupted byte is rejected, never restored).
+    pub fn serialize(&self) -> Vec<u8> {
+        let mut out = Vec::with_capacity(1024);
+        out.extend_from_slice(&M::STATE_MAGIC);
+        out.extend_from_slice(&M::STATE_VERSION.to_le_bytes());
+        out.push(STATES.iter().position(|s| *s == self.state).unwrap_or(0) as u8);
+        self.model.save(&mut out);
+        let checksum = fnv64(&out);
+        out.extend_from_slice(&checksum.to_le_bytes());
+        out
+    }
+
+    /// Checks a serialized state and, if `apply`, resumes from it (state machine included).
+    pub fn deserialize(&mut self, bytes: &[u8], apply: bool) -> Result<(), FmuError> {
+        let bad = |what: String| FmuError::Invalid(format!("FMU state rejected: {what}"));
+        if bytes.len() < 4 + 4 + 1 + 8 {
+            return Err(bad(format!("{} bytes is too short", bytes.len())));
+        }
+        let (body, tail) = bytes.split_at(bytes.len() - 8);
+        let mut sum = [0; 8];
+        sum.copy_from_slice(tail);
+        if fnv64(body) != u64::from_le_bytes(sum) {
+            return Err(bad("checksum mismatch (corrupted bytes)".into()));
+        }
+        if body[..4] != M::STATE_MAGIC {
+            return Err(bad("wrong magic (not a state of this FMU)".into()));
+        }
+        let mut version = [0; 4];
+        version.copy_from_slice(&body[4..8]);
+        let version = u32::from_le_bytes(version);
+        if version != M::STATE_VERSION {
+            return Err(bad(format!(
+                "format version {version}, expected {}",
+                M::STATE_VERSION
+            )));
+        }
+        let state = *STATES
+            .get(usize::from(body[8]))
+            .ok_or_else(|| bad("invalid state".into()))?;
+        self.model.load(&self.logger, &body[9..], apply)?;
+        if apply {
+            self.state = state;
+        }
+        Ok(())
+    }
+}
