@@ -102,3 +102,147 @@ pub struct Enumeration {
     /// Items.
     pub items: &'static [(&'static str, &'static str)],
 }
+
+impl<V: Copy> Variable<V> {
+    /// A fixed Real parameter.
+    pub const fn parameter(
+        vr: V,
+        name: &'static str,
+        start: f64,
+        min: f64,
+        max: f64,
+        unit: &'static str,
+        description: &'static str,
+    ) -> Self {
+        Self {
+            vr,
+            name,
+            causality: Causality::Parameter,
+            variability: Variability::Fixed,
+            kind: Kind::Real {
+                start: Some(start),
+                min,
+                max,
+                unit,
+            },
+            description,
+        }
+    }
+
+    /// A continuous Real output.
+    pub const fn output(
+        vr: V,
+        name: &'static str,
+        unit: &'static str,
+        description: &'static str,
+    ) -> Self {
+        Self {
+            vr,
+            name,
+            causality: Causality::Output,
+            variability: Variability::Continuous,
+            kind: Kind::Real {
+                start: None,
+                min: f64::NEG_INFINITY,
+                max: f64::INFINITY,
+                unit,
+            },
+            description,
+        }
+    }
+
+    /// A peak-hold output: a Real that changes only at communication points.
+    pub const fn peak(
+        vr: V,
+        name: &'static str,
+        unit: &'static str,
+        description: &'static str,
+    ) -> Self {
+        Self {
+            variability: Variability::Discrete,
+            ..Self::output(vr, name, unit, description)
+        }
+    }
+
+    /// A counter output (Integer, discrete, non-negative).
+    pub const fn count(vr: V, name: &'static str, description: &'static str) -> Self {
+        Self {
+            vr,
+            name,
+            causality: Causality::Output,
+            variability: Variability::Discrete,
+            kind: Kind::Integer {
+                start: None,
+                min: 0,
+                max: i32::MAX,
+            },
+            description,
+        }
+    }
+
+    /// A continuous Real input.
+    pub const fn input(
+        vr: V,
+        name: &'static str,
+        start: f64,
+        min: f64,
+        max: f64,
+        unit: &'static str,
+        description: &'static str,
+    ) -> Self {
+        Self {
+            vr,
+            name,
+            causality: Causality::Input,
+            variability: Variability::Continuous,
+            kind: Kind::Real {
+                start: Some(start),
+                min,
+                max,
+                unit,
+            },
+            description,
+        }
+    }
+
+    /// A switch parameter (an item of the table's enumeration `type_index`).
+    pub const fn enumeration(
+        vr: V,
+        name: &'static str,
+        start: i32,
+        type_index: usize,
+        description: &'static str,
+    ) -> Self {
+        Self {
+            vr,
+            name,
+            causality: Causality::Parameter,
+            variability: Variability::Fixed,
+            kind: Kind::Enumeration { start, type_index },
+            description,
+        }
+    }
+
+    /// A fixed Integer parameter.
+    pub const fn integer(
+        vr: V,
+        name: &'static str,
+        start: i32,
+        min: i32,
+        max: i32,
+        description: &'static str,
+    ) -> Self {
+        Self {
+            vr,
+            name,
+            causality: Causality::Parameter,
+            variability: Variability::Fixed,
+            kind: Kind::Integer {
+                start: Some(start),
+                min,
+                max,
+            },
+            description,
+        }
+    }
+}

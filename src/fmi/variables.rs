@@ -265,143 +265,6 @@ pub enum Vr {
     SolverSpectralRadius,
 }
 
-const fn parameter(
-    vr: Vr,
-    name: &'static str,
-    start: f64,
-    min: f64,
-    max: f64,
-    unit: &'static str,
-    description: &'static str,
-) -> Variable {
-    Variable {
-        vr,
-        name,
-        causality: Causality::Parameter,
-        variability: Variability::Fixed,
-        kind: Kind::Real {
-            start: Some(start),
-            min,
-            max,
-            unit,
-        },
-        description,
-    }
-}
-
-const fn output(
-    vr: Vr,
-    name: &'static str,
-    unit: &'static str,
-    description: &'static str,
-) -> Variable {
-    Variable {
-        vr,
-        name,
-        causality: Causality::Output,
-        variability: Variability::Continuous,
-        kind: Kind::Real {
-            start: None,
-            min: f64::NEG_INFINITY,
-            max: f64::INFINITY,
-            unit,
-        },
-        description,
-    }
-}
-
-/// A peak-hold output: a Real that changes only at communication points.
-const fn peak(
-    vr: Vr,
-    name: &'static str,
-    unit: &'static str,
-    description: &'static str,
-) -> Variable {
-    Variable {
-        variability: Variability::Discrete,
-        ..output(vr, name, unit, description)
-    }
-}
-
-/// A counter output (Integer, discrete, non-negative).
-const fn count(vr: Vr, name: &'static str, description: &'static str) -> Variable {
-    Variable {
-        vr,
-        name,
-        causality: Causality::Output,
-        variability: Variability::Discrete,
-        kind: Kind::Integer {
-            start: None,
-            min: 0,
-            max: i32::MAX,
-        },
-        description,
-    }
-}
-
-const fn input(
-    vr: Vr,
-    name: &'static str,
-    start: f64,
-    min: f64,
-    max: f64,
-    unit: &'static str,
-    description: &'static str,
-) -> Variable {
-    Variable {
-        vr,
-        name,
-        causality: Causality::Input,
-        variability: Variability::Continuous,
-        kind: Kind::Real {
-            start: Some(start),
-            min,
-            max,
-            unit,
-        },
-        description,
-    }
-}
-
-const fn enumeration(
-    vr: Vr,
-    name: &'static str,
-    start: i32,
-    type_index: usize,
-    description: &'static str,
-) -> Variable {
-    Variable {
-        vr,
-        name,
-        causality: Causality::Parameter,
-        variability: Variability::Fixed,
-        kind: Kind::Enumeration { start, type_index },
-        description,
-    }
-}
-
-const fn integer(
-    vr: Vr,
-    name: &'static str,
-    start: i32,
-    min: i32,
-    max: i32,
-    description: &'static str,
-) -> Variable {
-    Variable {
-        vr,
-        name,
-        causality: Causality::Parameter,
-        variability: Variability::Fixed,
-        kind: Kind::Integer {
-            start: Some(start),
-            min,
-            max,
-        },
-        description,
-    }
-}
-
 /// 5000 rpm in rad/s (benchmark B); the same expression as `params::BENCHMARK_SPEED`.
 const SPEED: f64 = 5000.0 * core::f64::consts::TAU / 60.0;
 
@@ -411,14 +274,14 @@ const SPEED: f64 = 5000.0 * core::f64::consts::TAU / 60.0;
 /// the FMU Compliance Checker and libcosim) reports an independent variable without `start` as a
 /// parse error although the standard forbids `start` there.
 pub const VARIABLES: &[Variable] = &[
-    enumeration(
+    Variable::enumeration(
         Vr::RodFormulation,
         "rod.formulation",
         3,
         0,
         "Connecting-rod model",
     ),
-    integer(
+    Variable::integer(
         Vr::RodNElements,
         "rod.nElements",
         8,
@@ -426,7 +289,7 @@ pub const VARIABLES: &[Variable] = &[
         64,
         "Number of ANCF elements (ancf, craigBampton)",
     ),
-    integer(
+    Variable::integer(
         Vr::RodNModes,
         "rod.nModes",
         4,
@@ -434,7 +297,7 @@ pub const VARIABLES: &[Variable] = &[
         128,
         "Craig-Bampton fixed-interface mode shapes, each in both directions; at most 2 rod.nElements (rod.boundary = pins) or 2 rod.nElements - 2 (positionsAndSlopes)",
     ),
-    parameter(
+    Variable::parameter(
         Vr::RodLength,
         "rod.length",
         0.12,
@@ -443,7 +306,7 @@ pub const VARIABLES: &[Variable] = &[
         "m",
         "Rod length between the pins",
     ),
-    parameter(
+    Variable::parameter(
         Vr::RodYoungsModulus,
         "rod.youngsModulus",
         207e9,
@@ -452,7 +315,7 @@ pub const VARIABLES: &[Variable] = &[
         "Pa",
         "Rod Young's modulus",
     ),
-    parameter(
+    Variable::parameter(
         Vr::RodDensity,
         "rod.density",
         7800.0,
@@ -461,7 +324,7 @@ pub const VARIABLES: &[Variable] = &[
         "kg/m3",
         "Rod density",
     ),
-    parameter(
+    Variable::parameter(
         Vr::RodArea,
         "rod.area",
         2.243_589_743_589_743_6e-4,
@@ -470,7 +333,7 @@ pub const VARIABLES: &[Variable] = &[
         "m2",
         "Rod cross-section area",
     ),
-    parameter(
+    Variable::parameter(
         Vr::RodSecondMomentOfArea,
         "rod.secondMomentOfArea",
         4.195e-9,
@@ -479,7 +342,7 @@ pub const VARIABLES: &[Variable] = &[
         "m4",
         "Rod second moment of area; a flexible rod must be slender: rod.length / sqrt(I / rod.area) >= 10",
     ),
-    parameter(
+    Variable::parameter(
         Vr::RodStiffnessDamping,
         "rod.stiffnessDamping",
         0.0,
@@ -488,7 +351,7 @@ pub const VARIABLES: &[Variable] = &[
         "s",
         "Strain-rate (stiffness-proportional) damping coefficient; a flexible rod takes at most 2/omega1, its first pinned-pinned bending mode critically damped (1.31e-4 s for the default rod)",
     ),
-    parameter(
+    Variable::parameter(
         Vr::CrankLength,
         "crank.length",
         0.05,
@@ -497,7 +360,7 @@ pub const VARIABLES: &[Variable] = &[
         "m",
         "Crank length, pivot to pin",
     ),
-    parameter(
+    Variable::parameter(
         Vr::CrankMass,
         "crank.mass",
         0.3,
@@ -506,7 +369,7 @@ pub const VARIABLES: &[Variable] = &[
         "kg",
         "Crank mass (centre of mass at mid-length)",
     ),
-    parameter(
+    Variable::parameter(
         Vr::CrankInertia,
         "crank.inertia",
         1e-4,
@@ -515,7 +378,7 @@ pub const VARIABLES: &[Variable] = &[
         "kg.m2",
         "Crank moment of inertia about its centre of mass",
     ),
-    parameter(
+    Variable::parameter(
         Vr::CrankInitialAngle,
         "crank.initialAngle",
         0.0,
@@ -524,7 +387,7 @@ pub const VARIABLES: &[Variable] = &[
         "rad",
         "Initial crank angle",
     ),
-    parameter(
+    Variable::parameter(
         Vr::CrankInitialSpeed,
         "crank.initialSpeed",
         SPEED,
@@ -533,7 +396,7 @@ pub const VARIABLES: &[Variable] = &[
         "rad/s",
         "Initial crank speed (mechanism starts with ideal-joint velocities)",
     ),
-    parameter(
+    Variable::parameter(
         Vr::SliderMass,
         "slider.mass",
         0.14,
@@ -542,14 +405,14 @@ pub const VARIABLES: &[Variable] = &[
         "kg",
         "Slider mass",
     ),
-    enumeration(
+    Variable::enumeration(
         Vr::JointModel,
         "joint.model",
         2,
         1,
         "Rod-slider joint model",
     ),
-    parameter(
+    Variable::parameter(
         Vr::JointClearance,
         "joint.clearance",
         5e-4,
@@ -558,7 +421,7 @@ pub const VARIABLES: &[Variable] = &[
         "m",
         "Radial clearance (bearing radius - journal radius)",
     ),
-    parameter(
+    Variable::parameter(
         Vr::JointJournalRadius,
         "joint.journalRadius",
         9.5e-3,
@@ -567,7 +430,7 @@ pub const VARIABLES: &[Variable] = &[
         "m",
         "Journal (pin) radius",
     ),
-    parameter(
+    Variable::parameter(
         Vr::JointYoungsModulus,
         "joint.youngsModulus",
         207e9,
@@ -576,7 +439,7 @@ pub const VARIABLES: &[Variable] = &[
         "Pa",
         "Young's modulus of journal and bearing",
     ),
-    parameter(
+    Variable::parameter(
         Vr::JointPoissonRatio,
         "joint.poissonRatio",
         0.3,
@@ -585,7 +448,7 @@ pub const VARIABLES: &[Variable] = &[
         "1",
         "Poisson ratio of journal and bearing",
     ),
-    parameter(
+    Variable::parameter(
         Vr::JointRestitution,
         "joint.restitution",
         0.9,
@@ -594,7 +457,7 @@ pub const VARIABLES: &[Variable] = &[
         "1",
         "Coefficient of restitution of the dry contact (see joint.contactLaw)",
     ),
-    parameter(
+    Variable::parameter(
         Vr::JointFriction,
         "joint.friction",
         0.0,
@@ -603,7 +466,7 @@ pub const VARIABLES: &[Variable] = &[
         "1",
         "Coulomb friction coefficient",
     ),
-    parameter(
+    Variable::parameter(
         Vr::JointFrictionV0,
         "joint.frictionV0",
         1e-4,
@@ -612,7 +475,7 @@ pub const VARIABLES: &[Variable] = &[
         "m/s",
         "Slip speed below which friction vanishes",
     ),
-    parameter(
+    Variable::parameter(
         Vr::JointFrictionV1,
         "joint.frictionV1",
         1e-3,
@@ -621,7 +484,7 @@ pub const VARIABLES: &[Variable] = &[
         "m/s",
         "Slip speed above which friction is fully developed",
     ),
-    parameter(
+    Variable::parameter(
         Vr::JointViscosity,
         "joint.viscosity",
         0.4,
@@ -630,7 +493,7 @@ pub const VARIABLES: &[Variable] = &[
         "Pa.s",
         "Lubricant dynamic viscosity",
     ),
-    parameter(
+    Variable::parameter(
         Vr::JointBearingLength,
         "joint.bearingLength",
         0.04,
@@ -639,7 +502,7 @@ pub const VARIABLES: &[Variable] = &[
         "m",
         "Bearing length",
     ),
-    parameter(
+    Variable::parameter(
         Vr::JointSwitchEccentricity,
         "joint.switchEccentricity",
         0.95,
@@ -648,8 +511,8 @@ pub const VARIABLES: &[Variable] = &[
         "1",
         "Eccentricity ratio above which dry contact takes over",
     ),
-    enumeration(Vr::DriveMode, "drive.mode", 1, 2, "What drives the crank"),
-    parameter(
+    Variable::enumeration(Vr::DriveMode, "drive.mode", 1, 2, "What drives the crank"),
+    Variable::parameter(
         Vr::Gravity,
         "gravity",
         0.0,
@@ -658,7 +521,7 @@ pub const VARIABLES: &[Variable] = &[
         "m/s2",
         "Gravitational acceleration along -y",
     ),
-    parameter(
+    Variable::parameter(
         Vr::SolverRelativeTolerance,
         "solver.relativeTolerance",
         1e-2,
@@ -667,7 +530,7 @@ pub const VARIABLES: &[Variable] = &[
         "1",
         "Relative tolerance of the internal error-controlled integrator (at most 1e-4 with solver.method = explicit, 3e-2 with generalizedAlpha)",
     ),
-    parameter(
+    Variable::parameter(
         Vr::SolverMaxStepSize,
         "solver.maxStepSize",
         1e-4,
@@ -689,7 +552,7 @@ pub const VARIABLES: &[Variable] = &[
         },
         description: "Hertz contact stiffness 4/(3(s_i+s_j)) sqrt(Ri Rj/(Ri-Rj)), s = (1-nu^2)/E",
     },
-    input(
+    Variable::input(
         Vr::DriveSpeed,
         "drive.speed",
         SPEED,
@@ -698,7 +561,7 @@ pub const VARIABLES: &[Variable] = &[
         "rad/s",
         "Prescribed crank speed (drive.mode = speed)",
     ),
-    input(
+    Variable::input(
         Vr::DriveTorque,
         "drive.torque",
         0.0,
@@ -707,7 +570,7 @@ pub const VARIABLES: &[Variable] = &[
         "N.m",
         "Crank torque (drive.mode = torque)",
     ),
-    input(
+    Variable::input(
         Vr::SliderForce,
         "slider.force",
         0.0,
@@ -716,68 +579,68 @@ pub const VARIABLES: &[Variable] = &[
         "N",
         "External force on the slider along the guide",
     ),
-    output(Vr::CrankAngle, "crank.angle", "rad", "Crank angle"),
-    output(
+    Variable::output(Vr::CrankAngle, "crank.angle", "rad", "Crank angle"),
+    Variable::output(
         Vr::CrankSpeed,
         "crank.speed",
         "rad/s",
         "Crank angular speed",
     ),
-    output(
+    Variable::output(
         Vr::CrankTorque,
         "crank.torque",
         "N.m",
         "Torque the drive applies to the crank (CCW positive)",
     ),
-    output(
+    Variable::output(
         Vr::SliderPosition,
         "slider.position",
         "m",
         "Slider position along the guide",
     ),
-    output(
+    Variable::output(
         Vr::SliderVelocity,
         "slider.velocity",
         "m/s",
         "Slider velocity",
     ),
-    output(
+    Variable::output(
         Vr::SliderAcceleration,
         "slider.acceleration",
         "m/s2",
         "Slider acceleration",
     ),
-    output(
+    Variable::output(
         Vr::JointForce,
         "joint.force",
         "N",
         "Magnitude of the joint force on the journal",
     ),
-    output(
+    Variable::output(
         Vr::JointForceX,
         "joint.forceX",
         "N",
         "Joint force on the journal, x",
     ),
-    output(
+    Variable::output(
         Vr::JointForceY,
         "joint.forceY",
         "N",
         "Joint force on the journal, y",
     ),
-    output(
+    Variable::output(
         Vr::JointEccentricityX,
         "joint.eccentricityX",
         "m",
         "Journal centre - bearing centre, x",
     ),
-    output(
+    Variable::output(
         Vr::JointEccentricityY,
         "joint.eccentricityY",
         "m",
         "Journal centre - bearing centre, y",
     ),
-    output(
+    Variable::output(
         Vr::JointPenetration,
         "joint.penetration",
         "m",
@@ -791,97 +654,97 @@ pub const VARIABLES: &[Variable] = &[
         kind: Kind::Boolean,
         description: "Journal and bearing in contact",
     },
-    output(
+    Variable::output(
         Vr::RodMidspanDeflection,
         "rod.midspanDeflection",
         "m",
         "Rod mid-span deflection from the chord, left positive",
     ),
-    output(
+    Variable::output(
         Vr::RodDeformationEnergy,
         "rod.deformationEnergy",
         "J",
         "Rod strain energy",
     ),
-    output(
+    Variable::output(
         Vr::EnergyKinetic,
         "energy.kinetic",
         "J",
         "Kinetic energy of crank, rod and slider",
     ),
-    output(
+    Variable::output(
         Vr::EnergyDriveWork,
         "energy.driveWork",
         "J",
         "Work done by the drive",
     ),
-    output(
+    Variable::output(
         Vr::EnergyDissipated,
         "energy.dissipated",
         "J",
         "Energy dissipated in the joint",
     ),
-    count(
+    Variable::count(
         Vr::SolverSteps,
         "solver.steps",
         "Accepted internal integrator steps",
     ),
-    enumeration(
+    Variable::enumeration(
         Vr::RodBoundary,
         "rod.boundary",
         1,
         3,
         "Craig-Bampton interface: the rod coordinates kept physical",
     ),
-    enumeration(
+    Variable::enumeration(
         Vr::SolverMethod,
         "solver.method",
         1,
         5,
         "Internal time-integration method",
     ),
-    count(
+    Variable::count(
         Vr::SolverEvaluations,
         "solver.evaluations",
         "Right-hand-side evaluations of the internal integrator (with those of Jacobians)",
     ),
-    enumeration(
+    Variable::enumeration(
         Vr::RodInitialState,
         "rod.initialState",
         1,
         4,
         "How the rod starts (the crank, slider and pins start with the ideal mechanism's motion)",
     ),
-    peak(
+    Variable::peak(
         Vr::JointForcePeak,
         "joint.forcePeak",
         "N",
         "Largest joint.force over the last communication interval (every internal step; plot this for peaks)",
     ),
-    peak(
+    Variable::peak(
         Vr::SliderAccelerationPeak,
         "slider.accelerationPeak",
         "m/s2",
         "Largest |slider.acceleration| over the last communication interval (every internal step)",
     ),
-    count(
+    Variable::count(
         Vr::JointContactOnsets,
         "joint.contactOnsets",
         "Contact onsets (journal starts touching the bearing) in the last communication interval",
     ),
-    count(
+    Variable::count(
         Vr::JointContactOnsetsTotal,
         "joint.contactOnsetsTotal",
         "Contact onsets since the start",
     ),
-    enumeration(
+    Variable::enumeration(
         Vr::JointContactLaw,
         "joint.contactLaw",
         1,
         6,
         "Hysteresis-damping law of the dry contact force (dry joint, and the lubricated joint near the wall)",
     ),
-    integer(
+    Variable::integer(
         Vr::SolverMaxStepsPerInterval,
         "solver.maxStepsPerInterval",
         50_000,
@@ -889,31 +752,31 @@ pub const VARIABLES: &[Variable] = &[
         i32::MAX,
         "Work limit: internal step attempts per communication interval; beyond it fmi2DoStep returns fmi2Discard naming the likely cause",
     ),
-    output(
+    Variable::output(
         Vr::EnergyContact,
         "energy.contact",
         "J",
         "Elastic energy stored in the joint contact, K penetration^2.5 / 2.5",
     ),
-    output(
+    Variable::output(
         Vr::EnergyGravity,
         "energy.gravity",
         "J",
         "Gravitational potential energy of crank, rod and slider (zero at y = 0)",
     ),
-    output(
+    Variable::output(
         Vr::EnergySliderWork,
         "energy.sliderWork",
         "J",
         "Work done by the input slider.force",
     ),
-    output(
+    Variable::output(
         Vr::EnergyMaterialDamping,
         "energy.materialDamping",
         "J",
         "Energy dissipated in the rod by its material damping (rod.stiffnessDamping)",
     ),
-    parameter(
+    Variable::parameter(
         Vr::SolverSpectralRadius,
         "solver.spectralRadius",
         0.8,

@@ -3,8 +3,8 @@
 use std::ffi::CStr;
 
 use flexible_slider_crank::fmi::GUID;
-use fmi2_slave::{Call, State};
 use fmi_sys::fmi2::*;
+use fmi2_slave::{Call, State};
 
 use crate::harness::{
     Instance, callbacks, dangling, fmu, instantiate_raw, instantiate_with_logging, library_path,
