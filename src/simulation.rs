@@ -210,7 +210,7 @@ pub struct Snapshot {
     pub contact: ContactState,
     /// The inputs of the current step sequence.
     pub signal: InputSignal,
-    /// The inputs set for the next interval (`start` unused).
+    /// The inputs set for the next interval.
     pub next: InputSignal,
     /// Peak-hold outputs.
     pub peaks: PeakHold,
@@ -239,7 +239,7 @@ pub struct Simulation {
     f_end: Vec<f64>,
     scratch: Vec<f64>,
     y_sample: Vec<f64>,
-    /// The inputs for the next interval (`start` unused).
+    /// The inputs for the next interval (from `start`, the last communication point).
     next: InputSignal,
     peaks: PeakHold,
     monitor: Monitor,
@@ -335,7 +335,7 @@ impl Simulation {
 
     /// Sets the `order`-th time derivative (1 or 2) of an input at the current time. It holds for
     /// the next [`Simulation::advance_to`] only, over which the input is the polynomial of
-    /// [`InputSignal`]; afterwards the derivatives are zero again (held inputs) until set anew.
+    /// [`InputSignal`]; afterwards the input is held at the value the polynomial reached.
     pub fn set_input_derivative(
         &mut self,
         input: Input,
@@ -404,11 +404,8 @@ impl Simulation {
             )));
         }
         let t_start = self.time;
-        let next = InputSignal {
-            start: t_start,
-            ..self.next
-        };
-        self.next.derivatives = [Inputs::default(); 2];
+        self.next.start = t_start;
+        let next = self.next;
         let drive = self.parameters.drive_mode;
         let acts = |input| match input {
             Input::DriveSpeed => drive == DriveMode::Speed,
@@ -471,6 +468,7 @@ impl Simulation {
             }
         }
         self.time = t_end;
+        self.hold_inputs();
         if t_end == self.step_end {
             self.state.copy_from_slice(&self.y_end);
         } else {
@@ -495,10 +493,22 @@ impl Simulation {
         Ok(())
     }
 
+    /// After an interval the inputs are held at the values their polynomials reached (the
+    /// derivatives of [`Simulation::set_input_derivative`] hold for one interval).
+    fn hold_inputs(&mut self) {
+        if self.next.derivatives != [Inputs::default(); 2] {
+            self.next = InputSignal {
+                start: self.time,
+                ..InputSignal::held(self.next.at(self.time).0)
+            };
+        }
+    }
+
     /// Ends a failed interval at the last accepted step (where the simulation stays usable) and
     /// passes the error on.
     fn stop_at_step_end(&mut self, error: ModelError) -> ModelError {
         self.time = self.step_end;
+        self.hold_inputs();
         self.state.copy_from_slice(&self.y_end);
         error
     }
@@ -703,7 +713,19 @@ impl Simulation {
     }
 
     fn outputs_here(&mut self) -> Result<Outputs, ModelError> {
-        self.mechanism.set_time(self.time);
+        // The inputs as set now (an output with direct feedthrough shows a value just set).
+        let current = *self.mechanism.input_signal();
+        let next = InputSignal {
+            start: self.time,
+            ..self.next
+        };
+        self.mechanism.set_input_signal(next, self.time);
+        let outputs = self.outputs_with_inputs();
+        self.mechanism.set_input_signal(current, self.time);
+        outputs
+    }
+
+    fn outputs_with_inputs(&mut self) -> Result<Outputs, ModelError> {
         let y = &self.state;
         let ev = *self.mechanism.evaluate(y, &mut self.scratch)?;
         let n = self.mechanism.n_coordinates();
@@ -825,7 +847,7 @@ mod tests {
 
     /// Input derivatives make the prescribed speed the polynomial ω + ω̇ (t − t₀) + ω̈ (t − t₀)²/2
     /// over one interval: the crank follows it (to the constraint stabilisation's accuracy), and
-    /// afterwards the input is held at its value again.
+    /// afterwards the input is held at the value the polynomial reached.
     #[test]
     fn input_derivatives_make_the_input_a_polynomial_for_one_interval() {
         let mut sim = Simulation::new(Parameters::default()).unwrap();
@@ -846,9 +868,15 @@ mod tests {
             "{crank_speed} vs {expected}"
         );
         assert_eq!(sim.next_inputs().derivatives, [Inputs::default(); 2]);
+        // (to the rounding of the communication points to the clock grid)
+        let reached = sim.next_inputs().value.drive_speed;
+        assert!((reached - expected).abs() < 1e-10 * expected, "{reached}");
         sim.advance_to(1e-4 + 2.0 * h).unwrap();
         let held = sim.state()[n];
-        assert!((held - speed).abs() < 1e-9 * speed, "{held} vs {speed}");
+        assert!(
+            (held - expected).abs() < 1e-9 * expected,
+            "{held} vs {expected}"
+        );
     }
 
     /// Samples of a concave parabola give its vertex; a maximum at either end of the samples, or

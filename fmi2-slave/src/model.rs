@@ -4,6 +4,7 @@
 use crate::error::FmuError;
 use crate::logger::Logger;
 use crate::state::State;
+use crate::table::{Causality, Kind, ValueReference, Variable};
 
 /// A co-simulation model behind the FMI functions. Value references arrive unchecked: the model
 /// looks them up in its table and answers an unknown or mistyped one with [`FmuError::Invalid`].
@@ -100,6 +101,65 @@ pub fn not_settable(vr: &[u32], kind: &str) -> Result<(), FmuError> {
         ))),
         None => Ok(()),
     }
+}
+
+/// The variable of value reference `vr` in `table`, if it exists and is of FMI type `base`
+/// ("Real", "Integer" — switches included — or "Boolean").
+pub fn lookup<V: ValueReference>(
+    table: &'static [Variable<V>],
+    vr: u32,
+    base: &str,
+) -> Result<&'static Variable<V>, FmuError> {
+    let v = table
+        .get(vr as usize)
+        .ok_or_else(|| FmuError::Invalid(format!("unknown value reference {vr}")))?;
+    let matches = matches!(
+        (v.kind, base),
+        (Kind::Real { .. }, "Real")
+            | (Kind::Integer { .. } | Kind::Enumeration { .. }, "Integer")
+            | (Kind::Boolean, "Boolean")
+    );
+    if matches {
+        Ok(v)
+    } else {
+        Err(FmuError::Invalid(format!(
+            "value reference {vr} ({}) is not of type {base}",
+            v.name
+        )))
+    }
+}
+
+/// Checks that `v` may be set in machine state `state`: parameters until initialization ends,
+/// inputs always, nothing else.
+pub fn check_settable<V>(state: State, v: &Variable<V>) -> Result<(), FmuError> {
+    let ok = match v.causality {
+        Causality::Parameter => {
+            matches!(state, State::Instantiated | State::InitializationMode)
+        }
+        Causality::Input => true,
+        _ => false,
+    };
+    if ok {
+        Ok(())
+    } else {
+        Err(FmuError::Invalid(format!(
+            "variable {} ({:?}) cannot be set in state {state:?}",
+            v.name, v.causality
+        )))
+    }
+}
+
+/// Checks a Real value against the declared range of `v` (finite, within [min, max]).
+pub fn check_real<V>(v: &Variable<V>, value: f64) -> Result<(), FmuError> {
+    if let Kind::Real { min, max, unit, .. } = v.kind {
+        if !(value.is_finite() && min <= value && value <= max) {
+            return Err(FmuError::Invalid(format!(
+                "{} = {value:e} is outside the allowed range [{min:e}, {max:e}] {unit}",
+                v.name
+            )));
+        }
+    }
+    Ok(())
 }
 
 /// One FMU instance.

@@ -320,8 +320,9 @@ impl Model for SliderCrankFmu {
         sim.set_time(t);
         let result = sim.advance_to(end);
         let (time, warnings) = (sim.time(), sim.take_warnings());
-        // Input derivatives hold for one communication step (as in the simulation).
-        self.inputs.derivatives = [Inputs::default(); 2];
+        // Input derivatives hold for one communication step: the inputs are then held at the
+        // values their polynomials reached.
+        self.inputs = *sim.next_inputs();
         for warning in &warnings {
             log.warning(warning);
         }

@@ -1,0 +1,16 @@
+//! Renders `modelDescription.xml` and the GUID from the variable table, `src/variables.rs`.
+
+#[allow(dead_code, unused_imports)] // build.rs uses only the data, not every helper of the table.
+#[path = "src/variables.rs"]
+mod variables;
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    println!("cargo::rerun-if-changed=src/variables.rs");
+    println!("cargo::rerun-if-changed=build.rs");
+    let (xml, guid) = fmi2_slave::description::model_description(&variables::DESCRIPTION)
+        .map_err(|e| format!("variable table: {e}"))?;
+    let out = std::path::PathBuf::from(std::env::var("OUT_DIR")?);
+    std::fs::write(out.join("modelDescription.xml"), xml)?;
+    std::fs::write(out.join("guid.txt"), guid)?;
+    Ok(())
+}

@@ -1,0 +1,380 @@
+//! [`DcMotorFmu`]: the motor as an FMI 2.0 [`Model`] of `fmi2-slave` — parameters, inputs as
+//! polynomials over the communication step, the state, the clock and the state codec.
+
+use fmi2_slave::model::{check_real, check_settable, lookup};
+use fmi2_slave::{FmuError, Logger, Model, State};
+
+use crate::motor::{MotorInputs, MotorParameters, MotorState};
+use crate::variables::{Causality, Kind, LOG_CATEGORIES, VARIABLES, Vr};
+
+/// Tolerance on the communication point: |t − t_expected| ≤ 1e-9 (1 + |t|).
+const TIME_TOLERANCE: f64 = 1e-9;
+/// Number of parameters (value references 0 … N − 1).
+const N_PARAMETERS: usize = Vr::ShaftSpeed as usize;
+/// Most internal steps per communication step.
+const MAX_STEPS: f64 = 1e8;
+
+/// The inputs (load speed, set-point) over a communication step: u(t) = u + u̇ τ + ü τ²/2 with
+/// τ = t − start.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+struct Signal {
+    start: f64,
+    value: [f64; 2],
+    derivatives: [[f64; 2]; 2],
+}
+
+impl Signal {
+    fn at(&self, t: f64) -> [f64; 2] {
+        let dt = t - self.start;
+        let [d1, d2] = self.derivatives;
+        [0, 1].map(|k| self.value[k] + dt * (d1[k] + 0.5 * dt * d2[k]))
+    }
+
+    fn rate(&self, t: f64) -> [f64; 2] {
+        let dt = t - self.start;
+        let [d1, d2] = self.derivatives;
+        [0, 1].map(|k| d1[k] + dt * d2[k])
+    }
+
+    fn inputs(&self, t: f64) -> MotorInputs {
+        let [load_speed, set_point] = self.at(t);
+        MotorInputs {
+            load_speed,
+            set_point,
+        }
+    }
+}
+
+/// The DC motor behind the FMI functions.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DcMotorFmu {
+    parameters: [f64; N_PARAMETERS],
+    inputs: Signal,
+    /// [i, ω, φ, z], once initialised.
+    state: Option<MotorState>,
+    time: f64,
+    stop_time: Option<f64>,
+    last_successful_time: f64,
+}
+
+fn start(vr: usize) -> f64 {
+    match VARIABLES[vr].kind {
+        Kind::Real { start: Some(s), .. } => s,
+        _ => 0.0,
+    }
+}
+
+impl DcMotorFmu {
+    fn motor(&self) -> MotorParameters {
+        let p = |vr: Vr| self.parameters[vr as usize];
+        MotorParameters {
+            resistance: p(Vr::MotorResistance),
+            inductance: p(Vr::MotorInductance),
+            torque_constant: p(Vr::MotorTorqueConstant),
+            inertia: p(Vr::MotorInertia),
+            friction: p(Vr::MotorFriction),
+            shaft_stiffness: p(Vr::ShaftStiffness),
+            shaft_damping: p(Vr::ShaftDamping),
+            gain: p(Vr::ControllerGain),
+            integral_gain: p(Vr::ControllerIntegralGain),
+            tracking_time: p(Vr::ControllerTrackingTime),
+            voltage_limit: p(Vr::SupplyVoltageLimit),
+        }
+    }
+
+    /// The state, initialised in steady state at the set-point if not yet.
+    fn state(&mut self) -> MotorState {
+        match self.state {
+            Some(x) => x,
+            None => {
+                let set_point = self.inputs.value[1];
+                let torque = self.parameters[Vr::ShaftInitialTorque as usize];
+                let x = self.motor().steady_state(set_point, torque);
+                self.state = Some(x);
+                x
+            }
+        }
+    }
+
+    fn input_index(vr: Vr) -> Option<usize> {
+        match vr {
+            Vr::ShaftSpeed => Some(0),
+            Vr::SpeedSetPoint => Some(1),
+            _ => None,
+        }
+    }
+}
+
+impl Model for DcMotorFmu {
+    const GUID: &'static str = crate::GUID;
+    const LOG_CATEGORIES: &'static [(&'static str, &'static str)] = LOG_CATEGORIES;
+    const STATE_MAGIC: [u8; 4] = *b"DCMS";
+    const STATE_VERSION: u32 = 1;
+
+    fn new() -> Self {
+        Self {
+            parameters: std::array::from_fn(start),
+            inputs: Signal {
+                value: [
+                    start(Vr::ShaftSpeed as usize),
+                    start(Vr::SpeedSetPoint as usize),
+                ],
+                ..Signal::default()
+            },
+            state: None,
+            time: 0.0,
+            stop_time: None,
+            last_successful_time: 0.0,
+        }
+    }
+
+    fn setup_experiment(
+        &mut self,
+        _log: &Logger,
+        _tolerance: Option<f64>,
+        start: f64,
+        stop: Option<f64>,
+    ) -> Result<(), FmuError> {
+        if !start.is_finite() || stop.is_some_and(|s| !(s.is_finite() && s >= start)) {
+            return Err(FmuError::Invalid(format!(
+                "fmi2SetupExperiment: startTime = {start} and stopTime = {stop:?} must be finite, \
+                 stopTime >= startTime"
+            )));
+        }
+        self.time = start;
+        self.last_successful_time = start;
+        self.inputs.start = start;
+        self.stop_time = stop;
+        Ok(())
+    }
+
+    fn exit_initialization(&mut self, log: &Logger) -> Result<(), FmuError> {
+        let x = self.state();
+        log.event(&format!(
+            "motor initialised in steady state: current {} A, speed {} rad/s",
+            x[0], x[1]
+        ));
+        Ok(())
+    }
+
+    fn do_step(&mut self, _log: &Logger, t: f64, h: f64) -> Result<(), FmuError> {
+        if (t - self.time).abs() > TIME_TOLERANCE * (1.0 + t.abs()) {
+            return Err(FmuError::Invalid(format!(
+                "fmi2DoStep: Expected currentCommunicationPoint = {:.16e} but was {t:.16e}.",
+                self.time
+            )));
+        }
+        let steps = (h / self.parameters[Vr::SolverStepSize as usize]).ceil();
+        if !(h > 0.0 && h.is_finite() && steps <= MAX_STEPS) {
+            return Err(FmuError::Invalid(format!(
+                "fmi2DoStep: communicationStepSize = {h:e} must be > 0, finite and at most \
+                 {MAX_STEPS:e} solver.stepSize"
+            )));
+        }
+        if let Some(stop) = self.stop_time {
+            if t + h > stop + TIME_TOLERANCE * (1.0 + stop.abs()) {
+                return Err(FmuError::Invalid(format!(
+                    "fmi2DoStep: t + h = {:.16e} is past stopTime = {stop:.16e}.",
+                    t + h
+                )));
+            }
+        }
+        let mut x = self.state();
+        let signal = Signal {
+            start: t,
+            ..self.inputs
+        };
+        self.motor()
+            .advance(&mut x, h, steps.max(1.0) as u32, |tau| {
+                signal.inputs(t + tau)
+            });
+        self.state = Some(x);
+        self.time = t + h;
+        self.last_successful_time = self.time;
+        // Input derivatives hold for one communication step; the inputs are then held at the
+        // values their polynomials reached.
+        self.inputs = Signal {
+            start: self.time,
+            value: signal.at(self.time),
+            derivatives: [[0.0; 2]; 2],
+        };
+        Ok(())
+    }
+
+    fn last_successful_time(&self) -> f64 {
+        self.last_successful_time
+    }
+
+    fn get_real(&mut self, _log: &Logger, vrs: &[u32], values: &mut [f64]) -> Result<(), FmuError> {
+        for (vr, value) in vrs.iter().zip(values.iter_mut()) {
+            let v = lookup(VARIABLES, *vr, "Real")?;
+            *value = match v.causality {
+                Causality::Parameter => self.parameters[v.vr as usize],
+                Causality::Input => self.inputs.value[Self::input_index(v.vr).unwrap_or(0)],
+                _ => {
+                    let x = self.state();
+                    let o = self.motor().outputs(&x, &self.inputs.inputs(self.time));
+                    match v.vr {
+                        Vr::ShaftTorque => o.shaft_torque,
+                        Vr::MotorSpeed => o.speed,
+                        Vr::MotorCurrent => o.current,
+                        Vr::MotorVoltage => o.voltage,
+                        Vr::ShaftTwist => o.twist,
+                        _ => 0.0,
+                    }
+                }
+            };
+        }
+        Ok(())
+    }
+
+    fn set_real(&mut self, state: State, vrs: &[u32], values: &[f64]) -> Result<(), FmuError> {
+        for (vr, &value) in vrs.iter().zip(values) {
+            let v = lookup(VARIABLES, *vr, "Real")?;
+            check_settable(state, v)?;
+            check_real(v, value)?;
+            match Self::input_index(v.vr) {
+                Some(k) => {
+                    self.inputs.value[k] = value;
+                    self.inputs.start = self.time;
+                }
+                None => {
+                    self.parameters[v.vr as usize] = value;
+                    self.state = None;
+                }
+            }
+        }
+        Ok(())
+    }
+
+    fn get_integer(&mut self, _log: &Logger, vr: &[u32], _: &mut [i32]) -> Result<(), FmuError> {
+        vr.first()
+            .map_or(Ok(()), |&r| lookup(VARIABLES, r, "Integer").map(|_| ()))
+    }
+
+    fn set_integer(&mut self, _state: State, vr: &[u32], _: &[i32]) -> Result<(), FmuError> {
+        vr.first()
+            .map_or(Ok(()), |&r| lookup(VARIABLES, r, "Integer").map(|_| ()))
+    }
+
+    fn get_boolean(&mut self, _log: &Logger, vr: &[u32], _: &mut [i32]) -> Result<(), FmuError> {
+        vr.first()
+            .map_or(Ok(()), |&r| lookup(VARIABLES, r, "Boolean").map(|_| ()))
+    }
+
+    fn set_real_input_derivatives(
+        &mut self,
+        vrs: &[u32],
+        orders: &[i32],
+        values: &[f64],
+    ) -> Result<(), FmuError> {
+        for ((vr, &order), &value) in vrs.iter().zip(orders).zip(values) {
+            let v = lookup(VARIABLES, *vr, "Real")?;
+            let k = Self::input_index(v.vr).ok_or_else(|| {
+                FmuError::Invalid(format!(
+                    "fmi2SetRealInputDerivatives: {} is not an input",
+                    v.name
+                ))
+            })?;
+            if !(order == 1 || order == 2) || !value.is_finite() {
+                return Err(FmuError::Invalid(format!(
+                    "fmi2SetRealInputDerivatives: derivative of order {order} of {} = {value}: \
+                     the order must be 1 or 2 and the value finite",
+                    v.name
+                )));
+            }
+            self.inputs.derivatives[order as usize - 1][k] = value;
+            self.inputs.start = self.time;
+        }
+        Ok(())
+    }
+
+    fn get_real_output_derivatives(
+        &mut self,
+        _log: &Logger,
+        vrs: &[u32],
+        orders: &[i32],
+        values: &mut [f64],
+    ) -> Result<(), FmuError> {
+        let x = self.state();
+        let motor = self.motor();
+        let inputs = self.inputs.inputs(self.time);
+        let load_rate = self.inputs.rate(self.time)[0];
+        let d = motor.derivative(&x, &inputs);
+        for ((vr, &order), value) in vrs.iter().zip(orders).zip(values.iter_mut()) {
+            let v = lookup(VARIABLES, *vr, "Real")?;
+            *value = match (v.vr, order) {
+                (Vr::ShaftTorque, 1) => {
+                    motor.shaft_stiffness * d[2] + motor.shaft_damping * (d[1] - load_rate)
+                }
+                (Vr::MotorSpeed, 1) => d[1],
+                (Vr::MotorCurrent, 1) => d[0],
+                (Vr::ShaftTwist, 1) => d[2],
+                _ => {
+                    return Err(FmuError::Invalid(format!(
+                        "fmi2GetRealOutputDerivatives: {} has no derivative of order {order} \
+                         (order 1 exists for shaft.torque, motor.speed, motor.current and \
+                         shaft.twist)",
+                        v.name
+                    )));
+                }
+            };
+        }
+        Ok(())
+    }
+
+    fn save(&self, out: &mut Vec<u8>) {
+        let mut put = |x: f64| out.extend_from_slice(&x.to_bits().to_le_bytes());
+        self.parameters.iter().for_each(|&p| put(p));
+        let s = &self.inputs;
+        put(s.start);
+        s.value.iter().for_each(|&v| put(v));
+        s.derivatives.iter().flatten().for_each(|&v| put(v));
+        let x = self.state.unwrap_or([f64::NAN; 4]);
+        x.iter().for_each(|&v| put(v));
+        put(self.time);
+        put(self.stop_time.unwrap_or(f64::NAN));
+        put(self.last_successful_time);
+    }
+
+    fn load(&mut self, _log: &Logger, bytes: &[u8], apply: bool) -> Result<(), FmuError> {
+        let bad = |what: &str| Err(FmuError::Invalid(format!("FMU state rejected: {what}")));
+        const LENGTH: usize = N_PARAMETERS + 7 + 4 + 3;
+        if bytes.len() != 8 * LENGTH {
+            return bad(&format!("{} bytes, expected {}", bytes.len(), 8 * LENGTH));
+        }
+        let mut x = [0.0; LENGTH];
+        for (v, chunk) in x.iter_mut().zip(bytes.chunks_exact(8)) {
+            let mut b = [0; 8];
+            b.copy_from_slice(chunk);
+            *v = f64::from_bits(u64::from_le_bytes(b));
+        }
+        let (parameters, rest) = x.split_at(N_PARAMETERS);
+        for (v, &p) in VARIABLES.iter().zip(parameters) {
+            check_real(v, p)?;
+        }
+        let state = [rest[7], rest[8], rest[9], rest[10]];
+        let initialised = state.iter().all(|v| v.is_finite());
+        let [time, stop, last] = [rest[11], rest[12], rest[13]];
+        if !(rest[..7].iter().all(|v| v.is_finite())
+            && (initialised || state.iter().all(|v| v.is_nan()))
+            && time.is_finite()
+            && last.is_finite())
+        {
+            return bad("a non-finite input, state or time");
+        }
+        if apply {
+            self.parameters.copy_from_slice(parameters);
+            self.inputs = Signal {
+                start: rest[0],
+                value: [rest[1], rest[2]],
+                derivatives: [[rest[3], rest[4]], [rest[5], rest[6]]],
+            };
+            self.state = initialised.then_some(state);
+            self.time = time;
+            self.stop_time = (!stop.is_nan()).then_some(stop);
+            self.last_successful_time = last;
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,265 @@
+//! The variable table of the DC-motor FMU: one row per FMI variable, in value-reference order.
+//!
+//! Plain data over the table types of `fmi2-slave`: `build.rs` renders `modelDescription.xml`
+//! from [`DESCRIPTION`], and the FMU reads and writes values through an exhaustive `match` on
+//! [`Vr`], so the code and the XML cannot disagree.
+
+pub use fmi2_slave::description::Description;
+pub use fmi2_slave::table::{Causality, Kind, ValueReference};
+
+/// One variable of this FMU.
+pub type Variable = fmi2_slave::table::Variable<Vr>;
+
+/// Everything modelDescription.xml says.
+pub const DESCRIPTION: Description<Vr> = Description {
+    model_identifier: "DcMotor",
+    description: "DC motor with a PI speed controller (voltage limit, anti-windup by back-calculation) driving a load through a torsional shaft: shaft speed in, shaft torque out",
+    author: "The FlexibleSliderCrank authors",
+    version: env!("CARGO_PKG_VERSION"),
+    copyright: "Copyright (c) 2026 The FlexibleSliderCrank authors",
+    license: "MIT",
+    generation_tool: "dc-motor build.rs (fmi2-slave)",
+    max_input_derivative_order: 2,
+    max_output_derivative_order: 1,
+    units: UNITS,
+    enumerations: &[],
+    log_categories: LOG_CATEGORIES,
+    default_experiment: (0.0, 0.024, 1e-6, 1e-4),
+    variables: VARIABLES,
+    feedthrough: FEEDTHROUGH,
+};
+
+/// Units: name and SI base-unit exponents (kg, m, s, A, rad).
+pub const UNITS: &[(&str, Option<[i32; 5]>)] = &[
+    ("s", Some([0, 0, 1, 0, 0])),
+    ("rad", Some([0, 0, 0, 0, 1])),
+    ("rad/s", Some([0, 0, -1, 0, 1])),
+    ("A", Some([0, 0, 0, 1, 0])),
+    ("V", Some([1, 2, -3, -1, 0])),
+    ("Ohm", Some([1, 2, -3, -2, 0])),
+    ("H", Some([1, 2, -2, -2, 0])),
+    ("N.m", Some([1, 2, -2, 0, 0])),
+    ("N.m/A", Some([1, 2, -2, -1, 0])),
+    ("N.m/rad", Some([1, 2, -2, 0, -1])),
+    ("N.m.s/rad", Some([1, 2, -1, 0, -1])),
+    ("V.s/rad", Some([1, 2, -2, -1, -1])),
+    ("V/rad", Some([1, 2, -3, -1, -1])),
+    ("kg.m2", Some([1, 2, 0, 0, 0])),
+];
+
+/// Log categories.
+pub const LOG_CATEGORIES: &[(&str, &str)] = &[
+    ("logEvents", "Initialisation and step information"),
+    ("logStatusWarning", "Warnings"),
+    (
+        "logStatusError",
+        "Errors: illegal calls, invalid arguments and parameters",
+    ),
+    ("logAll", "Everything"),
+];
+
+/// Value references.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[allow(missing_docs)]
+pub enum Vr {
+    MotorResistance = 0,
+    MotorInductance,
+    MotorTorqueConstant,
+    MotorInertia,
+    MotorFriction,
+    ShaftStiffness,
+    ShaftDamping,
+    ControllerGain,
+    ControllerIntegralGain,
+    ControllerTrackingTime,
+    SupplyVoltageLimit,
+    ShaftInitialTorque,
+    SolverStepSize,
+    ShaftSpeed,
+    SpeedSetPoint,
+    ShaftTorque,
+    MotorSpeed,
+    MotorCurrent,
+    MotorVoltage,
+    ShaftTwist,
+}
+
+impl ValueReference for Vr {
+    fn index(self) -> u32 {
+        self as u32
+    }
+}
+
+/// Direct feedthrough: the shaft torque reacts to the shaft speed through the shaft's damping,
+/// the voltage to the set-point through the proportional gain (unless it is at its limit).
+pub const FEEDTHROUGH: &[(Vr, &[Vr])] = &[
+    (Vr::ShaftTorque, &[Vr::ShaftSpeed]),
+    (Vr::MotorVoltage, &[Vr::SpeedSetPoint]),
+];
+
+/// 5000 rpm in rad/s.
+const SPEED: f64 = 5000.0 * core::f64::consts::TAU / 60.0;
+
+/// Every variable, in value-reference order.
+pub const VARIABLES: &[Variable] = &[
+    Variable::parameter(
+        Vr::MotorResistance,
+        "motor.resistance",
+        0.2,
+        1e-6,
+        1e3,
+        "Ohm",
+        "Armature resistance R",
+    ),
+    Variable::parameter(
+        Vr::MotorInductance,
+        "motor.inductance",
+        5e-4,
+        1e-7,
+        10.0,
+        "H",
+        "Armature inductance L",
+    ),
+    Variable::parameter(
+        Vr::MotorTorqueConstant,
+        "motor.torqueConstant",
+        0.2,
+        1e-4,
+        100.0,
+        "N.m/A",
+        "Torque constant k (also the back-EMF constant, V.s/rad)",
+    ),
+    Variable::parameter(
+        Vr::MotorInertia,
+        "motor.inertia",
+        0.01,
+        1e-7,
+        1e3,
+        "kg.m2",
+        "Inertia of the rotor (and flywheel) J",
+    ),
+    Variable::parameter(
+        Vr::MotorFriction,
+        "motor.friction",
+        1e-4,
+        0.0,
+        1e3,
+        "N.m.s/rad",
+        "Viscous friction b of the rotor bearings",
+    ),
+    Variable::parameter(
+        Vr::ShaftStiffness,
+        "shaft.stiffness",
+        500.0,
+        1e-3,
+        1e9,
+        "N.m/rad",
+        "Torsional stiffness of the shaft to the load",
+    ),
+    Variable::parameter(
+        Vr::ShaftDamping,
+        "shaft.damping",
+        0.05,
+        0.0,
+        1e6,
+        "N.m.s/rad",
+        "Torsional damping of the shaft",
+    ),
+    Variable::parameter(
+        Vr::ControllerGain,
+        "controller.gain",
+        2.0,
+        0.0,
+        1e6,
+        "V.s/rad",
+        "Proportional gain Kp of the PI speed controller",
+    ),
+    Variable::parameter(
+        Vr::ControllerIntegralGain,
+        "controller.integralGain",
+        40.0,
+        0.0,
+        1e8,
+        "V/rad",
+        "Integral gain Ki of the PI speed controller",
+    ),
+    Variable::parameter(
+        Vr::ControllerTrackingTime,
+        "controller.trackingTime",
+        0.05,
+        1e-6,
+        1e3,
+        "s",
+        "Anti-windup tracking time Tt: the integral state follows the voltage limit at the rate (u - v)/(Ki Tt)",
+    ),
+    Variable::parameter(
+        Vr::SupplyVoltageLimit,
+        "supply.voltageLimit",
+        200.0,
+        1e-3,
+        1e5,
+        "V",
+        "Largest armature voltage magnitude the converter gives",
+    ),
+    Variable::parameter(
+        Vr::ShaftInitialTorque,
+        "shaft.initialTorque",
+        0.0,
+        -1e6,
+        1e6,
+        "N.m",
+        "Shaft torque at the start; the motor starts in steady state at speed.setPoint holding it (controller at its set-point)",
+    ),
+    Variable::parameter(
+        Vr::SolverStepSize,
+        "solver.stepSize",
+        1e-5,
+        1e-9,
+        1.0,
+        "s",
+        "Largest internal step (classical Runge-Kutta, steps of equal length per communication step)",
+    ),
+    Variable::input(
+        Vr::ShaftSpeed,
+        "shaft.speed",
+        SPEED,
+        -1e5,
+        1e5,
+        "rad/s",
+        "Speed of the driven end of the shaft (the load's speed, e.g. crank.speed)",
+    ),
+    Variable::input(
+        Vr::SpeedSetPoint,
+        "speed.setPoint",
+        SPEED,
+        -1e5,
+        1e5,
+        "rad/s",
+        "Set-point of the motor speed",
+    ),
+    Variable::output(
+        Vr::ShaftTorque,
+        "shaft.torque",
+        "N.m",
+        "Torque the shaft applies to the load (e.g. to drive.torque)",
+    ),
+    Variable::output(Vr::MotorSpeed, "motor.speed", "rad/s", "Rotor speed"),
+    Variable::output(Vr::MotorCurrent, "motor.current", "A", "Armature current"),
+    Variable::output(
+        Vr::MotorVoltage,
+        "motor.voltage",
+        "V",
+        "Armature voltage (the controller's output within the voltage limit)",
+    ),
+    Variable::output(
+        Vr::ShaftTwist,
+        "shaft.twist",
+        "rad",
+        "Twist of the shaft (rotor angle minus load angle)",
+    ),
+];
+
+/// The variable of a value reference, if it exists.
+pub fn variable(vr: u32) -> Option<&'static Variable> {
+    VARIABLES.get(vr as usize)
+}
