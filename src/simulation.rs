@@ -7,19 +7,7 @@ use crate::mechanism::{ContactState, Energies, SliderCrank};
 pub use crate::mechanism::{Input, InputSignal, Inputs};
 use crate::params::{DriveMode, InitialState, Parameters, RodFormulation};
 
-/// Resolution of the simulation clock: 2⁻⁴⁰ s ≈ 0.91 ps.
-///
-/// Target and start times are rounded to this binary grid. Masters represent the same
-/// communication point differently (fmpy: n·Δt in floating point; libcosim: integer nanoseconds
-/// converted to seconds), which differ in the last bits; with impacts such differences grow without
-/// bound. On the grid they coincide, so every master gets bit-identical results. The shift
-/// (≤ 0.46 ps) is far below any time scale of the model.
-pub const CLOCK_RESOLUTION: f64 = 1.0 / (1u64 << 40) as f64;
-
-/// `t` rounded to the clock grid ([`CLOCK_RESOLUTION`]).
-pub fn on_clock_grid(t: f64) -> f64 {
-    (t / CLOCK_RESOLUTION).round() * CLOCK_RESOLUTION
-}
+pub use fmi2_slave::clock::{CLOCK_RESOLUTION, on_clock_grid};
 
 /// Everything a system engineer plots, at the current time (SI units).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]

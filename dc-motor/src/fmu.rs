@@ -1,6 +1,7 @@
 //! [`DcMotorFmu`]: the motor as an FMI 2.0 [`Model`] of `fmi2-slave` — parameters, inputs as
 //! polynomials over the communication step, the state, the clock and the state codec.
 
+use fmi2_slave::clock::on_clock_grid;
 use fmi2_slave::model::{check_real, check_settable, lookup};
 use fmi2_slave::{FmuError, Logger, Model, State};
 
@@ -141,9 +142,9 @@ impl Model for DcMotorFmu {
                  stopTime >= startTime"
             )));
         }
-        self.time = start;
-        self.last_successful_time = start;
-        self.inputs.start = start;
+        self.time = on_clock_grid(start);
+        self.last_successful_time = self.time;
+        self.inputs.start = self.time;
         self.stop_time = stop;
         Ok(())
     }
@@ -164,7 +165,11 @@ impl Model for DcMotorFmu {
                 self.time
             )));
         }
-        let steps = (h / self.parameters[Vr::SolverStepSize as usize]).ceil();
+        // On the clock grid, every master's representation of the same points gives the same
+        // step; the relative margin keeps n·solver.stepSize = h from rounding up to n + 1 steps.
+        let (t, end) = (on_clock_grid(t), on_clock_grid(t + h));
+        let steps =
+            ((end - t) / self.parameters[Vr::SolverStepSize as usize] * (1.0 - 1e-9)).ceil();
         if !(h > 0.0 && h.is_finite() && steps <= MAX_STEPS) {
             return Err(FmuError::Invalid(format!(
                 "fmi2DoStep: communicationStepSize = {h:e} must be > 0, finite and at most \
@@ -172,10 +177,9 @@ impl Model for DcMotorFmu {
             )));
         }
         if let Some(stop) = self.stop_time {
-            if t + h > stop + TIME_TOLERANCE * (1.0 + stop.abs()) {
+            if end > stop + TIME_TOLERANCE * (1.0 + stop.abs()) {
                 return Err(FmuError::Invalid(format!(
-                    "fmi2DoStep: t + h = {:.16e} is past stopTime = {stop:.16e}.",
-                    t + h
+                    "fmi2DoStep: t + h = {end:.16e} is past stopTime = {stop:.16e}."
                 )));
             }
         }
@@ -184,12 +188,11 @@ impl Model for DcMotorFmu {
             start: t,
             ..self.inputs
         };
+        let n = steps.max(1.0) as u32;
         self.motor()
-            .advance(&mut x, h, steps.max(1.0) as u32, |tau| {
-                signal.inputs(t + tau)
-            });
+            .advance(&mut x, end - t, n, |tau| signal.inputs(t + tau));
         self.state = Some(x);
-        self.time = t + h;
+        self.time = end;
         self.last_successful_time = self.time;
         // Input derivatives hold for one communication step; the inputs are then held at the
         // values their polynomials reached.

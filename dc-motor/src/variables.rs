@@ -150,7 +150,7 @@ pub const VARIABLES: &[Variable] = &[
     Variable::parameter(
         Vr::ShaftStiffness,
         "shaft.stiffness",
-        500.0,
+        2e4,
         1e-3,
         1e9,
         "N.m/rad",
@@ -159,7 +159,7 @@ pub const VARIABLES: &[Variable] = &[
     Variable::parameter(
         Vr::ShaftDamping,
         "shaft.damping",
-        0.05,
+        2.0,
         0.0,
         1e6,
         "N.m.s/rad",

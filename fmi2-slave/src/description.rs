@@ -196,7 +196,10 @@ fn render<V: ValueReference>(d: &Description<V>) -> String {
             }
         }
     }
-    x.push_str("  </UnitDefinitions>\n  <TypeDefinitions>\n");
+    x.push_str("  </UnitDefinitions>\n");
+    if !d.enumerations.is_empty() {
+        x.push_str("  <TypeDefinitions>\n");
+    }
     // Switches are Integer types, not FMI Enumerations, so that masters without Enumeration
     // support (libcosim drops such variables) can set them; the items are named in the
     // descriptions of the type (with each item's meaning) and of the variable.
@@ -217,7 +220,10 @@ fn render<V: ValueReference>(d: &Description<V>) -> String {
             e.items.len()
         );
     }
-    x.push_str("  </TypeDefinitions>\n  <LogCategories>\n");
+    if !d.enumerations.is_empty() {
+        x.push_str("  </TypeDefinitions>\n");
+    }
+    x.push_str("  <LogCategories>\n");
     for (name, description) in d.log_categories {
         let _ = writeln!(
             x,

@@ -1,8 +1,11 @@
 //! Packaging: zips the shared libraries with `modelDescription.xml` and the documentation into an
-//! FMU (FMI 2.0.4 §2.3).
+//! FMU (FMI 2.0.4 §2.3), and the systems built from the workspace's FMUs.
 //!
-//! - `cargo run --release -p packaging`: builds the library for this machine and writes
-//!   `target/fmu/FlexibleSliderCrank.fmu` with its one binary (`binaries/linux64` on Linux).
+//! - `cargo run --release -p packaging`: builds the libraries for this machine and writes
+//!   `target/fmu/FlexibleSliderCrank.fmu` and `target/fmu/DcMotor.fmu` with their one binary
+//!   (`binaries/linux64` on Linux), the motor-crank system as an SSP, `target/fmu/MotorCrank.ssp`
+//!   (`systems/motor-crank/SystemStructure.ssd` with both FMUs as resources), and as an OSP system
+//!   structure, `target/fmu/motor-crank/` (`OspSystemStructure.xml` beside both FMUs).
 //! - `cargo run --release -p packaging -- --binaries DIR`: takes the libraries the release build
 //!   (`packaging/release.sh`) made, `DIR/<platform>/FlexibleSliderCrank.<so|dll|dylib>` for
 //!   every FMI platform folder present (linux64, win64, darwin64), and writes
@@ -18,10 +21,11 @@ use std::process::{Command, Stdio};
 
 use flexible_slider_crank::fmi::variables::{Causality, ENUMERATIONS, Kind, VARIABLES};
 use flexible_slider_crank::fmi::{GUID, MODEL_DESCRIPTION, MODEL_IDENTIFIER};
+use fmi2_slave::table::{Enumeration, Variable};
 use zip::write::SimpleFileOptions;
 
-/// Builds the cdylib in release mode and returns the path of the `.so` cargo reports.
-fn build_library(root: &Path) -> Result<PathBuf, Box<dyn Error>> {
+/// Builds the cdylib of `package` in release mode and returns the path of the `.so` cargo reports.
+fn build_library(root: &Path, package: &str) -> Result<PathBuf, Box<dyn Error>> {
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
     let mut child = Command::new(cargo)
         .current_dir(root)
@@ -30,7 +34,7 @@ fn build_library(root: &Path) -> Result<PathBuf, Box<dyn Error>> {
             "--release",
             "--lib",
             "-p",
-            "flexible-slider-crank",
+            package,
             "--message-format=json",
         ])
         .stdout(Stdio::piped())
@@ -56,57 +60,64 @@ fn build_library(root: &Path) -> Result<PathBuf, Box<dyn Error>> {
     library.ok_or_else(|| "cargo reported no .so for the cdylib".into())
 }
 
-/// documentation/index.html: model, parameters, inputs and outputs with units (from the variable
-/// table), validation status and the plots.
-fn documentation(readme_validation: &str) -> String {
-    let rows = |causality: Causality| {
-        let mut t = String::from(
-            "<table><tr><th>name</th><th>unit</th><th>start</th><th>range</th><th>description</th></tr>\n",
-        );
-        for v in VARIABLES.iter().filter(|v| v.causality == causality) {
-            let (unit, start, range) = match v.kind {
-                Kind::Real {
-                    start,
-                    min,
-                    max,
-                    unit,
-                } => (
-                    unit.to_string(),
-                    start.map_or(String::new(), |s| format!("{s}")),
-                    if min.is_finite() {
-                        format!("[{min}, {max}]")
-                    } else {
-                        String::new()
-                    },
-                ),
-                Kind::Integer { start, min, max } => (
+/// An HTML table of the variables of one causality: name, unit, start, range, description.
+fn variable_rows<V>(
+    variables: &[Variable<V>],
+    enumerations: &[Enumeration],
+    causality: Causality,
+) -> String {
+    let mut t = String::from(
+        "<table><tr><th>name</th><th>unit</th><th>start</th><th>range</th><th>description</th></tr>\n",
+    );
+    for v in variables.iter().filter(|v| v.causality == causality) {
+        let (unit, start, range) = match v.kind {
+            Kind::Real {
+                start,
+                min,
+                max,
+                unit,
+            } => (
+                unit.to_string(),
+                start.map_or(String::new(), |s| format!("{s}")),
+                if min.is_finite() {
+                    format!("[{min}, {max}]")
+                } else {
+                    String::new()
+                },
+            ),
+            Kind::Integer { start, min, max } => (
+                String::new(),
+                start.map_or(String::new(), |s| s.to_string()),
+                format!("[{min}, {max}]"),
+            ),
+            Kind::Boolean => (String::new(), String::new(), "true/false".into()),
+            Kind::Enumeration { start, type_index } => {
+                let items = enumerations[type_index].items;
+                let names: Vec<String> = items
+                    .iter()
+                    .enumerate()
+                    .map(|(i, (n, _))| format!("{}={n}", i + 1))
+                    .collect();
+                (
                     String::new(),
-                    start.map_or(String::new(), |s| s.to_string()),
-                    format!("[{min}, {max}]"),
-                ),
-                Kind::Boolean => (String::new(), String::new(), "true/false".into()),
-                Kind::Enumeration { start, type_index } => {
-                    let items = ENUMERATIONS[type_index].items;
-                    let names: Vec<String> = items
-                        .iter()
-                        .enumerate()
-                        .map(|(i, (n, _))| format!("{}={n}", i + 1))
-                        .collect();
-                    (
-                        String::new(),
-                        items[(start - 1) as usize].0.to_string(),
-                        names.join(", "),
-                    )
-                }
-            };
-            let _ = writeln!(
-                t,
-                "<tr><td><code>{}</code></td><td>{unit}</td><td>{start}</td><td>{range}</td><td>{}</td></tr>",
-                v.name, v.description
-            );
-        }
-        t + "</table>\n"
-    };
+                    items[(start - 1) as usize].0.to_string(),
+                    names.join(", "),
+                )
+            }
+        };
+        let _ = writeln!(
+            t,
+            "<tr><td><code>{}</code></td><td>{unit}</td><td>{start}</td><td>{range}</td><td>{}</td></tr>",
+            v.name, v.description
+        );
+    }
+    t + "</table>\n"
+}
+
+/// documentation/index.html of the slider-crank: model, parameters, inputs and outputs with units
+/// (from the variable table), validation status and the plots.
+fn documentation(readme_validation: &str) -> String {
+    let rows = |causality| variable_rows(VARIABLES, ENUMERATIONS, causality);
     format!(
         r#"<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8"><title>FlexibleSliderCrank</title>
@@ -116,8 +127,9 @@ fn documentation(readme_validation: &str) -> String {
 <p>Slider-crank mechanism: rigid crank, connecting rod as planar ANCF beam (full or reduced by Craig–Bampton
 component mode synthesis, or rigid), slider on a straight guide; the rod–slider joint is ideal, a dry clearance
 joint (Lankarani–Nikravesh contact with Coulomb–Ambrósio friction) or a lubricated short journal bearing
-(with dry contact near metal contact). Drive: prescribed crank speed or crank torque. The internal integrator is
-an error-controlled Dormand–Prince 5(4) method that locates contact onsets. After Sun et al., Mech. Mach.
+(with dry contact near metal contact), with the contact law chosen among Lankarani–Nikravesh, Flores and Hu–Guo.
+Drive: prescribed crank speed or crank torque. The internal integrator is, by default, an L-stable implicit ESDIRK
+5(4) method with error control that locates contact onsets (Dormand–Prince 5(4) and generalized-α on request). After Sun et al., Mech. Mach.
 Theory 85 (2015) 106–115. GUID <code>{GUID}</code>.</p>
 <p>Defaults: benchmark B (steel rod 0.12 m, 0.21 kg, 8 elements, 4 mode shapes, dry joint with 0.5 mm
 clearance, 5000 rpm). DefaultExperiment: two crank revolutions (0.024 s), step 1e-4 s.</p>
@@ -154,32 +166,113 @@ fn validation_summary(root: &Path) -> String {
 /// FMI 2.0 platform folders and the file extension of their shared libraries.
 const PLATFORMS: [(&str, &str); 3] = [("linux64", "so"), ("win64", "dll"), ("darwin64", "dylib")];
 
-/// The binaries to package: (platform folder, path of the library).
-fn binaries(
-    root: &Path,
-    from: Option<&Path>,
+/// The release binaries of `identifier` under `dir/<platform>/`: (platform folder, path).
+fn release_binaries(
+    dir: &Path,
+    identifier: &str,
 ) -> Result<Vec<(&'static str, PathBuf)>, Box<dyn Error>> {
-    let Some(dir) = from else {
-        return Ok(vec![("linux64", build_library(root)?)]);
-    };
     let found: Vec<_> = PLATFORMS
         .iter()
         .map(|(platform, ext)| {
             (
                 *platform,
-                dir.join(platform).join(format!("{MODEL_IDENTIFIER}.{ext}")),
+                dir.join(platform).join(format!("{identifier}.{ext}")),
             )
         })
         .filter(|(_, path)| path.exists())
         .collect();
     if found.is_empty() {
         return Err(format!(
-            "no {MODEL_IDENTIFIER}.<so|dll|dylib> under {}/<platform>",
+            "no {identifier}.<so|dll|dylib> under {}/<platform>",
             dir.display()
         )
         .into());
     }
     Ok(found)
+}
+
+/// Writes the FMU `path`: modelDescription.xml, the binaries, documentation/index.html and the
+/// images of `images` (files of `image_dir`) it shows.
+fn write_fmu(
+    path: &Path,
+    (identifier, xml): (&str, &str),
+    binaries: &[(&str, PathBuf)],
+    documentation: &str,
+    images: &[PathBuf],
+) -> Result<(), Box<dyn Error>> {
+    let mut zip = zip::ZipWriter::new(std::fs::File::create(path)?);
+    let options = zip_options();
+    zip.start_file("modelDescription.xml", options)?;
+    zip.write_all(xml.as_bytes())?;
+    for (platform, library) in binaries {
+        let ext = library.extension().and_then(|e| e.to_str()).unwrap_or("so");
+        zip.start_file(format!("binaries/{platform}/{identifier}.{ext}"), options)?;
+        zip.write_all(&std::fs::read(library)?)?;
+    }
+    zip.start_file("documentation/index.html", options)?;
+    zip.write_all(documentation.as_bytes())?;
+    for image in images.iter().filter(|p| p.exists()) {
+        let name = image
+            .file_name()
+            .and_then(|n| n.to_str())
+            .unwrap_or("image");
+        zip.start_file(format!("documentation/{name}"), options)?;
+        zip.write_all(&std::fs::read(image)?)?;
+    }
+    zip.finish()?;
+    Ok(())
+}
+
+/// Deflated entries with a fixed time stamp, so that the same inputs give the same bytes.
+fn zip_options() -> SimpleFileOptions {
+    SimpleFileOptions::default()
+        .compression_method(zip::CompressionMethod::Deflated)
+        .last_modified_time(zip::DateTime::default())
+}
+
+/// documentation/index.html of the DC motor.
+fn motor_documentation() -> String {
+    use dc_motor::variables::VARIABLES as MOTOR;
+    let rows = |causality| variable_rows(MOTOR, &[], causality);
+    format!(
+        r#"<!DOCTYPE html>
+<html lang="en"><head><meta charset="utf-8"><title>DcMotor</title>
+<style>body{{font-family:sans-serif;max-width:1100px;margin:auto}}table{{border-collapse:collapse}}td,th{{border:1px solid #ccc;padding:3px 6px;font-size:90%}}</style></head>
+<body>
+<h1>DcMotor — FMI 2.0 co-simulation FMU</h1>
+<p>{}</p>
+<pre>
+L di/dt = u - R i - k w            armature (back-EMF constant = torque constant k)
+J dw/dt = k i - tau - b w          rotor
+dphi/dt = w - w_L                  shaft twist (w_L = shaft.speed, the load's speed)
+tau     = k_s phi + d_s (w - w_L)  shaft.torque on the load
+v       = Kp e + Ki z, e = w_ref - w,  u = clamp(v, -U, U),  dz/dt = e + (u - v)/(Ki Tt)
+</pre>
+<p>Starts in steady state at speed.setPoint holding shaft.initialTorque (controller at its set-point).
+Classical Runge-Kutta in equal steps of at most solver.stepSize per communication step; inputs can be
+interpolated (first and second derivatives, for one communication step). GUID <code>{}</code>.</p>
+<h2>Parameters</h2>{}
+<h2>Inputs</h2>{}
+<h2>Outputs</h2>{}
+</body></html>
+"#,
+        dc_motor::variables::DESCRIPTION.description,
+        dc_motor::GUID,
+        rows(Causality::Parameter),
+        rows(Causality::Input),
+        rows(Causality::Output)
+    )
+}
+
+/// A zip of `entries` (name in the archive, file).
+fn write_zip(path: &Path, entries: &[(String, PathBuf)]) -> Result<(), Box<dyn Error>> {
+    let mut zip = zip::ZipWriter::new(std::fs::File::create(path)?);
+    for (name, file) in entries {
+        zip.start_file(name.as_str(), zip_options())?;
+        zip.write_all(&std::fs::read(file)?)?;
+    }
+    zip.finish()?;
+    Ok(())
 }
 
 fn main() -> Result<(), Box<dyn Error>> {
@@ -190,35 +283,70 @@ fn main() -> Result<(), Box<dyn Error>> {
         [flag, dir] if flag == "--binaries" => Some(PathBuf::from(dir)),
         _ => return Err("usage: packaging [--binaries DIR]".into()),
     };
-    let binaries = binaries(&root, from.as_deref())?;
-    let out_dir = match from {
-        None => root.join("target").join("fmu"),
-        Some(_) => root.join("target").join("fmu").join("release"),
-    };
-    std::fs::create_dir_all(&out_dir)?;
-    let fmu = out_dir.join(format!("{MODEL_IDENTIFIER}.fmu"));
-    let mut zip = zip::ZipWriter::new(std::fs::File::create(&fmu)?);
-    let options = SimpleFileOptions::default().compression_method(zip::CompressionMethod::Deflated);
-    zip.start_file("modelDescription.xml", options)?;
-    zip.write_all(MODEL_DESCRIPTION.as_bytes())?;
-    for (platform, library) in &binaries {
-        let ext = library.extension().and_then(|e| e.to_str()).unwrap_or("so");
-        zip.start_file(
-            format!("binaries/{platform}/{MODEL_IDENTIFIER}.{ext}"),
-            options,
-        )?;
-        zip.write_all(&std::fs::read(library)?)?;
+    let images: Vec<PathBuf> = ["demo.png", "mode_study.png"]
+        .iter()
+        .map(|i| root.join("modelDescription/documentation").join(i))
+        .collect();
+    let crank_documentation = documentation(&validation_summary(&root));
+    let crank = (MODEL_IDENTIFIER, MODEL_DESCRIPTION);
+    if let Some(dir) = from {
+        let out_dir = root.join("target").join("fmu").join("release");
+        std::fs::create_dir_all(&out_dir)?;
+        let fmu = out_dir.join(format!("{MODEL_IDENTIFIER}.fmu"));
+        let binaries = release_binaries(&dir, MODEL_IDENTIFIER)?;
+        write_fmu(&fmu, crank, &binaries, &crank_documentation, &images)?;
+        println!("{}", fmu.canonicalize()?.display());
+        return Ok(());
     }
-    zip.start_file("documentation/index.html", options)?;
-    zip.write_all(documentation(&validation_summary(&root)).as_bytes())?;
-    for image in ["demo.png", "mode_study.png"] {
-        let path = root.join("modelDescription/documentation").join(image);
-        if path.exists() {
-            zip.start_file(format!("documentation/{image}"), options)?;
-            zip.write_all(&std::fs::read(path)?)?;
+    let out_dir = root.join("target").join("fmu");
+    std::fs::create_dir_all(&out_dir)?;
+    let crank_fmu = out_dir.join(format!("{MODEL_IDENTIFIER}.fmu"));
+    let library = build_library(&root, "flexible-slider-crank")?;
+    write_fmu(
+        &crank_fmu,
+        crank,
+        &[("linux64", library)],
+        &crank_documentation,
+        &images,
+    )?;
+    let motor = (dc_motor::MODEL_IDENTIFIER, dc_motor::MODEL_DESCRIPTION);
+    let motor_fmu = out_dir.join(format!("{}.fmu", motor.0));
+    let library = build_library(&root, "dc-motor")?;
+    write_fmu(
+        &motor_fmu,
+        motor,
+        &[("linux64", library)],
+        &motor_documentation(),
+        &[],
+    )?;
+    let system = root.join("systems/motor-crank");
+    let ssp = out_dir.join("MotorCrank.ssp");
+    let fmus = [&motor_fmu, &crank_fmu];
+    let mut entries = vec![(
+        "SystemStructure.ssd".to_string(),
+        system.join("SystemStructure.ssd"),
+    )];
+    for fmu in fmus {
+        let name = fmu
+            .file_name()
+            .and_then(|n| n.to_str())
+            .unwrap_or("model.fmu");
+        entries.push((format!("resources/{name}"), fmu.clone()));
+    }
+    write_zip(&ssp, &entries)?;
+    let osp = out_dir.join("motor-crank");
+    std::fs::create_dir_all(&osp)?;
+    std::fs::copy(
+        system.join("OspSystemStructure.xml"),
+        osp.join("OspSystemStructure.xml"),
+    )?;
+    for fmu in fmus {
+        if let Some(name) = fmu.file_name() {
+            std::fs::copy(fmu, osp.join(name))?;
         }
     }
-    zip.finish()?;
-    println!("{}", fmu.canonicalize()?.display());
+    for path in [&crank_fmu, &motor_fmu, &ssp, &osp] {
+        println!("{}", path.canonicalize()?.display());
+    }
     Ok(())
 }
