@@ -30,3 +30,32 @@ fn guid_is_the_one_in_the_xml() {
         VARIABLES.len()
     );
 }
+
+/// Every variable name the source quotes (in messages and docs) exists in the variable table.
+#[test]
+fn quoted_variable_names_exist() {
+    let names: Vec<&str> = VARIABLES.iter().map(|v| v.name).collect();
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut files = vec![root];
+    let mut unknown = Vec::new();
+    while let Some(path) = files.pop() {
+        if path.is_dir() {
+            files.extend(std::fs::read_dir(&path).unwrap().map(|e| e.unwrap().path()));
+            continue;
+        }
+        let text = std::fs::read_to_string(&path).unwrap();
+        for quoted in text.split('"').skip(1).step_by(2) {
+            let prefixes = ["rod.", "crank.", "joint.", "solver.", "drive.", "slider."];
+            for w in quoted.split(|c: char| !(c.is_ascii_alphanumeric() || c == '.')) {
+                let w = w.trim_end_matches('.');
+                let named = prefixes
+                    .iter()
+                    .any(|p| w.starts_with(p) && w.len() > p.len());
+                if named && !names.contains(&w) {
+                    unknown.push(format!("{}: {w}", path.display()));
+                }
+            }
+        }
+    }
+    assert!(unknown.is_empty(), "{unknown:#?}");
+}

@@ -128,7 +128,12 @@ pub fn with_instance<M: Model>(
             )));
         }
         if !call.allowed().contains(&instance.state) {
-            return Err(FmuError::IllegalCall(call));
+            return Err(match &instance.first_error {
+                Some(first) if instance.state == State::Error => FmuError::Invalid(format!(
+                    "Illegal call sequence. The instance is in the Error state since: {first}"
+                )),
+                _ => FmuError::IllegalCall(call),
+            });
         }
         f(instance)
     }));
@@ -145,6 +150,9 @@ pub fn with_instance<M: Model>(
                 _ => format!("{}: {e}", call.name()),
             };
             instance.logger.error(&message);
+            if instance.state != State::Error {
+                instance.first_error = Some(message);
+            }
             instance.state = State::Error;
             fmi2Status_fmi2Error
         }
@@ -155,6 +163,7 @@ pub fn with_instance<M: Model>(
                 panic_text(&*payload)
             ));
             instance.poisoned = true;
+            instance.first_error = Some(format!("{}: internal error", call.name()));
             instance.state = State::Error;
             fmi2Status_fmi2Error
         }

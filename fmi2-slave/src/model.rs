@@ -171,6 +171,9 @@ pub struct Instance<M> {
     pub state: State,
     /// Set after a caught panic: only Reset and FreeInstance are accepted.
     pub poisoned: bool,
+    /// The message of the error that put the instance in the Error state, for the calls refused
+    /// there.
+    pub first_error: Option<String>,
     /// The model.
     pub model: M,
 }
@@ -198,6 +201,7 @@ impl<M: Model> Instance<M> {
             logger,
             state: State::Instantiated,
             poisoned: false,
+            first_error: None,
             model: M::new(),
         }
     }
@@ -206,6 +210,7 @@ impl<M: Model> Instance<M> {
     pub fn reset(&mut self) {
         self.state = State::Instantiated;
         self.poisoned = false;
+        self.first_error = None;
         self.model = M::new();
     }
 

@@ -115,12 +115,13 @@ impl Tolerances {
         }
     }
 
-    /// Checks every field; errors name the FMU parameter.
+    /// Checks every field; errors name the FMU parameter each comes from (the absolute tolerance
+    /// is `solver.relativeTolerance` in units of each component's scale; the step floor is fixed).
     pub fn validate(&self) -> Result<(), ModelError> {
         require_positive("solver.relativeTolerance", self.relative)?;
-        require_positive("solver.absoluteTolerance", self.absolute)?;
+        require_positive("solver.relativeTolerance", self.absolute)?;
         require_positive("solver.maxStepSize", self.max_step)?;
-        require_positive("solver.minStepSize", self.min_step)?;
+        require_positive("the smallest step size", self.min_step)?;
         Ok(())
     }
 }

@@ -635,6 +635,29 @@ fn in_state(name: &str, state: State) -> Instance {
     inst
 }
 
+/// A call refused in the Error state names the error that put the instance there.
+#[test]
+fn calls_after_an_error_name_the_first_error() {
+    let inst = Instance::new("first-error");
+    assert_eq!(inst.set_real(vr("rod.length"), -1.0), ERROR);
+    let first = inst.last_message();
+    assert!(first.contains("rod.length"), "{first}");
+    assert_eq!(inst.do_step(0.0, 1e-4), ERROR);
+    let refused = inst.last_message();
+    assert!(
+        refused.contains("fmi2DoStep: Illegal call sequence.") && refused.contains(&first),
+        "{refused}"
+    );
+    // SAFETY: live instance.
+    assert_eq!(unsafe { fmu().fmi2Reset(inst.c) }, fmi2Status_fmi2OK);
+    assert_eq!(inst.do_step(0.0, 1e-4), ERROR);
+    assert!(
+        !inst.last_message().contains("since"),
+        "{}",
+        inst.last_message()
+    );
+}
+
 /// Every instance function in every reachable state where the FMI 2 state machine forbids it
 /// returns fmi2Error with "fmi2X: Illegal call sequence." and no crash (the table of
 /// src/fmi/state.rs is the oracle; 30 functions × 5 states).
