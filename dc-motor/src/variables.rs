@@ -22,6 +22,12 @@ pub const DESCRIPTION: Description<Vr> = Description {
     max_input_derivative_order: 2,
     max_output_derivative_order: 1,
     units: UNITS,
+    display_units: &[("rad/s", "rpm", 60.0 / core::f64::consts::TAU)],
+    variable_display_units: &[
+        (Vr::ShaftSpeed, "rpm"),
+        (Vr::SpeedSetPoint, "rpm"),
+        (Vr::MotorSpeed, "rpm"),
+    ],
     enumerations: &[],
     log_categories: LOG_CATEGORIES,
     default_experiment: (0.0, 0.024, 1e-6, 1e-4),

@@ -33,6 +33,10 @@ pub struct Description<V: 'static> {
     /// Units: name and SI base-unit exponents (kg, m, s, A, rad), or None where
     /// FMI 2's integer exponents cannot express the unit.
     pub units: &'static [(&'static str, Option<[i32; 5]>)],
+    /// Display units: (unit, display unit, factor), the display value being factor × value.
+    pub display_units: &'static [(&'static str, &'static str, f64)],
+    /// The display unit a master shows a variable in by default.
+    pub variable_display_units: &'static [(V, &'static str)],
     /// Switch types.
     pub enumerations: &'static [Enumeration],
     /// Log categories: name and description.
@@ -70,6 +74,28 @@ fn structured(name: &str) -> bool {
 /// inside ranges, starts exactly for parameters and inputs, feedthrough from inputs to outputs.
 pub fn check<V: ValueReference>(d: &Description<V>) -> Result<(), String> {
     let (variables, enumerations) = (d.variables, d.enumerations);
+    for (vr, display) in d.variable_display_units {
+        let v = &variables[vr.index() as usize];
+        let unit = match v.kind {
+            Kind::Real { unit, .. } => unit,
+            _ => {
+                return Err(format!(
+                    "{}: a display unit for a non-Real variable",
+                    v.name
+                ));
+            }
+        };
+        if !d
+            .display_units
+            .iter()
+            .any(|(u, n, _)| *u == unit && n == display)
+        {
+            return Err(format!(
+                "{}: display unit {display} is not defined for {unit}",
+                v.name
+            ));
+        }
+    }
     for (output, inputs) in d.feedthrough {
         let causality = |vr: &V| variables[vr.index() as usize].causality;
         if causality(output) != Causality::Output
@@ -181,7 +207,18 @@ fn render<V: ValueReference>(d: &Description<V>) -> String {
     );
     x.push_str("  <UnitDefinitions>\n");
     for (name, base) in d.units {
-        match base {
+        let displays: String = d
+            .display_units
+            .iter()
+            .filter(|(unit, _, _)| unit == name)
+            .map(|(_, display, factor)| {
+                format!(
+                    r#"<DisplayUnit name="{display}" factor="{}"/>"#,
+                    real(*factor)
+                )
+            })
+            .collect();
+        let base = match base {
             Some(e) => {
                 let attrs: String = ["kg", "m", "s", "A", "rad"]
                     .iter()
@@ -189,11 +226,14 @@ fn render<V: ValueReference>(d: &Description<V>) -> String {
                     .filter(|(_, v)| **v != 0)
                     .map(|(k, v)| format!(r#" {k}="{v}""#))
                     .collect();
-                let _ = writeln!(x, r#"    <Unit name="{name}"><BaseUnit{attrs}/></Unit>"#);
+                format!("<BaseUnit{attrs}/>")
             }
-            None => {
-                let _ = writeln!(x, r#"    <Unit name="{name}"/>"#);
-            }
+            None => String::new(),
+        };
+        if base.is_empty() && displays.is_empty() {
+            let _ = writeln!(x, r#"    <Unit name="{name}"/>"#);
+        } else {
+            let _ = writeln!(x, r#"    <Unit name="{name}">{base}{displays}</Unit>"#);
         }
     }
     x.push_str("  </UnitDefinitions>\n");
@@ -282,6 +322,11 @@ fn render<V: ValueReference>(d: &Description<V>) -> String {
                 unit,
             } => {
                 let mut a = format!(r#"<Real unit="{unit}""#);
+                if let Some((_, display)) =
+                    d.variable_display_units.iter().find(|(vr, _)| *vr == v.vr)
+                {
+                    let _ = write!(a, r#" displayUnit="{display}""#);
+                }
                 if min.is_finite() {
                     let _ = write!(a, r#" min="{}""#, real(min));
                 }
