@@ -74,6 +74,8 @@ pub struct Outputs {
     pub contact_onsets: u64,
     /// Contact onsets since the start.
     pub contact_onsets_total: u64,
+    /// Warnings raised since the start ([`Simulation::take_warnings`]).
+    pub warnings: u64,
 }
 
 /// Extremes of the solution over a stretch of time, and the contact onsets in it.
@@ -178,6 +180,15 @@ pub mod validity {
 struct Monitor {
     fired: [bool; 4],
     messages: Vec<String>,
+    /// Warnings raised since the start.
+    total: u64,
+}
+
+impl Monitor {
+    fn warn(&mut self, message: String) {
+        self.messages.push(message);
+        self.total += 1;
+    }
 }
 
 /// A complete, restorable state of a [`Simulation`] (parameters excepted).
@@ -202,6 +213,8 @@ pub struct Snapshot {
     pub next: InputSignal,
     /// Peak-hold outputs.
     pub peaks: PeakHold,
+    /// Warnings raised since the start.
+    pub warnings: u64,
 }
 
 /// The slider-crank simulation.
@@ -253,6 +266,10 @@ impl Simulation {
             mechanism.error_scales(),
         )?;
         let next = *mechanism.input_signal();
+        let mut monitor = Monitor::default();
+        for warning in parameters.warnings() {
+            monitor.warn(warning);
+        }
         Ok(Self {
             scratch: vec![0.0; state.len()],
             y_sample: vec![0.0; state.len()],
@@ -270,7 +287,7 @@ impl Simulation {
             step_end: 0.0,
             next,
             peaks: PeakHold::default(),
-            monitor: Monitor::default(),
+            monitor,
         })
     }
 
@@ -413,6 +430,15 @@ impl Simulation {
             self.restart_here();
         }
         if speed_jump {
+            if self.integrator.stats().steps == 0 {
+                self.monitor.warn(format!(
+                    "crank.initialSpeed = {} rad/s differs from drive.speed = {} rad/s: with the \
+                     speed drive the crank's speed jumps to drive.speed at the first step (an \
+                     impulsive change through the constraints, booked as drive work); set \
+                     crank.initialSpeed = drive.speed for a smooth start",
+                    self.parameters.crank_initial_speed, next.value.drive_speed
+                ));
+            }
             let work = self.mechanism.project_velocities(&mut self.y_end)?;
             let n = self.mechanism.n_coordinates();
             self.y_end[2 * n + 1] += work;
@@ -666,13 +692,15 @@ impl Simulation {
                     l + r_c + c
                 ),
             };
-            self.monitor.messages.push(format!(
+            self.monitor.warn(format!(
                 "t = {t:.6e} s: the model left its domain: {message}"
             ));
         }
     }
 
-    /// Validity warnings raised since the last call (each cause once per simulation).
+    /// Warnings raised since the last call: parameters outside the range a law was made for (at
+    /// the start), a crank speed that jumps to the drive's at the first step, and the validity
+    /// monitors' domain exits (each cause once per simulation).
     pub fn take_warnings(&mut self) -> Vec<String> {
         std::mem::take(&mut self.monitor.messages)
     }
@@ -756,6 +784,7 @@ impl Simulation {
                 .max(ev.slider_acceleration.abs()),
             contact_onsets: self.peaks.interval.contact_onsets,
             contact_onsets_total: self.peaks.total_onsets,
+            warnings: self.monitor.total,
         })
     }
 
@@ -776,6 +805,7 @@ impl Simulation {
             signal: *self.mechanism.input_signal(),
             next: self.next,
             peaks: self.peaks,
+            warnings: self.monitor.total,
         }
     }
 
@@ -809,6 +839,7 @@ impl Simulation {
             .set_input_signal(snapshot.signal, snapshot.time);
         self.next = snapshot.next;
         self.peaks = snapshot.peaks;
+        self.monitor.total = snapshot.warnings;
         Ok(())
     }
 }

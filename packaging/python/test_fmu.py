@@ -330,3 +330,18 @@ def test_every_switch_is_set_through_libcosim_as_through_fmpy(switch):
         assert execution.simulate_until(target_time=k * 100_000)
         cosim = observer.last_real_values(slave, [vr[n] for n in names])
         assert [float(switched[k][n]) for n in names] == cosim, f"{switch}: t = {k * 1e-4} s"
+
+
+def test_warnings_are_counted_without_logging():
+    """solver.warnings counts what the logger would say: none for the defaults; one for a speed
+    drive whose drive.speed differs from crank.initialSpeed (the crank jumps at the first step);
+    a domain exit for drive.speed = 5000 rad/s (a value meant as rpm: penetrations beyond the
+    Hertz range)."""
+    def warnings(**start_values):
+        res = simulate_fmu(FMU, stop_time=0.004, start_values=start_values, output=["solver.warnings"])
+        return int(res["solver.warnings"][-1])
+
+    assert warnings() == 0
+    assert warnings(**{"drive.speed": 400.0}) == 1
+    assert warnings(**{"drive.speed": 400.0, "crank.initialSpeed": 400.0}) == 0
+    assert warnings(**{"drive.speed": 5000.0, "crank.initialSpeed": 5000.0}) >= 1

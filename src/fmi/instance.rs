@@ -135,7 +135,7 @@ impl SliderCrankFmu {
                 self.parameters.drive_mode,
                 sim.state().len()
             ));
-            for warning in self.parameters.warnings() {
+            for warning in sim.take_warnings() {
                 log.warning(&warning);
             }
             self.simulation = Some(sim);
@@ -221,7 +221,7 @@ impl Model for SliderCrankFmu {
     const GUID: &'static str = super::GUID;
     const LOG_CATEGORIES: &'static [(&'static str, &'static str)] = LOG_CATEGORIES;
     const STATE_MAGIC: [u8; 4] = *b"FSCS";
-    const STATE_VERSION: u32 = 7;
+    const STATE_VERSION: u32 = 8;
 
     fn new() -> Self {
         Self {
@@ -532,6 +532,10 @@ impl Model for SliderCrankFmu {
                 Vr::JointContactOnsetsTotal => {
                     let onsets = self.outputs(log)?.contact_onsets_total;
                     i32::try_from(onsets).unwrap_or(i32::MAX)
+                }
+                Vr::SolverWarnings => {
+                    let warnings = self.outputs(log)?.warnings;
+                    i32::try_from(warnings).unwrap_or(i32::MAX)
                 }
                 _ => unreachable_type(v)?,
             };

@@ -346,6 +346,7 @@ impl FmuSnapshot {
             w.peaks(&s.peaks.step_end);
             w.u8(u8::from(s.peaks.pending));
             w.u64(s.peaks.total_onsets);
+            w.u64(s.warnings);
         }
     }
 
@@ -432,6 +433,7 @@ impl FmuSnapshot {
                     pending: r.flag()?,
                     total_onsets: r.u64()?,
                 },
+                warnings: r.u64()?,
             })
         } else {
             None

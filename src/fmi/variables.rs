@@ -287,6 +287,7 @@ pub enum Vr {
     EnergySliderWork,
     EnergyMaterialDamping,
     SolverSpectralRadius,
+    SolverWarnings,
 }
 
 /// 5000 rpm in rad/s (benchmark B); the same expression as `params::BENCHMARK_SPEED`.
@@ -808,6 +809,11 @@ pub const VARIABLES: &[Variable] = &[
         1.0,
         "1",
         "Numerical dissipation of solver.method = generalizedAlpha: spectral radius at infinity (1: none, 0: unresolved frequencies removed in one step)",
+    ),
+    Variable::count(
+        Vr::SolverWarnings,
+        "solver.warnings",
+        "Warnings raised since the start, also without logging: the model left the domain its laws were made for (penetration, deflection, crank speed, stroke), a parameter outside a law's range, a crank speed that jumps to drive.speed at the first step; the logger gives each message",
     ),
 ];
 
