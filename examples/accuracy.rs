@@ -1,4 +1,4 @@
-//! Accuracy of a run against a converged reference (issue 8, acceptance 2): benchmark B over the
+//! Accuracy of a run against a converged reference: benchmark B over the
 //! first 40° of crank rotation (1.33 ms at 5000 rpm), sampled every microsecond from the dense
 //! output (which does not change the step sequence).
 //!

@@ -1,4 +1,4 @@
-//! Benchmark D (issue 9): the lubricated joint driven into metal contact — a 40× thinner lubricant
+//! Benchmark D: the lubricated joint driven into metal contact — a 40× thinner lubricant
 //! than benchmark C and a 0.5 kg slider — over two revolutions at 5000 rpm. Plots the eccentricity
 //! ratio ε = |e|/c against the switch ratio ε_b (film alone below, film at ε_b plus dry contact
 //! above) and the joint force, sampled every 2 µs.

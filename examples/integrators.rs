@@ -1,4 +1,4 @@
-//! Integrator comparison (issue 8): every rod model × joint model of benchmark B/C (two revolutions
+//! Integrator comparison: every rod model × joint model of benchmark B/C (two revolutions
 //! at 5000 rpm, the DefaultExperiment), integrated with the explicit Dormand–Prince 5(4) at its
 //! loosest accepted tolerance, with the implicit ESDIRK5(4) at the default tolerance, and with the
 //! generalized-α method (default ρ∞) at the default and at its loosest accepted tolerance.

@@ -1,4 +1,4 @@
-//! Mode-count study (Sun et al. 2015, MODEL.md §2 and §10): the Craig–Bampton rod against the full
+//! Mode-count study (Sun et al. 2015, docs/model.md §2 and §10): the Craig–Bampton rod against the full
 //! ANCF rod (8 elements, benchmark B steel rod, 5000 rpm) for the dry joint (benchmark B) and the
 //! lubricated joint (benchmark C). For each nModes it reports the error in the maximum deformation
 //! energy over the second revolution (e_U), the RMS slider-acceleration error over the point-wise
@@ -8,7 +8,7 @@
 //! in other coordinates, so where its slider acceleration departs from the full run's by more than
 //! 1 % of the peak, round-off and step-sequence differences amplified by the impacts dominate and
 //! point-wise comparison says nothing about the reduction. Beyond it only statistics (e_U, peak
-//! force) are compared (MODEL.md §6).
+//! force) are compared (docs/model.md §6).
 //!
 //! Both Craig–Bampton interfaces are studied (`rod.boundary`): pins only (the default) and the
 //! paper's end-node positions and slopes. Every run, full and reduced, uses the default implicit

@@ -1,4 +1,4 @@
-//! Parameters of the slider-crank model, in SI units, with defaults = MODEL.md benchmark B
+//! Parameters of the slider-crank model, in SI units, with defaults = benchmark B (docs/model.md §5(b))
 //! (steel ANCF rod, 8 elements, 4 mode shapes, dry clearance joint, 5000 rpm speed drive).
 //!
 //! Every check names the FMU parameter, its value and the allowed range.
@@ -50,7 +50,7 @@ pub enum InitialState {
     /// Quasi-statically equilibrated: deformed by the inertial loads of the initial motion
     /// ([`crate::mechanism::SliderCrank::equilibrate`]).
     Equilibrated,
-    /// Straight and unstressed (MODEL.md §10, the reference start).
+    /// Straight and unstressed (docs/model.md §10, the reference start).
     Straight,
 }
 
@@ -222,7 +222,7 @@ fn require_in(
 }
 
 impl Parameters {
-    /// Benchmark A of MODEL.md: rigid rod (0.21 kg, inertia m l²/12), dry joint, 5000 rpm.
+    /// Benchmark A (docs/model.md §5(a)): rigid rod (0.21 kg, inertia m l²/12), dry joint, 5000 rpm.
     pub fn benchmark_a() -> Self {
         Self {
             rod_formulation: RodFormulation::Rigid,
@@ -230,7 +230,7 @@ impl Parameters {
         }
     }
 
-    /// Benchmark B of MODEL.md with `n_elements` elements: full ANCF rod, dry joint.
+    /// Benchmark B (docs/model.md §5(b)) with `n_elements` elements: full ANCF rod, dry joint.
     pub fn benchmark_b() -> Self {
         Self {
             rod_formulation: RodFormulation::Ancf,
@@ -238,7 +238,7 @@ impl Parameters {
         }
     }
 
-    /// Benchmark C of MODEL.md: as B with the lubricated joint.
+    /// Benchmark C (docs/model.md §5(b)): as B with the lubricated joint.
     pub fn benchmark_c() -> Self {
         Self {
             joint_model: JointModel::Lubricated,
@@ -246,7 +246,7 @@ impl Parameters {
         }
     }
 
-    /// Benchmark D (issue 9, the lubricated → dry hand-over): the defaults (4-mode rod) with the
+    /// Benchmark D (the lubricated → dry hand-over): the defaults (4-mode rod) with the
     /// lubricated joint, a 40× thinner lubricant (0.01 Pa s) and a 0.5 kg slider, so that the
     /// journal crosses the switch eccentricity ratio and reaches metal contact many times per
     /// revolution.

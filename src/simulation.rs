@@ -247,7 +247,7 @@ pub struct Simulation {
 }
 
 impl Simulation {
-    /// A simulation at t = 0 in the initial state of the parameters (MODEL.md §10).
+    /// A simulation at t = 0 in the initial state of the parameters (docs/model.md §10).
     pub fn new(parameters: Parameters) -> Result<Self, ModelError> {
         let mut mechanism = SliderCrank::new(&parameters)?;
         let mut state = mechanism.initial_state(

@@ -1,4 +1,4 @@
-//! Benchmark D: the lubricated joint handing over to dry contact and back (issue 9, acceptance 4).
+//! Benchmark D: the lubricated joint handing over to dry contact and back.
 //! Two revolutions at 5000 rpm; the journal crosses the switch eccentricity ratio ε_b = 0.95 in
 //! both directions at least ten times, the joint force is continuous across every crossing, and
 //! the energy balance holds throughout.

@@ -1,4 +1,4 @@
-//! Random parameter sets near the defaults (issue 11): each gives a clean error naming a parameter,
+//! Random parameter sets near the defaults: each gives a clean error naming a parameter,
 //! or a run whose outputs are finite and whose energy balance holds, within the work limit.
 //! A fixed-seed sample small enough for CI.
 

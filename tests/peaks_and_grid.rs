@@ -1,4 +1,4 @@
-//! What a master reads does not depend on its grid (issue 9, acceptance 1 and 2): the peak-hold
+//! What a master reads does not depend on its grid: the peak-hold
 //! outputs catch the impact peaks that sampled outputs alias, and with unchanged inputs the
 //! internal step sequence, hence the solution, is the same for every communication step.
 
@@ -69,7 +69,7 @@ fn run(p: Parameters, dt: f64, mut input: impl FnMut(&mut Simulation, f64)) -> R
 
 fn constant_input(_: &mut Simulation, _: f64) {}
 
-/// Acceptance 1: on benchmark B the maxima of the peak-hold outputs agree within 2 % between
+/// On benchmark B the maxima of the peak-hold outputs agree within 2 % between
 /// communication steps 1e-4 and 1e-5 s and with the maximum over the internal steps of a run made
 /// in one communication interval; the contact onsets are the same; the sampled joint force misses
 /// the peak at coarse steps.
@@ -153,7 +153,7 @@ fn peak_hold_outputs_find_peaks_inside_internal_steps() {
     }
 }
 
-/// Acceptance 2: with a constant speed input, slider position, joint force and step count at
+/// With a constant speed input, slider position, joint force and step count at
 /// 24 ms agree for communication steps 2e-4 … 2.5e-5 s (the internal steps are the same; only the
 /// dense-output evaluation point differs, here not at all). With an input that changes at every
 /// communication point the step sequence restarts there, and the run still completes.

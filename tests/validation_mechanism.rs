@@ -1,6 +1,6 @@
 //! The slider-crank against closed-form kinematics, energy conservation and balance, the
 //! clearance → 0 limit, benchmark A's impact physics, the lubricated orbit, and the determinism
-//! the FMU relies on (issue 3 acceptance list).
+//! the FMU relies on.
 
 // Test code: a failed unwrap is a failed test, with its message.
 #![allow(clippy::unwrap_used, clippy::expect_used)]
@@ -26,7 +26,7 @@ fn run(p: Parameters, t_end: f64, n: usize) -> (Simulation, Vec<Outputs>) {
     (sim, rows)
 }
 
-/// Acceptance 1: rigid rod, ideal joints, 5000 rpm: slider x, ẋ, ẍ equal the closed form
+/// Rigid rod, ideal joints, 5000 rpm: slider x, ẋ, ẍ equal the closed form
 /// x = r cos θ + √(l² − r² sin² θ) and its derivatives to 1e-6 over two revolutions
 /// (relative to each quantity's amplitude; integrator rtol 1e-10).
 #[test]
@@ -60,14 +60,14 @@ fn rigid_ideal_slider_follows_closed_form_kinematics() {
         .iter()
         .map(|o| o.slider_acceleration.abs())
         .fold(0.0, f64::max);
-    // MODEL.md: ω² r (1 + r/l) = 19 419 m/s² at θ = 0.
+    // docs/model.md: ω² r (1 + r/l) = 19 419 m/s² at θ = 0.
     assert!(
         (peak - 19_419.0).abs() < 1.0,
         "peak slider acceleration {peak}"
     );
 }
 
-/// Acceptance 2 (balance): with every rod and joint model, speed-driven for one revolution,
+/// With every rod and joint model, speed-driven for one revolution,
 /// T + U + V_c − W_drive − W_joint stays constant. The residual is reported relative to the
 /// largest kinetic energy; with rtol = 1e-8 it must stay below 1e-5.
 #[test]
@@ -105,7 +105,7 @@ fn energy_balance_holds_for_every_model() {
     }
 }
 
-/// Acceptance 2 (conservation): restitution 1, no friction, free-spinning torque-driven crank with
+/// Restitution 1, no friction, free-spinning torque-driven crank with
 /// zero torque: total energy is conserved to 1e-4 over one second (83 revolutions, ~300 impacts).
 /// The model's conservation is checked with the non-dissipative explicit reference method; the
 /// implicit method damps unresolved frequencies by design (its dissipation is measured by
@@ -223,7 +223,7 @@ fn generalized_alpha_dissipation_follows_the_spectral_radius() {
     assert!(losses[0] < losses[1] && losses[1] < losses[2], "{losses:?}");
 }
 
-/// Issue 9, acceptance 3: low restitution (c_e = 0.3) with every contact law, at 50 rpm (slow,
+/// Low restitution (c_e = 0.3) with every contact law, at 50 rpm (slow,
 /// persistent contact) and at 5000 rpm (impacts): the normal force never pulls (F · e ≤ 0 in
 /// contact), the dissipated energy never decreases, the energy balance holds, the run completes.
 #[test]
@@ -294,7 +294,7 @@ fn acceleration_error(p: Parameters, ideal: &[Outputs]) -> f64 {
     (sum / second.len() as f64).sqrt()
 }
 
-/// Acceptance 3: clearance → 0 with the (stiffening) Hertz contact: the dry joint's slider
+/// Clearance → 0 with the (stiffening) Hertz contact: the dry joint's slider
 /// acceleration approaches the ideal joint's, the error falling monotonically over
 /// c = 1e-4, 1e-5, 1e-6 m.
 #[test]
@@ -330,7 +330,7 @@ fn vanishing_clearance_approaches_the_ideal_joint() {
     assert!(errors[2] < 0.05 * 19_419.0, "{errors:?}");
 }
 
-/// Acceptance 4: benchmark A (rigid rod, 0.5 mm dry clearance, c_e = 0.9, μ = 0, 5000 rpm):
+/// Benchmark A (rigid rod, 0.5 mm dry clearance, c_e = 0.9, μ = 0, 5000 rpm):
 /// free flight first (the journal starts centred), then impacts; over two revolutions the joint
 /// force and slider acceleration show impact spikes well above the ideal joint's, and periods of
 /// free flight (zero force) and of contact. Figures are printed for the README.
@@ -379,7 +379,7 @@ fn benchmark_a_shows_flight_impact_and_contact() {
     );
 }
 
-/// Acceptance 5: lubricated joint (benchmark C film, rigid rod) at moderate speed (1000 rpm): the
+/// Lubricated joint (benchmark C film, rigid rod) at moderate speed (1000 rpm): the
 /// journal orbit stays inside the clearance circle and the film force is smooth: over the second
 /// revolution (after the start-up transient in which the centred journal is pushed off-centre)
 /// no sample-to-sample change exceeds 2 % of the peak at a 10 µs output interval.
@@ -412,7 +412,7 @@ fn lubricated_orbit_stays_inside_the_clearance() {
     assert!(jump < 0.02 * peak);
 }
 
-/// Acceptance 8: the result does not depend on how [0, T] is cut into advance_to calls beyond the
+/// The result does not depend on how [0, T] is cut into advance_to calls beyond the
 /// integration error itself (measured as the change from rtol to rtol/100; impacts amplify it far
 /// above rtol), and restore-then-advance is bit-identical to never having stopped.
 #[test]
@@ -488,7 +488,7 @@ fn inconsistent_geometry_is_rejected() {
     assert!(err.starts_with("rod.length = 0.12 is outside"), "{err}");
 }
 
-/// Issue 11 (bounded work): an interval that needs more internal steps than
+/// Bounded work: an interval that needs more internal steps than
 /// `solver.maxStepsPerInterval` ends with an error that names the limit and the likely causes,
 /// at the last accepted step, and the simulation stays usable (snapshot, restore with a higher
 /// limit, advance).
@@ -550,7 +550,7 @@ fn output_balance_residual(rows: &[Outputs]) -> f64 {
         / kinetic
 }
 
-/// Issue 11 (energy account): from the outputs alone the balance closes with the dry joint and
+/// Energy account: from the outputs alone the balance closes with the dry joint and
 /// gravity (before energy.contact was an output, it was off by 2.6e-3 of the kinetic energy on
 /// benchmark B).
 #[test]
@@ -572,7 +572,7 @@ fn energy_outputs_close_the_balance() {
     assert!(residual < 1e-6, "{residual:e}");
 }
 
-/// Issue 11 acceptance 3: the outputs' energy-balance residual over one revolution falls at least
+/// The outputs' energy-balance residual over one revolution falls at least
 /// 100× from rtol 1e-4 to 1e-8 on benchmarks A, B (4 modes and full), C, with the torque drive
 /// and a slider force, with friction 0.1, with gravity 9.81 and with material damping 1e-5 s
 /// (the work integrals are states under the same error control as the motion).
@@ -667,7 +667,7 @@ fn warnings_over_2_ms(mut sim: Simulation) -> Vec<String> {
     warnings
 }
 
-/// Issue 11 (validity monitors): the accepted extremes of the issue leave the model's domain with
+/// Validity monitors: the documented extreme parameter sets leave the model's domain with
 /// a warning naming the value and the limit, once per cause; the benchmarks stay silent.
 #[test]
 fn leaving_the_domain_is_reported_once_per_cause() {
@@ -749,7 +749,7 @@ fn start_from_rest_is_equilibrated() {
     }
 }
 
-/// Issue 11 (errors that name their cause): a lubricated joint with a 1 nm clearance is accepted
+/// Errors that name their cause: a lubricated joint with a 1 nm clearance is accepted
 /// and gets an equilibrated start (the quasi-static Newton's finite differences use at least 1e-4
 /// of the rod's length scale; regression: "singular Newton matrix" at instantiation), but its film
 /// is too stiff to integrate: the interval fails with a message naming the clearance and the

@@ -67,7 +67,7 @@ const ALL: &[State] = &[
 ];
 
 impl Call {
-    /// The states in which the call is legal (FMI 2.0.4 table in §4.2.4; FMI.md §1.3).
+    /// The states in which the call is legal (FMI 2.0.4 table in §4.2.4; docs/fmi.md §1.3).
     pub fn allowed(self) -> &'static [State] {
         match self {
             Call::SetDebugLogging => ALL,

@@ -1,6 +1,6 @@
 """Whole-FMU benchmark through fmpy: simulate_fmu of the DefaultExperiment (two revolutions of
-benchmark B at 5000 rpm, 1e-4 s communication step) for the rod and joint models of issue 8's
-acceptance list, all in one run. Prints a Markdown table of wall time (best of five rounds, each round
+benchmark B at 5000 rpm, 1e-4 s communication step) for the rigid, reduced and full rods with the dry
+and lubricated joints, all in one run. Prints a Markdown table of wall time (best of five rounds, each round
 running every case once), the ratio to the rigid rod with the same joint, and the integrator's steps and
 right-hand-side evaluations.
 

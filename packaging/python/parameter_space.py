@@ -1,9 +1,9 @@
-"""Random parameter sets through the FMU (issue 11): does every set the modelDescription accepts
+"""Random parameter sets through the FMU: does every set the modelDescription accepts
 give a physical answer in bounded time, or a clear error?
 
     python packaging/python/parameter_space.py [--near 200] [--ranges 200] [--seed 2026]
                                                [--jobs 2] [--fmu PATH] [--json FILE]
-    python packaging/python/parameter_space.py --listed      # the cases named in issue 11
+    python packaging/python/parameter_space.py --listed      # the documented edge cases
 
 Each case runs through fmpy in its own process (a crash of the FMU would be seen as a dead
 process, not end the study), with logging on, a 0.1 ms communication step and 4 ms of simulated
@@ -54,8 +54,8 @@ BALANCE = {"energy.kinetic": 1, "rod.deformationEnergy": 1, "energy.contact": 1,
 #: Validity-monitor bounds (src/simulation.rs, `validity`), with the word their warning contains.
 MONITORS = {"penetration": 0.01, "deflection": 0.05, "crank speed": 1.01e4, "slider position": 0.01}
 
-#: Issue 11's cases, each with the variables it changes (and a longer run where the issue timed
-#: whole revolutions).
+#: The documented edge cases, each with the variables it changes (and a longer run where whole
+#: revolutions are timed).
 LISTED = [
     ("joint.friction = 1", {"joint.friction": 1.0}, 24e-3),
     ("joint.friction = 0.3", {"joint.friction": 0.3}, 24e-3),
@@ -314,7 +314,7 @@ def main(argv=None):
     parser.add_argument("--timeout", type=float, default=600.0)
     parser.add_argument("--fmu", default=str(FMU))
     parser.add_argument("--json", help="write every case's record to this file")
-    parser.add_argument("--listed", action="store_true", help="run issue 11's listed cases")
+    parser.add_argument("--listed", action="store_true", help="run the documented edge cases")
     args = parser.parse_args(argv)
     md = read_model_description(args.fmu)
     if args.listed:

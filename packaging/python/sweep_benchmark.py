@@ -1,4 +1,4 @@
-"""Benchmark of the study tool (issue 10, acceptance 7): 32 cases (the 4-mode rod, dry joint,
+"""Benchmark of the study tool: 32 cases (the 4-mode rod, dry joint,
 4 clearances × 8 speeds, 24 ms each) run (a) serially with bare fmpy `simulate_fmu` calls on the
 unpacked FMU, (b) with `fsc.sweep.run` on a running LocalCluster of 1 worker (the tool's overhead per case)
 and (c) of 2 workers (the speed-up), in round-robin rounds (best round each). The clusters'

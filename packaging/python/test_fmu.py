@@ -169,7 +169,7 @@ def test_fmu_equals_library(formulation, joint):
 
 
 def test_fmpy_and_libcosim_give_identical_outputs():
-    """Acceptance 4: the DefaultExperiment through fmpy and through libcosimpy (OSP libcosim, FMIL,
+    """The DefaultExperiment through fmpy and through libcosimpy (OSP libcosim, FMIL,
     integer-nanosecond clock) gives bit-identical outputs: the FMU rounds communication points to
     its 2^-40 s clock grid, so the masters' different time arithmetic does not matter."""
     import os
@@ -197,7 +197,7 @@ def test_fmpy_and_libcosim_give_identical_outputs():
 
 
 def test_peak_hold_outputs_do_not_depend_on_the_output_interval():
-    """Issue 9: through fmpy, the largest joint.forcePeak agrees within 2 % between communication
+    """Through fmpy, the largest joint.forcePeak agrees within 2 % between communication
     steps of 1e-4 and 1e-5 s, the sampled joint.force at a 1 ms step misses the impacts, the onset
     counts add up, and the state at the stop time is the same for every step."""
     outputs = ["joint.force", "joint.forcePeak", "slider.accelerationPeak", "joint.contactOnsets",

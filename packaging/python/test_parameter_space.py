@@ -1,4 +1,4 @@
-"""Issue 11: random parameter sets through the FMU keep its promises (a fixed-seed sample of
+"""Random parameter sets through the FMU keep its promises (a fixed-seed sample of
 parameter_space.py's study, small enough for CI), and the study's checks can fail."""
 import sys
 from pathlib import Path

@@ -1,4 +1,4 @@
-"""The README's variable tables equal those generated from modelDescription.xml (issue 11)."""
+"""The README's variable tables equal those generated from modelDescription.xml."""
 import sys
 from pathlib import Path
 

@@ -1,4 +1,4 @@
-"""Tests of the parameter-study tool (`python -m fsc sweep`, issue 10) on the packaged FMU."""
+"""Tests of the parameter-study tool (`python -m fsc sweep`) on the packaged FMU."""
 import json
 import os
 import signal
@@ -55,7 +55,7 @@ def serial(study):
 
 
 def test_local_cluster_equals_serial_runs(tmp_path):
-    """Acceptance 1: a 2×2 study on a LocalCluster with 2 workers gives, case by case, bit for bit
+    """A 2×2 study on a LocalCluster with 2 workers gives, case by case, bit for bit
     the metrics and kept series of the same cases run serially through fmpy in this process."""
     study = study_mod.load(write_study(tmp_path, SMALL))
     assert len(study.cases) == 4
@@ -126,7 +126,7 @@ def test_cases_in_parallel_threads_keep_their_own_instance_and_messages(tmp_path
 
 
 def test_failing_case_is_a_row(tmp_path):
-    """Acceptance 3: clearance 0 with the dry joint is an error row with the FMU's message; the
+    """Clearance 0 with the dry joint is an error row with the FMU's message; the
     other cases are correct."""
     body = SMALL.replace("[2e-4, 5e-4]", "[0.0, 5e-4]")
     study = study_mod.load(write_study(tmp_path, body))
@@ -144,7 +144,7 @@ def test_failing_case_is_a_row(tmp_path):
 
 
 def test_interrupted_study_resumes(tmp_path):
-    """Acceptance 4: finished cases are not run again, and the final dataset equals an
+    """Finished cases are not run again, and the final dataset equals an
     uninterrupted run's."""
     study = study_mod.load(write_study(tmp_path, SMALL))
     out = tmp_path / "out"
@@ -167,7 +167,7 @@ def test_interrupted_study_resumes(tmp_path):
     ('[fixed]\n"joint.force" = 1.0\n', "joint.force is an output"),
 ])
 def test_bad_study_fails_before_any_run(tmp_path, entry, expected):
-    """Acceptance 5: an unknown variable, an out-of-range value or a wrong type fails before any
+    """An unknown variable, an out-of-range value or a wrong type fails before any
     run, naming the entry (and the range)."""
     path = write_study(tmp_path, "stop_time = 0.001\n" + entry)
     with pytest.raises(study_mod.StudyError, match=None) as e:
@@ -180,7 +180,7 @@ def test_bad_study_fails_before_any_run(tmp_path, entry, expected):
 
 
 def test_killed_worker_does_not_lose_cases(tmp_path):
-    """Acceptance 2: killing one worker process in the middle of a study still completes every
+    """Killing one worker process in the middle of a study still completes every
     case, with the results of an undisturbed run."""
     body = SMALL.replace("stop_time = 0.004", "stop_time = 0.012").replace(
         "[2e-4, 5e-4]", "[1e-4, 2e-4, 3e-4, 5e-4]")
@@ -205,7 +205,7 @@ def test_killed_worker_does_not_lose_cases(tmp_path):
 
 
 def test_existing_scheduler(tmp_path):
-    """Acceptance 6: `--scheduler` runs the study on a separately started `dask scheduler` and
+    """`--scheduler` runs the study on a separately started `dask scheduler` and
     `dask worker` (with this package on their path; the FMU reaches them through Dask)."""
     port = 8786 + os.getpid() % 1000
     address = f"tcp://127.0.0.1:{port}"

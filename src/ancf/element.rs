@@ -20,7 +20,7 @@
 //! the same Gauss points, so that it equals ėᵀQ_d of the discrete force exactly.
 //!
 //! # References
-//! - Gerstmayr & Irschik (2008), J. Sound Vib. 318, 461; MODEL.md §1.2–1.4.
+//! - Gerstmayr & Irschik (2008), J. Sound Vib. 318, 461; docs/model.md §1.2–1.4.
 //! - Exudyn `CObjectANCFCable2D.cpp` (strain variations, quadrature orders).
 
 use nalgebra::{Matrix2, Matrix4, SMatrix, SVector, Vector2, Vector4};
@@ -128,7 +128,7 @@ impl Element {
         &self.section
     }
 
-    /// Scalar consistent mass m = ρA ∫ s sᵀ dx (closed form, MODEL.md §1.2); M_e = m ⊗ I₂.
+    /// Scalar consistent mass m = ρA ∫ s sᵀ dx (closed form, docs/model.md §1.2); M_e = m ⊗ I₂.
     pub fn scalar_mass_matrix(&self) -> Matrix4<f64> {
         let l = self.l;
         let c = self.section.rho_a * l;
@@ -157,7 +157,7 @@ impl Element {
         kron_mat(&self.scalar_mass_matrix(), &Matrix2::identity())
     }
 
-    /// Scalar bending stiffness k = EI ∫ s'' s''ᵀ dx = EI/l³ [12 6l −12 6l; …] (MODEL.md §1.4b).
+    /// Scalar bending stiffness k = EI ∫ s'' s''ᵀ dx = EI/l³ [12 6l −12 6l; …] (docs/model.md §2: the stiffness of the straight rod).
     ///
     /// This is the stiffness of the unstressed straight element in each Cartesian direction; it is
     /// isotropic, which is what makes the Craig–Bampton subspace independent of the rod's orientation.
@@ -184,7 +184,7 @@ impl Element {
         )
     }
 
-    /// Gravity load Q_g = ρA ∫ Sᵀ g dx = ρA l [g/2, l g/12, g/2, −l g/12] (MODEL.md §1.3).
+    /// Gravity load Q_g = ρA ∫ Sᵀ g dx = ρA l [g/2, l g/12, g/2, −l g/12] (docs/model.md §1.3).
     pub fn gravity_force(&self, g: Vector2<f64>) -> ElementVector {
         let c = self.section.rho_a * self.l;
         kron(

@@ -2,7 +2,7 @@
 //!
 //! Each node carries 4 absolute coordinates, its position r and slope r_x = ∂r/∂x, so an element has
 //! e = [r₁, r₁,ₓ, r₂, r₂,ₓ] ∈ ℝ⁸ and the rod with n elements has 4(n + 1) coordinates, node by node.
-//! The mass matrix is constant; the elastic force is the only nonlinear term (MODEL.md §1).
+//! The mass matrix is constant; the elastic force is the only nonlinear term (docs/model.md §1).
 //!
 //! # References
 //! - J. Gerstmayr, H. Irschik (2008), On the correct representation of bending in the absolute nodal

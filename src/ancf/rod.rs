@@ -8,7 +8,7 @@
 //! allocates nothing.
 //!
 //! # References
-//! - MODEL.md §1; A. A. Shabana (2005), Dynamics of Multibody Systems, ch. 7.
+//! - docs/model.md §1; A. A. Shabana (2005), Dynamics of Multibody Systems, ch. 7.
 
 use faer::{Mat, MatMut};
 use nalgebra::Vector2;
@@ -38,7 +38,7 @@ pub struct RodProperties {
 }
 
 impl RodProperties {
-    /// The steel rod of MODEL.md benchmark B: L = 0.12 m, E = 207 GPa, ρ = 7800 kg/m³,
+    /// The steel rod of benchmark B (docs/model.md §5(b)): L = 0.12 m, E = 207 GPa, ρ = 7800 kg/m³,
     /// A = 2.2436e-4 m² (mass 0.21 kg), I = 4.195e-9 m⁴, undamped.
     pub fn benchmark_b() -> Self {
         Self {

@@ -7,7 +7,7 @@
 //! S₁ + S₃ = 1 and S₂ + S₄ + l S₃ = x, so every linear field p + x t is represented exactly.
 //!
 //! # References
-//! - MODEL.md §1.1; Exudyn `CObjectANCFCable2D::ComputeShapeFunctions`.
+//! - docs/model.md §1.1; Exudyn `CObjectANCFCable2D::ComputeShapeFunctions`.
 
 use nalgebra::Vector4;
 

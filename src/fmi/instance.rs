@@ -15,7 +15,7 @@ use crate::params::{ContactLaw, DriveMode, InitialState, JointModel, Parameters,
 use crate::reduction::Boundary;
 use crate::simulation::{Input, InputSignal, Inputs, Outputs, Simulation};
 
-/// Tolerance on the communication point: |t − t_expected| ≤ 1e-9 (1 + |t|) (FMI.md §1.6).
+/// Tolerance on the communication point: |t − t_expected| ≤ 1e-9 (1 + |t|) (docs/fmi.md §1.6).
 const TIME_TOLERANCE: f64 = 1e-9;
 
 impl From<ModelError> for FmuError {

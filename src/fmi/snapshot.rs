@@ -481,7 +481,7 @@ mod tests {
         }
     }
 
-    /// Issue 11: a state that passes the checksum but carries values fmi2SetReal would refuse
+    /// A state that passes the checksum but carries values fmi2SetReal would refuse
     /// (non-finite or out-of-range inputs and parameters, non-finite times, an inconsistent
     /// simulation) is rejected with a message naming what is wrong.
     #[test]

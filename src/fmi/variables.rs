@@ -293,7 +293,7 @@ pub enum Vr {
 /// 5000 rpm in rad/s (benchmark B); the same expression as `params::BENCHMARK_SPEED`.
 const SPEED: f64 = 5000.0 * core::f64::consts::TAU / 60.0;
 
-/// Every variable, in value-reference order. Defaults are MODEL.md benchmark B.
+/// Every variable, in value-reference order. Defaults are benchmark B (docs/model.md §5(b)).
 ///
 /// There is no `time` variable: FMI 2.0 makes the independent variable optional, and FMIL (used by
 /// the FMU Compliance Checker and libcosim) reports an independent variable without `start` as a

@@ -11,14 +11,14 @@
 //! ```
 //! For ε̇ = 0, w > 0 the region is (0, π) and the forces are Flores's closed forms
 //! F_r = −K_h 2ε²w/(1−ε²)², F_t = K_h πεw/(2(1−ε²)^{3/2}), K_h = μRL³/(2c²) (tested below).
-//! The fixed π-film with its mirror image for w < 0 (MODEL.md §4 (i)) has a jump in F_t at w = 0;
+//! The fixed π-film with its mirror image for w < 0 (docs/model.md §4 (i)) has a jump in F_t at w = 0;
 //! the journal then chatters on it and the error-controlled integrator stalls (measured: 2.2 million
 //! rejected steps in the first 0.5 ms of benchmark C). The positive-pressure region moves
-//! continuously with (ε̇, w), so the force is continuous (MODEL.md §4 (ii)).
+//! continuously with (ε̇, w), so the force is continuous (docs/model.md §4 (ii)).
 //! The integral is evaluated by composite Gauss–Legendre, 24 panels × 5 points: the integrand's
 //! peak at ε = 0.95 has a width ≈ √((1 − ε)/ε) ≈ 0.23 rad, twice the panel width π/24.
 //!
-//! Hand-over (MODEL.md §4, continuous rule): for ε ≥ ε_b the film force is evaluated with ε
+//! Hand-over (docs/model.md §4, continuous rule): for ε ≥ ε_b the film force is evaluated with ε
 //! clamped to ε_b (actual ε̇ and w), and the dry contact force of [`DryContact`] is added whenever
 //! δ = |e| − c > 0. Both pieces are continuous, so the total force is continuous in e.
 //!
@@ -29,7 +29,7 @@
 //! - O. Pinkus, B. Sternlicht (1961), Theory of Hydrodynamic Lubrication, McGraw-Hill.
 //! - L. L. G. Daniel, T. H. Machado, K. L. Cavalca (2016), Mech. Mach. Theory 99, 19 (time-dependent
 //!   cavitation boundaries).
-//! - MODEL.md §4 (pressure, sign convention verified against direct integration).
+//! - docs/model.md §4 (pressure, sign convention verified against direct integration).
 
 use nalgebra::Vector2;
 
@@ -167,7 +167,7 @@ mod tests {
         }
     }
 
-    /// MODEL.md §5(b): K_h = 0.486 N s for the benchmark C bearing.
+    /// docs/model.md §5(b): K_h = 0.486 N s for the benchmark C bearing.
     #[test]
     fn film_coefficient_of_benchmark_c() {
         assert!((bearing().film_coefficient() - 0.486).abs() < 0.001);

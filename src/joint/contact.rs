@@ -17,7 +17,7 @@
 //! - Lankarani & Nikravesh (1990), J. Mech. Des. 112, 369–376 (hysteresis damping).
 //! - J. Ambrósio (2003), Impact of rigid and flexible multibody systems, in Virtual Nonlinear
 //!   Multibody Systems, Springer (friction correction c_d).
-//! - Flores et al. (2008), book, ch. 4–5; MODEL.md §3.
+//! - Flores et al. (2008), book, ch. 4–5; docs/model.md §3.
 //! - P. Flores, M. Machado, M. T. Silva, J. M. Martins (2011), On the continuous contact force
 //!   models for soft materials in multibody dynamics, Multibody Syst. Dyn. 25, 357–375.
 //! - S. Hu, X. Guo (2015), A dissipative contact force model for impact analysis in multibody
@@ -155,7 +155,7 @@ mod tests {
         panic!("the impact did not end");
     }
 
-    /// Issue 9, acceptance 3: the kinetic energy lost in an isolated impact, 1 − e_eff², is the
+    /// The kinetic energy lost in an isolated impact, 1 − e_eff², is the
     /// 1 − c_e² the Flores and Hu–Guo laws are built for, within 10 %, for c_e = 0.3, 0.6, 0.9.
     /// Lankarani–Nikravesh, derived for c_e near 1, dissipates too little: measured −42 %, −33 %
     /// and −13 % of the predicted loss (e_eff = 0.684, 0.756, 0.913); asserted to stay short by
@@ -208,7 +208,7 @@ mod tests {
         }
     }
 
-    /// MODEL.md §3: steel–steel, R_i = 10, R_j = 9.5 mm gives K = 6.61e10 N/m^1.5.
+    /// docs/model.md §3: steel–steel, R_i = 10, R_j = 9.5 mm gives K = 6.61e10 N/m^1.5.
     #[test]
     fn hertz_stiffness_of_the_benchmark() {
         let k = contact().stiffness;

@@ -1,6 +1,6 @@
 //! The rod–slider joint: ideal, dry clearance, or lubricated.
 //!
-//! Kinematics (MODEL.md §3, Sun et al. 2015 eqs. 4–5): the eccentricity e = r_journal − r_bearing,
+//! Kinematics (docs/model.md §3, Sun et al. 2015 eqs. 4–5): the eccentricity e = r_journal − r_bearing,
 //! n = e/|e|, t = ẑ × n, penetration δ = |e| − c. The joint returns the force on the journal
 //! (the bearing gets its opposite) and the moment on the journal about its centre.
 //!
@@ -19,7 +19,7 @@ pub use contact::{DryContact, hertz_stiffness};
 
 use crate::params::{JointModel, Parameters};
 
-/// Smallest impact velocity used in the Lankarani–Nikravesh damping term \[m/s\] (MODEL.md §10).
+/// Smallest impact velocity used in the Lankarani–Nikravesh damping term \[m/s\] (docs/model.md §10).
 pub const MIN_IMPACT_VELOCITY: f64 = 1e-4;
 
 /// Relative kinematics of the journal in the bearing.

@@ -20,7 +20,7 @@
 //! # References
 //! - Sun et al. (2015), Mech. Mach. Theory 85, eqs. (1)–(3).
 //! - P. Flores et al. (2008), Kinematics and Dynamics of Multibody Systems with Imperfect Joints.
-//! - MODEL.md §0, §3–§6, §10.
+//! - docs/model.md §0, §3–§6, §10.
 
 pub mod constraints;
 pub mod rod_body;
@@ -38,7 +38,7 @@ use crate::math;
 use crate::params::{DriveMode, JointModel, Parameters, RodFormulation};
 
 /// Largest penetration accepted at the first step of a contact event \[m\]: 1e-3 of the Hertz
-/// maximum penetration of a 0.1 kg, 1 m/s impact (≈ 20 µm, MODEL.md §6), so that the impact
+/// maximum penetration of a 0.1 kg, 1 m/s impact (≈ 20 µm, docs/model.md §6), so that the impact
 /// velocity is located accurately and the integrator never starts a contact deep inside.
 pub const CONTACT_ONSET_PENETRATION: f64 = 2e-8;
 
@@ -436,7 +436,7 @@ impl SliderCrank {
     }
 
     /// Initial state: crank at `angle` turning at `speed`, rod straight and unstressed, journal
-    /// centred, every velocity that of the ideal mechanism (MODEL.md §10).
+    /// centred, every velocity that of the ideal mechanism (docs/model.md §10).
     pub fn initial_state(&self, angle: f64, speed: f64) -> Vec<f64> {
         let (r_c, l) = (self.crank_length, self.rod_length);
         let (sin, cos) = math::sin_cos(angle);

@@ -164,14 +164,14 @@ impl RodBody {
         }
     }
 
-    /// Angular velocity of the rod end B, ω = (d × ḋ)/|d|² (MODEL.md §1.1).
+    /// Angular velocity of the rod end B, ω = (d × ḋ)/|d|² (docs/model.md §1.1).
     pub fn end_angular_velocity(&self, p: &[f64], p_dot: &[f64]) -> f64 {
         let d = self.end_direction(p);
         cross(d, self.end_direction(p_dot)) / d.norm_squared()
     }
 
     /// Adds the generalised force of a moment `m` acting at B: m (∂φ/∂p)ᵀ with
-    /// ∂φ/∂d = ẑ × d / |d|² (MODEL.md §1.6).
+    /// ∂φ/∂d = ẑ × d / |d|² (docs/model.md §1.6).
     pub fn add_end_moment(&self, p: &[f64], m: f64, out: &mut [f64]) {
         let d = self.end_direction(p);
         let g = m / d.norm_squared() * Vector2::new(-d.y, d.x);
@@ -187,7 +187,7 @@ impl RodBody {
     }
 
     /// Mid-span deflection: displacement of the point at arc length l/2 perpendicular to the chord
-    /// A → B, positive to the left of the chord direction (MODEL.md §10). 0 for the rigid rod.
+    /// A → B, positive to the left of the chord direction (docs/model.md §10). 0 for the rigid rod.
     pub fn midspan_deflection(&mut self, p: &[f64]) -> f64 {
         match self {
             Self::Rigid { .. } => 0.0,

@@ -9,7 +9,7 @@
 //! ```
 //! K and M are the rod's scalar reference matrices ⊗ I₂ (bending stiffness EI ∫ s''s''ᵀ and the
 //! consistent mass), so every mode shape enters in both Cartesian directions and the reduced space
-//! does not depend on the rod's orientation (MODEL.md §2). With global ordering the whole basis is
+//! does not depend on the rod's orientation (docs/model.md §2). With global ordering the whole basis is
 //! V = v ⊗ I₂ for a scalar basis v of size 2(n+1) × (b + m), b boundary coordinates per direction.
 //!
 //! Two interfaces ([`Boundary`]):
@@ -31,7 +31,7 @@
 //! - R. R. Craig, M. C. C. Bampton (1968), Coupling of substructures for dynamic analyses, AIAA J. 6,
 //!   1313–1319.
 //! - Sun et al. (2015), Mech. Mach. Theory 85, eqs. (2)–(3) (read as q ≈ V p).
-//! - MODEL.md §2 and §10 (mode count, isotropic pairs; positions-only interface "also valid because
+//! - docs/model.md §2 and §10 (mode count, isotropic pairs; positions-only interface "also valid because
 //!   both joints are pins").
 
 use faer::linalg::matmul::matmul;

@@ -127,7 +127,7 @@ pub struct Instance {
     pub name: String,
 }
 
-// SAFETY: an FMU instance may be used from any thread, one call at a time (FMI.md §1.4 item 7).
+// SAFETY: an FMU instance may be used from any thread, one call at a time (docs/fmi.md §1.4).
 unsafe impl Send for Instance {}
 
 impl Drop for Instance {

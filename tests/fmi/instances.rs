@@ -42,7 +42,7 @@ fn serial(name: &str, n_modes: i32) -> Vec<Vec<f64>> {
         .collect()
 }
 
-/// Acceptance 5: two instances with different nModes, interleaved step by step, equal their serial
+/// Two instances with different nModes, interleaved step by step, equal their serial
 /// runs bit for bit.
 #[test]
 fn interleaved_instances_equal_serial_runs() {
@@ -56,7 +56,7 @@ fn interleaved_instances_equal_serial_runs() {
     }
 }
 
-/// Acceptance 5: 8 threads × 4 instances (different nModes) equal their serial runs bit for bit.
+/// 8 threads × 4 instances (different nModes) equal their serial runs bit for bit.
 #[test]
 fn threads_equal_serial_runs() {
     let modes = [0, 2, 4, 6];
@@ -87,8 +87,8 @@ fn threads_equal_serial_runs() {
     }
 }
 
-/// The FMU equals the library's Simulation for the same parameters (bit for bit; ≤ 1e-12 is the
-/// acceptance bound).
+/// The FMU equals the library's Simulation for the same parameters (bit for bit; the test
+/// allows 1e-12).
 #[test]
 fn fmu_equals_library_simulation() {
     let inst = Instance::new("vs-library");

@@ -1,5 +1,5 @@
 //! The ANCF rod against beam theory: rigid-body invariance, consistent tangent, Euler–Bernoulli
-//! cantilever and frequencies, and the large-deflection elastica (MODEL.md §10 anchors).
+//! cantilever and frequencies, and the large-deflection elastica (docs/model.md §10 anchors).
 
 use faer::Mat;
 use flexible_slider_crank::ancf::element::{ElementVector, Section};
@@ -13,7 +13,7 @@ fn benchmark_rod(n: usize) -> Rod {
     Rod::new(RodProperties::benchmark_b(), n).unwrap()
 }
 
-/// Acceptance 1: for random rigid placements (translation + rotation) of the straight rod the
+/// For random rigid placements (translation + rotation) of the straight rod the
 /// elastic force is zero to round-off (≤ 1e-9 EA) and so is the strain energy.
 #[test]
 fn rigid_motion_gives_zero_force_and_energy() {
@@ -44,7 +44,7 @@ fn deformed(rng: &mut Lcg, l: f64, amp: f64) -> ElementVector {
     ElementVector::from_fn(|i, _| base[i] + amp * scale[i] * rng.next())
 }
 
-/// Acceptance 2: the analytic tangent equals central differences of the elastic force.
+/// The analytic tangent equals central differences of the elastic force.
 /// Step h = 1e-6 (relative): truncation O(h²) ~ 1e-12, round-off ~ 1e-16/h ~ 1e-10 of ‖K‖.
 #[test]
 fn tangent_equals_central_differences() {
@@ -155,7 +155,7 @@ fn cantilever_tip(rod: Rod, alpha: f64, steps: usize) -> (f64, f64) {
     (length - e[tip], e[tip + 1])
 }
 
-/// Acceptance 3: small tip load, 4 elements: v = P L³/(3 EI) within 0.1 %. Cubic Hermite elements
+/// Small tip load, 4 elements: v = P L³/(3 EI) within 0.1 %. Cubic Hermite elements
 /// reproduce the linear cubic solution exactly; at α = 1e-4 the geometric nonlinearity is ~α².
 #[test]
 fn linear_cantilever_tip_deflection() {
@@ -171,7 +171,7 @@ fn linear_cantilever_tip_deflection() {
     );
 }
 
-/// Acceptance 4: large deflection with 16 elements against the elastica (MODEL.md §10 table):
+/// Large deflection with 16 elements against the elastica (docs/model.md §10 table):
 /// u/L and v/L within 0.5 %.
 #[test]
 fn large_deflection_matches_elastica() {
@@ -225,7 +225,7 @@ fn bending_frequencies(n: usize) -> ([f64; 3], [f64; 3]) {
     ([pp[0], pp[1], pp[2]], [ff[2], ff[3], ff[4]])
 }
 
-/// Acceptance 5: 16 elements, the first three bending frequencies within 0.5 % of Euler–Bernoulli;
+/// 16 elements, the first three bending frequencies within 0.5 % of Euler–Bernoulli;
 /// the observed convergence order in element size is reported and must be the consistent-mass
 /// cubic element's h⁴ (2(p + 1 − m) with p = 3, m = 2).
 #[test]

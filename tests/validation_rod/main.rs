@@ -1,6 +1,6 @@
 //! Validation of the ANCF rod and its Craig–Bampton reduction against results no one here wrote:
 //! rigid-body invariance, Euler–Bernoulli deflections and frequencies, the elastica, and the
-//! exactness properties of component mode synthesis (issue 2 acceptance list).
+//! exactness properties of component mode synthesis.
 
 // Test code: a failed unwrap is a failed test, with its message.
 #![allow(clippy::unwrap_used, clippy::expect_used)]

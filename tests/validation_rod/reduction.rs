@@ -1,5 +1,5 @@
 //! Craig–Bampton against the full rod: exactness with all modes, Rayleigh–Ritz bounds, rigid
-//! motion, reduced mass, objectivity, and energy conservation (issue 2, acceptance 6–7).
+//! motion, reduced mass, objectivity, and energy conservation.
 
 use faer::{Mat, Side};
 use flexible_slider_crank::ancf::{Rod, RodProperties};
@@ -90,7 +90,7 @@ fn tangent(model: &mut RodModel, p: &[f64]) -> Mat<f64> {
     k
 }
 
-/// Acceptance 6(a): with all interior modes, V is square and invertible, so the reduced model is
+/// With all interior modes, V is square and invertible, so the reduced model is
 /// the full one in other coordinates: equal free–free frequencies and an equal nonlinear transient.
 #[test]
 fn all_modes_reproduce_the_full_model() {
@@ -150,7 +150,7 @@ fn all_modes_reproduce_the_full_model_with(boundary: Boundary) {
     }
 }
 
-/// Acceptance 6(b): pinned–pinned frequencies of the reduced rod bound the full ones from above and
+/// Pinned–pinned frequencies of the reduced rod bound the full ones from above and
 /// decrease monotonically as nModes grows (nested Rayleigh–Ritz subspaces). Round-off margin 1e-10.
 #[test]
 fn reduced_frequencies_approach_the_full_ones_from_above() {
@@ -210,7 +210,7 @@ fn reduced_frequencies_approach_the_full_ones_from_above_with(boundary: Boundary
     }
 }
 
-/// Acceptance 6(c): any rigid placement with uniform stretch of the end nodes (η = 0) is reproduced
+/// Any rigid placement with uniform stretch of the end nodes (η = 0) is reproduced
 /// exactly at every node: r = o + x s t is a static solution, so Ψ contains it. Ψ comes from a
 /// backward-stable Cholesky solve, so the error is ≲ cond(K_ii)·ε·|r|; cond(K_ii) ≈ 1e4 for 8
 /// elements, hence 1e-11 relative (the coordinates here are O(1)).
@@ -253,7 +253,7 @@ fn rigid_motion_of_the_end_nodes_is_exact() {
     }
 }
 
-/// Acceptance 6(d): the reduced mass is symmetric positive definite, and it is the exact projection.
+/// The reduced mass is symmetric positive definite, and it is the exact projection.
 #[test]
 fn reduced_mass_is_symmetric_positive_definite() {
     for (name, model) in models(8) {
@@ -284,7 +284,7 @@ fn reduced_mass_is_symmetric_positive_definite() {
     }
 }
 
-/// Acceptance 6(e): objectivity. The same loaded, vibrating rod (pinned at node 0, released from a
+/// Objectivity. The same loaded, vibrating rod (pinned at node 0, released from a
 /// bend, tip load fixed relative to the rod) at orientations 0°, 30°, 90°, 180° gives the same
 /// response rotated, for every nModes. The integrator's step sequence depends on the orientation
 /// (componentwise error norm), so agreement is to the integration tolerance (1e-12), checked at 1e-8.
@@ -343,7 +343,7 @@ fn response_is_independent_of_orientation() {
     }
 }
 
-/// Acceptance 7: undamped free vibration of a pinned–free rod released from a large bend (1 rad arc)
+/// Undamped free vibration of a pinned–free rod released from a large bend (1 rad arc)
 /// conserves kinetic + strain energy to 1e-6 relative over 100 periods of its first bending mode
 /// (β₁L = 3.9266), integrated with DOPRI5 at rtol = 1e-10; full and reduced.
 #[test]
