@@ -25,3 +25,8 @@ pub use params::Parameters;
 pub use simulation::{Input, InputSignal, Inputs, Outputs, Simulation, Snapshot};
 
 pub use error::ModelError;
+
+/// The README's Rust code, compiled and run by `cargo test --doc` (after the FMU is packaged).
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeSnippets;
