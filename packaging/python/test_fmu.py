@@ -345,3 +345,88 @@ def test_warnings_are_counted_without_logging():
     assert warnings(**{"drive.speed": 400.0}) == 1
     assert warnings(**{"drive.speed": 400.0, "crank.initialSpeed": 400.0}) == 0
     assert warnings(**{"drive.speed": 5000.0, "crank.initialSpeed": 5000.0}) >= 1
+
+
+def test_the_fmus_documentation_is_current_and_complete():
+    """documentation/index.html inside the .fmu is generated from the variable table and the
+    README: it names the default integrator and every contact law, shows the validation section as
+    HTML (no raw Markdown), and every image it shows is in the archive."""
+    import re
+    import zipfile
+
+    with zipfile.ZipFile(FMU) as fmu:
+        page = fmu.read("documentation/index.html").decode()
+        names = set(fmu.namelist())
+    for phrase in ("ESDIRK", "Lankarani", "Flores", "Hu–Guo", "joint.forcePeak"):
+        assert phrase in page, phrase
+    assert "|---|" not in page and "\n### " not in page
+    images = re.findall(r'<img src="([^"]+)"', page)
+    assert len(images) >= 3
+    for image in images:
+        assert f"documentation/{image}" in names, image
+
+
+#: Other parameters a bound needs to be a valid model: the rules between parameters (README "Why the
+#: ranges are what they are") are checked when the model is built, each naming its parameters.
+BOUND_COMPANIONS = {
+    ("rod.nElements", "min"): {"rod.nModes": 0},
+    ("rod.nModes", "max"): {"rod.nElements": 64},
+    ("rod.length", "min"): {"rod.formulation": FORMULATIONS["rigid"], "crank.length": 1e-4},
+    ("rod.area", "min"): {"rod.secondMomentOfArea": 1e-20},
+    ("rod.secondMomentOfArea", "max"): {"rod.length": 100.0, "rod.area": 1.0},
+    ("rod.stiffnessDamping", "max"): {"rod.formulation": FORMULATIONS["rigid"]},
+    ("crank.length", "max"): {"rod.length": 100.0, "rod.formulation": FORMULATIONS["rigid"]},
+    ("joint.clearance", "min"): {"joint.model": 1},
+    ("joint.frictionV0", "max"): {"joint.frictionV1": 10.0},
+    ("joint.frictionV1", "min"): {"joint.frictionV0": 0.0},
+}
+
+
+def test_declared_ranges_are_exactly_what_the_fmu_accepts():
+    """For every parameter with a declared range: both bounds are accepted by fmi2SetReal or
+    fmi2SetInteger and build a model at fmi2ExitInitializationMode (with the other parameters a
+    rule between parameters needs), and the next representable value beyond either bound is
+    rejected by the set call."""
+    from fmpy.fmi1 import FMICallException
+
+    md = read_model_description(FMU)
+    unzipped = extract(FMU)
+    vr = {v.name: v for v in md.modelVariables}
+
+    def outcome(name, value, companions=None):
+        s = FMU2Slave(guid=md.guid, unzipDirectory=unzipped,
+                      modelIdentifier=md.coSimulation.modelIdentifier, instanceName="ranges")
+        s.instantiate()
+        s.setupExperiment(startTime=0.0)
+        try:
+            for n, x in {**(companions or {}), name: value}.items():
+                if vr[n].type == "Real":
+                    s.setReal([vr[n].valueReference], [float(x)])
+                else:
+                    s.setInteger([vr[n].valueReference], [int(x)])
+        except FMICallException:
+            return "set rejected"
+        try:
+            s.enterInitializationMode()
+            s.exitInitializationMode()
+        except FMICallException:
+            return "build rejected"
+        finally:
+            s.freeInstance()
+        return "accepted"
+
+    checked = 0
+    for v in md.modelVariables:
+        if v.causality != "parameter" or v.min is None:
+            continue
+        real = v.type == "Real"
+        for side, bound in (("min", float(v.min)), ("max", float(v.max))):
+            companions = BOUND_COMPANIONS.get((v.name, side))
+            assert outcome(v.name, bound, companions) == "accepted", (v.name, side, bound)
+            beyond = np.nextafter(bound, -np.inf if side == "min" else np.inf) if real \
+                else bound + (-1 if side == "min" else 1)
+            if not real and abs(beyond) > 2 ** 31 - 1:
+                continue
+            assert outcome(v.name, beyond, companions) == "set rejected", (v.name, side, beyond)
+            checked += 1
+    assert checked > 40
