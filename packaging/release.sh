@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The release build: target/fmu/release/FlexibleSliderCrank.fmu with stripped binaries for
+# The release build: target/fmu/release/FlexibleSliderCrank.fmu and DcMotor.fmu, and the motor-crank
+# system made of them (MotorCrank.ssp, motor-crank/OspSystemStructure.xml), with stripped binaries for
 #   binaries/linux64   x86_64 Linux, glibc 2.28 or later (RHEL/Rocky 8, Ubuntu 18.10, Debian 10 on)
 #   binaries/win64     x86_64 Windows 10 or later
 #   binaries/darwin64  macOS 11 or later, universal (x86_64 and arm64), ad-hoc signed
@@ -61,13 +62,14 @@ bin=$out/binaries
 mkdir -p "$bin/linux64" "$bin/win64" "$bin/darwin64" "$out/logs"
 remap="--remap-path-prefix=$root=/build --remap-path-prefix=${CARGO_HOME:-$HOME/.cargo}=/cargo"
 remap="$remap --remap-path-prefix=$toolchain/usr/lib/rustlib/src/rust=/rustc/$rust_web"
-lib=(--offline --locked --quiet --release --lib -p flexible-slider-crank)
+lib=(--offline --locked --quiet --release --lib -p flexible-slider-crank -p dc-motor)
 
 linux64() {
   env CARGO_PROFILE_RELEASE_STRIP=symbols RUSTFLAGS="$remap" \
     "BINDGEN_EXTRA_CLANG_ARGS_x86_64-unknown-linux-gnu=-I$clang_include -I/usr/include/x86_64-linux-gnu -I/usr/include" \
     cargo zigbuild "${lib[@]}" --target x86_64-unknown-linux-gnu.2.28 --target-dir "$out/linux"
   cp "$out/linux/x86_64-unknown-linux-gnu/release/libflexible_slider_crank.so" "$bin/linux64/FlexibleSliderCrank.so"
+  cp "$out/linux/x86_64-unknown-linux-gnu/release/libdc_motor.so" "$bin/linux64/DcMotor.so"
 }
 
 # Debian's toolchain (its std sources serve -Zbuild-std).
@@ -86,6 +88,7 @@ win64() {
   debian env CARGO_PROFILE_RELEASE_STRIP=symbols RUSTFLAGS="$remap -C link-arg=-Wl,--no-insert-timestamp" \
     cargo build "${build_std[@]}" "${lib[@]}" --target x86_64-pc-windows-gnu --target-dir "$out/win"
   cp "$out/win/x86_64-pc-windows-gnu/release/flexible_slider_crank.dll" "$bin/win64/FlexibleSliderCrank.dll"
+  cp "$out/win/x86_64-pc-windows-gnu/release/dc_motor.dll" "$bin/win64/DcMotor.dll"
 }
 
 # zig's Mach-O linker exports every symbol of default visibility (it ignores rustc's export list,
@@ -94,13 +97,15 @@ win64() {
 darwin64() {
   local macos="-I$clang_include -I$zig_dir/lib/libc/include/any-darwin-any"
   debian env CARGO_PROFILE_RELEASE_STRIP=false MACOSX_DEPLOYMENT_TARGET=11.0 \
-    RUSTFLAGS="$remap -Zdefault-visibility=hidden -C link-arg=-Wl,-x -C link-arg=-Wl,-install_name,@rpath/FlexibleSliderCrank.dylib" \
+    RUSTFLAGS="$remap -Zdefault-visibility=hidden -C link-arg=-Wl,-x" \
     "BINDGEN_EXTRA_CLANG_ARGS_x86_64-apple-darwin=$macos" "BINDGEN_EXTRA_CLANG_ARGS_aarch64-apple-darwin=$macos" \
     cargo zigbuild "${build_std[@]}" "${lib[@]}" --target-dir "$out/darwin" \
     --target x86_64-apple-darwin --target aarch64-apple-darwin
-  llvm-lipo-14 -create "$out/darwin/x86_64-apple-darwin/release/libflexible_slider_crank.dylib" \
-    "$out/darwin/aarch64-apple-darwin/release/libflexible_slider_crank.dylib" \
-    -output "$bin/darwin64/FlexibleSliderCrank.dylib"
+  for lib in flexible_slider_crank:FlexibleSliderCrank dc_motor:DcMotor; do
+    llvm-lipo-14 -create "$out/darwin/x86_64-apple-darwin/release/lib${lib%%:*}.dylib" \
+      "$out/darwin/aarch64-apple-darwin/release/lib${lib%%:*}.dylib" \
+      -output "$bin/darwin64/${lib##*:}.dylib"
+  done
 }
 
 pids=()

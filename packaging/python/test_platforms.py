@@ -61,15 +61,32 @@ def lines_differing(a, b):
     return [i for i, (x, y) in enumerate(zip(a, b)) if x != y]
 
 
-def test_release_fmu_validates_and_holds_every_platform():
-    assert validate_fmu(str(RELEASE_FMU)) == []
-    platforms = supported_platforms(str(RELEASE_FMU))
+MODELS = ["FlexibleSliderCrank", "DcMotor"]
+
+
+@pytest.mark.parametrize("model", MODELS)
+def test_release_fmu_validates_and_holds_every_platform(model):
+    fmu = str(RELEASE_FMU.parent / f"{model}.fmu")
+    assert validate_fmu(fmu) == []
+    platforms = supported_platforms(fmu)
     for platform in ["linux64", "win64", "darwin64"]:
         assert platform in platforms, platforms
 
 
-def test_linux64_needs_glibc_2_28_at_most():
-    symbols = run(["objdump", "-T", str(BINARIES / "linux64" / "FlexibleSliderCrank.so")]).stdout
+def test_release_system_holds_both_release_fmus():
+    """The release SSP carries the release FMUs (every platform), byte for byte."""
+    import zipfile
+
+    with zipfile.ZipFile(RELEASE_FMU.parent / "MotorCrank.ssp") as ssp:
+        for model in MODELS:
+            fmu = (RELEASE_FMU.parent / f"{model}.fmu").read_bytes()
+            assert ssp.read(f"resources/{model}.fmu") == fmu
+            assert (RELEASE_FMU.parent / "motor-crank" / f"{model}.fmu").read_bytes() == fmu
+
+
+@pytest.mark.parametrize("model", MODELS)
+def test_linux64_needs_glibc_2_28_at_most(model):
+    symbols = run(["objdump", "-T", str(BINARIES / "linux64" / f"{model}.so")]).stdout
     versions = {tuple(int(x) for x in v.split(".")) for v in re.findall(r"GLIBC_([0-9.]+)", symbols)}
     assert versions and max(versions) <= (2, 28), sorted(versions)
     assert len(set(re.findall(r"\bfmi2\w+", symbols))) == FMI2_FUNCTIONS
@@ -134,9 +151,10 @@ def test_state_saved_on_linux64_continues_bit_identically_on_win64(linux_run, wi
     assert lines_differing(continued, "".join(linux_run[0].splitlines(True)[SAVE_AT:])) == []
 
 
-def test_win64_exports_fmi2_and_imports_system_dlls_only():
+@pytest.mark.parametrize("model", MODELS)
+def test_win64_exports_fmi2_and_imports_system_dlls_only(model):
     headers = run(["x86_64-w64-mingw32-objdump", "-p",
-                   str(BINARIES / "win64" / "FlexibleSliderCrank.dll")]).stdout
+                   str(BINARIES / "win64" / f"{model}.dll")]).stdout
     assert len(set(re.findall(r"\]\s+(fmi2\w+)", headers))) == FMI2_FUNCTIONS
     imports = {name.lower() for name in re.findall(r"DLL Name: (\S+)", headers)}
     system = {"kernel32.dll", "ntdll.dll", "msvcrt.dll", "userenv.dll", "ws2_32.dll",
@@ -144,8 +162,9 @@ def test_win64_exports_fmi2_and_imports_system_dlls_only():
     assert imports <= system, imports - system
 
 
-def test_darwin64_is_universal_for_macos_11_with_the_fmi2_exports():
-    dylib = str(BINARIES / "darwin64" / "FlexibleSliderCrank.dylib")
+@pytest.mark.parametrize("model", MODELS)
+def test_darwin64_is_universal_for_macos_11_with_the_fmi2_exports(model):
+    dylib = str(BINARIES / "darwin64" / f"{model}.dylib")
     assert run(["llvm-lipo-14", "-archs", dylib]).stdout.split() == ["x86_64", "arm64"]
     for arch in ["x86_64", "arm64"]:
         headers = run(["llvm-objdump-14", "--macho", f"--arch={arch}", "--private-headers",
@@ -153,5 +172,6 @@ def test_darwin64_is_universal_for_macos_11_with_the_fmi2_exports():
         assert re.search(r"cmd LC_BUILD_VERSION.*?platform macos.*?minos 11\.0", headers, re.S)
         if arch == "arm64":
             assert "LC_CODE_SIGNATURE" in headers
+        assert re.search(rf"cmd LC_ID_DYLIB.*?name @rpath/{model}\.dylib", headers, re.S)
         exports = run(["llvm-nm-14", f"--arch={arch}", "-gU", dylib]).stdout
         assert len(set(re.findall(r"\b_(fmi2\w+)", exports))) == FMI2_FUNCTIONS

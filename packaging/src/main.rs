@@ -7,9 +7,9 @@
 //!   (`systems/motor-crank/SystemStructure.ssd` with both FMUs as resources), and as an OSP system
 //!   structure, `target/fmu/motor-crank/` (`OspSystemStructure.xml` beside both FMUs).
 //! - `cargo run --release -p packaging -- --binaries DIR`: takes the libraries the release build
-//!   (`packaging/release.sh`) made, `DIR/<platform>/FlexibleSliderCrank.<so|dll|dylib>` for
-//!   every FMI platform folder present (linux64, win64, darwin64), and writes
-//!   `target/fmu/release/FlexibleSliderCrank.fmu`.
+//!   (`packaging/release.sh`) made, `DIR/<platform>/<FlexibleSliderCrank|DcMotor>.<so|dll|dylib>`
+//!   for every FMI platform folder present (linux64, win64, darwin64), and writes the same files
+//!   under `target/fmu/release/`.
 //!
 //! The archive is reproducible: its entries come in a fixed order with a fixed time stamp.
 
@@ -138,8 +138,7 @@ clearance, 5000 rpm). DefaultExperiment: two crank revolutions (0.024 s), step 1
 <h2>Inputs</h2>{}
 <h2>Outputs</h2>{}
 <h2>Example run</h2><p><img src="demo.png" alt="demo run" width="100%"></p>
-<h2>Validation</h2>{readme_validation}
-<p><img src="mode_study.png" alt="mode study" width="100%"></p>
+{readme_validation}
 </body></html>
 "#,
         rows(Causality::Parameter),
@@ -149,18 +148,40 @@ clearance, 5000 rpm). DefaultExperiment: two crank revolutions (0.024 s), step 1
     )
 }
 
-/// The README's validation section, as preformatted text for the HTML page.
-fn validation_summary(root: &Path) -> String {
+/// The README's validation section as HTML, and the images it shows (files of
+/// `modelDescription/documentation/`, to be packed beside the page).
+fn validation_summary(root: &Path) -> (String, Vec<PathBuf>) {
+    use pulldown_cmark::{Event, Options, Parser, Tag, html};
+
     let readme = std::fs::read_to_string(root.join("README.md")).unwrap_or_default();
     let section = readme
         .split("\n## ")
         .find(|s| s.starts_with("Validation"))
         .unwrap_or("Validation: see README.md");
-    let escaped = section
-        .replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;");
-    format!("<pre style=\"white-space:pre-wrap\">{escaped}</pre>")
+    let section = format!("## {section}");
+    let mut images = Vec::new();
+    // Images are packed flat beside index.html; links into the repository lose their target.
+    let events = Parser::new_ext(&section, Options::ENABLE_TABLES).map(|event| match event {
+        Event::Start(Tag::Image {
+            link_type,
+            dest_url,
+            title,
+            id,
+        }) => {
+            let name = dest_url.rsplit('/').next().unwrap_or_default().to_string();
+            images.push(root.join("modelDescription/documentation").join(&name));
+            Event::Start(Tag::Image {
+                link_type,
+                dest_url: name.into(),
+                title,
+                id,
+            })
+        }
+        other => other,
+    });
+    let mut out = String::new();
+    html::push_html(&mut out, events);
+    (out, images)
 }
 
 /// FMI 2.0 platform folders and the file extension of their shared libraries.
@@ -211,7 +232,14 @@ fn write_fmu(
     }
     zip.start_file("documentation/index.html", options)?;
     zip.write_all(documentation.as_bytes())?;
-    for image in images.iter().filter(|p| p.exists()) {
+    for image in images {
+        if !image.exists() {
+            return Err(format!(
+                "the documentation shows {}, which is missing",
+                image.display()
+            )
+            .into());
+        }
         let name = image
             .file_name()
             .and_then(|n| n.to_str())
@@ -275,47 +303,32 @@ fn write_zip(path: &Path, entries: &[(String, PathBuf)]) -> Result<(), Box<dyn E
     Ok(())
 }
 
-fn main() -> Result<(), Box<dyn Error>> {
-    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..");
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    let from = match args.as_slice() {
-        [] => None,
-        [flag, dir] if flag == "--binaries" => Some(PathBuf::from(dir)),
-        _ => return Err("usage: packaging [--binaries DIR]".into()),
-    };
-    let images: Vec<PathBuf> = ["demo.png", "mode_study.png"]
-        .iter()
-        .map(|i| root.join("modelDescription/documentation").join(i))
-        .collect();
-    let crank_documentation = documentation(&validation_summary(&root));
-    let crank = (MODEL_IDENTIFIER, MODEL_DESCRIPTION);
-    if let Some(dir) = from {
-        let out_dir = root.join("target").join("fmu").join("release");
-        std::fs::create_dir_all(&out_dir)?;
-        let fmu = out_dir.join(format!("{MODEL_IDENTIFIER}.fmu"));
-        let binaries = release_binaries(&dir, MODEL_IDENTIFIER)?;
-        write_fmu(&fmu, crank, &binaries, &crank_documentation, &images)?;
-        println!("{}", fmu.canonicalize()?.display());
-        return Ok(());
-    }
-    let out_dir = root.join("target").join("fmu");
-    std::fs::create_dir_all(&out_dir)?;
+/// Writes both FMUs with their binaries into `out_dir`, and the motor-crank system made of them:
+/// `MotorCrank.ssp` and `motor-crank/` (OSP system structure beside both FMUs). Returns the
+/// paths written.
+fn package(
+    root: &Path,
+    out_dir: &Path,
+    crank_binaries: &[(&str, PathBuf)],
+    motor_binaries: &[(&str, PathBuf)],
+) -> Result<Vec<PathBuf>, Box<dyn Error>> {
+    std::fs::create_dir_all(out_dir)?;
+    let (validation, mut images) = validation_summary(root);
+    images.insert(0, root.join("modelDescription/documentation/demo.png"));
     let crank_fmu = out_dir.join(format!("{MODEL_IDENTIFIER}.fmu"));
-    let library = build_library(&root, "flexible-slider-crank")?;
     write_fmu(
         &crank_fmu,
-        crank,
-        &[("linux64", library)],
-        &crank_documentation,
+        (MODEL_IDENTIFIER, MODEL_DESCRIPTION),
+        crank_binaries,
+        &documentation(&validation),
         &images,
     )?;
     let motor = (dc_motor::MODEL_IDENTIFIER, dc_motor::MODEL_DESCRIPTION);
     let motor_fmu = out_dir.join(format!("{}.fmu", motor.0));
-    let library = build_library(&root, "dc-motor")?;
     write_fmu(
         &motor_fmu,
         motor,
-        &[("linux64", library)],
+        motor_binaries,
         &motor_documentation(),
         &[],
     )?;
@@ -345,7 +358,35 @@ fn main() -> Result<(), Box<dyn Error>> {
             std::fs::copy(fmu, osp.join(name))?;
         }
     }
-    for path in [&crank_fmu, &motor_fmu, &ssp, &osp] {
+    Ok(vec![crank_fmu, motor_fmu, ssp, osp])
+}
+
+fn main() -> Result<(), Box<dyn Error>> {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..");
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let written = match args.as_slice() {
+        [] => {
+            let crank = build_library(&root, "flexible-slider-crank")?;
+            let motor = build_library(&root, "dc-motor")?;
+            package(
+                &root,
+                &root.join("target").join("fmu"),
+                &[("linux64", crank)],
+                &[("linux64", motor)],
+            )?
+        }
+        [flag, dir] if flag == "--binaries" => {
+            let dir = PathBuf::from(dir);
+            package(
+                &root,
+                &root.join("target").join("fmu").join("release"),
+                &release_binaries(&dir, MODEL_IDENTIFIER)?,
+                &release_binaries(&dir, dc_motor::MODEL_IDENTIFIER)?,
+            )?
+        }
+        _ => return Err("usage: packaging [--binaries DIR]".into()),
+    };
+    for path in written {
         println!("{}", path.canonicalize()?.display());
     }
     Ok(())
