@@ -70,6 +70,8 @@ pub struct Outputs {
     pub joint_force_peak: f64,
     /// Largest |slider acceleration| over the last communication interval \[m/s²\].
     pub slider_acceleration_peak: f64,
+    /// Largest rod deformation energy over the last communication interval \[J\].
+    pub deformation_energy_peak: f64,
     /// Contact onsets in the last communication interval.
     pub contact_onsets: u64,
     /// Contact onsets since the start.
@@ -85,6 +87,8 @@ pub struct Peaks {
     pub joint_force: f64,
     /// Largest |slider acceleration| \[m/s²\].
     pub slider_acceleration: f64,
+    /// Largest rod deformation energy \[J\].
+    pub deformation_energy: f64,
     /// Number of contact onsets.
     pub contact_onsets: u64,
 }
@@ -93,6 +97,7 @@ impl Peaks {
     fn absorb(&mut self, other: &Peaks) {
         self.joint_force = self.joint_force.max(other.joint_force);
         self.slider_acceleration = self.slider_acceleration.max(other.slider_acceleration);
+        self.deformation_energy = self.deformation_energy.max(other.deformation_energy);
         self.contact_onsets += other.contact_onsets;
     }
 }
@@ -582,10 +587,12 @@ impl Simulation {
                 (ev.joint_force.norm(), ev.slider_acceleration.abs())
             }
         };
-        let (force_within, acceleration_within) = self.peaks_within_step();
+        let energy = self.mechanism.strain_energy(&self.y_end);
+        let within = self.peaks_within_step();
         self.peaks.step_end = Peaks {
-            joint_force: force.max(force_within),
-            slider_acceleration: acceleration.max(acceleration_within),
+            joint_force: force.max(within.joint_force),
+            slider_acceleration: acceleration.max(within.slider_acceleration),
+            deformation_energy: energy.max(within.deformation_energy),
             contact_onsets: u64::from(onset),
         };
         self.peaks.pending = true;
@@ -595,32 +602,38 @@ impl Simulation {
 
     /// Largest |joint force| and |slider acceleration| inside the step just accepted, if the
     /// journal touches the bearing at either end of it (zero otherwise); see [`PeakHold`].
-    fn peaks_within_step(&mut self) -> (f64, f64) {
+    fn peaks_within_step(&mut self) -> Peaks {
         let end_contact = self.mechanism.contact_state();
         if !(self.contact_start.in_contact || end_contact.in_contact) {
-            return (0.0, 0.0);
+            return Peaks::default();
         }
         // The contact state the step was integrated with (an onset inside it is latched at its end).
         self.mechanism.set_contact_state(self.contact_start);
-        let mut force = [0.0; PEAK_SAMPLES + 2];
-        let mut acceleration = [0.0; PEAK_SAMPLES + 2];
-        for k in 0..force.len() {
-            (force[k], acceleration[k]) = self.load_within(k as f64);
+        let mut samples = [[0.0; PEAK_SAMPLES + 2]; 3];
+        for k in 0..PEAK_SAMPLES + 2 {
+            for (series, value) in samples.iter_mut().zip(self.load_within(k as f64)) {
+                series[k] = value;
+            }
         }
-        let largest = |v: &[f64]| v.iter().copied().fold(0.0, f64::max);
-        let mut peaks = (largest(&force), largest(&acceleration));
-        if let Some(k) = parabola_vertex(&force) {
-            peaks.0 = peaks.0.max(self.load_within(k).0);
-        }
-        if let Some(k) = parabola_vertex(&acceleration) {
-            peaks.1 = peaks.1.max(self.load_within(k).1);
+        let mut largest = [0.0; 3];
+        for (i, series) in samples.iter().enumerate() {
+            largest[i] = series.iter().copied().fold(0.0, f64::max);
+            if let Some(k) = parabola_vertex(series) {
+                largest[i] = largest[i].max(self.load_within(k)[i]);
+            }
         }
         self.mechanism.set_contact_state(end_contact);
-        peaks
+        Peaks {
+            joint_force: largest[0],
+            slider_acceleration: largest[1],
+            deformation_energy: largest[2],
+            contact_onsets: 0,
+        }
     }
 
-    /// Joint load at sample `k` (of [`PEAK_SAMPLES`] + 1 intervals) of the step just accepted.
-    fn load_within(&mut self, k: f64) -> (f64, f64) {
+    /// |Joint force|, |slider acceleration| and rod deformation energy at sample `k` (of
+    /// [`PEAK_SAMPLES`] + 1 intervals) of the step just accepted.
+    fn load_within(&mut self, k: f64) -> [f64; 3] {
         let h = self.step_end - self.step_start;
         let theta = k / (PEAK_SAMPLES + 1) as f64;
         self.mechanism.set_time(self.step_start + theta * h);
@@ -634,9 +647,12 @@ impl Simulation {
             theta,
             &mut self.y_sample,
         );
-        self.mechanism
+        let (force, acceleration) = self
+            .mechanism
             .clearance_joint_load(&self.y_sample)
-            .unwrap_or((0.0, 0.0))
+            .unwrap_or((0.0, 0.0));
+        let energy = self.mechanism.strain_energy(&self.y_sample);
+        [force, acceleration, energy]
     }
 
     /// Checks the end of the accepted step (or the state at the communication point, which the
@@ -782,6 +798,11 @@ impl Simulation {
                 .interval
                 .slider_acceleration
                 .max(ev.slider_acceleration.abs()),
+            deformation_energy_peak: self
+                .peaks
+                .interval
+                .deformation_energy
+                .max(energies.strain),
             contact_onsets: self.peaks.interval.contact_onsets,
             contact_onsets_total: self.peaks.total_onsets,
             warnings: self.monitor.total,

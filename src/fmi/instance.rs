@@ -221,7 +221,7 @@ impl Model for SliderCrankFmu {
     const GUID: &'static str = super::GUID;
     const LOG_CATEGORIES: &'static [(&'static str, &'static str)] = LOG_CATEGORIES;
     const STATE_MAGIC: [u8; 4] = *b"FSCS";
-    const STATE_VERSION: u32 = 8;
+    const STATE_VERSION: u32 = 9;
 
     fn new() -> Self {
         Self {
@@ -390,6 +390,7 @@ impl Model for SliderCrankFmu {
                 Vr::EnergySliderWork => o.slider_work,
                 Vr::EnergyMaterialDamping => o.material_damping,
                 Vr::SliderAccelerationPeak => o.slider_acceleration_peak,
+                Vr::RodDeformationEnergyPeak => o.deformation_energy_peak,
                 _ => unreachable_type(v)?,
             };
         }

@@ -86,6 +86,7 @@ impl Writer<'_> {
     fn peaks(&mut self, p: &Peaks) {
         self.f64(p.joint_force);
         self.f64(p.slider_acceleration);
+        self.f64(p.deformation_energy);
         self.u64(p.contact_onsets);
     }
     fn signal(&mut self, s: &InputSignal) {
@@ -160,6 +161,7 @@ impl Reader<'_> {
         Ok(Peaks {
             joint_force: self.f64()?,
             slider_acceleration: self.f64()?,
+            deformation_energy: self.f64()?,
             contact_onsets: self.u64()?,
         })
     }

@@ -288,6 +288,7 @@ pub enum Vr {
     EnergyMaterialDamping,
     SolverSpectralRadius,
     SolverWarnings,
+    RodDeformationEnergyPeak,
 }
 
 /// 5000 rpm in rad/s (benchmark B); the same expression as `params::BENCHMARK_SPEED`.
@@ -814,6 +815,12 @@ pub const VARIABLES: &[Variable] = &[
         Vr::SolverWarnings,
         "solver.warnings",
         "Warnings raised since the start, also without logging: the model left the domain its laws were made for (penetration, deflection, crank speed, stroke), a parameter outside a law's range, a crank speed that jumps to drive.speed at the first step; the logger gives each message",
+    ),
+    Variable::peak(
+        Vr::RodDeformationEnergyPeak,
+        "rod.deformationEnergyPeak",
+        "J",
+        "Largest rod.deformationEnergy over the last communication interval (every internal step's end, and within the steps in contact); its maximum over a run is the source paper's mode-count criterion",
     ),
 ];
 

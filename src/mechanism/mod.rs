@@ -615,6 +615,13 @@ impl SliderCrank {
         )
     }
 
+    /// Deformation (strain) energy of the rod in state `y` \[J\] (docs/model.md §1.4; 0 for the
+    /// rigid rod).
+    pub fn strain_energy(&mut self, y: &[f64]) -> f64 {
+        let n = self.n_coordinates();
+        self.rod.strain_energy(&y[1..n - 1])
+    }
+
     /// Journal–bearing kinematics of a state.
     pub fn joint_kinematics(&self, y: &[f64]) -> JointKinematics {
         let n = self.n_coordinates();
