@@ -798,11 +798,7 @@ impl Simulation {
                 .interval
                 .slider_acceleration
                 .max(ev.slider_acceleration.abs()),
-            deformation_energy_peak: self
-                .peaks
-                .interval
-                .deformation_energy
-                .max(energies.strain),
+            deformation_energy_peak: self.peaks.interval.deformation_energy.max(energies.strain),
             contact_onsets: self.peaks.interval.contact_onsets,
             contact_onsets_total: self.peaks.total_onsets,
             warnings: self.monitor.total,
