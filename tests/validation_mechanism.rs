@@ -680,7 +680,13 @@ fn leaving_the_domain_is_reported_once_per_cause() {
     for p in quiet {
         let mut sim = Simulation::new(p).unwrap();
         sim.advance_to(REVOLUTION).unwrap();
-        assert!(sim.take_warnings().is_empty(), "{:?}", sim.take_warnings());
+        // (benchmark C's bearing is outside the short-bearing range: a parameter warning, not a
+        // domain exit)
+        let warnings = sim.take_warnings();
+        assert!(
+            warnings.iter().all(|w| !w.contains("left its domain")),
+            "{warnings:?}"
+        );
     }
     let mut stiff_drive = Parameters {
         drive_mode: DriveMode::Torque,
