@@ -2,14 +2,12 @@
 //! polynomials over the communication step, the state, the clock and the state codec.
 
 use fmi2_slave::clock::on_clock_grid;
-use fmi2_slave::model::{check_real, check_settable, lookup};
+use fmi2_slave::model::{check_real, check_settable, check_step, lookup};
 use fmi2_slave::{FmuError, Logger, Model, State};
 
 use crate::motor::{MotorInputs, MotorParameters, MotorState};
 use crate::variables::{Causality, Kind, LOG_CATEGORIES, VARIABLES, Vr};
 
-/// Tolerance on the communication point: |t − t_expected| ≤ 1e-9 (1 + |t|).
-const TIME_TOLERANCE: f64 = 1e-9;
 /// Number of parameters (value references 0 … N − 1).
 const N_PARAMETERS: usize = Vr::ShaftSpeed as usize;
 /// Most internal steps per communication step.
@@ -159,29 +157,17 @@ impl Model for DcMotorFmu {
     }
 
     fn do_step(&mut self, _log: &Logger, t: f64, h: f64) -> Result<(), FmuError> {
-        if (t - self.time).abs() > TIME_TOLERANCE * (1.0 + t.abs()) {
-            return Err(FmuError::Invalid(format!(
-                "fmi2DoStep: Expected currentCommunicationPoint = {:.16e} but was {t:.16e}.",
-                self.time
-            )));
-        }
+        check_step(self.time, t, h, self.stop_time)?;
         // On the clock grid, every master's representation of the same points gives the same
         // step; the relative margin keeps n·solver.stepSize = h from rounding up to n + 1 steps.
         let (t, end) = (on_clock_grid(t), on_clock_grid(t + h));
         let steps =
             ((end - t) / self.parameters[Vr::SolverStepSize as usize] * (1.0 - 1e-9)).ceil();
-        if !(h > 0.0 && h.is_finite() && steps <= MAX_STEPS) {
+        if steps > MAX_STEPS {
             return Err(FmuError::Invalid(format!(
-                "fmi2DoStep: communicationStepSize = {h:e} must be > 0, finite and at most \
-                 {MAX_STEPS:e} solver.stepSize"
+                "fmi2DoStep: communicationStepSize = {h:e} is more than {MAX_STEPS:e} \
+                 solver.stepSize"
             )));
-        }
-        if let Some(stop) = self.stop_time {
-            if end > stop + TIME_TOLERANCE * (1.0 + stop.abs()) {
-                return Err(FmuError::Invalid(format!(
-                    "fmi2DoStep: t + h = {end:.16e} is past stopTime = {stop:.16e}."
-                )));
-            }
         }
         let mut x = self.state();
         let signal = Signal {

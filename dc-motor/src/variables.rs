@@ -264,8 +264,3 @@ pub const VARIABLES: &[Variable] = &[
         "Twist of the shaft (rotor angle minus load angle)",
     ),
 ];
-
-/// The variable of a value reference, if it exists.
-pub fn variable(vr: u32) -> Option<&'static Variable> {
-    VARIABLES.get(vr as usize)
-}

@@ -403,3 +403,22 @@ fn guid(text: &str) -> String {
         &s[20..32]
     )
 }
+
+/// The work of a model's build script: renders modelDescription.xml and its GUID into `OUT_DIR`
+/// (`modelDescription.xml`, `guid.txt`, for `include_str!`) and, for a macOS target, gives the
+/// dylib the FMU's name as its install name (not the build path: reproducible builds).
+pub fn build_script<V: ValueReference>(
+    d: &Description<V>,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let (xml, guid) = model_description(d).map_err(|e| format!("variable table: {e}"))?;
+    let out = std::path::PathBuf::from(std::env::var("OUT_DIR")?);
+    std::fs::write(out.join("modelDescription.xml"), xml)?;
+    std::fs::write(out.join("guid.txt"), guid)?;
+    if std::env::var("CARGO_CFG_TARGET_OS").as_deref() == Ok("macos") {
+        println!(
+            "cargo::rustc-cdylib-link-arg=-Wl,-install_name,@rpath/{}.dylib",
+            d.model_identifier
+        );
+    }
+    Ok(())
+}

@@ -162,6 +162,32 @@ pub fn check_real<V>(v: &Variable<V>, value: f64) -> Result<(), FmuError> {
     Ok(())
 }
 
+/// Tolerance on the communication point: |t − t_expected| ≤ 1e-9 (1 + |t|).
+pub const TIME_TOLERANCE: f64 = 1e-9;
+
+/// Checks fmi2DoStep's arguments against an instance at `time` with stop time `stop`: the
+/// communication point is the current time (within [`TIME_TOLERANCE`]), the step is positive and
+/// finite, and t + h is not past the stop time.
+pub fn check_step(time: f64, t: f64, h: f64, stop: Option<f64>) -> Result<(), FmuError> {
+    if (t - time).abs() > TIME_TOLERANCE * (1.0 + t.abs()) {
+        return Err(FmuError::Invalid(format!(
+            "fmi2DoStep: Expected currentCommunicationPoint = {time:.16e} but was {t:.16e}."
+        )));
+    }
+    if !(h > 0.0 && h.is_finite()) {
+        return Err(FmuError::Invalid(format!(
+            "fmi2DoStep: communicationStepSize must be > 0 and finite but was {h:.16e}."
+        )));
+    }
+    let end = t + h;
+    match stop {
+        Some(stop) if end > stop + TIME_TOLERANCE * (1.0 + stop.abs()) => Err(FmuError::Invalid(
+            format!("fmi2DoStep: t + h = {end:.16e} is past stopTime = {stop:.16e}."),
+        )),
+        _ => Ok(()),
+    }
+}
+
 /// One FMU instance.
 #[derive(Debug)]
 pub struct Instance<M> {

@@ -2,21 +2,17 @@
 //! simulation and the clock; the state machine and the C functions come from `fmi2-slave`. Values are read and written by an exhaustive `match` on [`Vr`], with the
 //! ranges of the variable table, so every message quotes what the master sees in the XML.
 
+use fmi2_slave::model::{check_real, check_settable, check_step, lookup};
 use fmi2_slave::{FmuError, Logger, Model, State};
 
 use super::snapshot::FmuSnapshot;
-use super::variables::{
-    Causality, ENUMERATIONS, Kind, LOG_CATEGORIES, VARIABLES, Variable, Vr, variable,
-};
+use super::variables::{Causality, ENUMERATIONS, Kind, LOG_CATEGORIES, VARIABLES, Variable, Vr};
 use crate::error::ModelError;
 use crate::integrator::Method;
 use crate::joint::hertz_stiffness;
 use crate::params::{ContactLaw, DriveMode, InitialState, JointModel, Parameters, RodFormulation};
 use crate::reduction::Boundary;
 use crate::simulation::{Input, InputSignal, Inputs, Outputs, Simulation};
-
-/// Tolerance on the communication point: |t − t_expected| ≤ 1e-9 (1 + |t|) (docs/fmi.md §1.6).
-const TIME_TOLERANCE: f64 = 1e-9;
 
 impl From<ModelError> for FmuError {
     fn from(e: ModelError) -> Self {
@@ -90,25 +86,6 @@ const CONTACT_LAWS: [ContactLaw; 3] = [
 ];
 
 impl SliderCrankFmu {
-    fn lookup(vr: u32, base: &str) -> Result<&'static Variable, FmuError> {
-        let v = variable(vr)
-            .ok_or_else(|| FmuError::Invalid(format!("unknown value reference {vr}")))?;
-        let matches = matches!(
-            (v.kind, base),
-            (Kind::Real { .. }, "Real")
-                | (Kind::Integer { .. } | Kind::Enumeration { .. }, "Integer")
-                | (Kind::Boolean, "Boolean")
-        );
-        if matches {
-            Ok(v)
-        } else {
-            Err(FmuError::Invalid(format!(
-                "value reference {vr} ({}) is not of type {base}",
-                v.name
-            )))
-        }
-    }
-
     /// The simulation, built from the current parameters if needed.
     fn simulation(&mut self, log: &Logger) -> Result<&mut Simulation, FmuError> {
         if self.simulation.is_none() {
@@ -143,25 +120,6 @@ impl SliderCrankFmu {
         self.simulation
             .as_mut()
             .ok_or_else(|| FmuError::Invalid("no simulation".into()))
-    }
-
-    /// Checks that `v` may be set now.
-    fn check_settable(state: State, v: &Variable) -> Result<(), FmuError> {
-        let ok = match v.causality {
-            Causality::Parameter => {
-                matches!(state, State::Instantiated | State::InitializationMode)
-            }
-            Causality::Input => true,
-            _ => false,
-        };
-        if ok {
-            Ok(())
-        } else {
-            Err(FmuError::Invalid(format!(
-                "variable {} ({:?}) cannot be set in state {:?}",
-                v.name, v.causality, state
-            )))
-        }
     }
 
     fn outputs(&mut self, log: &Logger) -> Result<Outputs, FmuError> {
@@ -297,25 +255,8 @@ impl Model for SliderCrankFmu {
 
     /// fmi2DoStep from `t` over `h`.
     fn do_step(&mut self, log: &Logger, t: f64, h: f64) -> Result<(), FmuError> {
-        if (t - self.time).abs() > TIME_TOLERANCE * (1.0 + t.abs()) {
-            return Err(FmuError::Invalid(format!(
-                "fmi2DoStep: Expected currentCommunicationPoint = {:.16e} but was {t:.16e}.",
-                self.time
-            )));
-        }
-        if !(h > 0.0 && h.is_finite()) {
-            return Err(FmuError::Invalid(format!(
-                "fmi2DoStep: communicationStepSize must be > 0 and finite but was {h:.16e}."
-            )));
-        }
+        check_step(self.time, t, h, self.stop_time)?;
         let end = t + h;
-        if let Some(stop) = self.stop_time {
-            if end > stop + TIME_TOLERANCE * (1.0 + stop.abs()) {
-                return Err(FmuError::Invalid(format!(
-                    "fmi2DoStep: t + h = {end:.16e} is past stopTime = {stop:.16e}."
-                )));
-            }
-        }
         let sim = self.simulation(log)?;
         sim.set_time(t);
         let result = sim.advance_to(end);
@@ -347,7 +288,7 @@ impl Model for SliderCrankFmu {
     fn get_real(&mut self, log: &Logger, vrs: &[u32], values: &mut [f64]) -> Result<(), FmuError> {
         let mut outputs: Option<Outputs> = None;
         for (vr, value) in vrs.iter().zip(values.iter_mut()) {
-            let v = Self::lookup(*vr, "Real")?;
+            let v = lookup(VARIABLES, *vr, "Real")?;
             if v.causality == Causality::Output && outputs.is_none() {
                 outputs = Some(self.outputs(log)?);
             }
@@ -400,16 +341,9 @@ impl Model for SliderCrankFmu {
     /// fmi2SetReal.
     fn set_real(&mut self, state: State, vrs: &[u32], values: &[f64]) -> Result<(), FmuError> {
         for (vr, &value) in vrs.iter().zip(values) {
-            let v = Self::lookup(*vr, "Real")?;
-            Self::check_settable(state, v)?;
-            if let Kind::Real { min, max, unit, .. } = v.kind {
-                if !(value.is_finite() && min <= value && value <= max) {
-                    return Err(FmuError::Invalid(format!(
-                        "{} = {value:e} is outside the allowed range [{min:e}, {max:e}] {unit}",
-                        v.name
-                    )));
-                }
-            }
+            let v = lookup(VARIABLES, *vr, "Real")?;
+            check_settable(state, v)?;
+            check_real(v, value)?;
             if set_real_parameter(&mut self.parameters, v.vr, value) {
                 // A parameter changed: the model is rebuilt when next needed.
                 self.simulation = None;
@@ -441,7 +375,7 @@ impl Model for SliderCrankFmu {
     ) -> Result<(), FmuError> {
         let o = self.outputs(log)?;
         for ((vr, &order), value) in vrs.iter().zip(orders).zip(values.iter_mut()) {
-            let v = Self::lookup(*vr, "Real")?;
+            let v = lookup(VARIABLES, *vr, "Real")?;
             *value = match (v.vr, order) {
                 (Vr::CrankAngle, 1) => o.crank_speed,
                 (Vr::CrankAngle, 2) | (Vr::CrankSpeed, 1) => o.crank_acceleration,
@@ -473,7 +407,7 @@ impl Model for SliderCrankFmu {
         values: &[f64],
     ) -> Result<(), FmuError> {
         for ((vr, &order), &value) in vrs.iter().zip(orders).zip(values) {
-            let v = Self::lookup(*vr, "Real")?;
+            let v = lookup(VARIABLES, *vr, "Real")?;
             let i = input(v.vr).ok_or_else(|| {
                 FmuError::Invalid(format!(
                     "fmi2SetRealInputDerivatives: {} is not an input",
@@ -512,7 +446,7 @@ impl Model for SliderCrankFmu {
         values: &mut [i32],
     ) -> Result<(), FmuError> {
         for (vr, value) in vrs.iter().zip(values.iter_mut()) {
-            let v = Self::lookup(*vr, "Integer")?;
+            let v = lookup(VARIABLES, *vr, "Integer")?;
             if let Some(x) = integer_parameter(&self.parameters, v.vr) {
                 *value = x;
                 continue;
@@ -547,8 +481,8 @@ impl Model for SliderCrankFmu {
     /// fmi2SetInteger (Integer parameters, the switches among them).
     fn set_integer(&mut self, state: State, vrs: &[u32], values: &[i32]) -> Result<(), FmuError> {
         for (vr, &value) in vrs.iter().zip(values) {
-            let v = Self::lookup(*vr, "Integer")?;
-            Self::check_settable(state, v)?;
+            let v = lookup(VARIABLES, *vr, "Integer")?;
+            check_settable(state, v)?;
             let (min, max) = match v.kind {
                 Kind::Integer { min, max, .. } => (min, max),
                 Kind::Enumeration { type_index, .. } => {
@@ -578,7 +512,7 @@ impl Model for SliderCrankFmu {
         values: &mut [i32],
     ) -> Result<(), FmuError> {
         for (vr, value) in vrs.iter().zip(values.iter_mut()) {
-            let v = Self::lookup(*vr, "Boolean")?;
+            let v = lookup(VARIABLES, *vr, "Boolean")?;
             *value = match v.vr {
                 Vr::JointInContact => i32::from(self.outputs(log)?.in_contact),
                 _ => unreachable_type(v)?,
@@ -590,8 +524,8 @@ impl Model for SliderCrankFmu {
     /// fmi2SetBoolean: no Boolean variable is settable.
     fn set_boolean(&mut self, state: State, vrs: &[u32], _values: &[i32]) -> Result<(), FmuError> {
         for vr in vrs {
-            let v = Self::lookup(*vr, "Boolean")?;
-            Self::check_settable(state, v)?;
+            let v = lookup(VARIABLES, *vr, "Boolean")?;
+            check_settable(state, v)?;
         }
         Ok(())
     }

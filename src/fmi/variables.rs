@@ -823,8 +823,3 @@ pub const VARIABLES: &[Variable] = &[
         "Largest rod.deformationEnergy over the last communication interval (every internal step's end, and within the steps in contact); its maximum over a run is the source paper's mode-count criterion",
     ),
 ];
-
-/// The variable of a value reference, if it exists.
-pub fn variable(vr: u32) -> Option<&'static Variable> {
-    VARIABLES.get(vr as usize)
-}
