@@ -191,17 +191,9 @@ impl<V: Copy> Variable<V> {
         description: &'static str,
     ) -> Self {
         Self {
-            vr,
-            name,
             causality: Causality::Input,
             variability: Variability::Continuous,
-            kind: Kind::Real {
-                start: Some(start),
-                min,
-                max,
-                unit,
-            },
-            description,
+            ..Self::parameter(vr, name, start, min, max, unit, description)
         }
     }
 
