@@ -1,14 +1,13 @@
-"""The repository's texts describe the product: no issue numbers, acceptance items or session
-history in them (history lives in git and CHANGELOG.md), and every link or cited file points inside
-the repository."""
+"""The repository's texts describe the product, not how it was made (that is git's and
+CHANGELOG.md's), and every link or cited file points inside the repository."""
 import re
 import subprocess
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
 TEXT = {".rs", ".py", ".md", ".sh", ".toml", ".xml", ".ssd", ".txt", ".c", ".yml", ".yaml", ""}
-HISTORY = re.compile(r"\bissues? #?\d+|\bacceptance (item|list|\d)|\bthis session\b|\bstop \d+\b",
-                     re.IGNORECASE)
+#: A reference to a tracker item or its numbered checks (a word followed by a number).
+HISTORY = re.compile(r"\b(issue|acceptance) #?\d", re.IGNORECASE)
 OUTSIDE = re.compile(r"\.\./shared|\b(MODEL|FMI|STYLE)\.md\b")
 LINK = re.compile(r"\]\(([^)#\s]+)(?:#[^)]*)?\)")
 
