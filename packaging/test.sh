@@ -24,6 +24,8 @@ echo "== benches and examples compile"
 cargo test --benches --examples --no-run --quiet
 echo "== cargo test (unit, validation and FMI tests)"
 cargo test --workspace --lib --tests
+echo "== fuzzing: state deserialization and fmi2* call sequences, 60 s each"
+bash packaging/fuzz.sh 60
 echo "== platform test tools: wine (win64 DLL), debootstrap (an older Debian for linux64)"
 need=()
 for p in wine64 debootstrap; do dpkg -s "$p" >/dev/null 2>&1 || need+=("$p"); done

@@ -214,7 +214,8 @@ const STATES: [State; 6] = [
     State::Error,
 ];
 
-fn fnv64(bytes: &[u8]) -> u64 {
+/// The checksum that ends a serialized state: FNV-1a 64 of every byte before it.
+pub fn state_checksum(bytes: &[u8]) -> u64 {
     bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| {
         (h ^ u64::from(b)).wrapping_mul(0x100_0000_01b3)
     })
@@ -248,7 +249,7 @@ impl<M: Model> Instance<M> {
         out.extend_from_slice(&M::STATE_VERSION.to_le_bytes());
         out.push(STATES.iter().position(|s| *s == self.state).unwrap_or(0) as u8);
         self.model.save(&mut out);
-        let checksum = fnv64(&out);
+        let checksum = state_checksum(&out);
         out.extend_from_slice(&checksum.to_le_bytes());
         out
     }
@@ -262,7 +263,7 @@ impl<M: Model> Instance<M> {
         let (body, tail) = bytes.split_at(bytes.len() - 8);
         let mut sum = [0; 8];
         sum.copy_from_slice(tail);
-        if fnv64(body) != u64::from_le_bytes(sum) {
+        if state_checksum(body) != u64::from_le_bytes(sum) {
             return Err(bad("checksum mismatch (corrupted bytes)".into()));
         }
         if body[..4] != M::STATE_MAGIC {

@@ -640,9 +640,8 @@ pub fn integer_parameter(p: &Parameters, vr: Vr) -> Option<i32> {
 /// one or the value is not representable.
 pub fn set_integer_parameter(p: &mut Parameters, vr: Vr, value: i32) -> bool {
     fn item<T: Copy>(items: &[T], value: i32) -> Option<T> {
-        usize::try_from(value - 1)
-            .ok()
-            .and_then(|i| items.get(i).copied())
+        let index = usize::try_from(value).ok()?.checked_sub(1)?;
+        items.get(index).copied()
     }
     let count = usize::try_from(value).ok();
     let done = match vr {
@@ -723,6 +722,11 @@ mod tests {
                     assert!(set_integer_parameter(&mut p, v.vr, n));
                     assert_eq!(integer_parameter(&p, v.vr), Some(n), "{}", v.name);
                     assert!(!set_integer_parameter(&mut p, v.vr, n + 1));
+                    // A restored state's integers are not range-checked before this: any i32
+                    // must be refused without overflow (a case the fuzzer found).
+                    for bad in [0, -1, i32::MIN, i32::MAX] {
+                        assert!(!set_integer_parameter(&mut p, v.vr, bad), "{}", v.name);
+                    }
                 }
                 Kind::Integer { max, .. } => {
                     assert!(set_integer_parameter(&mut p, v.vr, max));

@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Coverage-guided fuzzing (libFuzzer through cargo-fuzz) of the FMU's state deserialization and of
+# fmi2* call sequences, each target for a fixed time (seconds, default 60) from the corpus kept
+# in fuzz/corpus. New inputs go to a scratch directory, so a run leaves the repository as it was;
+# a crash fails the run and leaves its input under fuzz/artifacts/.
+#
+#   bash packaging/fuzz.sh [seconds]
+#
+# Needs the nightly toolchain (for the address sanitizer) and installs cargo-fuzz if missing.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${1:-60}
+mkdir -p target
+
+if ! rustup run nightly rustc --version >/dev/null 2>&1; then
+  rustup toolchain install nightly --profile minimal
+fi
+command -v cargo-fuzz >/dev/null 2>&1 || cargo install cargo-fuzz --locked --quiet
+
+cargo fmt --manifest-path fuzz/Cargo.toml --all -- --check
+cargo clippy --quiet --manifest-path fuzz/Cargo.toml --all-targets -- -D warnings
+if ! cargo +nightly fuzz build --fuzz-dir fuzz >target/fuzz-build.log 2>&1; then
+  cat target/fuzz-build.log >&2
+  exit 1
+fi
+for target in fmu_state call_sequence; do
+  scratch=$(mktemp -d)
+  echo "== fuzz $target for ${seconds} s"
+  status=0
+  cargo +nightly fuzz run --fuzz-dir fuzz "$target" "$scratch" "fuzz/corpus/$target" -- \
+    -max_total_time="$seconds" -rss_limit_mb=4096 -print_final_stats=1 \
+    >"target/fuzz-$target.log" 2>&1 || status=$?
+  rm -rf "$scratch"
+  grep -E "^(INFO: seed corpus|stat::number_of_executed_units|stat::new_units_added|Done)" \
+    "target/fuzz-$target.log" || true
+  if [ "$status" -ne 0 ]; then
+    tail -n 60 "target/fuzz-$target.log" >&2
+    echo "fuzz target $target failed (input under fuzz/artifacts/$target)" >&2
+    exit 1
+  fi
+done
