@@ -1,6 +1,7 @@
 """Tests of the packaged FMU through fmpy (pinned in requirements.txt): validation, simulation of
 every joint model x rod formulation with start values and inputs, fmpy's FMU-state scenarios, and
 bit-for-bit agreement with the Rust library run (examples/simulate.rs) on the same time grid."""
+import re
 import subprocess
 from pathlib import Path
 
@@ -29,6 +30,9 @@ def test_model_description():
     assert md.coSimulation.canHandleVariableCommunicationStepSize
     assert md.coSimulation.canGetAndSetFMUstate and md.coSimulation.canSerializeFMUstate
     assert md.variableNamingConvention == "structured"
+    # Stamped at packaging with the commit time (or SOURCE_DATE_EPOCH): an xs:dateTime in UTC.
+    assert re.fullmatch(r"\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ", md.generationDateAndTime)
+    assert md.author and md.copyright and md.license == "MIT"
     ex = md.defaultExperiment
     assert float(ex.stopTime) == 0.024 and float(ex.stepSize) == 1e-4
     names = {v.name for v in md.modelVariables}

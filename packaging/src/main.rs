@@ -212,6 +212,69 @@ fn release_binaries(
     Ok(found)
 }
 
+/// The packaging time, for modelDescription's generationDateAndTime: `SOURCE_DATE_EPOCH` if set,
+/// else the commit time of the checked-out revision, else now — so that packaging the same
+/// commit twice gives the same bytes.
+fn generation_time(root: &Path) -> String {
+    let from_env = std::env::var("SOURCE_DATE_EPOCH").ok();
+    let from_git = || {
+        let out = std::process::Command::new("git")
+            .current_dir(root)
+            .args(["log", "-1", "--format=%ct"])
+            .output()
+            .ok()?;
+        out.status
+            .success()
+            .then(|| String::from_utf8_lossy(&out.stdout).trim().to_string())
+    };
+    let now = || {
+        std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .map(|d| d.as_secs())
+            .unwrap_or(0)
+    };
+    let seconds = from_env
+        .or_else(from_git)
+        .and_then(|s| s.parse::<u64>().ok())
+        .unwrap_or_else(now);
+    utc_date_time(seconds)
+}
+
+/// Seconds since 1970-01-01T00:00:00Z as an xs:dateTime in UTC (days to civil date after
+/// H. Hinnant, "chrono-Compatible Low-Level Date Algorithms").
+fn utc_date_time(seconds: u64) -> String {
+    let (days, rest) = (seconds / 86_400, seconds % 86_400);
+    let z = days + 719_468;
+    let era = z / 146_097;
+    let doe = z - era * 146_097;
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let day = doy - (153 * mp + 2) / 5 + 1;
+    let month = if mp < 10 { mp + 3 } else { mp - 9 };
+    let year = yoe + era * 400 + u64::from(month <= 2);
+    format!(
+        "{year:04}-{month:02}-{day:02}T{:02}:{:02}:{:02}Z",
+        rest / 3600,
+        rest % 3600 / 60,
+        rest % 60
+    )
+}
+
+/// `xml` with generationDateAndTime = `time` after its generationTool attribute (the attribute
+/// is stamped at packaging, so the XML the build script renders, and its GUID, do not change
+/// with the date).
+fn stamped(xml: &str, time: &str) -> Result<String, Box<dyn Error>> {
+    let at = xml
+        .find("generationTool=")
+        .ok_or("modelDescription.xml has no generationTool attribute")?;
+    Ok(format!(
+        "{}generationDateAndTime=\"{time}\"\n  {}",
+        &xml[..at],
+        &xml[at..]
+    ))
+}
+
 /// Writes the FMU `path`: modelDescription.xml, the binaries, documentation/index.html and the
 /// images of `images` (files of `image_dir`) it shows.
 fn write_fmu(
@@ -224,7 +287,8 @@ fn write_fmu(
     let mut zip = zip::ZipWriter::new(std::fs::File::create(path)?);
     let options = zip_options();
     zip.start_file("modelDescription.xml", options)?;
-    zip.write_all(xml.as_bytes())?;
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    zip.write_all(stamped(xml, &generation_time(root))?.as_bytes())?;
     for (platform, library) in binaries {
         let ext = library.extension().and_then(|e| e.to_str()).unwrap_or("so");
         zip.start_file(format!("binaries/{platform}/{identifier}.{ext}"), options)?;
@@ -390,4 +454,29 @@ fn main() -> Result<(), Box<dyn Error>> {
         println!("{}", path.canonicalize()?.display());
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn dates_are_utc_civil_dates() {
+        // Against Python's datetime: the epoch, a leap day, the last day of February 2100 (no leap year), a time of day.
+        assert_eq!(utc_date_time(0), "1970-01-01T00:00:00Z");
+        assert_eq!(utc_date_time(951_782_400), "2000-02-29T00:00:00Z");
+        assert_eq!(utc_date_time(4_107_542_399), "2100-02-28T23:59:59Z");
+        assert_eq!(utc_date_time(1_795_575_696), "2026-11-25T03:01:36Z");
+    }
+
+    #[test]
+    fn the_stamp_goes_before_generation_tool() {
+        let xml = "<fmiModelDescription a=\"1\"\n  generationTool=\"t\">";
+        let out = stamped(xml, "2026-11-25T00:00:00Z").unwrap();
+        assert_eq!(
+            out,
+            "<fmiModelDescription a=\"1\"\n  generationDateAndTime=\"2026-11-25T00:00:00Z\"\n  generationTool=\"t\">"
+        );
+        assert!(stamped("<fmiModelDescription>", "x").is_err());
+    }
 }
