@@ -8,10 +8,9 @@ use fmi2_slave::{FmuError, Logger, Model, State};
 use super::snapshot::FmuSnapshot;
 use super::variables::{Causality, ENUMERATIONS, Kind, LOG_CATEGORIES, VARIABLES, Variable, Vr};
 use crate::error::ModelError;
-use crate::integrator::Method;
-use crate::joint::hertz_stiffness;
-use crate::params::{ContactLaw, DriveMode, InitialState, JointModel, Parameters, RodFormulation};
-use crate::reduction::Boundary;
+use crate::params::{
+    Parameters, integer_parameter, real_parameter, set_integer_parameter, set_real_parameter,
+};
 use crate::simulation::{Input, InputSignal, Inputs, Outputs, Simulation};
 
 impl From<ModelError> for FmuError {
@@ -57,33 +56,6 @@ pub struct SliderCrankFmu {
     pub(crate) time: f64,
     pub(crate) last_successful_time: f64,
 }
-
-fn enum_value<T: PartialEq>(items: &[T], value: &T) -> i32 {
-    items
-        .iter()
-        .position(|x| x == value)
-        .map_or(0, |i| i as i32 + 1)
-}
-
-const FORMULATIONS: [RodFormulation; 3] = [
-    RodFormulation::Rigid,
-    RodFormulation::Ancf,
-    RodFormulation::CraigBampton,
-];
-const JOINTS: [JointModel; 3] = [JointModel::Ideal, JointModel::Dry, JointModel::Lubricated];
-const DRIVES: [DriveMode; 2] = [DriveMode::Speed, DriveMode::Torque];
-const BOUNDARIES: [Boundary; 2] = [Boundary::Pins, Boundary::PositionsAndSlopes];
-const METHODS: [Method; 3] = [
-    Method::Esdirk,
-    Method::DormandPrince,
-    Method::GeneralizedAlpha,
-];
-const INITIAL_STATES: [InitialState; 2] = [InitialState::Equilibrated, InitialState::Straight];
-const CONTACT_LAWS: [ContactLaw; 3] = [
-    ContactLaw::LankaraniNikravesh,
-    ContactLaw::Flores,
-    ContactLaw::HuGuo,
-];
 
 impl SliderCrankFmu {
     /// The simulation, built from the current parameters if needed.
@@ -299,12 +271,7 @@ impl Model for SliderCrankFmu {
             }
             let p = &self.parameters;
             *value = match v.vr {
-                Vr::JointContactStiffness => hertz_stiffness(
-                    p.bearing_radius(),
-                    p.journal_radius,
-                    p.joint_youngs_modulus,
-                    p.joint_poisson_ratio,
-                ),
+                Vr::JointContactStiffness => p.contact_stiffness(),
                 Vr::DriveSpeed => self.inputs.value.drive_speed,
                 Vr::DriveTorque => self.inputs.value.drive_torque,
                 Vr::SliderForce => self.inputs.value.slider_force,
@@ -545,119 +512,6 @@ pub fn model_parameters(parameters: &Parameters, tolerance: Option<f64>) -> Para
         p.relative_tolerance = p.relative_tolerance.min(tolerance.max(floor));
     }
     p
-}
-
-/// Value of a Real parameter, None for other variables.
-pub fn real_parameter(p: &Parameters, vr: Vr) -> Option<f64> {
-    Some(match vr {
-        Vr::RodLength => p.rod.length,
-        Vr::RodYoungsModulus => p.rod.youngs_modulus,
-        Vr::RodDensity => p.rod.density,
-        Vr::RodArea => p.rod.area,
-        Vr::RodSecondMomentOfArea => p.rod.second_moment_of_area,
-        Vr::RodStiffnessDamping => p.rod.stiffness_damping,
-        Vr::CrankLength => p.crank_length,
-        Vr::CrankMass => p.crank_mass,
-        Vr::CrankInertia => p.crank_inertia,
-        Vr::CrankInitialAngle => p.crank_initial_angle,
-        Vr::CrankInitialSpeed => p.crank_initial_speed,
-        Vr::SliderMass => p.slider_mass,
-        Vr::JointClearance => p.clearance,
-        Vr::JointJournalRadius => p.journal_radius,
-        Vr::JointYoungsModulus => p.joint_youngs_modulus,
-        Vr::JointPoissonRatio => p.joint_poisson_ratio,
-        Vr::JointRestitution => p.restitution,
-        Vr::JointFriction => p.friction,
-        Vr::JointFrictionV0 => p.friction_v0,
-        Vr::JointFrictionV1 => p.friction_v1,
-        Vr::JointViscosity => p.viscosity,
-        Vr::JointBearingLength => p.bearing_length,
-        Vr::JointSwitchEccentricity => p.switch_eccentricity,
-        Vr::Gravity => p.gravity,
-        Vr::SolverRelativeTolerance => p.relative_tolerance,
-        Vr::SolverMaxStepSize => p.max_step_size,
-        Vr::SolverSpectralRadius => p.spectral_radius,
-        _ => return None,
-    })
-}
-
-/// Sets a Real parameter; false if `vr` is not one.
-pub fn set_real_parameter(p: &mut Parameters, vr: Vr, value: f64) -> bool {
-    let field = match vr {
-        Vr::RodLength => &mut p.rod.length,
-        Vr::RodYoungsModulus => &mut p.rod.youngs_modulus,
-        Vr::RodDensity => &mut p.rod.density,
-        Vr::RodArea => &mut p.rod.area,
-        Vr::RodSecondMomentOfArea => &mut p.rod.second_moment_of_area,
-        Vr::RodStiffnessDamping => &mut p.rod.stiffness_damping,
-        Vr::CrankLength => &mut p.crank_length,
-        Vr::CrankMass => &mut p.crank_mass,
-        Vr::CrankInertia => &mut p.crank_inertia,
-        Vr::CrankInitialAngle => &mut p.crank_initial_angle,
-        Vr::CrankInitialSpeed => &mut p.crank_initial_speed,
-        Vr::SliderMass => &mut p.slider_mass,
-        Vr::JointClearance => &mut p.clearance,
-        Vr::JointJournalRadius => &mut p.journal_radius,
-        Vr::JointYoungsModulus => &mut p.joint_youngs_modulus,
-        Vr::JointPoissonRatio => &mut p.joint_poisson_ratio,
-        Vr::JointRestitution => &mut p.restitution,
-        Vr::JointFriction => &mut p.friction,
-        Vr::JointFrictionV0 => &mut p.friction_v0,
-        Vr::JointFrictionV1 => &mut p.friction_v1,
-        Vr::JointViscosity => &mut p.viscosity,
-        Vr::JointBearingLength => &mut p.bearing_length,
-        Vr::JointSwitchEccentricity => &mut p.switch_eccentricity,
-        Vr::Gravity => &mut p.gravity,
-        Vr::SolverRelativeTolerance => &mut p.relative_tolerance,
-        Vr::SolverMaxStepSize => &mut p.max_step_size,
-        Vr::SolverSpectralRadius => &mut p.spectral_radius,
-        _ => return false,
-    };
-    *field = value;
-    true
-}
-
-/// Value of an Integer or Enumeration parameter, None for other variables.
-pub fn integer_parameter(p: &Parameters, vr: Vr) -> Option<i32> {
-    Some(match vr {
-        Vr::RodFormulation => enum_value(&FORMULATIONS, &p.rod_formulation),
-        Vr::JointModel => enum_value(&JOINTS, &p.joint_model),
-        Vr::DriveMode => enum_value(&DRIVES, &p.drive_mode),
-        Vr::RodBoundary => enum_value(&BOUNDARIES, &p.boundary),
-        Vr::SolverMethod => enum_value(&METHODS, &p.method),
-        Vr::RodInitialState => enum_value(&INITIAL_STATES, &p.initial_state),
-        Vr::JointContactLaw => enum_value(&CONTACT_LAWS, &p.contact_law),
-        Vr::RodNElements => i32::try_from(p.n_elements).unwrap_or(i32::MAX),
-        Vr::RodNModes => i32::try_from(p.n_modes).unwrap_or(i32::MAX),
-        Vr::SolverMaxStepsPerInterval => {
-            i32::try_from(p.max_steps_per_interval).unwrap_or(i32::MAX)
-        }
-        _ => return None,
-    })
-}
-
-/// Sets an Integer or Enumeration parameter (value already range-checked); false if `vr` is not
-/// one or the value is not representable.
-pub fn set_integer_parameter(p: &mut Parameters, vr: Vr, value: i32) -> bool {
-    fn item<T: Copy>(items: &[T], value: i32) -> Option<T> {
-        let index = usize::try_from(value).ok()?.checked_sub(1)?;
-        items.get(index).copied()
-    }
-    let count = usize::try_from(value).ok();
-    let done = match vr {
-        Vr::RodFormulation => item(&FORMULATIONS, value).map(|x| p.rod_formulation = x),
-        Vr::JointModel => item(&JOINTS, value).map(|x| p.joint_model = x),
-        Vr::DriveMode => item(&DRIVES, value).map(|x| p.drive_mode = x),
-        Vr::RodBoundary => item(&BOUNDARIES, value).map(|x| p.boundary = x),
-        Vr::SolverMethod => item(&METHODS, value).map(|x| p.method = x),
-        Vr::RodInitialState => item(&INITIAL_STATES, value).map(|x| p.initial_state = x),
-        Vr::JointContactLaw => item(&CONTACT_LAWS, value).map(|x| p.contact_law = x),
-        Vr::RodNElements => count.map(|n| p.n_elements = n),
-        Vr::RodNModes => count.map(|n| p.n_modes = n),
-        Vr::SolverMaxStepsPerInterval => count.map(|n| p.max_steps_per_interval = n),
-        _ => None,
-    };
-    done.is_some()
 }
 
 /// A value reference whose type was already checked cannot reach the wrong arm.

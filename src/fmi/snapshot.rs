@@ -6,13 +6,12 @@
 
 use fmi2_slave::FmuError;
 
-use super::instance::{
-    integer_parameter, real_parameter, set_integer_parameter, set_real_parameter,
-};
 use super::variables::{Causality, Kind, VARIABLES, Vr};
 use crate::integrator::{ImplicitState, IntegratorState, Stats};
 use crate::mechanism::ContactState;
-use crate::params::Parameters;
+use crate::params::{
+    Parameters, integer_parameter, real_parameter, set_integer_parameter, set_real_parameter,
+};
 use crate::simulation::{InputSignal, Inputs, PeakHold, Peaks, Snapshot};
 
 /// Largest accepted vector length (states, Jacobian entries) in a state.

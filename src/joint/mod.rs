@@ -76,12 +76,7 @@ impl Joint {
     /// The joint described by the parameters (validated beforehand).
     pub fn from_parameters(p: &Parameters) -> Self {
         let dry = DryContact {
-            stiffness: hertz_stiffness(
-                p.bearing_radius(),
-                p.journal_radius,
-                p.joint_youngs_modulus,
-                p.joint_poisson_ratio,
-            ),
+            stiffness: p.contact_stiffness(),
             clearance: p.clearance,
             journal_radius: p.journal_radius,
             restitution: p.restitution,

@@ -1,0 +1,119 @@
+//! [`Parameters`] by value reference: the one list that maps each parameter row of the variable
+//! table to its field, from which both the getter and the setter are generated.
+
+use super::{ContactLaw, DriveMode, InitialState, JointModel, Parameters, RodFormulation};
+use crate::fmi::variables::Vr;
+use crate::integrator::Method;
+use crate::reduction::Boundary;
+
+/// `real_parameter` and `set_real_parameter` over one list of (value reference, field).
+macro_rules! real_fields {
+    ($($vr:ident => $($field:ident).+;)*) => {
+        /// Value of a Real parameter, None for other variables.
+        pub fn real_parameter(p: &Parameters, vr: Vr) -> Option<f64> {
+            match vr {
+                $(Vr::$vr => Some(p.$($field).+),)*
+                _ => None,
+            }
+        }
+
+        /// Sets a Real parameter (value already range-checked); false if `vr` is not one.
+        pub fn set_real_parameter(p: &mut Parameters, vr: Vr, value: f64) -> bool {
+            let field = match vr {
+                $(Vr::$vr => &mut p.$($field).+,)*
+                _ => return false,
+            };
+            *field = value;
+            true
+        }
+    };
+}
+
+real_fields! {
+    RodLength => rod.length;
+    RodYoungsModulus => rod.youngs_modulus;
+    RodDensity => rod.density;
+    RodArea => rod.area;
+    RodSecondMomentOfArea => rod.second_moment_of_area;
+    RodStiffnessDamping => rod.stiffness_damping;
+    CrankLength => crank_length;
+    CrankMass => crank_mass;
+    CrankInertia => crank_inertia;
+    CrankInitialAngle => crank_initial_angle;
+    CrankInitialSpeed => crank_initial_speed;
+    SliderMass => slider_mass;
+    JointClearance => clearance;
+    JointJournalRadius => journal_radius;
+    JointYoungsModulus => joint_youngs_modulus;
+    JointPoissonRatio => joint_poisson_ratio;
+    JointRestitution => restitution;
+    JointFriction => friction;
+    JointFrictionV0 => friction_v0;
+    JointFrictionV1 => friction_v1;
+    JointViscosity => viscosity;
+    JointBearingLength => bearing_length;
+    JointSwitchEccentricity => switch_eccentricity;
+    Gravity => gravity;
+    SolverRelativeTolerance => relative_tolerance;
+    SolverMaxStepSize => max_step_size;
+    SolverSpectralRadius => spectral_radius;
+}
+
+/// `integer_parameter` and `set_integer_parameter` over one list of switches (value reference,
+/// field, items in the table's order) and one of counts (value reference, field).
+macro_rules! integer_fields {
+    (
+        switches { $($svr:ident => $sfield:ident: [$($item:expr),+ $(,)?];)* }
+        counts { $($cvr:ident => $cfield:ident;)* }
+    ) => {
+        /// Value of an Integer or Enumeration parameter (a switch as its item number, from 1),
+        /// None for other variables.
+        pub fn integer_parameter(p: &Parameters, vr: Vr) -> Option<i32> {
+            match vr {
+                $(Vr::$svr => [$($item),+]
+                    .iter()
+                    .position(|x| *x == p.$sfield)
+                    .and_then(|i| i32::try_from(i + 1).ok()),)*
+                $(Vr::$cvr => Some(i32::try_from(p.$cfield).unwrap_or(i32::MAX)),)*
+                _ => None,
+            }
+        }
+
+        /// Sets an Integer or Enumeration parameter (value already range-checked); false if
+        /// `vr` is not one or the value is not representable (no item, a negative count).
+        pub fn set_integer_parameter(p: &mut Parameters, vr: Vr, value: i32) -> bool {
+            let item = usize::try_from(value).ok().and_then(|v| v.checked_sub(1));
+            match vr {
+                $(Vr::$svr => match item.and_then(|i| [$($item),+].get(i).copied()) {
+                    Some(x) => p.$sfield = x,
+                    None => return false,
+                },)*
+                $(Vr::$cvr => match usize::try_from(value) {
+                    Ok(n) => p.$cfield = n,
+                    Err(_) => return false,
+                },)*
+                _ => return false,
+            }
+            true
+        }
+    };
+}
+
+integer_fields! {
+    switches {
+        RodFormulation => rod_formulation:
+            [RodFormulation::Rigid, RodFormulation::Ancf, RodFormulation::CraigBampton];
+        JointModel => joint_model: [JointModel::Ideal, JointModel::Dry, JointModel::Lubricated];
+        DriveMode => drive_mode: [DriveMode::Speed, DriveMode::Torque];
+        RodBoundary => boundary: [Boundary::Pins, Boundary::PositionsAndSlopes];
+        SolverMethod => method: [Method::Esdirk, Method::DormandPrince, Method::GeneralizedAlpha];
+        RodInitialState => initial_state: [InitialState::Equilibrated, InitialState::Straight];
+        JointContactLaw => contact_law:
+            [ContactLaw::LankaraniNikravesh, ContactLaw::Flores, ContactLaw::HuGuo];
+    }
+    counts {
+        RodNElements => n_elements;
+        RodNModes => n_modes;
+        SolverMaxStepsPerInterval => max_steps_per_interval;
+    }
+}
