@@ -14,6 +14,7 @@ pub mod error;
 pub mod fmi;
 pub mod integrator;
 pub mod joint;
+pub mod linalg;
 pub mod math;
 pub mod mechanism;
 pub mod params;

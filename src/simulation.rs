@@ -252,6 +252,12 @@ pub struct Simulation {
 }
 
 impl Simulation {
+    /// The Hertz-type contact stiffness the parameters give the joint \[N/m^1.5\]
+    /// ([`crate::joint::contact_stiffness`]), before any simulation is built.
+    pub fn contact_stiffness(parameters: &Parameters) -> f64 {
+        crate::joint::contact_stiffness(parameters)
+    }
+
     /// A simulation at t = 0 in the initial state of the parameters (docs/model.md §10).
     pub fn new(parameters: Parameters) -> Result<Self, ModelError> {
         let mut mechanism = SliderCrank::new(&parameters)?;

@@ -271,7 +271,7 @@ impl Model for SliderCrankFmu {
             }
             let p = &self.parameters;
             *value = match v.vr {
-                Vr::JointContactStiffness => p.contact_stiffness(),
+                Vr::JointContactStiffness => Simulation::contact_stiffness(p),
                 Vr::DriveSpeed => self.inputs.value.drive_speed,
                 Vr::DriveTorque => self.inputs.value.drive_torque,
                 Vr::SliderForce => self.inputs.value.slider_force,

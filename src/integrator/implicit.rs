@@ -33,9 +33,9 @@
 
 use super::esdirk::Tableau;
 use super::generalized_alpha::GeneralizedAlpha;
-use super::lu::Lu;
 use super::{ErrorScales, MechanicalSystem, Stats, Tolerances, initial_step, scaled_norm};
 use crate::error::ModelError;
+use crate::linalg::lu::Lu;
 use crate::math;
 
 /// Largest number of Newton iterations per stage.

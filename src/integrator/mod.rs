@@ -43,7 +43,6 @@ mod dormand_prince;
 mod esdirk;
 mod generalized_alpha;
 mod implicit;
-pub mod lu;
 
 pub use dormand_prince::DormandPrince;
 pub use esdirk::{ESDIRK54, Tableau};

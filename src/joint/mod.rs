@@ -72,11 +72,22 @@ pub enum Joint {
     Lubricated(JournalBearing),
 }
 
+/// Hertz-type stiffness K \[N/m^1.5\] of the parameters' journal in their bearing
+/// ([`hertz_stiffness`]), the FMU's calculated parameter joint.contactStiffness.
+pub fn contact_stiffness(p: &Parameters) -> f64 {
+    hertz_stiffness(
+        p.bearing_radius(),
+        p.journal_radius,
+        p.joint_youngs_modulus,
+        p.joint_poisson_ratio,
+    )
+}
+
 impl Joint {
     /// The joint described by the parameters (validated beforehand).
     pub fn from_parameters(p: &Parameters) -> Self {
         let dry = DryContact {
-            stiffness: p.contact_stiffness(),
+            stiffness: contact_stiffness(p),
             clearance: p.clearance,
             journal_radius: p.journal_radius,
             restitution: p.restitution,

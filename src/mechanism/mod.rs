@@ -31,9 +31,10 @@ use nalgebra::{SMatrix, Vector2};
 use self::constraints::{Active, ConstraintState, Constraints, Vector6};
 use self::rod_body::RodBody;
 use crate::error::ModelError;
-use crate::integrator::lu::Lu;
 use crate::integrator::{ErrorScales, MechanicalSystem, OdeSystem};
 use crate::joint::{Joint, JointForce, JointKinematics, MIN_IMPACT_VELOCITY};
+use crate::linalg::lu::Lu;
+use crate::linalg::small;
 use crate::math;
 use crate::params::{DriveMode, JointModel, Parameters, RodFormulation};
 
@@ -660,9 +661,8 @@ impl SliderCrank {
         }
     }
 
-    /// Solves (C W Cᵀ) x = r on the k active rows (inactive rows padded with identity).
+    /// Solves (C W Cᵀ) x = r on the k active rows (rows of C beyond k are zero; x is zero there).
     fn solve_schur(&self, c: &Constraints, r: Vector6) -> Result<Vector6, ModelError> {
-        // S = C W Cᵀ on the k active rows only (rows of C beyond k are zero), then S = L Lᵀ.
         let k = c.rows;
         let mut cw = [[0.0; 6]; 6];
         for (i, row) in cw.iter_mut().enumerate().take(k) {
@@ -670,31 +670,21 @@ impl SliderCrank {
                 *v = (0..6).map(|m| c.jacobian[(i, m)] * self.w[(m, j)]).sum();
             }
         }
-        let mut l = [[0.0; 6]; 6];
+        let mut s = [[0.0; 6]; 6];
         for i in 0..k {
             for j in 0..=i {
-                let s_ij: f64 = (0..6).map(|m| cw[i][m] * c.jacobian[(j, m)]).sum();
-                let sum = s_ij - (0..j).map(|m| l[i][m] * l[j][m]).sum::<f64>();
-                if i == j {
-                    if !(sum > 0.0 && sum.is_finite()) {
-                        return Err(ModelError::Numerical(
-                            "singular constraint Jacobian (locked configuration)".into(),
-                        ));
-                    }
-                    l[i][i] = sum.sqrt();
-                } else {
-                    l[i][j] = sum / l[j][j];
-                }
+                s[i][j] = (0..6).map(|m| cw[i][m] * c.jacobian[(j, m)]).sum();
             }
         }
-        let mut x = Vector6::zeros();
-        for i in 0..k {
-            x[i] = (r[i] - (0..i).map(|m| l[i][m] * x[m]).sum::<f64>()) / l[i][i];
-        }
-        for i in (0..k).rev() {
-            x[i] = (x[i] - (i + 1..k).map(|m| l[m][i] * x[m]).sum::<f64>()) / l[i][i];
-        }
-        Ok(x)
+        let mut x = [0.0; 6];
+        x[..k].copy_from_slice(&r.as_slice()[..k]);
+        small::cholesky_solve(
+            &s,
+            k,
+            &mut x,
+            "singular constraint Jacobian (locked configuration)",
+        )?;
+        Ok(Vector6::from(x))
     }
 
     /// Adds −G μ to the accelerations (or velocities) `out` for μ on s: M⁻¹ Cᵀλ applied.

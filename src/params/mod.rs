@@ -247,17 +247,6 @@ impl Parameters {
         self.journal_radius + self.clearance
     }
 
-    /// Hertz-type stiffness K of the journal in the bearing \[N/m^1.5\]
-    /// ([`crate::joint::hertz_stiffness`]): the FMU's calculated parameter joint.contactStiffness.
-    pub fn contact_stiffness(&self) -> f64 {
-        crate::joint::hertz_stiffness(
-            self.bearing_radius(),
-            self.journal_radius,
-            self.joint_youngs_modulus,
-            self.joint_poisson_ratio,
-        )
-    }
-
     /// Crank moment of inertia about the pivot, I_c + m_c (r_c/2)² \[kg m²\].
     pub fn crank_inertia_about_pivot(&self) -> f64 {
         self.crank_inertia + self.crank_mass * (0.5 * self.crank_length).powi(2)

@@ -5,13 +5,12 @@
 //! - R. R. Craig, M. C. C. Bampton (1968), AIAA J. 6, 1313–1319.
 //! - Sun et al. (2015), Mech. Mach. Theory 85, 106–115, eqs. (1)–(3).
 
-pub mod cholesky;
 pub mod craig_bampton;
 pub mod modes;
 
 use faer::{Mat, MatMut, MatRef};
 
-use self::cholesky::BandCholesky;
+use crate::linalg::band_cholesky::BandCholesky;
 
 pub use craig_bampton::{Boundary, CraigBampton, check_mode_count, max_modes};
 pub use modes::{Modes, generalized_eigen};
