@@ -671,9 +671,9 @@ impl SliderCrank {
             }
         }
         let mut s = [[0.0; 6]; 6];
-        for i in 0..k {
-            for j in 0..=i {
-                s[i][j] = (0..6).map(|m| cw[i][m] * c.jacobian[(j, m)]).sum();
+        for (i, row) in s.iter_mut().enumerate().take(k) {
+            for (j, v) in row.iter_mut().enumerate().take(i + 1) {
+                *v = (0..6).map(|m| cw[i][m] * c.jacobian[(j, m)]).sum();
             }
         }
         let mut x = [0.0; 6];
