@@ -1,0 +1,89 @@
+//! Energies of a mechanism state, and their balance against the work integrals in the state.
+
+use faer::MatRef;
+
+use super::SliderCrank;
+use super::layout::CRANK_ANGLE;
+use crate::joint::JointForce;
+use crate::math;
+
+/// Energies of a state.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Energies {
+    /// Kinetic energy ½ q̇ᵀ M q̇ \[J\].
+    pub kinetic: f64,
+    /// Rod strain energy \[J\].
+    pub strain: f64,
+    /// Elastic energy stored in the contact \[J\].
+    pub contact: f64,
+    /// Gravitational potential energy (zero at y = 0) \[J\].
+    pub gravity: f64,
+    /// Work done by the drive \[J\].
+    pub drive_work: f64,
+    /// Work done by the joint forces (contact, friction, film) \[J\].
+    pub joint_work: f64,
+    /// Work done by the external slider force \[J\].
+    pub external_work: f64,
+    /// Energy dissipated by the rod's material (strain-rate) damping \[J\].
+    pub material_damping: f64,
+}
+
+impl Energies {
+    /// Energy lost in the joint: −W_joint − stored contact energy (≥ 0 up to integration error).
+    pub fn dissipated(&self) -> f64 {
+        -self.joint_work - self.contact
+    }
+
+    /// Balance T + U + V_g + D_material − W_drive − W_external − W_joint, constant in exact
+    /// arithmetic (the joint work includes the work of the elastic contact force, so V_c does not
+    /// appear).
+    pub fn balance(&self) -> f64 {
+        self.kinetic + self.strain + self.gravity + self.material_damping
+            - self.drive_work
+            - self.external_work
+            - self.joint_work
+    }
+}
+
+impl SliderCrank {
+    /// Deformation (strain) energy of the rod in state `y` \[J\] (docs/model.md §1.4; 0 for the
+    /// rigid rod).
+    pub fn strain_energy(&mut self, y: &[f64]) -> f64 {
+        self.rod.strain_energy(&y[self.layout.rod()])
+    }
+
+    pub(super) fn kinetic_energy(&self, y: &[f64]) -> f64 {
+        let l = self.layout;
+        let p_dot = &y[l.rod_rates()];
+        let m: MatRef<'_, f64> = self.rod.mass_matrix();
+        let rod: f64 = (0..p_dot.len())
+            .map(|i| p_dot[i] * (0..p_dot.len()).map(|j| m[(i, j)] * p_dot[j]).sum::<f64>())
+            .sum();
+        let (crank, slider) = (y[l.crank_speed()], y[l.slider_velocity()]);
+        0.5 * (self.crank_inertia * crank * crank + rod + self.slider_mass * slider * slider)
+    }
+
+    /// Energies of a state (evaluates the joint force for the stored contact energy).
+    pub fn energies(&mut self, y: &[f64]) -> Energies {
+        let l = self.layout;
+        let kin = self.joint_kinematics(y);
+        let contact: JointForce = self.joint.force(&kin, self.impact_velocity(&kin));
+        let p = &y[l.rod()];
+        let rod_gravity: f64 = self.rod_gravity.iter().zip(p).map(|(g, x)| g * x).sum();
+        Energies {
+            kinetic: self.kinetic_energy(y),
+            strain: self.rod.strain_energy(p),
+            contact: contact.potential,
+            gravity: self.crank_mass
+                * self.gravity
+                * 0.5
+                * self.crank_length
+                * math::sin(y[CRANK_ANGLE])
+                - rod_gravity,
+            drive_work: y[l.drive_work()],
+            joint_work: y[l.joint_work()],
+            external_work: y[l.external_work()],
+            material_damping: y.get(l.material_damping()).copied().unwrap_or(0.0),
+        }
+    }
+}

@@ -1,0 +1,171 @@
+//! Where each quantity sits in the mechanism's state vector,
+//! ```text
+//! y = [θ, p, x_s,  θ̇, ṗ, ẋ_s,  θ_d, W_drive, W_joint, W_external, (D_material)]
+//!      └ n coordinates ┘ └ n velocities ┘
+//! ```
+//! with p the rod's n − 2 coordinates, whose pin A position comes first and pin B position at the
+//! rod's end offset. Every index into a state goes through [`StateLayout`].
+
+use std::ops::{Range, RangeFrom};
+
+use nalgebra::Vector2;
+
+/// The positions of the mechanism's quantities in its state vector.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct StateLayout {
+    /// Number of coordinates n = 1 + n_rod + 1.
+    n: usize,
+    /// Position of pin B's x among the rod's coordinates.
+    pin_b: usize,
+    /// Whether the state ends with the energy dissipated by material damping.
+    material_damping: bool,
+}
+
+/// Position of the crank angle θ.
+pub const CRANK_ANGLE: usize = 0;
+/// Position of pin A's x (its y follows).
+pub const PIN_A: usize = 1;
+
+/// The 2-vector of the state components at `at` and `at + 1` (a pin's x and y, or their rates).
+pub fn pair(y: &[f64], at: usize) -> Vector2<f64> {
+    Vector2::new(y[at], y[at + 1])
+}
+
+impl StateLayout {
+    /// The layout of a rod with `n_rod` coordinates whose pin B x is the rod coordinate `pin_b`.
+    pub fn new(n_rod: usize, pin_b: usize, material_damping: bool) -> Self {
+        Self {
+            n: n_rod + 2,
+            pin_b,
+            material_damping,
+        }
+    }
+
+    /// Number of coordinates n.
+    pub fn n_coordinates(self) -> usize {
+        self.n
+    }
+
+    /// Length of the state vector: 2n + 4, plus 1 with material damping.
+    pub fn n_states(self) -> usize {
+        2 * self.n + 4 + usize::from(self.material_damping)
+    }
+
+    /// The coordinates q.
+    pub fn coordinates(self) -> Range<usize> {
+        0..self.n
+    }
+
+    /// The velocities q̇.
+    pub fn velocities(self) -> Range<usize> {
+        self.n..2 * self.n
+    }
+
+    /// The rod's coordinates p.
+    pub fn rod(self) -> Range<usize> {
+        1..self.n - 1
+    }
+
+    /// The rod's coordinate j.
+    pub fn rod_coordinate(self, j: usize) -> usize {
+        1 + j
+    }
+
+    /// The rod's rates ṗ.
+    pub fn rod_rates(self) -> Range<usize> {
+        self.n + 1..2 * self.n - 1
+    }
+
+    /// The rate of the rod's coordinate j.
+    pub fn rod_rate(self, j: usize) -> usize {
+        self.n + 1 + j
+    }
+
+    /// Pin B's x (its y follows).
+    pub fn pin_b(self) -> usize {
+        1 + self.pin_b
+    }
+
+    /// The slider abscissa x_s.
+    pub fn slider(self) -> usize {
+        self.n - 1
+    }
+
+    /// The velocity of the coordinate at `position` (< n).
+    pub fn rate_of(self, position: usize) -> usize {
+        self.n + position
+    }
+
+    /// The crank speed θ̇.
+    pub fn crank_speed(self) -> usize {
+        self.rate_of(CRANK_ANGLE)
+    }
+
+    /// The slider velocity ẋ_s.
+    pub fn slider_velocity(self) -> usize {
+        self.rate_of(self.slider())
+    }
+
+    /// The drive angle θ_d (integral of the prescribed speed).
+    pub fn drive_angle(self) -> usize {
+        2 * self.n
+    }
+
+    /// The work of the drive.
+    pub fn drive_work(self) -> usize {
+        2 * self.n + 1
+    }
+
+    /// The work of the joint forces.
+    pub fn joint_work(self) -> usize {
+        2 * self.n + 2
+    }
+
+    /// The work of the external slider force.
+    pub fn external_work(self) -> usize {
+        2 * self.n + 3
+    }
+
+    /// The energy dissipated by material damping (present only with material damping).
+    pub fn material_damping(self) -> usize {
+        2 * self.n + 4
+    }
+
+    /// The work and energy integrals, every state after the drive angle.
+    pub fn integrals(self) -> RangeFrom<usize> {
+        2 * self.n + 1..
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every state has exactly one place: the named positions and ranges tile 0..len.
+    #[test]
+    fn positions_tile_the_state() {
+        for (n_rod, pin_b, damping) in [(4, 2, false), (20, 10, true), (36, 32, false)] {
+            let l = StateLayout::new(n_rod, pin_b, damping);
+            let mut seen = vec![0; l.n_states()];
+            let mut mark = |i: usize| seen[i] += 1;
+            mark(CRANK_ANGLE);
+            l.rod().for_each(&mut mark);
+            mark(l.slider());
+            mark(l.crank_speed());
+            l.rod_rates().for_each(&mut mark);
+            mark(l.slider_velocity());
+            mark(l.drive_angle());
+            (l.drive_work()..l.n_states()).for_each(&mut mark);
+            assert!(seen.iter().all(|&k| k == 1), "{seen:?}");
+            assert_eq!(l.integrals().start, l.drive_work());
+            assert_eq!(
+                [l.joint_work(), l.external_work()],
+                [l.drive_work() + 1, l.drive_work() + 2]
+            );
+            assert_eq!(l.material_damping() < l.n_states(), damping);
+            assert_eq!(l.rate_of(l.pin_b()), l.rod_rate(pin_b));
+            assert_eq!(l.rod_coordinate(pin_b), l.pin_b());
+            assert_eq!(l.coordinates().end, l.velocities().start);
+        }
+    }
+}

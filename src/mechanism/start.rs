@@ -1,0 +1,157 @@
+//! The mechanism's initial state: the ideal mechanism's motion with a straight rod, and the
+//! quasi-static start that deforms the rod by the inertial loads of that motion.
+
+use nalgebra::Vector2;
+
+use super::SliderCrank;
+use super::layout::{CRANK_ANGLE, PIN_A, pair};
+use crate::error::ModelError;
+use crate::linalg::lu::Lu;
+use crate::math;
+
+impl SliderCrank {
+    /// Initial state: crank at `angle` turning at `speed`, rod straight and unstressed, journal
+    /// centred, every velocity that of the ideal mechanism (docs/model.md §10).
+    pub fn initial_state(&self, angle: f64, speed: f64) -> Vec<f64> {
+        let (r_c, l) = (self.crank_length, self.rod_length);
+        let (sin, cos) = math::sin_cos(angle);
+        let a = r_c * Vector2::new(cos, sin);
+        let sin_beta = -r_c * sin / l;
+        let cos_beta = (1.0 - sin_beta * sin_beta).sqrt();
+        let b = a + l * Vector2::new(cos_beta, sin_beta);
+        let v_a = r_c * speed * Vector2::new(-sin, cos);
+        let beta_dot = -r_c * speed * cos / (l * cos_beta);
+        let v_b = v_a + l * beta_dot * Vector2::new(-sin_beta, cos_beta);
+        let (p, p_dot) = (self.rod.straight(a, b), self.rod.straight(v_a, v_b));
+        let l = self.layout;
+        let mut y = vec![0.0; l.n_states()];
+        y[CRANK_ANGLE] = angle;
+        y[l.rod()].copy_from_slice(&p);
+        y[l.slider()] = b.x;
+        y[l.crank_speed()] = speed;
+        y[l.rod_rates()].copy_from_slice(&p_dot);
+        y[l.slider_velocity()] = v_b.x;
+        y[l.drive_angle()] = angle;
+        y
+    }
+
+    /// Quasi-static start: changes the rod's deformation in a state from
+    /// [`SliderCrank::initial_state`] so that the deformation has no acceleration.
+    ///
+    /// Unknowns: the rod's deviation d = p_o − Π_o(r_A, r_B) of its coordinates other than the pin
+    /// positions from the straight rod through its pins (Π, [`RodBody::straight`], linear), and
+    /// a shift Δ of the slider end along the guide (r_B and x_s together: the journal stays
+    /// centred, an ideal joint stays closed). Equations, with every velocity unchanged:
+    /// ```text
+    /// d̈ = p̈_o − Π_o(r̈_A, r̈_B) = 0                 (the rod accelerates as a straight rod)
+    /// σ̈ = (r̈_B − r̈_A)·t + |ṙ_B − ṙ_A|²/|r_B − r_A| − ((ṙ_B − ṙ_A)·t)²/|r_B − r_A| = 0
+    /// ```
+    /// (σ = |r_B − r_A|, t its direction: no stretching acceleration). Solved by Newton with a
+    /// finite-difference Jacobian. The rod then starts loaded by the inertial forces of the motion
+    /// (and gravity) instead of unstressed, and does not ring at its axial and bending frequencies
+    /// from t = 0. The rigid rod has no deformation: the state is left as it is.
+    pub fn equilibrate(&mut self, y: &mut [f64]) -> Result<(), ModelError> {
+        if self.rod.rigid_length().is_some() {
+            return Ok(());
+        }
+        let l = self.layout;
+        let e = self.rod.end_offset();
+        let others: Vec<usize> = (0..l.rod().len())
+            .filter(|&i| ![0, 1, e, e + 1].contains(&i))
+            .collect();
+        let m = others.len() + 1;
+        let base = y.to_vec();
+        let scales = self.error_scales().absolute;
+        // The error-control unit of unknown j: its rod coordinate's, or the slider's for Δ.
+        let unit = |j: usize| match others.get(j) {
+            Some(&i) => scales[l.rod_coordinate(i)],
+            None => scales[l.slider()],
+        };
+        let mut u = vec![0.0; m];
+        let mut residual = vec![0.0; m];
+        let mut shifted = vec![0.0; m];
+        let mut jacobian = Lu::new(m);
+        let mut dy = vec![0.0; y.len()];
+        let mut first_norm = f64::NAN;
+        for _ in 0..30 {
+            self.quasi_static_residual(&base, &others, &u, y, &mut dy, &mut residual)?;
+            let norm = residual.iter().map(|r| r * r).sum::<f64>().sqrt();
+            if first_norm.is_nan() {
+                first_norm = norm;
+            }
+            // 1e-7 of the initial residual: below the round-off of the finite-difference Jacobian
+            // of a 64-element rod, far below any acceleration the start could excite.
+            if norm <= 1e-7 * first_norm || norm == 0.0 {
+                return Ok(());
+            }
+            for j in 0..m {
+                let scale = unit(j);
+                // At least 1e-4 of the rod's own scale: a tiny clearance (joint length scale
+                // below 1e-4 of the rod length) must not shrink the differences to round-off.
+                let floor = (1e-4 * self.rod_length / self.position_scale).max(1.0);
+                let delta = 1e-7 * (u[j].abs() + scale * floor);
+                let mut perturbed = u.clone();
+                perturbed[j] += delta;
+                self.quasi_static_residual(&base, &others, &perturbed, y, &mut dy, &mut shifted)?;
+                for i in 0..m {
+                    jacobian.matrix_mut()[j * m + i] = (shifted[i] - residual[i]) / delta;
+                }
+            }
+            jacobian.factorize()?;
+            jacobian.solve(&mut residual);
+            let mut largest_update = 0.0f64;
+            for (j, (ui, ri)) in u.iter_mut().zip(&residual).enumerate() {
+                *ui -= ri;
+                largest_update = largest_update.max(ri.abs() / unit(j));
+            }
+            // An update of 1e-9 of the error-control unit: the residual is at its round-off floor
+            // (a start from rest, whose straight rod is already in equilibrium).
+            if largest_update <= 1e-9 {
+                self.quasi_static_residual(&base, &others, &u, y, &mut dy, &mut residual)?;
+                return Ok(());
+            }
+        }
+        self.quasi_static_residual(&base, &others, &u, y, &mut dy, &mut residual)?;
+        Err(ModelError::Numerical(format!(
+            "equilibrated initial state: Newton did not converge (residual {:.3e} of {:.3e})",
+            residual.iter().map(|r| r * r).sum::<f64>().sqrt(),
+            first_norm
+        )))
+    }
+
+    /// Writes the state of the quasi-static unknowns `u` = [d, Δ] (on the straight state `base`)
+    /// to `y` and the residual [d̈, σ̈] to `out`.
+    fn quasi_static_residual(
+        &mut self,
+        base: &[f64],
+        others: &[usize],
+        u: &[f64],
+        y: &mut [f64],
+        dy: &mut [f64],
+        out: &mut [f64],
+    ) -> Result<(), ModelError> {
+        let l = self.layout;
+        let pin_b = l.pin_b();
+        let shift = u[others.len()];
+        y.copy_from_slice(base);
+        y[pin_b] += shift;
+        y[l.slider()] += shift;
+        let (a, b) = (pair(y, PIN_A), pair(y, pin_b));
+        let straight = self.rod.straight(a, b);
+        for (k, &i) in others.iter().enumerate() {
+            y[l.rod_coordinate(i)] = straight[i] + u[k];
+        }
+        self.evaluate(y, dy)?;
+        let (acc_a, acc_b) = (pair(dy, l.rate_of(PIN_A)), pair(dy, l.rate_of(pin_b)));
+        let straight_acc = self.rod.straight(acc_a, acc_b);
+        for (k, &i) in others.iter().enumerate() {
+            out[k] = dy[l.rod_rate(i)] - straight_acc[i];
+        }
+        let chord = b - a;
+        let t = chord / chord.norm();
+        let rate = pair(y, l.rate_of(pin_b)) - pair(y, l.rate_of(PIN_A));
+        out[others.len()] =
+            (acc_b - acc_a).dot(&t) + (rate.norm_squared() - rate.dot(&t).powi(2)) / chord.norm();
+        Ok(())
+    }
+}
