@@ -1,46 +1,15 @@
 //! The unsafe edge of the FMI layer: raw pointers to slices and strings (NULL-checked), the
-//! instance guard with `catch_unwind`, and the call into the master's variadic logger.
+//! instance guard with `catch_unwind`.
 #![allow(unsafe_code)]
 
 use std::ffi::{CStr, c_char};
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
-use fmi_sys::fmi2::{
-    fmi2CallbackLogger, fmi2Component, fmi2ComponentEnvironment, fmi2Status,
-    fmi2Status_fmi2Discard, fmi2Status_fmi2Error,
-};
+use fmi_sys::fmi2::{fmi2Component, fmi2Status, fmi2Status_fmi2Discard, fmi2Status_fmi2Error};
 
 use super::error::FmuError;
 use super::model::{Instance, Model};
 use super::state::{Call, State};
-
-/// Calls the master's logger with `"%s"` as the format, so the text is never interpreted.
-// The environment pointer is the master's opaque value, passed back unchanged, never dereferenced.
-#[allow(clippy::not_unsafe_ptr_arg_deref)]
-pub fn call_logger(
-    callback: fmi2CallbackLogger,
-    environment: fmi2ComponentEnvironment,
-    instance_name: &CStr,
-    status: fmi2Status,
-    category: &CStr,
-    message: &CStr,
-) {
-    if let Some(log) = callback {
-        // SAFETY: the master passed this function in fmi2CallbackFunctions (FMI 2.0.4 §2.1.5) with
-        // the printf-style signature; every string is NUL-terminated and outlives the call, and
-        // "%s" consumes exactly the one variadic argument given.
-        unsafe {
-            log(
-                environment,
-                instance_name.as_ptr(),
-                status,
-                category.as_ptr(),
-                c"%s".as_ptr(),
-                message.as_ptr(),
-            );
-        }
-    }
-}
 
 /// `n` values at `ptr` (any pointer when n = 0); NULL with n > 0 is an error naming `name`.
 ///

@@ -15,6 +15,8 @@ pub mod description;
 pub mod table;
 
 #[cfg(feature = "slave")]
+mod callback;
+#[cfg(feature = "slave")]
 pub mod error;
 #[cfg(feature = "slave")]
 pub mod exports;

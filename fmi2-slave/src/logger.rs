@@ -5,12 +5,12 @@
 
 use std::ffi::CString;
 
+use super::callback::call_logger;
+
 use fmi_sys::fmi2::{
     fmi2CallbackLogger, fmi2ComponentEnvironment, fmi2Status, fmi2Status_fmi2Discard,
     fmi2Status_fmi2Error, fmi2Status_fmi2OK, fmi2Status_fmi2Warning,
 };
-
-use super::ffi::call_logger;
 
 /// The logger callback of one instance.
 #[derive(Debug)]

@@ -72,6 +72,15 @@ pub enum Joint {
     Lubricated(JournalBearing),
 }
 
+/// Discrete contact state, updated at accepted steps only.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ContactState {
+    /// Whether the journal touched the bearing at the end of the last accepted step.
+    pub in_contact: bool,
+    /// Normal velocity δ̇⁽⁻⁾ at the onset of the current contact event \[m/s\].
+    pub impact_velocity: f64,
+}
+
 /// Hertz-type stiffness K \[N/m^1.5\] of the parameters' journal in their bearing
 /// ([`hertz_stiffness`]), the FMU's calculated parameter joint.contactStiffness.
 pub fn contact_stiffness(p: &Parameters) -> f64 {

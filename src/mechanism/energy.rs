@@ -2,8 +2,8 @@
 
 use faer::MatRef;
 
-use super::SliderCrank;
 use super::layout::CRANK_ANGLE;
+use super::slider_crank::SliderCrank;
 use crate::joint::JointForce;
 use crate::math;
 

@@ -2,23 +2,14 @@
 //! (no contact starts deep inside the wall; the impact velocity is latched at the located onset),
 //! and the mechanism as the integrators' first-order system.
 
-use super::SliderCrank;
+use super::slider_crank::SliderCrank;
 use crate::integrator::OdeSystem;
-use crate::joint::{JointKinematics, MIN_IMPACT_VELOCITY};
+use crate::joint::{ContactState, JointKinematics, MIN_IMPACT_VELOCITY};
 
 /// Largest penetration accepted at the first step of a contact event \[m\]: 1e-3 of the Hertz
 /// maximum penetration of a 0.1 kg, 1 m/s impact (≈ 20 µm, docs/model.md §6), so that the impact
 /// velocity is located accurately and the integrator never starts a contact deep inside.
 pub const CONTACT_ONSET_PENETRATION: f64 = 2e-8;
-
-/// Discrete contact state, updated at accepted steps only.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ContactState {
-    /// Whether the journal touched the bearing at the end of the last accepted step.
-    pub in_contact: bool,
-    /// Normal velocity δ̇⁽⁻⁾ at the onset of the current contact event \[m/s\].
-    pub impact_velocity: f64,
-}
 
 impl SliderCrank {
     pub(super) fn impact_velocity(&self, k: &JointKinematics) -> f64 {

@@ -3,8 +3,8 @@
 
 use nalgebra::Vector2;
 
-use super::SliderCrank;
 use super::layout::{CRANK_ANGLE, PIN_A, pair};
+use super::slider_crank::SliderCrank;
 use crate::error::ModelError;
 use crate::linalg::lu::Lu;
 use crate::math;

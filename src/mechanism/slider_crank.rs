@@ -1,0 +1,509 @@
+//! The slider-crank as a first-order system: its construction from the parameters, the
+//! constraint solve and the right-hand side (see the module documentation of [`super`]).
+
+use nalgebra::{SMatrix, Vector2};
+
+use super::constraints::{Active, ConstraintState, Constraints, Vector6};
+use super::inputs::{InputSignal, Inputs};
+use super::layout::{CRANK_ANGLE, PIN_A, StateLayout, pair};
+use super::rod_body::RodBody;
+use super::scales;
+use crate::error::ModelError;
+use crate::integrator::{ErrorScales, MechanicalSystem};
+use crate::joint::{ContactState, Joint, JointKinematics, MIN_IMPACT_VELOCITY};
+use crate::linalg::small;
+use crate::math;
+use crate::params::{DriveMode, JointModel, Parameters};
+
+/// Quantities computed by the last right-hand-side evaluation.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Evaluation {
+    /// Joint force on the journal (contact/film, or the ideal joint's reaction) \[N\].
+    pub joint_force: Vector2<f64>,
+    /// Friction moment on the journal \[N m\].
+    pub joint_moment: f64,
+    /// Elastic energy stored in the contact \[J\].
+    pub contact_potential: f64,
+    /// Torque the drive applies to the crank \[N m\].
+    pub crank_torque: f64,
+    /// Slider acceleration ẍ_s \[m/s²\].
+    pub slider_acceleration: f64,
+    /// Constraint drift ‖Φ‖.
+    pub drift: f64,
+}
+
+/// The slider-crank mechanism as a first-order system.
+#[derive(Clone, Debug)]
+pub struct SliderCrank {
+    pub(super) rod: RodBody,
+    pub(super) joint: Joint,
+    pub(super) drive: DriveMode,
+    pub(super) active: Active,
+    pub(super) crank_length: f64,
+    pub(super) crank_mass: f64,
+    pub(super) crank_inertia: f64,
+    pub(super) slider_mass: f64,
+    pub(super) gravity: f64,
+    pub(super) rod_length: f64,
+    pub(super) rod_mass: f64,
+    /// Reference crank speed for the error scales (the initial speed, at least 1 rad/s).
+    pub(super) reference_speed: f64,
+    /// Length scale ℓ of the error scales \[m\].
+    pub(super) position_scale: f64,
+    /// M_rod⁻¹ e_j for j ∈ {A_x, A_y, B_x, B_y}, column-major (n_rod × 4).
+    pub(super) rod_compliance: Vec<f64>,
+    /// W = E_sᵀ M⁻¹ E_s.
+    pub(super) w: SMatrix<f64, 6, 6>,
+    pub(super) rod_gravity: Vec<f64>,
+    /// Where each quantity sits in the state vector.
+    pub(super) layout: StateLayout,
+    /// The inputs as functions of time.
+    pub(super) signal: InputSignal,
+    /// The inputs at the time of the last [`SliderCrank::set_time`].
+    pub(super) inputs: Inputs,
+    /// dω_in/dt at that time \[rad/s²\] (speed drive).
+    pub(super) drive_acceleration: f64,
+    pub(super) contact: ContactState,
+    pub(super) force: Vec<f64>,
+    pub(super) evaluation: Evaluation,
+}
+
+impl SliderCrank {
+    /// Builds the mechanism after validating the parameters.
+    pub fn new(p: &Parameters) -> Result<Self, ModelError> {
+        p.validate()?;
+        let rod = RodBody::from_parameters(p)?;
+        let n_rod = rod.n_coordinates();
+        let b = rod.end_offset();
+        let pins = [0, 1, b, b + 1];
+        let mut rod_compliance = vec![0.0; 4 * n_rod];
+        for (j, &pin) in pins.iter().enumerate() {
+            let column = &mut rod_compliance[j * n_rod..(j + 1) * n_rod];
+            column[pin] = 1.0;
+            rod.solve_mass(column);
+        }
+        let crank_inertia = p.crank_inertia_about_pivot();
+        let mut w = SMatrix::<f64, 6, 6>::zeros();
+        w[(0, 0)] = 1.0 / crank_inertia;
+        w[(5, 5)] = 1.0 / p.slider_mass;
+        for i in 0..4 {
+            for j in 0..4 {
+                w[(1 + i, 1 + j)] = rod_compliance[j * n_rod + pins[i]];
+            }
+        }
+        let active = Active {
+            ideal_joint: p.joint_model == JointModel::Ideal,
+            rigid_rod: rod.rigid_length().is_some(),
+            speed_drive: p.drive_mode == DriveMode::Speed,
+        };
+        Ok(Self {
+            rod_gravity: rod.gravity_force(p.gravity),
+            layout: StateLayout::new(
+                n_rod,
+                b,
+                rod.rigid_length().is_none() && p.rod.stiffness_damping > 0.0,
+            ),
+            joint: Joint::from_parameters(p),
+            drive: p.drive_mode,
+            active,
+            crank_length: p.crank_length,
+            crank_mass: p.crank_mass,
+            crank_inertia,
+            slider_mass: p.slider_mass,
+            gravity: p.gravity,
+            rod_length: p.rod.length,
+            rod_mass: p.rod.mass(),
+            reference_speed: p.crank_initial_speed.abs().max(1.0),
+            position_scale: scales::position_scale(p),
+            rod_compliance,
+            w,
+            signal: InputSignal::held(Inputs {
+                drive_speed: p.crank_initial_speed,
+                ..Inputs::default()
+            }),
+            inputs: Inputs {
+                drive_speed: p.crank_initial_speed,
+                ..Inputs::default()
+            },
+            drive_acceleration: 0.0,
+            contact: ContactState {
+                in_contact: false,
+                impact_velocity: MIN_IMPACT_VELOCITY,
+            },
+            force: vec![0.0; n_rod],
+            evaluation: Evaluation::default(),
+            rod,
+        })
+    }
+
+    /// Number of mechanical coordinates n = 1 + n_rod + 1.
+    pub fn n_coordinates(&self) -> usize {
+        self.layout.n_coordinates()
+    }
+
+    /// Length of the state vector: 2n + 4, plus 1 with material damping.
+    pub fn n_states(&self) -> usize {
+        self.layout.n_states()
+    }
+
+    /// Error weights of each state component ([`ErrorScales`]): the integrators compare its
+    /// local error with `rtol · sᵢ` for coordinates and velocities (absolute only: positions and
+    /// velocities have no natural origin) and with `rtol · (sᵢ + |yᵢ|)` for the work integrals.
+    ///
+    /// Every state is measured by the displacement (or velocity) it causes in the mechanism, in
+    /// units of the joint's length scale ℓ (see `position_scale`) and of the speed V = ω₀ ℓ
+    /// (ω₀ = |crank.initialSpeed|, at least 1 rad/s):
+    /// ```text
+    /// θ, θ_d          ℓ / r_c               θ̇            V / r_c
+    /// rod coordinate  ℓ / d_j               its rate     V / d_j
+    /// x_s             ℓ                     ẋ_s          V
+    /// works           ½ m (ω₀ r_c)² ℓ / r_c,   m = I_O/r_c² + m_rod + m_slider
+    /// ```
+    /// with d_j the largest displacement along the rod per unit of coordinate j (1 for positions,
+    /// ≈ (4/27) l_e for ANCF slopes, the mode shape's largest value for modal amplitudes). A
+    /// coordinate whose unit moves the rod little gets a proportionally larger scale, so the
+    /// error control asks the same physical accuracy of every coordinate.
+    pub fn error_scales(&self) -> ErrorScales {
+        let l = self.layout;
+        let length = self.position_scale;
+        let speed = self.reference_speed * length;
+        let pin_speed = self.reference_speed * self.crank_length;
+        let mass =
+            self.crank_inertia / self.crank_length.powi(2) + self.rod_mass + self.slider_mass;
+        let mut scales = vec![0.0; l.n_states()];
+        scales[CRANK_ANGLE] = length / self.crank_length;
+        scales[l.crank_speed()] = speed / self.crank_length;
+        for (j, d) in self.rod.displacement_scales().into_iter().enumerate() {
+            scales[l.rod_coordinate(j)] = length / d;
+            scales[l.rod_rate(j)] = speed / d;
+        }
+        scales[l.slider()] = length;
+        scales[l.slider_velocity()] = speed;
+        scales[l.drive_angle()] = scales[CRANK_ANGLE];
+        for s in &mut scales[l.integrals()] {
+            *s = 0.5 * mass * pin_speed * pin_speed * length / self.crank_length;
+        }
+        let relative = (0..scales.len())
+            .map(|i| if l.integrals().contains(&i) { 1.0 } else { 0.0 })
+            .collect();
+        ErrorScales {
+            absolute: scales,
+            relative,
+        }
+    }
+
+    /// Where each quantity sits in the state vector.
+    pub fn layout(&self) -> StateLayout {
+        self.layout
+    }
+
+    /// The rod body.
+    pub fn rod(&self) -> &RodBody {
+        &self.rod
+    }
+
+    /// Discrete contact state.
+    pub fn contact_state(&self) -> ContactState {
+        self.contact
+    }
+
+    /// Restores the discrete contact state (snapshots).
+    pub fn set_contact_state(&mut self, contact: ContactState) {
+        self.contact = contact;
+    }
+
+    /// The inputs as functions of time.
+    pub fn input_signal(&self) -> &InputSignal {
+        &self.signal
+    }
+
+    /// Sets the inputs as functions of time; evaluations from now on use them at the current
+    /// time of [`SliderCrank::set_time`] (the integrator's stage time for its evaluations).
+    pub fn set_input_signal(&mut self, signal: InputSignal, t: f64) {
+        self.signal = signal;
+        self.set_time(t);
+    }
+
+    /// The inputs at `t`: evaluations outside the integrator (outputs, peaks) use them.
+    pub fn set_time(&mut self, t: f64) {
+        let (inputs, rates) = self.signal.at(t);
+        self.inputs = inputs;
+        self.drive_acceleration = rates.drive_speed;
+    }
+
+    /// The inputs at the time of the last [`SliderCrank::set_time`].
+    pub fn inputs(&self) -> Inputs {
+        self.inputs
+    }
+
+    /// Quantities of the last right-hand-side evaluation.
+    pub fn evaluation(&self) -> &Evaluation {
+        &self.evaluation
+    }
+
+    pub(super) fn constraint_state(&self, y: &[f64]) -> ConstraintState {
+        let l = self.layout;
+        ConstraintState {
+            theta: y[CRANK_ANGLE],
+            theta_dot: y[l.crank_speed()],
+            theta_drive: y[l.drive_angle()],
+            drive_speed: self.inputs.drive_speed,
+            drive_acceleration: self.drive_acceleration,
+            r_a: pair(y, PIN_A),
+            v_a: pair(y, l.rate_of(PIN_A)),
+            r_b: pair(y, l.pin_b()),
+            v_b: pair(y, l.rate_of(l.pin_b())),
+            x_s: y[l.slider()],
+            v_s: y[l.slider_velocity()],
+        }
+    }
+
+    pub(super) fn constraints(&self, y: &[f64]) -> Constraints {
+        Constraints::evaluate(
+            self.active,
+            self.crank_length,
+            self.rod_length,
+            &self.constraint_state(y),
+        )
+    }
+
+    /// Journal–bearing kinematics of a state.
+    pub fn joint_kinematics(&self, y: &[f64]) -> JointKinematics {
+        let l = self.layout;
+        let (b, b_rate) = (l.pin_b(), l.rate_of(l.pin_b()));
+        let p = &y[l.rod()];
+        let p_dot = &y[l.rod_rates()];
+        JointKinematics {
+            e: Vector2::new(y[b] - y[l.slider()], y[b + 1]),
+            e_dot: Vector2::new(y[b_rate] - y[l.slider_velocity()], y[b_rate + 1]),
+            omega_journal: self.rod.end_angular_velocity(p, p_dot),
+        }
+    }
+
+    /// |joint force| and |slider acceleration| of a state from the joint kinematics alone, for a
+    /// clearance joint (`None` for the ideal joint, whose force is a constraint reaction).
+    ///
+    /// With a clearance joint no constraint acts on the slider, so its equation of motion is
+    /// m_s ẍ_s = F_s − F_x (the slider row of [`SliderCrank::evaluate`]): both values follow from
+    /// the joint law without the rod's mass matrix or the constraint solve, at a small fraction of
+    /// a right-hand side's cost. They equal those of [`SliderCrank::evaluate`].
+    pub fn clearance_joint_load(&self, y: &[f64]) -> Option<(f64, f64)> {
+        if self.active.ideal_joint {
+            return None;
+        }
+        let kin = self.joint_kinematics(y);
+        let force = self.joint.force(&kin, self.impact_velocity(&kin)).force;
+        let acceleration = (self.inputs.slider_force - force.x) / self.slider_mass;
+        Some((force.norm(), acceleration.abs()))
+    }
+
+    /// Solves (C W Cᵀ) x = r on the k active rows (rows of C beyond k are zero; x is zero there).
+    pub(super) fn solve_schur(&self, c: &Constraints, r: Vector6) -> Result<Vector6, ModelError> {
+        let k = c.rows;
+        let mut cw = [[0.0; 6]; 6];
+        for (i, row) in cw.iter_mut().enumerate().take(k) {
+            for (j, v) in row.iter_mut().enumerate() {
+                *v = (0..6).map(|m| c.jacobian[(i, m)] * self.w[(m, j)]).sum();
+            }
+        }
+        let mut s = [[0.0; 6]; 6];
+        for (i, row) in s.iter_mut().enumerate().take(k) {
+            for (j, v) in row.iter_mut().enumerate().take(i + 1) {
+                *v = (0..6).map(|m| cw[i][m] * c.jacobian[(j, m)]).sum();
+            }
+        }
+        let mut x = [0.0; 6];
+        x[..k].copy_from_slice(&r.as_slice()[..k]);
+        small::cholesky_solve(
+            &s,
+            k,
+            &mut x,
+            "singular constraint Jacobian (locked configuration)",
+        )?;
+        Ok(Vector6::from(x))
+    }
+
+    /// Adds −G μ to the accelerations (or velocities) `out` for μ on s: M⁻¹ Cᵀλ applied.
+    pub(super) fn subtract_compliance(&self, mu: &Vector6, out: &mut [f64]) {
+        let l = self.layout;
+        let n_rod = l.rod().len();
+        out[CRANK_ANGLE] -= mu[0] / self.crank_inertia;
+        out[l.slider()] -= mu[5] / self.slider_mass;
+        for j in 0..4 {
+            let column = &self.rod_compliance[j * n_rod..(j + 1) * n_rod];
+            for (o, g) in out[l.rod()].iter_mut().zip(column) {
+                *o -= g * mu[1 + j];
+            }
+        }
+    }
+
+    /// Values of `v` (length n) on s.
+    pub(super) fn on_s(&self, v: &[f64]) -> Vector6 {
+        let l = self.layout;
+        let b = l.pin_b();
+        let slider = v[l.slider()];
+        Vector6::new(
+            v[CRANK_ANGLE],
+            v[PIN_A],
+            v[PIN_A + 1],
+            v[b],
+            v[b + 1],
+            slider,
+        )
+    }
+
+    /// Right-hand side; fills [`SliderCrank::evaluation`].
+    pub(super) fn derivative(&mut self, y: &[f64], dy: &mut [f64]) -> Result<(), ModelError> {
+        let l = self.layout;
+        let b = self.rod.end_offset();
+        let (q, v) = (&y[l.coordinates()], &y[l.velocities()]);
+        let (p, p_dot) = (&q[l.rod()], &v[l.rod()]);
+
+        let damping_power = self.rod.internal_force(p, p_dot, &mut self.force);
+        for (f, g) in self.force.iter_mut().zip(&self.rod_gravity) {
+            *f = g - *f;
+        }
+        let kin = self.joint_kinematics(y);
+        let joint = self.joint.force(&kin, self.impact_velocity(&kin));
+        self.force[b] += joint.force.x;
+        self.force[b + 1] += joint.force.y;
+        self.rod.add_end_moment(p, joint.moment, &mut self.force);
+        let torque_in = match self.drive {
+            DriveMode::Torque => self.inputs.drive_torque,
+            DriveMode::Speed => 0.0,
+        };
+        // No cosine per evaluation without gravity (the common case).
+        let gravity_torque = if self.gravity == 0.0 {
+            0.0
+        } else {
+            -self.crank_mass * self.gravity * 0.5 * self.crank_length * math::cos(q[CRANK_ANGLE])
+        };
+
+        let (dq, rest) = dy.split_at_mut(l.n_coordinates());
+        let acc = &mut rest[..l.n_coordinates()];
+        dq.copy_from_slice(v);
+        acc[CRANK_ANGLE] = (torque_in + gravity_torque) / self.crank_inertia;
+        acc[l.rod()].copy_from_slice(&self.force);
+        self.rod.solve_mass(&mut acc[l.rod()]);
+        acc[l.slider()] = (self.inputs.slider_force - joint.force.x) / self.slider_mass;
+
+        let c = self.constraints(y);
+        let lambda = self.solve_schur(&c, c.jacobian * self.on_s(acc) - c.acceleration_rhs())?;
+        let mu = c.jacobian.transpose() * lambda;
+        self.subtract_compliance(&mu, acc);
+
+        let crank_torque = match c.drive_row {
+            Some(k) => -lambda[k],
+            None => torque_in,
+        };
+        let (joint_force, joint_power) = match c.ideal_row {
+            Some(k) => (-Vector2::new(lambda[k], lambda[k + 1]), 0.0),
+            None => (
+                joint.force,
+                joint.force.dot(&kin.e_dot) + joint.moment * kin.omega_journal,
+            ),
+        };
+        dy[l.drive_angle()] = if self.active.speed_drive {
+            self.inputs.drive_speed
+        } else {
+            0.0
+        };
+        dy[l.drive_work()] = crank_torque * v[CRANK_ANGLE];
+        dy[l.joint_work()] = joint_power;
+        dy[l.external_work()] = self.inputs.slider_force * v[l.slider()];
+        if let Some(d) = dy.get_mut(l.material_damping()) {
+            *d = damping_power;
+        }
+        self.evaluation = Evaluation {
+            joint_force,
+            joint_moment: joint.moment,
+            contact_potential: joint.potential,
+            crank_torque,
+            slider_acceleration: dy[l.slider_velocity()],
+            drift: c.drift(),
+        };
+        Ok(())
+    }
+
+    /// Evaluates the right-hand side at `y` into `dy`, reporting a singular configuration.
+    pub fn evaluate(&mut self, y: &[f64], dy: &mut [f64]) -> Result<&Evaluation, ModelError> {
+        self.derivative(y, dy)?;
+        Ok(&self.evaluation)
+    }
+
+    /// Projects the velocities of `y` onto the velocity constraints Φ_q q̇ = v (v = ω_in on the
+    /// drive row, 0 elsewhere) with the least change of kinetic energy (an impulsive adjustment
+    /// through the constraints). Returns the kinetic energy change \[J\].
+    pub fn project_velocities(&mut self, y: &mut [f64]) -> Result<f64, ModelError> {
+        let velocities = self.layout.velocities();
+        let before = self.kinetic_energy(y);
+        let c = self.constraints(y);
+        let mu = c.jacobian.transpose() * self.solve_schur(&c, c.phi_dot)?;
+        self.subtract_compliance(&mu, &mut y[velocities]);
+        Ok(self.kinetic_energy(y) - before)
+    }
+
+    /// Mid-span deflection of the rod \[m\].
+    pub fn midspan_deflection(&mut self, y: &[f64]) -> f64 {
+        self.rod.midspan_deflection(&y[self.layout.rod()])
+    }
+}
+
+impl MechanicalSystem for SliderCrank {
+    fn n_coordinates(&self) -> usize {
+        SliderCrank::n_coordinates(self)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::params::{JointModel, RodFormulation};
+
+    /// The joint load from the kinematics alone equals the full right-hand side's, for every
+    /// clearance joint and rod, in contact (inside and at the start of an event) and with a
+    /// slider force; the ideal joint has none.
+    #[test]
+    fn clearance_joint_load_equals_the_right_hand_side() {
+        for joint_model in [JointModel::Dry, JointModel::Lubricated, JointModel::Ideal] {
+            for rod_formulation in [RodFormulation::Rigid, RodFormulation::CraigBampton] {
+                let p = Parameters {
+                    joint_model,
+                    rod_formulation,
+                    ..Parameters::default()
+                };
+                let mut m = SliderCrank::new(&p).expect("default parameters build");
+                let inputs = Inputs {
+                    slider_force: -150.0,
+                    ..m.inputs()
+                };
+                m.set_input_signal(InputSignal::held(inputs), 0.0);
+                let mut y = m.initial_state(0.3, 400.0);
+                let l = m.layout();
+                // Journal 20 µm into the wall, moving into it.
+                y[l.slider()] -= p.clearance + 2e-5;
+                y[l.slider_velocity()] -= 0.5;
+                let mut dy = vec![0.0; y.len()];
+                for contact in [
+                    m.contact_state(),
+                    ContactState {
+                        in_contact: true,
+                        impact_velocity: 0.8,
+                    },
+                ] {
+                    m.set_contact_state(contact);
+                    let load = m.clearance_joint_load(&y);
+                    let ev = *m.evaluate(&y, &mut dy).expect("regular configuration");
+                    match load {
+                        None => assert_eq!(joint_model, JointModel::Ideal),
+                        Some((force, acceleration)) => {
+                            assert!(force > 100.0, "{joint_model:?}: {force} N");
+                            assert_eq!(force, ev.joint_force.norm());
+                            assert_eq!(acceleration, ev.slider_acceleration.abs());
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
