@@ -1,226 +1,25 @@
 //! [`Simulation`]: the slider-crank with its integrator and clock — parameters in, `advance_to(t)`,
 //! outputs out. This is what the FMU, the examples and the benchmarks drive.
 
+pub mod codec;
+mod failure;
+mod outputs;
+mod peaks;
+mod snapshot;
+pub mod validity;
+
+pub use self::outputs::Outputs;
+use self::peaks::AcceptedStep;
+pub use self::peaks::{PeakHold, Peaks};
+pub use self::snapshot::Snapshot;
+use self::validity::Monitor;
 use crate::error::ModelError;
-use crate::integrator::{Integrator, IntegratorState, Stats, dense};
+use crate::integrator::{Integrator, Stats};
 use crate::mechanism::{ContactState, Energies, SliderCrank};
 pub use crate::mechanism::{Input, InputSignal, Inputs};
-use crate::params::{DriveMode, InitialState, Parameters, RodFormulation};
+use crate::params::{DriveMode, InitialState, Parameters};
 
 pub use fmi2_slave::clock::{CLOCK_RESOLUTION, on_clock_grid};
-
-/// Everything a system engineer plots, at the current time (SI units).
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Outputs {
-    /// Time \[s\].
-    pub time: f64,
-    /// Crank angle θ \[rad\].
-    pub crank_angle: f64,
-    /// Crank speed θ̇ \[rad/s\].
-    pub crank_speed: f64,
-    /// Crank angular acceleration θ̈ \[rad/s²\].
-    pub crank_acceleration: f64,
-    /// Torque applied by the drive to the crank, CCW positive \[N m\].
-    pub crank_torque: f64,
-    /// Slider abscissa x_s \[m\].
-    pub slider_position: f64,
-    /// Slider velocity \[m/s\].
-    pub slider_velocity: f64,
-    /// Slider acceleration \[m/s²\].
-    pub slider_acceleration: f64,
-    /// Joint force on the journal, x \[N\].
-    pub joint_force_x: f64,
-    /// Joint force on the journal, y \[N\].
-    pub joint_force_y: f64,
-    /// Magnitude of the joint force \[N\].
-    pub joint_force: f64,
-    /// Eccentricity e = journal centre − bearing centre, x \[m\].
-    pub eccentricity_x: f64,
-    /// Eccentricity, y \[m\].
-    pub eccentricity_y: f64,
-    /// Rate of the eccentricity ė, x \[m/s\].
-    pub eccentricity_rate_x: f64,
-    /// Rate of the eccentricity, y \[m/s\].
-    pub eccentricity_rate_y: f64,
-    /// Penetration max(|e| − c, 0) \[m\].
-    pub penetration: f64,
-    /// Whether journal and bearing touch.
-    pub in_contact: bool,
-    /// Rod mid-span deflection relative to the chord, left positive \[m\].
-    pub midspan_deflection: f64,
-    /// Rod strain (deformation) energy \[J\].
-    pub deformation_energy: f64,
-    /// Kinetic energy of crank, rod and slider \[J\].
-    pub kinetic_energy: f64,
-    /// Work done by the drive since the start \[J\].
-    pub drive_work: f64,
-    /// Energy dissipated in the joint since the start \[J\].
-    pub dissipated_energy: f64,
-    /// Elastic energy stored in the contact, K δ^2.5 / 2.5 \[J\].
-    pub contact_energy: f64,
-    /// Gravitational potential energy (zero at y = 0) \[J\].
-    pub gravity_energy: f64,
-    /// Work done by the external slider force since the start \[J\].
-    pub slider_work: f64,
-    /// Energy dissipated by the rod's material damping since the start \[J\].
-    pub material_damping: f64,
-    /// Constraint drift ‖Φ‖.
-    pub constraint_drift: f64,
-    /// Largest |joint force| over the last communication interval \[N\] ([`PeakHold`]).
-    pub joint_force_peak: f64,
-    /// Largest |slider acceleration| over the last communication interval \[m/s²\].
-    pub slider_acceleration_peak: f64,
-    /// Largest rod deformation energy over the last communication interval \[J\].
-    pub deformation_energy_peak: f64,
-    /// Contact onsets in the last communication interval.
-    pub contact_onsets: u64,
-    /// Contact onsets since the start.
-    pub contact_onsets_total: u64,
-    /// Warnings raised since the start ([`Simulation::take_warnings`]).
-    pub warnings: u64,
-}
-
-/// Extremes of the solution over a stretch of time, and the contact onsets in it.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Peaks {
-    /// Largest |joint force| \[N\].
-    pub joint_force: f64,
-    /// Largest |slider acceleration| \[m/s²\].
-    pub slider_acceleration: f64,
-    /// Largest rod deformation energy \[J\].
-    pub deformation_energy: f64,
-    /// Number of contact onsets.
-    pub contact_onsets: u64,
-}
-
-impl Peaks {
-    fn absorb(&mut self, other: &Peaks) {
-        self.joint_force = self.joint_force.max(other.joint_force);
-        self.slider_acceleration = self.slider_acceleration.max(other.slider_acceleration);
-        self.deformation_energy = self.deformation_energy.max(other.deformation_energy);
-        self.contact_onsets += other.contact_onsets;
-    }
-}
-
-/// Interior points of an accepted step at which the peak-hold outputs sample the joint load while
-/// the journal touches the bearing (see [`PeakHold`]).
-const PEAK_SAMPLES: usize = 4;
-
-/// Peak-hold bookkeeping: what a sampled output misses between communication points.
-///
-/// An impact lasts tens of microseconds, less than a typical communication step, so the joint
-/// force and slider acceleration read at communication points alias their peaks. The peak-hold
-/// outputs are the maxima over the communication interval (t_prev, t] of every accepted internal
-/// step's end point and of the value at t itself and, for each step in which the journal touches
-/// the bearing, of the joint load inside the step; the contact onsets are counted at the accepted
-/// step in which the journal starts touching. The internal steps follow the solution, not the
-/// master's grid, so the maxima do not depend on the communication step.
-///
-/// Inside a step the load is read from the step's dense output: a stiff rod's impact lasts only a
-/// few internal steps, whose ends alone can miss its peak by tens of percent (the rigid rod's
-/// benchmark B at the default tolerance: 36.6 kN at step ends against 45.9 kN converged). The
-/// load is sampled at four equally spaced interior points of the quintic Hermite interpolant
-/// ([`dense::interpolate`]) and once more at the vertex of the parabola through the largest sample
-/// and its neighbours. That interpolant uses the end
-/// accelerations, which after a large implicit step carry amplified unresolved stiff content; on
-/// benchmark B its peaks agree within 0.1 % with sampling the implicit method's own dense output
-/// (a partial step per sample, 3× the run's cost) at the default tolerance, for every rod, and
-/// exceed them by at most 3.5 % at rtol 1e-1.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct PeakHold {
-    /// Over the current communication interval, from the steps that end inside it.
-    pub interval: Peaks,
-    /// At the end of the last accepted step.
-    pub step_end: Peaks,
-    /// Whether `step_end` lies beyond the current time (it belongs to a later interval).
-    pub pending: bool,
-    /// Contact onsets up to the current time.
-    pub total_onsets: u64,
-}
-
-impl PeakHold {
-    /// Moves the last step end's extremes into the current interval.
-    fn take_step_end(&mut self) {
-        self.interval.absorb(&self.step_end);
-        self.total_onsets += self.step_end.contact_onsets;
-        self.pending = false;
-    }
-}
-
-/// Abscissa (in sample units) of the vertex of the parabola through the largest of equally spaced
-/// samples `f` and its two neighbours, if that sample is interior and the parabola is concave:
-///
-/// ```text
-/// k* + ½ (f[k*−1] − f[k*+1]) / (f[k*−1] − 2 f[k*] + f[k*+1])
-/// ```
-fn parabola_vertex(f: &[f64]) -> Option<f64> {
-    let k = (0..f.len()).max_by(|&i, &j| f[i].total_cmp(&f[j]))?;
-    if k == 0 || k + 1 == f.len() {
-        return None;
-    }
-    let curvature = f[k - 1] - 2.0 * f[k] + f[k + 1];
-    (curvature < 0.0).then(|| k as f64 + 0.5 * (f[k - 1] - f[k + 1]) / curvature)
-}
-
-/// Validity monitors: limits beyond which the model has left the domain its laws were made for.
-/// Each cause is reported once per simulation, as a message for the FMU's logger
-/// ([`Simulation::take_warnings`]).
-pub mod validity {
-    /// Largest contact penetration, as a fraction of the journal radius: Hertz theory assumes a
-    /// contact zone small against the radii.
-    pub const PENETRATION_PER_RADIUS: f64 = 0.01;
-    /// Largest rod mid-span deflection, as a fraction of the rod length: beyond it a reduced
-    /// (Craig–Bampton) rod leaves the small-deformation range of its modes.
-    pub const DEFLECTION_PER_LENGTH: f64 = 0.05;
-    /// Largest crank speed \[rad/s\]: 1 % beyond the range of `drive.speed` (±1e4 rad/s), so that
-    /// a speed drive at its limit stays silent.
-    pub const CRANK_SPEED: f64 = 1.01e4;
-    /// Largest excursion of the slider beyond its rigid-mechanism stroke [l − r − c, l + r + c], as
-    /// a fraction of the crank length.
-    pub const STROKE_EXCESS_PER_CRANK: f64 = 0.01;
-}
-
-/// Which validity warnings were already given.
-#[derive(Clone, Debug, Default)]
-struct Monitor {
-    fired: [bool; 4],
-    messages: Vec<String>,
-    /// Warnings raised since the start.
-    total: u64,
-}
-
-impl Monitor {
-    fn warn(&mut self, message: String) {
-        self.messages.push(message);
-        self.total += 1;
-    }
-}
-
-/// A complete, restorable state of a [`Simulation`] (parameters excepted).
-#[derive(Clone, Debug, PartialEq)]
-pub struct Snapshot {
-    /// Communication time \[s\].
-    pub time: f64,
-    /// State at `time`.
-    pub state: Vec<f64>,
-    /// The last accepted step: start time, state, its derivative and the contact state there.
-    pub step_start: (f64, Vec<f64>, Vec<f64>, ContactState),
-    /// The end of the last accepted step (the integrator's point, ≥ `time`): time, state and its
-    /// derivative.
-    pub step_end: (f64, Vec<f64>, Vec<f64>),
-    /// Integrator state (step size, f at the step end, Jacobian, statistics).
-    pub integrator: IntegratorState,
-    /// Contact state at the step end.
-    pub contact: ContactState,
-    /// The inputs of the current step sequence.
-    pub signal: InputSignal,
-    /// The inputs set for the next interval.
-    pub next: InputSignal,
-    /// Peak-hold outputs.
-    pub peaks: PeakHold,
-    /// Warnings raised since the start.
-    pub warnings: u64,
-}
 
 /// The slider-crank simulation.
 ///
@@ -451,8 +250,7 @@ impl Simulation {
                 ));
             }
             let work = self.mechanism.project_velocities(&mut self.y_end)?;
-            let n = self.mechanism.n_coordinates();
-            self.y_end[2 * n + 1] += work;
+            self.y_end[self.mechanism.layout().drive_work()] += work;
             self.state.copy_from_slice(&self.y_end);
             self.y_start.copy_from_slice(&self.y_end);
         }
@@ -476,11 +274,16 @@ impl Simulation {
             ) {
                 Ok(true) => {}
                 Ok(false) => {
-                    let error = self.work_limit_error(t_start, t_end);
+                    let error = failure::work_limit(
+                        &self.parameters,
+                        (t_start, t_end),
+                        self.step_end,
+                        self.integrator.step_size(),
+                    );
                     return Err(self.stop_at_step_end(error));
                 }
                 Err(e) => {
-                    let error = self.step_failure(e);
+                    let error = failure::step_failure(&self.parameters, e);
                     return Err(self.stop_at_step_end(error));
                 }
             }
@@ -544,44 +347,6 @@ impl Simulation {
         stats.steps + stats.rejected
     }
 
-    /// The error of an interval that ran out of work ([`Parameters::max_steps_per_interval`]):
-    /// where it stopped, at what step size, and the parameters that usually cause it.
-    fn work_limit_error(&self, t_start: f64, t_end: f64) -> ModelError {
-        ModelError::Numerical(format!(
-            "solver.maxStepsPerInterval = {} internal steps exhausted in the communication interval \
-             [{t_start}, {t_end}] s, stopped at t = {} s with a step of {:.3e} s. {}; raise \
-             solver.maxStepsPerInterval to go on",
-            self.parameters.max_steps_per_interval,
-            self.step_end,
-            self.integrator.step_size(),
-            self.likely_causes()
-        ))
-    }
-
-    /// An integrator failure (step-size floor, singular Newton matrix) with the parameters that
-    /// usually cause it.
-    fn step_failure(&self, error: ModelError) -> ModelError {
-        match error {
-            ModelError::Numerical(message) => {
-                ModelError::Numerical(format!("{message}. {}", self.likely_causes()))
-            }
-            other => other,
-        }
-    }
-
-    /// The parameters that make the equations stiff or non-smooth, with their values.
-    fn likely_causes(&self) -> String {
-        let p = &self.parameters;
-        let joint = format!("{:?}", p.joint_model).to_lowercase();
-        format!(
-            "Likely causes: sticking friction (joint.friction = {}), strong material damping \
-             (rod.stiffnessDamping = {} s), a very stiff contact or film (joint.clearance = {:e} m \
-             with joint.model = {joint}: the contact and film stiffness grow as the clearance \
-             shrinks) or a tight tolerance (solver.relativeTolerance = {:e})",
-            p.friction, p.rod.stiffness_damping, p.clearance, p.relative_tolerance
-        )
-    }
-
     /// Evaluates the end of the step just accepted for the peak-hold outputs.
     fn record_step_end(&mut self) -> Result<(), ModelError> {
         let onset = !self.contact_start.in_contact && self.mechanism.contact_state().in_contact;
@@ -594,7 +359,16 @@ impl Simulation {
             }
         };
         let energy = self.mechanism.strain_energy(&self.y_end);
-        let within = self.peaks_within_step();
+        let step = AcceptedStep {
+            start: self.step_start,
+            end: self.step_end,
+            y_start: &self.y_start,
+            f_start: &self.f_start,
+            y_end: &self.y_end,
+            f_end: &self.f_end,
+            contact_start: self.contact_start,
+        };
+        let within = peaks::within_step(&mut self.mechanism, &step, &mut self.y_sample);
         self.peaks.step_end = Peaks {
             joint_force: force.max(within.joint_force),
             slider_acceleration: acceleration.max(within.slider_acceleration),
@@ -606,125 +380,23 @@ impl Simulation {
         Ok(())
     }
 
-    /// Largest |joint force| and |slider acceleration| inside the step just accepted, if the
-    /// journal touches the bearing at either end of it (zero otherwise); see [`PeakHold`].
-    fn peaks_within_step(&mut self) -> Peaks {
-        let end_contact = self.mechanism.contact_state();
-        if !(self.contact_start.in_contact || end_contact.in_contact) {
-            return Peaks::default();
-        }
-        // The contact state the step was integrated with (an onset inside it is latched at its end).
-        self.mechanism.set_contact_state(self.contact_start);
-        let mut samples = [[0.0; PEAK_SAMPLES + 2]; 3];
-        for k in 0..PEAK_SAMPLES + 2 {
-            for (series, value) in samples.iter_mut().zip(self.load_within(k as f64)) {
-                series[k] = value;
-            }
-        }
-        let mut largest = [0.0; 3];
-        for (i, series) in samples.iter().enumerate() {
-            largest[i] = series.iter().copied().fold(0.0, f64::max);
-            if let Some(k) = parabola_vertex(series) {
-                largest[i] = largest[i].max(self.load_within(k)[i]);
-            }
-        }
-        self.mechanism.set_contact_state(end_contact);
-        Peaks {
-            joint_force: largest[0],
-            slider_acceleration: largest[1],
-            deformation_energy: largest[2],
-            contact_onsets: 0,
-        }
-    }
-
-    /// |Joint force|, |slider acceleration| and rod deformation energy at sample `k` (of
-    /// [`PEAK_SAMPLES`] + 1 intervals) of the step just accepted.
-    fn load_within(&mut self, k: f64) -> [f64; 3] {
-        let h = self.step_end - self.step_start;
-        let theta = k / (PEAK_SAMPLES + 1) as f64;
-        self.mechanism.set_time(self.step_start + theta * h);
-        dense::interpolate(
-            self.mechanism.n_coordinates(),
-            h,
-            &self.y_start,
-            &self.f_start,
-            &self.y_end,
-            &self.f_end,
-            theta,
-            &mut self.y_sample,
-        );
-        let (force, acceleration) = self
-            .mechanism
-            .clearance_joint_load(&self.y_sample)
-            .unwrap_or((0.0, 0.0));
-        let energy = self.mechanism.strain_energy(&self.y_sample);
-        [force, acceleration, energy]
-    }
-
     /// Checks the end of the accepted step (or the state at the communication point, which the
     /// outputs show) against the [`validity`] limits; each cause warns once.
     fn check_validity(&mut self, at_step_end: bool) {
-        use validity::*;
-        let p = &self.parameters;
         let (t, y) = if at_step_end {
             (self.step_end, &self.y_end)
         } else {
             (self.time, &self.state)
         };
-        let n = self.mechanism.n_coordinates();
-        let penetration = self.mechanism.penetration(y);
-        let (r_c, l, c) = (p.crank_length, p.rod.length, p.clearance);
-        let x = y[n - 1];
-        let excess = ((l - r_c - c) - x).max(x - (l + r_c + c));
-        let speed = y[n];
-        let deflection = if p.rod_formulation == RodFormulation::Rigid {
-            0.0
-        } else {
-            self.mechanism.midspan_deflection(y)
-        };
-        let left = [
-            penetration > PENETRATION_PER_RADIUS * p.journal_radius,
-            deflection.abs() > DEFLECTION_PER_LENGTH * l,
-            speed.abs() > CRANK_SPEED,
-            excess > STROKE_EXCESS_PER_CRANK * r_c,
-        ];
-        for (i, &left) in left.iter().enumerate() {
-            if !left || self.monitor.fired[i] {
-                continue;
-            }
-            self.monitor.fired[i] = true;
-            let message = match i {
-                0 => format!(
-                    "joint penetration {penetration:.3e} m exceeds {} % of joint.journalRadius = {} m \
-                     (Hertz contact assumes a small contact zone)",
-                    100.0 * PENETRATION_PER_RADIUS,
-                    p.journal_radius
-                ),
-                1 => format!(
-                    "rod mid-span deflection {deflection:.3e} m exceeds {} % of rod.length = {l} m",
-                    100.0 * DEFLECTION_PER_LENGTH
-                ),
-                2 => format!(
-                    "crank speed {speed:.4e} rad/s is more than 1 % beyond the drive's range ±1e4 rad/s"
-                ),
-                _ => format!(
-                    "slider position {x:.6} m is {excess:.3e} m beyond its kinematic stroke \
-                     [{:.6}, {:.6}] m",
-                    l - r_c - c,
-                    l + r_c + c
-                ),
-            };
-            self.monitor.warn(format!(
-                "t = {t:.6e} s: the model left its domain: {message}"
-            ));
-        }
+        self.monitor
+            .check(&self.parameters, &mut self.mechanism, t, y);
     }
 
     /// Warnings raised since the last call: parameters outside the range a law was made for (at
     /// the start), a crank speed that jumps to the drive's at the first step, and the validity
     /// monitors' domain exits (each cause once per simulation).
     pub fn take_warnings(&mut self) -> Vec<String> {
-        std::mem::take(&mut self.monitor.messages)
+        self.monitor.take()
     }
 
     /// Peak-hold extremes and contact onsets ([`PeakHold`]).
@@ -758,57 +430,16 @@ impl Simulation {
             ..self.next
         };
         self.mechanism.set_input_signal(next, self.time);
-        let outputs = self.outputs_with_inputs();
+        let outputs = outputs::outputs(
+            &mut self.mechanism,
+            self.time,
+            &self.state,
+            &mut self.scratch,
+            &self.peaks,
+            self.monitor.total,
+        );
         self.mechanism.set_input_signal(current, self.time);
         outputs
-    }
-
-    fn outputs_with_inputs(&mut self) -> Result<Outputs, ModelError> {
-        let y = &self.state;
-        let ev = *self.mechanism.evaluate(y, &mut self.scratch)?;
-        let n = self.mechanism.n_coordinates();
-        let kin = self.mechanism.joint_kinematics(y);
-        let penetration = self.mechanism.penetration(y);
-        let energies = self.mechanism.energies(y);
-        Ok(Outputs {
-            time: self.time,
-            crank_angle: y[0],
-            crank_speed: y[n],
-            crank_acceleration: self.scratch[n],
-            crank_torque: ev.crank_torque,
-            slider_position: y[n - 1],
-            slider_velocity: y[2 * n - 1],
-            slider_acceleration: ev.slider_acceleration,
-            joint_force_x: ev.joint_force.x,
-            joint_force_y: ev.joint_force.y,
-            joint_force: ev.joint_force.norm(),
-            eccentricity_x: kin.e.x,
-            eccentricity_y: kin.e.y,
-            eccentricity_rate_x: kin.e_dot.x,
-            eccentricity_rate_y: kin.e_dot.y,
-            penetration: penetration.max(0.0),
-            in_contact: penetration > 0.0,
-            midspan_deflection: self.mechanism.midspan_deflection(y),
-            deformation_energy: energies.strain,
-            kinetic_energy: energies.kinetic,
-            drive_work: energies.drive_work,
-            dissipated_energy: energies.dissipated(),
-            contact_energy: energies.contact,
-            gravity_energy: energies.gravity,
-            slider_work: energies.external_work,
-            material_damping: energies.material_damping,
-            constraint_drift: ev.drift,
-            joint_force_peak: self.peaks.interval.joint_force.max(ev.joint_force.norm()),
-            slider_acceleration_peak: self
-                .peaks
-                .interval
-                .slider_acceleration
-                .max(ev.slider_acceleration.abs()),
-            deformation_energy_peak: self.peaks.interval.deformation_energy.max(energies.strain),
-            contact_onsets: self.peaks.interval.contact_onsets,
-            contact_onsets_total: self.peaks.total_onsets,
-            warnings: self.monitor.total,
-        })
     }
 
     /// A complete snapshot of the simulation state.
@@ -903,8 +534,8 @@ mod tests {
         assert!(sim.set_input_derivative(Input::DriveSpeed, 3, 1.0).is_err());
         sim.advance_to(1e-4 + h).unwrap();
         let expected = speed + rate * h + 0.5 * curvature * h * h;
-        let n = sim.mechanism().n_coordinates();
-        let crank_speed = sim.state()[n];
+        let speed = sim.mechanism().layout().crank_speed();
+        let crank_speed = sim.state()[speed];
         assert!(
             (crank_speed - expected).abs() < 1e-6 * expected,
             "{crank_speed} vs {expected}"
@@ -914,23 +545,10 @@ mod tests {
         let reached = sim.next_inputs().value.drive_speed;
         assert!((reached - expected).abs() < 1e-10 * expected, "{reached}");
         sim.advance_to(1e-4 + 2.0 * h).unwrap();
-        let held = sim.state()[n];
+        let held = sim.state()[speed];
         assert!(
             (held - expected).abs() < 1e-9 * expected,
             "{held} vs {expected}"
         );
-    }
-
-    /// Samples of a concave parabola give its vertex; a maximum at either end of the samples, or
-    /// a flat top, gives none.
-    #[test]
-    fn parabola_vertex_locates_the_maximum_between_samples() {
-        let f: Vec<f64> = (0..6).map(|k| 7.0 - (k as f64 - 2.3).powi(2)).collect();
-        let vertex = parabola_vertex(&f).expect("interior maximum");
-        assert!((vertex - 2.3).abs() < 1e-12, "{vertex}");
-        assert_eq!(parabola_vertex(&[3.0, 2.0, 1.0]), None);
-        assert_eq!(parabola_vertex(&[1.0, 2.0, 3.0]), None);
-        assert_eq!(parabola_vertex(&[1.0, 2.0, 2.0, 2.0]), None);
-        assert_eq!(parabola_vertex(&[]), None);
     }
 }

@@ -1,0 +1,48 @@
+//! Why an interval failed: the messages of the work limit and of integrator failures, with the
+//! parameters that usually cause them.
+
+use crate::error::ModelError;
+use crate::params::Parameters;
+
+/// The error of an interval [t_start, t_end] that ran out of work
+/// ([`Parameters::max_steps_per_interval`]): where it stopped, at what step size, and the
+/// parameters that usually cause it.
+pub(super) fn work_limit(
+    p: &Parameters,
+    (t_start, t_end): (f64, f64),
+    stopped_at: f64,
+    step_size: f64,
+) -> ModelError {
+    ModelError::Numerical(format!(
+        "solver.maxStepsPerInterval = {} internal steps exhausted in the communication interval \
+             [{t_start}, {t_end}] s, stopped at t = {} s with a step of {:.3e} s. {}; raise \
+             solver.maxStepsPerInterval to go on",
+        p.max_steps_per_interval,
+        stopped_at,
+        step_size,
+        likely_causes(p)
+    ))
+}
+
+/// An integrator failure (step-size floor, singular Newton matrix) with the parameters that
+/// usually cause it.
+pub(super) fn step_failure(p: &Parameters, error: ModelError) -> ModelError {
+    match error {
+        ModelError::Numerical(message) => {
+            ModelError::Numerical(format!("{message}. {}", likely_causes(p)))
+        }
+        other => other,
+    }
+}
+
+/// The parameters that make the equations stiff or non-smooth, with their values.
+fn likely_causes(p: &Parameters) -> String {
+    let joint = format!("{:?}", p.joint_model).to_lowercase();
+    format!(
+        "Likely causes: sticking friction (joint.friction = {}), strong material damping \
+             (rod.stiffnessDamping = {} s), a very stiff contact or film (joint.clearance = {:e} m \
+             with joint.model = {joint}: the contact and film stiffness grow as the clearance \
+             shrinks) or a tight tolerance (solver.relativeTolerance = {:e})",
+        p.friction, p.rod.stiffness_damping, p.clearance, p.relative_tolerance
+    )
+}

@@ -1,0 +1,133 @@
+//! The outputs a system engineer plots, computed from a state.
+
+use super::peaks::PeakHold;
+use crate::error::ModelError;
+use crate::mechanism::SliderCrank;
+use crate::mechanism::layout::CRANK_ANGLE;
+
+/// Everything a system engineer plots, at the current time (SI units).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Outputs {
+    /// Time \[s\].
+    pub time: f64,
+    /// Crank angle θ \[rad\].
+    pub crank_angle: f64,
+    /// Crank speed θ̇ \[rad/s\].
+    pub crank_speed: f64,
+    /// Crank angular acceleration θ̈ \[rad/s²\].
+    pub crank_acceleration: f64,
+    /// Torque applied by the drive to the crank, CCW positive \[N m\].
+    pub crank_torque: f64,
+    /// Slider abscissa x_s \[m\].
+    pub slider_position: f64,
+    /// Slider velocity \[m/s\].
+    pub slider_velocity: f64,
+    /// Slider acceleration \[m/s²\].
+    pub slider_acceleration: f64,
+    /// Joint force on the journal, x \[N\].
+    pub joint_force_x: f64,
+    /// Joint force on the journal, y \[N\].
+    pub joint_force_y: f64,
+    /// Magnitude of the joint force \[N\].
+    pub joint_force: f64,
+    /// Eccentricity e = journal centre − bearing centre, x \[m\].
+    pub eccentricity_x: f64,
+    /// Eccentricity, y \[m\].
+    pub eccentricity_y: f64,
+    /// Rate of the eccentricity ė, x \[m/s\].
+    pub eccentricity_rate_x: f64,
+    /// Rate of the eccentricity, y \[m/s\].
+    pub eccentricity_rate_y: f64,
+    /// Penetration max(|e| − c, 0) \[m\].
+    pub penetration: f64,
+    /// Whether journal and bearing touch.
+    pub in_contact: bool,
+    /// Rod mid-span deflection relative to the chord, left positive \[m\].
+    pub midspan_deflection: f64,
+    /// Rod strain (deformation) energy \[J\].
+    pub deformation_energy: f64,
+    /// Kinetic energy of crank, rod and slider \[J\].
+    pub kinetic_energy: f64,
+    /// Work done by the drive since the start \[J\].
+    pub drive_work: f64,
+    /// Energy dissipated in the joint since the start \[J\].
+    pub dissipated_energy: f64,
+    /// Elastic energy stored in the contact, K δ^2.5 / 2.5 \[J\].
+    pub contact_energy: f64,
+    /// Gravitational potential energy (zero at y = 0) \[J\].
+    pub gravity_energy: f64,
+    /// Work done by the external slider force since the start \[J\].
+    pub slider_work: f64,
+    /// Energy dissipated by the rod's material damping since the start \[J\].
+    pub material_damping: f64,
+    /// Constraint drift ‖Φ‖.
+    pub constraint_drift: f64,
+    /// Largest |joint force| over the last communication interval \[N\] ([`super::PeakHold`]).
+    pub joint_force_peak: f64,
+    /// Largest |slider acceleration| over the last communication interval \[m/s²\].
+    pub slider_acceleration_peak: f64,
+    /// Largest rod deformation energy over the last communication interval \[J\].
+    pub deformation_energy_peak: f64,
+    /// Contact onsets in the last communication interval.
+    pub contact_onsets: u64,
+    /// Contact onsets since the start.
+    pub contact_onsets_total: u64,
+    /// Warnings raised since the start ([`super::Simulation::take_warnings`]).
+    pub warnings: u64,
+}
+
+/// The outputs of state `y` at `time` with the mechanism's current inputs and contact state
+/// (one right-hand-side evaluation into `scratch`, no allocation), with the peak-hold values of
+/// `peaks` and the `warnings` count.
+pub(super) fn outputs(
+    mechanism: &mut SliderCrank,
+    time: f64,
+    y: &[f64],
+    scratch: &mut [f64],
+    peaks: &PeakHold,
+    warnings: u64,
+) -> Result<Outputs, ModelError> {
+    let ev = *mechanism.evaluate(y, scratch)?;
+    let l = mechanism.layout();
+    let kin = mechanism.joint_kinematics(y);
+    let penetration = mechanism.penetration(y);
+    let energies = mechanism.energies(y);
+    Ok(Outputs {
+        time,
+        crank_angle: y[CRANK_ANGLE],
+        crank_speed: y[l.crank_speed()],
+        crank_acceleration: scratch[l.crank_speed()],
+        crank_torque: ev.crank_torque,
+        slider_position: y[l.slider()],
+        slider_velocity: y[l.slider_velocity()],
+        slider_acceleration: ev.slider_acceleration,
+        joint_force_x: ev.joint_force.x,
+        joint_force_y: ev.joint_force.y,
+        joint_force: ev.joint_force.norm(),
+        eccentricity_x: kin.e.x,
+        eccentricity_y: kin.e.y,
+        eccentricity_rate_x: kin.e_dot.x,
+        eccentricity_rate_y: kin.e_dot.y,
+        penetration: penetration.max(0.0),
+        in_contact: penetration > 0.0,
+        midspan_deflection: mechanism.midspan_deflection(y),
+        deformation_energy: energies.strain,
+        kinetic_energy: energies.kinetic,
+        drive_work: energies.drive_work,
+        dissipated_energy: energies.dissipated(),
+        contact_energy: energies.contact,
+        gravity_energy: energies.gravity,
+        slider_work: energies.external_work,
+        material_damping: energies.material_damping,
+        constraint_drift: ev.drift,
+        joint_force_peak: peaks.interval.joint_force.max(ev.joint_force.norm()),
+        slider_acceleration_peak: peaks
+            .interval
+            .slider_acceleration
+            .max(ev.slider_acceleration.abs()),
+        deformation_energy_peak: peaks.interval.deformation_energy.max(energies.strain),
+        contact_onsets: peaks.interval.contact_onsets,
+        contact_onsets_total: peaks.total_onsets,
+        warnings,
+    })
+}

@@ -1,0 +1,154 @@
+//! A complete, restorable state of a simulation, and its bytes.
+
+use super::codec::{ByteReader, ByteWriter, CodecError, signal_values};
+use super::peaks::PeakHold;
+use crate::integrator::{ImplicitState, IntegratorState};
+use crate::mechanism::{ContactState, InputSignal};
+
+/// A complete, restorable state of a [`super::Simulation`] (parameters excepted).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Snapshot {
+    /// Communication time \[s\].
+    pub time: f64,
+    /// State at `time`.
+    pub state: Vec<f64>,
+    /// The last accepted step: start time, state, its derivative and the contact state there.
+    pub step_start: (f64, Vec<f64>, Vec<f64>, ContactState),
+    /// The end of the last accepted step (the integrator's point, ≥ `time`): time, state and its
+    /// derivative.
+    pub step_end: (f64, Vec<f64>, Vec<f64>),
+    /// Integrator state (step size, f at the step end, Jacobian, statistics).
+    pub integrator: IntegratorState,
+    /// Contact state at the step end.
+    pub contact: ContactState,
+    /// The inputs of the current step sequence.
+    pub signal: InputSignal,
+    /// The inputs set for the next interval.
+    pub next: InputSignal,
+    /// Peak-hold outputs.
+    pub peaks: PeakHold,
+    /// Warnings raised since the start.
+    pub warnings: u64,
+}
+
+impl Snapshot {
+    /// Whether every time, state and input (with its derivatives) is a finite number.
+    pub fn is_finite(&self) -> bool {
+        let finite = |v: &[f64]| v.iter().all(|x| x.is_finite());
+        let vectors = [
+            &self.state,
+            &self.step_start.1,
+            &self.step_start.2,
+            &self.step_end.1,
+            &self.step_end.2,
+        ];
+        self.time.is_finite()
+            && self.step_start.0.is_finite()
+            && self.step_end.0.is_finite()
+            && vectors.iter().all(|v| finite(v))
+            && [&self.signal, &self.next]
+                .iter()
+                .all(|s| finite(&signal_values(s)))
+    }
+
+    /// Appends the pointer-free bytes of the snapshot.
+    pub fn write(&self, w: &mut ByteWriter<'_>) {
+        w.f64(self.time);
+        w.f64s(&self.state);
+        w.f64(self.step_start.0);
+        w.f64s(&self.step_start.1);
+        w.f64s(&self.step_start.2);
+        w.contact(&self.step_start.3);
+        w.f64(self.step_end.0);
+        w.f64s(&self.step_end.1);
+        w.f64s(&self.step_end.2);
+        match &self.integrator {
+            IntegratorState::DormandPrince {
+                h,
+                derivative,
+                stats,
+            } => {
+                w.u8(0);
+                w.f64(*h);
+                w.f64s(derivative);
+                w.stats(stats);
+            }
+            IntegratorState::Implicit(e) => {
+                w.u8(1);
+                w.f64(e.h);
+                w.f64(e.h_factored);
+                w.f64s(&e.jacobian_q);
+                w.f64s(&e.jacobian_v);
+                w.u8(u8::from(e.jacobian_stale));
+                w.f64(e.newton_rate);
+                w.f64s(&e.history);
+                w.f64(e.history_step);
+                w.f64s(&e.derivative);
+                w.f64s(&e.acceleration);
+                w.f64s(&e.acceleration_start);
+                w.stats(&e.stats);
+            }
+        }
+        w.contact(&self.contact);
+        w.signal(&self.signal);
+        w.signal(&self.next);
+        w.peaks(&self.peaks.interval);
+        w.peaks(&self.peaks.step_end);
+        w.u8(u8::from(self.peaks.pending));
+        w.u64(self.peaks.total_onsets);
+        w.u64(self.warnings);
+    }
+
+    /// Reads a snapshot written by [`Snapshot::write`] (finiteness is checked by
+    /// [`Snapshot::is_finite`]).
+    pub fn read(r: &mut ByteReader<'_>) -> Result<Self, CodecError> {
+        let sim_time = r.f64()?;
+        let state_vector = r.f64s()?;
+        let step_start = (r.f64()?, r.f64s()?, r.f64s()?, r.contact()?);
+        let step_end = (r.f64()?, r.f64s()?, r.f64s()?);
+        let integrator = match r.u8()? {
+            0 => IntegratorState::DormandPrince {
+                h: r.f64()?,
+                derivative: r.f64s()?,
+                stats: r.stats()?,
+            },
+            1 => IntegratorState::Implicit(ImplicitState {
+                h: r.f64()?,
+                h_factored: r.f64()?,
+                jacobian_q: r.f64s()?,
+                jacobian_v: r.f64s()?,
+                jacobian_stale: r.flag()?,
+                newton_rate: r.f64()?,
+                history: r.f64s()?,
+                history_step: r.f64()?,
+                derivative: r.f64s()?,
+                acceleration: r.f64s()?,
+                acceleration_start: r.f64s()?,
+                stats: r.stats()?,
+            }),
+            m => {
+                return Err(CodecError(format!(
+                    "FMU state rejected: unknown integrator {m}"
+                )));
+            }
+        };
+        let contact = r.contact()?;
+        Ok(Self {
+            time: sim_time,
+            state: state_vector,
+            step_start,
+            step_end,
+            integrator,
+            contact,
+            signal: r.signal()?,
+            next: r.signal()?,
+            peaks: PeakHold {
+                interval: r.peaks()?,
+                step_end: r.peaks()?,
+                pending: r.flag()?,
+                total_onsets: r.u64()?,
+            },
+            warnings: r.u64()?,
+        })
+    }
+}

@@ -1,0 +1,94 @@
+//! Validity monitors: limits beyond which the model has left the domain its laws were made for.
+//! Each cause is reported once per simulation, as a message for the FMU's logger
+//! ([`super::Simulation::take_warnings`]).
+
+use crate::mechanism::SliderCrank;
+use crate::params::{Parameters, RodFormulation};
+
+/// Largest contact penetration, as a fraction of the journal radius: Hertz theory assumes a
+/// contact zone small against the radii.
+pub const PENETRATION_PER_RADIUS: f64 = 0.01;
+/// Largest rod mid-span deflection, as a fraction of the rod length: beyond it a reduced
+/// (Craig–Bampton) rod leaves the small-deformation range of its modes.
+pub const DEFLECTION_PER_LENGTH: f64 = 0.05;
+/// Largest crank speed \[rad/s\]: 1 % beyond the range of `drive.speed` (±1e4 rad/s), so that
+/// a speed drive at its limit stays silent.
+pub const CRANK_SPEED: f64 = 1.01e4;
+/// Largest excursion of the slider beyond its rigid-mechanism stroke [l − r − c, l + r + c], as
+/// a fraction of the crank length.
+pub const STROKE_EXCESS_PER_CRANK: f64 = 0.01;
+
+/// The warnings of a simulation: which validity limits were already crossed, the messages not
+/// yet taken, and the count since the start.
+#[derive(Clone, Debug, Default)]
+pub(super) struct Monitor {
+    fired: [bool; 4],
+    messages: Vec<String>,
+    /// Warnings raised since the start.
+    pub(super) total: u64,
+}
+
+impl Monitor {
+    /// Records a warning.
+    pub(super) fn warn(&mut self, message: String) {
+        self.messages.push(message);
+        self.total += 1;
+    }
+
+    /// The warnings raised since the last call.
+    pub(super) fn take(&mut self) -> Vec<String> {
+        std::mem::take(&mut self.messages)
+    }
+
+    /// Checks the state `y` at time `t` (the end of an accepted step, or the state at a
+    /// communication point, which the outputs show) against the limits; each cause warns once.
+    pub(super) fn check(&mut self, p: &Parameters, mechanism: &mut SliderCrank, t: f64, y: &[f64]) {
+        let layout = mechanism.layout();
+        let penetration = mechanism.penetration(y);
+        let (r_c, l, c) = (p.crank_length, p.rod.length, p.clearance);
+        let x = y[layout.slider()];
+        let excess = ((l - r_c - c) - x).max(x - (l + r_c + c));
+        let speed = y[layout.crank_speed()];
+        let deflection = if p.rod_formulation == RodFormulation::Rigid {
+            0.0
+        } else {
+            mechanism.midspan_deflection(y)
+        };
+        let left = [
+            penetration > PENETRATION_PER_RADIUS * p.journal_radius,
+            deflection.abs() > DEFLECTION_PER_LENGTH * l,
+            speed.abs() > CRANK_SPEED,
+            excess > STROKE_EXCESS_PER_CRANK * r_c,
+        ];
+        for (i, &left) in left.iter().enumerate() {
+            if !left || self.fired[i] {
+                continue;
+            }
+            self.fired[i] = true;
+            let message = match i {
+                0 => format!(
+                    "joint penetration {penetration:.3e} m exceeds {} % of joint.journalRadius = {} m \
+                     (Hertz contact assumes a small contact zone)",
+                    100.0 * PENETRATION_PER_RADIUS,
+                    p.journal_radius
+                ),
+                1 => format!(
+                    "rod mid-span deflection {deflection:.3e} m exceeds {} % of rod.length = {l} m",
+                    100.0 * DEFLECTION_PER_LENGTH
+                ),
+                2 => format!(
+                    "crank speed {speed:.4e} rad/s is more than 1 % beyond the drive's range ±1e4 rad/s"
+                ),
+                _ => format!(
+                    "slider position {x:.6} m is {excess:.3e} m beyond its kinematic stroke \
+                     [{:.6}, {:.6}] m",
+                    l - r_c - c,
+                    l + r_c + c
+                ),
+            };
+            self.warn(format!(
+                "t = {t:.6e} s: the model left its domain: {message}"
+            ));
+        }
+    }
+}
