@@ -8,7 +8,8 @@
 //! # References
 //! - Dormand & Prince (1980); Hairer, Nørsett & Wanner (1993), Table II.5.2 and code DOPRI5.
 
-use super::{ErrorScales, OdeSystem, Stats, Tolerances, initial_step};
+use super::control::{ErrorScales, Stats, Tolerances, initial_step};
+use super::system::OdeSystem;
 use crate::error::ModelError;
 use crate::math;
 

@@ -31,9 +31,10 @@
 //! - E. Hairer, G. Wanner (1996), Solving Ordinary Differential Equations II, 2nd ed., §IV.8
 //!   (simplified Newton, convergence rate, Jacobian reuse, error-estimate filtering).
 
+use super::control::{ErrorScales, Stats, Tolerances, initial_step, scaled_norm};
 use super::esdirk::Tableau;
 use super::generalized_alpha::GeneralizedAlpha;
-use super::{ErrorScales, MechanicalSystem, Stats, Tolerances, initial_step, scaled_norm};
+use super::system::MechanicalSystem;
 use crate::error::ModelError;
 use crate::linalg::lu::Lu;
 use crate::math;

@@ -38,145 +38,23 @@
 //!   differential equations. A review, NASA/TM–2016–219173.
 //! - E. Hairer, G. Wanner (1996), Solving Ordinary Differential Equations II, 2nd ed., §IV.8.
 
+mod control;
 pub mod dense;
 mod dormand_prince;
 mod esdirk;
 mod generalized_alpha;
 mod implicit;
+mod system;
+
+pub use control::{ErrorScales, Stats, Tolerances};
 
 pub use dormand_prince::DormandPrince;
 pub use esdirk::{ESDIRK54, Tableau};
 pub use generalized_alpha::GeneralizedAlpha;
 pub use implicit::{Implicit, ImplicitState, Scheme};
+pub use system::{MechanicalSystem, OdeSystem};
 
-use crate::error::{ModelError, require_positive};
-
-/// A first-order system y' = f(t, y) with optional hooks on step acceptance.
-///
-/// The hooks let a system with impacts refuse a step that would start a contact too deep
-/// (Flores & Ambrósio 2010: keep the first penetration small), aim the next step at an
-/// approaching contact instead of overshooting it, and update discrete state (the impact
-/// velocity of a contact event) only at accepted steps, never at trial stages.
-pub trait OdeSystem {
-    /// Writes f(t, y) to `dy`.
-    fn rhs(&mut self, t: f64, y: &[f64], dy: &mut [f64]);
-
-    /// Called for a step (t₀, y₀) → (t₁, y₁) that passed the error test: `None` accepts it,
-    /// `Some(factor)` rejects it and retries with the step size multiplied by `factor` ∈ (0, 1).
-    fn check_step(&mut self, _t0: f64, _y0: &[f64], _t1: f64, _y1: &[f64]) -> Option<f64> {
-        None
-    }
-
-    /// Called once a step (t₀, y₀) → (t₁, y₁) has been accepted; returns the largest size of
-    /// the next step (`None`: no limit beyond the error control's).
-    fn accept_step(&mut self, _t0: f64, _y0: &[f64], _t1: f64, _y1: &[f64]) -> Option<f64> {
-        None
-    }
-}
-
-impl<F: FnMut(f64, &[f64], &mut [f64])> OdeSystem for F {
-    fn rhs(&mut self, t: f64, y: &[f64], dy: &mut [f64]) {
-        self(t, y, dy)
-    }
-}
-
-/// A mechanical system in first-order form y = [q, q̇, w]: q' = q̇, q̈ = a(t, q, q̇, w), and
-/// quadrature states w whose rates do not depend on w (work integrals, the drive angle).
-pub trait MechanicalSystem: OdeSystem {
-    /// Number of coordinates n (the lengths of q and of q̇).
-    fn n_coordinates(&self) -> usize;
-}
-
-/// Error tolerances: a step is accepted when the RMS over i of
-/// err_i / (absolute · sᵢ + relative · rᵢ · max(|y_i|, |y_new,i|)) is at most 1, with sᵢ and rᵢ the
-/// component's [`ErrorScales`] (1 and 1 unless the system provides them).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Tolerances {
-    /// Relative tolerance.
-    pub relative: f64,
-    /// Absolute tolerance, in units of each component's scale.
-    pub absolute: f64,
-    /// Largest step size \[s\].
-    pub max_step: f64,
-    /// Smallest step size \[s\]: below it the integration fails instead of stalling.
-    pub min_step: f64,
-}
-
-impl Tolerances {
-    /// `rtol` for both the relative and the absolute part (the latter in units of each
-    /// component's scale), steps up to `max_step` and a 1e-14 s floor.
-    pub fn from_relative(rtol: f64, max_step: f64) -> Self {
-        Self {
-            relative: rtol,
-            absolute: rtol,
-            max_step,
-            min_step: 1e-14,
-        }
-    }
-
-    /// Checks every field; errors name the FMU parameter each comes from (the absolute tolerance
-    /// is `solver.relativeTolerance` in units of each component's scale; the step floor is fixed).
-    pub fn validate(&self) -> Result<(), ModelError> {
-        require_positive("solver.relativeTolerance", self.relative)?;
-        require_positive("solver.relativeTolerance", self.absolute)?;
-        require_positive("solver.maxStepSize", self.max_step)?;
-        require_positive("the smallest step size", self.min_step)?;
-        Ok(())
-    }
-}
-
-/// Per-component weights of the error norm: component i is compared with
-/// `absolute · absolute[i] + relative · relative[i] · |yᵢ|`.
-#[derive(Clone, Debug, PartialEq)]
-pub struct ErrorScales {
-    /// Scale of each component's absolute tolerance, in its units.
-    pub absolute: Vec<f64>,
-    /// Weight of each component's relative tolerance (1: relative to its size, 0: absolute only,
-    /// for quantities whose size depends on an arbitrary origin, such as positions).
-    pub relative: Vec<f64>,
-}
-
-impl ErrorScales {
-    /// Scales 1 and relative weights 1 for `n` components (a classical mixed tolerance).
-    pub fn uniform(n: usize) -> Self {
-        Self {
-            absolute: vec![1.0; n],
-            relative: vec![1.0; n],
-        }
-    }
-
-    /// Number of components.
-    pub fn len(&self) -> usize {
-        self.absolute.len()
-    }
-
-    /// Whether there are no components.
-    pub fn is_empty(&self) -> bool {
-        self.absolute.is_empty()
-    }
-
-    /// The tolerance of component `i` at values `a`, `b` (its size is the larger).
-    fn weight(&self, i: usize, tol: &Tolerances, a: f64, b: f64) -> f64 {
-        tol.absolute * self.absolute[i] + tol.relative * self.relative[i] * a.abs().max(b.abs())
-    }
-}
-
-/// Integrator statistics.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Stats {
-    /// Accepted steps.
-    pub steps: u64,
-    /// Rejected steps (error test, contact onset, Newton failure).
-    pub rejected: u64,
-    /// Right-hand-side evaluations (including those of finite-difference Jacobians).
-    pub evaluations: u64,
-    /// Newton iterations (implicit method).
-    pub newton_iterations: u64,
-    /// Jacobian evaluations (implicit method).
-    pub jacobians: u64,
-    /// LU factorisations of the Newton matrix (implicit method).
-    pub factorizations: u64,
-}
+use crate::error::ModelError;
 
 /// The time-integration method.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -356,67 +234,4 @@ impl Integrator {
             )),
         }
     }
-}
-
-/// The error norm: RMS over i of err_i / [`ErrorScales`] weight, or ∞ when not finite.
-fn scaled_norm(err: &[f64], y0: &[f64], y1: &[f64], scales: &ErrorScales, tol: &Tolerances) -> f64 {
-    let mut sum = 0.0;
-    for (i, ((e, a), b)) in err.iter().zip(y0).zip(y1).enumerate() {
-        sum += (e / scales.weight(i, tol, *a, *b)).powi(2);
-    }
-    let norm = (sum / err.len().max(1) as f64).sqrt();
-    if norm.is_finite() {
-        norm
-    } else {
-        f64::INFINITY
-    }
-}
-
-/// Initial step size (Hairer, Nørsett & Wanner 1993, §II.4) for a method of order `order`:
-/// h₀ from ‖y‖/‖f‖, then one Euler step to estimate the second derivative. `f0` holds f(t, y);
-/// `y1` and `f1` are workspace.
-#[allow(clippy::too_many_arguments)]
-fn initial_step<F: OdeSystem>(
-    f: &mut F,
-    t: f64,
-    y: &[f64],
-    f0: &[f64],
-    t_end: f64,
-    tol: &Tolerances,
-    scales: &ErrorScales,
-    order: i32,
-    y1: &mut [f64],
-    f1: &mut [f64],
-) -> f64 {
-    let n = y.len().max(1) as f64;
-    let scale = |i: usize, v: f64| scales.weight(i, tol, v, v);
-    let rms = |it: &mut dyn Iterator<Item = f64>| (it.map(|v| v * v).sum::<f64>() / n).sqrt();
-    let d0 = rms(&mut y.iter().enumerate().map(|(i, &v)| v / scale(i, v)));
-    let d1 = rms(&mut y
-        .iter()
-        .zip(f0)
-        .enumerate()
-        .map(|(i, (&v, &d))| d / scale(i, v)));
-    let h0 = if d0 < 1e-5 || d1 < 1e-5 {
-        1e-6
-    } else {
-        0.01 * d0 / d1
-    };
-    let h0 = h0.min(tol.max_step).min(t_end - t);
-    for ((y1, &v), &d) in y1.iter_mut().zip(y).zip(f0) {
-        *y1 = v + h0 * d;
-    }
-    f.rhs(t + h0, y1, f1);
-    let d2 = rms(&mut y
-        .iter()
-        .zip(f1.iter().zip(f0))
-        .enumerate()
-        .map(|(i, (&v, (&a, &b)))| (a - b) / scale(i, v)))
-        / h0;
-    let h1 = if d1.max(d2) <= 1e-15 {
-        (h0 * 1e-3).max(1e-6)
-    } else {
-        crate::math::powf(0.01 / d1.max(d2), 1.0 / f64::from(order))
-    };
-    (100.0 * h0).min(h1).min(tol.max_step)
 }

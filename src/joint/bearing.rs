@@ -33,7 +33,8 @@
 
 use nalgebra::Vector2;
 
-use super::{DryContact, JointForce, JointKinematics};
+use super::contact::DryContact;
+use super::kinematics::{JointForce, JointKinematics};
 use crate::math;
 use crate::quadrature::GAUSS_5;
 

@@ -31,7 +31,7 @@
 
 use nalgebra::Vector2;
 
-use super::{JointForce, JointKinematics, MIN_IMPACT_VELOCITY};
+use super::kinematics::{JointForce, JointKinematics, MIN_IMPACT_VELOCITY};
 use crate::params::ContactLaw;
 
 /// Hertz-type stiffness K \[N/m^1.5\] of a journal of radius `r_journal` in a bearing of radius

@@ -11,55 +11,13 @@
 
 pub mod bearing;
 pub mod contact;
-
-use nalgebra::Vector2;
+pub mod kinematics;
 
 pub use bearing::JournalBearing;
 pub use contact::{DryContact, hertz_stiffness};
+pub use kinematics::{ContactState, JointForce, JointKinematics, MIN_IMPACT_VELOCITY};
 
 use crate::params::{JointModel, Parameters};
-
-/// Smallest impact velocity used in the Lankarani–Nikravesh damping term \[m/s\] (docs/model.md §10).
-pub const MIN_IMPACT_VELOCITY: f64 = 1e-4;
-
-/// Relative kinematics of the journal in the bearing.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct JointKinematics {
-    /// Eccentricity e = journal centre − bearing centre \[m\].
-    pub e: Vector2<f64>,
-    /// Its rate ė \[m/s\].
-    pub e_dot: Vector2<f64>,
-    /// Absolute angular velocity of the journal (CCW +) \[rad/s\]; the bearing does not rotate.
-    pub omega_journal: f64,
-}
-
-impl JointKinematics {
-    /// Unit normal n = e/|e| (x axis when e = 0).
-    pub fn normal(&self) -> Vector2<f64> {
-        let norm = self.e.norm();
-        if norm > 0.0 {
-            self.e / norm
-        } else {
-            Vector2::x()
-        }
-    }
-
-    /// Normal relative velocity δ̇ = ė · n.
-    pub fn normal_velocity(&self) -> f64 {
-        self.e_dot.dot(&self.normal())
-    }
-}
-
-/// Force of the joint on the journal.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct JointForce {
-    /// Force on the journal \[N\] (the bearing receives −force).
-    pub force: Vector2<f64>,
-    /// Moment on the journal about its centre \[N m\] (friction only).
-    pub moment: f64,
-    /// Elastic energy stored in the contact, K δ^2.5 / 2.5 \[J\].
-    pub potential: f64,
-}
 
 /// The joint model with its constants.
 #[derive(Clone, Debug, PartialEq)]
@@ -70,15 +28,6 @@ pub enum Joint {
     Dry(DryContact),
     /// Lubricated journal bearing with dry contact near metal contact.
     Lubricated(JournalBearing),
-}
-
-/// Discrete contact state, updated at accepted steps only.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ContactState {
-    /// Whether the journal touched the bearing at the end of the last accepted step.
-    pub in_contact: bool,
-    /// Normal velocity δ̇⁽⁻⁾ at the onset of the current contact event \[m/s\].
-    pub impact_velocity: f64,
 }
 
 /// Hertz-type stiffness K \[N/m^1.5\] of the parameters' journal in their bearing

@@ -1,7 +1,9 @@
 //! [`Parameters`] by value reference: the one list that maps each parameter row of the variable
 //! table to its field, from which both the getter and the setter are generated.
 
-use super::{ContactLaw, DriveMode, InitialState, JointModel, Parameters, RodFormulation};
+use super::parameters::{
+    ContactLaw, DriveMode, InitialState, JointModel, Parameters, RodFormulation,
+};
 use crate::fmi::variables::Vr;
 use crate::integrator::Method;
 use crate::reduction::Boundary;

@@ -4,7 +4,7 @@
 //! its value and the range that holds for the others.
 
 use super::access::{integer_parameter, real_parameter};
-use super::{
+use super::parameters::{
     EXPLICIT_MAX_TOLERANCE, GENERALIZED_ALPHA_MAX_TOLERANCE, JointModel, Parameters, RodFormulation,
 };
 use crate::error::ModelError;

@@ -1,0 +1,38 @@
+//! What the integrators integrate: a first-order system with step hooks, and a mechanical one
+//! with its coordinates first.
+
+/// A first-order system y' = f(t, y) with optional hooks on step acceptance.
+///
+/// The hooks let a system with impacts refuse a step that would start a contact too deep
+/// (Flores & Ambrósio 2010: keep the first penetration small), aim the next step at an
+/// approaching contact instead of overshooting it, and update discrete state (the impact
+/// velocity of a contact event) only at accepted steps, never at trial stages.
+pub trait OdeSystem {
+    /// Writes f(t, y) to `dy`.
+    fn rhs(&mut self, t: f64, y: &[f64], dy: &mut [f64]);
+
+    /// Called for a step (t₀, y₀) → (t₁, y₁) that passed the error test: `None` accepts it,
+    /// `Some(factor)` rejects it and retries with the step size multiplied by `factor` ∈ (0, 1).
+    fn check_step(&mut self, _t0: f64, _y0: &[f64], _t1: f64, _y1: &[f64]) -> Option<f64> {
+        None
+    }
+
+    /// Called once a step (t₀, y₀) → (t₁, y₁) has been accepted; returns the largest size of
+    /// the next step (`None`: no limit beyond the error control's).
+    fn accept_step(&mut self, _t0: f64, _y0: &[f64], _t1: f64, _y1: &[f64]) -> Option<f64> {
+        None
+    }
+}
+
+impl<F: FnMut(f64, &[f64], &mut [f64])> OdeSystem for F {
+    fn rhs(&mut self, t: f64, y: &[f64], dy: &mut [f64]) {
+        self(t, y, dy)
+    }
+}
+
+/// A mechanical system in first-order form y = [q, q̇, w]: q' = q̇, q̈ = a(t, q, q̇, w), and
+/// quadrature states w whose rates do not depend on w (work integrals, the drive angle).
+pub trait MechanicalSystem: OdeSystem {
+    /// Number of coordinates n (the lengths of q and of q̇).
+    fn n_coordinates(&self) -> usize;
+}

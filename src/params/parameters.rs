@@ -1,0 +1,274 @@
+//! The parameter set: the switches, the values with their defaults and the benchmarks, and the
+//! quantities derived from them.
+
+use crate::ancf::RodProperties;
+use crate::integrator::{Method, Tolerances};
+use crate::reduction::Boundary;
+
+/// How the connecting rod is modelled.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RodFormulation {
+    /// Rigid uniform bar (natural coordinates of its two pins).
+    Rigid,
+    /// Full ANCF model with `n_elements` elements.
+    Ancf,
+    /// ANCF reduced by Craig–Bampton with `n_modes` mode shapes.
+    CraigBampton,
+}
+
+/// Model of the rod–slider joint.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum JointModel {
+    /// Ideal revolute joint (constraint).
+    Ideal,
+    /// Dry clearance joint: Lankarani–Nikravesh contact with Coulomb–Ambrósio friction.
+    Dry,
+    /// Lubricated journal bearing (short-bearing film), dry contact near metal contact.
+    Lubricated,
+}
+
+/// Hysteresis-damping law of the dry contact force F_N = K δ^1.5 (1 + χ δ̇/δ̇⁻)
+/// ([`crate::joint::DryContact`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ContactLaw {
+    /// Lankarani & Nikravesh (1990), χ = 3(1 − c_e²)/4: derived for restitution near 1 (the seed
+    /// paper's law).
+    LankaraniNikravesh,
+    /// Flores, Machado, Silva & Martins (2011), χ = 8(1 − c_e)/(5 c_e): any restitution.
+    Flores,
+    /// Hu & Guo (2015), χ = 3(1 − c_e)/(2 c_e): any restitution.
+    HuGuo,
+}
+
+/// How the rod starts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum InitialState {
+    /// Quasi-statically equilibrated: deformed by the inertial loads of the initial motion
+    /// ([`crate::mechanism::SliderCrank::equilibrate`]).
+    Equilibrated,
+    /// Straight and unstressed (docs/model.md §10, the reference start).
+    Straight,
+}
+
+/// What drives the crank.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DriveMode {
+    /// The crank speed is prescribed (input `drive.speed`); the torque is an output.
+    Speed,
+    /// The crank torque is prescribed (input `drive.torque`); angle and speed are dynamic.
+    Torque,
+}
+
+/// All parameters of the model (SI units).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Parameters {
+    /// Rod formulation.
+    pub rod_formulation: RodFormulation,
+    /// Number of ANCF elements (ancf and craigBampton).
+    pub n_elements: usize,
+    /// Number of Craig–Bampton mode shapes, 0 ..= [`crate::reduction::max_modes`].
+    pub n_modes: usize,
+    /// Craig–Bampton interface (the rod coordinates kept physical).
+    pub boundary: Boundary,
+    /// How the rod starts.
+    pub initial_state: InitialState,
+    /// Rod material and section.
+    pub rod: RodProperties,
+    /// Crank length r_c (pivot to pin) \[m\].
+    pub crank_length: f64,
+    /// Crank mass \[kg\] (uniform, centre of mass at mid-length).
+    pub crank_mass: f64,
+    /// Crank moment of inertia about its centre of mass \[kg m²\].
+    pub crank_inertia: f64,
+    /// Initial crank angle \[rad\].
+    pub crank_initial_angle: f64,
+    /// Initial crank speed \[rad/s\].
+    pub crank_initial_speed: f64,
+    /// Slider mass \[kg\].
+    pub slider_mass: f64,
+    /// Joint model.
+    pub joint_model: JointModel,
+    /// Radial clearance c = R_bearing − R_journal \[m\].
+    pub clearance: f64,
+    /// Journal (pin) radius R_j \[m\].
+    pub journal_radius: f64,
+    /// Young's modulus of journal and bearing \[Pa\].
+    pub joint_youngs_modulus: f64,
+    /// Poisson ratio of journal and bearing.
+    pub joint_poisson_ratio: f64,
+    /// Coefficient of restitution c_e ∈ (0, 1].
+    pub restitution: f64,
+    /// Hysteresis-damping law of the dry contact.
+    pub contact_law: ContactLaw,
+    /// Coulomb friction coefficient μ.
+    pub friction: f64,
+    /// Tangential speed below which friction vanishes v₀ \[m/s\].
+    pub friction_v0: f64,
+    /// Tangential speed above which friction is fully developed v₁ \[m/s\].
+    pub friction_v1: f64,
+    /// Lubricant dynamic viscosity \[Pa s\].
+    pub viscosity: f64,
+    /// Bearing length L \[m\].
+    pub bearing_length: f64,
+    /// Eccentricity ratio above which dry contact takes over, ε_b ∈ (0, 1).
+    pub switch_eccentricity: f64,
+    /// Drive mode.
+    pub drive_mode: DriveMode,
+    /// Gravitational acceleration along −y \[m/s²\].
+    pub gravity: f64,
+    /// Time-integration method.
+    pub method: Method,
+    /// Spectral radius at infinity ρ∞ ∈ [0, 1] of the generalized-α method (1: no numerical
+    /// dissipation, 0: unresolved frequencies annihilated in one step).
+    pub spectral_radius: f64,
+    /// Relative tolerance of the error-controlled integrator.
+    pub relative_tolerance: f64,
+    /// Largest internal step \[s\].
+    pub max_step_size: f64,
+    /// Work limit: largest number of internal step attempts (accepted or rejected) in one
+    /// communication interval.
+    pub max_steps_per_interval: usize,
+}
+
+/// Loosest relative tolerance accepted with the explicit method (`solver.method` = explicit).
+///
+/// Measured over two revolutions of benchmark B (BENCHMARKS.md, "Loosest tolerances"): with the
+/// ideal joint the flexible rod's peak joint force is 25 % high at rtol 1e-3 with 8 modes (9 % with
+/// 4, 96 % with 4 at 1e-2), and within 2.5 % at 1e-4 for every mode count. A loose explicit run is
+/// bound by stability, not accuracy, and the rod's stiff content rings undamped in the constraint
+/// force. The implicit method damps that content and stays within 2.1 % up to rtol 0.1.
+pub const EXPLICIT_MAX_TOLERANCE: f64 = 1e-4;
+
+/// Loosest relative tolerance accepted with the generalized-α method (`solver.method` =
+/// generalizedAlpha).
+///
+/// Measured over two revolutions of benchmarks B/C (BENCHMARKS.md, "Integrators"): at 3e-2 the peak
+/// joint force and penetration of every rod × joint model are within 2.2 % of converged runs; at
+/// 5e-2 the rigid rod's dry impacts are not (peak force +60 %), at 1e-1 they are +250 %.
+pub const GENERALIZED_ALPHA_MAX_TOLERANCE: f64 = 3e-2;
+
+/// Default spectral radius at infinity of the generalized-α method (`solver.spectralRadius`).
+pub const DEFAULT_SPECTRAL_RADIUS: f64 = 0.8;
+
+/// Default work limit per communication interval (`solver.maxStepsPerInterval`): ample for every
+/// documented case (the worst interval measured: 7 065 attempts with joint.friction = 1, about 0.3 s
+/// of wall time for the 4-mode rod), and a bound of seconds, not hours, for a model that stalls.
+pub const DEFAULT_MAX_STEPS_PER_INTERVAL: usize = 50_000;
+
+/// 5000 rpm in rad/s.
+pub const BENCHMARK_SPEED: f64 = 5000.0 * std::f64::consts::TAU / 60.0;
+
+impl Default for Parameters {
+    fn default() -> Self {
+        Self {
+            rod_formulation: RodFormulation::CraigBampton,
+            n_elements: 8,
+            n_modes: 4,
+            boundary: Boundary::Pins,
+            initial_state: InitialState::Equilibrated,
+            rod: RodProperties::benchmark_b(),
+            crank_length: 0.05,
+            crank_mass: 0.30,
+            crank_inertia: 1e-4,
+            crank_initial_angle: 0.0,
+            crank_initial_speed: BENCHMARK_SPEED,
+            slider_mass: 0.14,
+            joint_model: JointModel::Dry,
+            clearance: 0.5e-3,
+            journal_radius: 9.5e-3,
+            joint_youngs_modulus: 207e9,
+            joint_poisson_ratio: 0.3,
+            restitution: 0.9,
+            contact_law: ContactLaw::LankaraniNikravesh,
+            friction: 0.0,
+            friction_v0: 1e-4,
+            friction_v1: 1e-3,
+            viscosity: 0.4,
+            bearing_length: 0.04,
+            switch_eccentricity: 0.95,
+            drive_mode: DriveMode::Speed,
+            gravity: 0.0,
+            method: Method::Esdirk,
+            spectral_radius: DEFAULT_SPECTRAL_RADIUS,
+            relative_tolerance: 1e-2,
+            max_step_size: 1e-4,
+            max_steps_per_interval: DEFAULT_MAX_STEPS_PER_INTERVAL,
+        }
+    }
+}
+
+impl Parameters {
+    /// Benchmark A (docs/model.md §5(a)): rigid rod (0.21 kg, inertia m l²/12), dry joint, 5000 rpm.
+    pub fn benchmark_a() -> Self {
+        Self {
+            rod_formulation: RodFormulation::Rigid,
+            ..Self::default()
+        }
+    }
+
+    /// Benchmark B (docs/model.md §5(b)) with `n_elements` elements: full ANCF rod, dry joint.
+    pub fn benchmark_b() -> Self {
+        Self {
+            rod_formulation: RodFormulation::Ancf,
+            ..Self::default()
+        }
+    }
+
+    /// Benchmark C (docs/model.md §5(b)): as B with the lubricated joint.
+    pub fn benchmark_c() -> Self {
+        Self {
+            joint_model: JointModel::Lubricated,
+            ..Self::benchmark_b()
+        }
+    }
+
+    /// Benchmark D (the lubricated → dry hand-over): the defaults (4-mode rod) with the
+    /// lubricated joint, a 40× thinner lubricant (0.01 Pa s) and a 0.5 kg slider, so that the
+    /// journal crosses the switch eccentricity ratio and reaches metal contact many times per
+    /// revolution.
+    pub fn benchmark_d() -> Self {
+        Self {
+            joint_model: JointModel::Lubricated,
+            viscosity: 0.01,
+            slider_mass: 0.5,
+            ..Self::default()
+        }
+    }
+
+    /// Bearing (hole) radius R_i = R_j + c \[m\].
+    pub fn bearing_radius(&self) -> f64 {
+        self.journal_radius + self.clearance
+    }
+
+    /// Crank moment of inertia about the pivot, I_c + m_c (r_c/2)² \[kg m²\].
+    pub fn crank_inertia_about_pivot(&self) -> f64 {
+        self.crank_inertia + self.crank_mass * (0.5 * self.crank_length).powi(2)
+    }
+
+    /// Integrator tolerances: rtol as given for both the relative and the absolute part (the
+    /// absolute one in units of each state's scale, [`crate::mechanism::SliderCrank::error_scales`]),
+    /// the maximum step, and a 1e-14 s floor.
+    pub fn tolerances(&self) -> Tolerances {
+        Tolerances::from_relative(self.relative_tolerance, self.max_step_size)
+    }
+
+    /// Largest bearing length-to-diameter ratio L/D for which the short-bearing (Ocvirk) film is
+    /// a fair approximation.
+    pub const SHORT_BEARING_MAX_RATIO: f64 = 0.5;
+
+    /// Valid parameters that take the model outside the range of one of its laws: one message per
+    /// cause, for the FMU to log as a warning when it builds the model.
+    pub fn warnings(&self) -> Vec<String> {
+        let mut warnings = Vec::new();
+        let ratio = self.bearing_length / (2.0 * self.journal_radius);
+        if self.joint_model == JointModel::Lubricated && ratio > Self::SHORT_BEARING_MAX_RATIO {
+            warnings.push(format!(
+                "joint.bearingLength / (2 joint.journalRadius) = {ratio:.3} is outside the \
+                 short-bearing range L/D <= {}: the film force is the infinitely-short-bearing \
+                 model's, which overestimates a long bearing's squeeze and wedge forces",
+                Self::SHORT_BEARING_MAX_RATIO
+            ));
+        }
+        warnings
+    }
+}
