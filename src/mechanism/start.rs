@@ -39,7 +39,7 @@ impl SliderCrank {
     /// [`SliderCrank::initial_state`] so that the deformation has no acceleration.
     ///
     /// Unknowns: the rod's deviation d = p_o − Π_o(r_A, r_B) of its coordinates other than the pin
-    /// positions from the straight rod through its pins (Π, [`RodBody::straight`], linear), and
+    /// positions from the straight rod through its pins (Π, [`super::rod_body::RodBody::straight`], linear), and
     /// a shift Δ of the slider end along the guide (r_B and x_s together: the journal stays
     /// centred, an ideal joint stays closed). Equations, with every velocity unchanged:
     /// ```text

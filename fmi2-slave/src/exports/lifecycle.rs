@@ -1,0 +1,164 @@
+//! Creating, setting up, initialising, terminating, resetting and freeing an instance.
+#![allow(unsafe_code, non_snake_case, clippy::missing_safety_doc)]
+
+use std::ffi::c_char;
+use std::panic::{AssertUnwindSafe, catch_unwind};
+
+use fmi_sys::fmi2::*;
+
+use super::codes::{OK, ok};
+use crate::error::FmuError;
+use crate::ffi::{slice, string, with_instance};
+use crate::logger::Logger;
+use crate::model::{Instance, Model};
+use crate::state::{Call, State};
+
+/// Returns "default".
+pub fn fmi2GetTypesPlatform() -> *const c_char {
+    c"default".as_ptr()
+}
+
+/// Returns "2.0".
+pub fn fmi2GetVersion() -> *const c_char {
+    c"2.0".as_ptr()
+}
+
+/// Creates an instance; NULL (after logging, if a logger was given) on any invalid argument.
+pub unsafe fn fmi2Instantiate<M: Model>(
+    instanceName: fmi2String,
+    fmuType: fmi2Type,
+    fmuGUID: fmi2String,
+    _fmuResourceLocation: fmi2String,
+    functions: *const fmi2CallbackFunctions,
+    _visible: fmi2Boolean,
+    loggingOn: fmi2Boolean,
+) -> fmi2Component {
+    if functions.is_null() {
+        return std::ptr::null_mut();
+    }
+    // SAFETY: non-NULL; the master's struct is valid during the call and is copied by value
+    // (FMI 2.0.4 §2.1.5: the FMU must not rely on it afterwards).
+    let callbacks = unsafe { *functions };
+    if callbacks.logger.is_none() {
+        return std::ptr::null_mut();
+    }
+    let result = catch_unwind(AssertUnwindSafe(|| {
+        // SAFETY: NUL-terminated strings from the master, copied here.
+        let name = unsafe { string(instanceName) }.unwrap_or_default();
+        let logger = Logger::new(
+            callbacks.logger,
+            callbacks.componentEnvironment,
+            &name,
+            loggingOn != 0,
+            M::LOG_CATEGORIES,
+        );
+        if name.is_empty() {
+            logger.error("fmi2Instantiate: instanceName must not be NULL or empty.");
+            return std::ptr::null_mut();
+        }
+        if fmuType != fmi2Type_fmi2CoSimulation {
+            logger.error(&format!(
+                "fmi2Instantiate: fmuType = {fmuType}: this FMU supports co-simulation (fmi2CoSimulation = 1) only."
+            ));
+            return std::ptr::null_mut();
+        }
+        // SAFETY: as above.
+        let guid = unsafe { string(fmuGUID) }.unwrap_or_default();
+        if guid != M::GUID {
+            logger.error(&format!(
+                "fmi2Instantiate: Wrong GUID: expected {}, got \"{guid}\".",
+                M::GUID
+            ));
+            return std::ptr::null_mut();
+        }
+        logger.event(&format!("fmi2Instantiate: instance \"{name}\" created"));
+        Box::into_raw(Box::new(Instance::<M>::new(logger))).cast()
+    }));
+    result.unwrap_or(std::ptr::null_mut())
+}
+
+/// Frees an instance (NULL is a no-op); legal in every state.
+pub unsafe fn fmi2FreeInstance<M: Model>(c: fmi2Component) {
+    if !c.is_null() {
+        // SAFETY: c came from Box::into_raw in fmi2Instantiate and is freed once (FMI 2.0.4
+        // §2.1.5: no call on c after fmi2FreeInstance).
+        let instance = unsafe { Box::from_raw(c.cast::<Instance<M>>()) };
+        let _ = catch_unwind(AssertUnwindSafe(|| drop(instance)));
+    }
+}
+
+/// Switches debug logging and its categories (FMI 2.0.4 §2.1.5).
+pub unsafe fn fmi2SetDebugLogging<M: Model>(
+    c: fmi2Component,
+    loggingOn: fmi2Boolean,
+    nCategories: usize,
+    categories: *const fmi2String,
+) -> fmi2Status {
+    with_instance::<M>(c, Call::SetDebugLogging, |inst| {
+        // SAFETY: nCategories strings per FMI 2.0.4 §2.1.5.
+        let pointers = unsafe { slice(categories, nCategories, "categories") }?;
+        let mut names = Vec::with_capacity(pointers.len());
+        for &p in pointers {
+            // SAFETY: each is a NUL-terminated category name.
+            names.push(unsafe { string(p) }.ok_or(FmuError::Null("categories[i]"))?);
+        }
+        inst.logger
+            .set_debug_logging(loggingOn != 0, &names)
+            .map_err(FmuError::Invalid)?;
+        Ok(OK)
+    })
+}
+
+/// Stores the tolerance, start and stop time (FMI 2.0.4 §2.1.6).
+pub unsafe fn fmi2SetupExperiment<M: Model>(
+    c: fmi2Component,
+    toleranceDefined: fmi2Boolean,
+    tolerance: fmi2Real,
+    startTime: fmi2Real,
+    stopTimeDefined: fmi2Boolean,
+    stopTime: fmi2Real,
+) -> fmi2Status {
+    with_instance::<M>(c, Call::SetupExperiment, |inst| {
+        inst.model
+            .setup_experiment(
+                &inst.logger,
+                (toleranceDefined != 0).then_some(tolerance),
+                startTime,
+                (stopTimeDefined != 0).then_some(stopTime),
+            )
+            .map(ok)
+    })
+}
+
+/// Enters initialization mode.
+pub unsafe fn fmi2EnterInitializationMode<M: Model>(c: fmi2Component) -> fmi2Status {
+    with_instance::<M>(c, Call::EnterInitializationMode, |inst| {
+        inst.state = State::InitializationMode;
+        Ok(OK)
+    })
+}
+
+/// Builds the model from the parameters; outputs are valid afterwards.
+pub unsafe fn fmi2ExitInitializationMode<M: Model>(c: fmi2Component) -> fmi2Status {
+    with_instance::<M>(c, Call::ExitInitializationMode, |inst| {
+        inst.model.exit_initialization(&inst.logger)?;
+        inst.state = State::StepComplete;
+        Ok(OK)
+    })
+}
+
+/// Ends the simulation; outputs stay readable.
+pub unsafe fn fmi2Terminate<M: Model>(c: fmi2Component) -> fmi2Status {
+    with_instance::<M>(c, Call::Terminate, |inst| {
+        inst.state = State::Terminated;
+        Ok(OK)
+    })
+}
+
+/// Back to Instantiated with every start value.
+pub unsafe fn fmi2Reset<M: Model>(c: fmi2Component) -> fmi2Status {
+    with_instance::<M>(c, Call::Reset, |inst| {
+        inst.reset();
+        Ok(OK)
+    })
+}

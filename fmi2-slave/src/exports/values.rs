@@ -1,0 +1,197 @@
+//! Getting and setting values, their derivatives and directional derivatives.
+#![allow(unsafe_code, non_snake_case, clippy::missing_safety_doc)]
+
+use fmi_sys::fmi2::*;
+
+use super::codes::{OK, ok};
+use crate::error::FmuError;
+use crate::ffi::{slice, slice_mut, with_instance};
+use crate::model::Model;
+use crate::state::Call;
+
+/// Reads Real variables.
+pub unsafe fn fmi2GetReal<M: Model>(
+    c: fmi2Component,
+    vr: *const fmi2ValueReference,
+    nvr: usize,
+    value: *mut fmi2Real,
+) -> fmi2Status {
+    with_instance::<M>(c, Call::GetReal, |inst| {
+        // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
+        let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?) };
+        inst.model.get_real(&inst.logger, vr, value).map(ok)
+    })
+}
+
+/// Reads Integer variables (the switches among them).
+pub unsafe fn fmi2GetInteger<M: Model>(
+    c: fmi2Component,
+    vr: *const fmi2ValueReference,
+    nvr: usize,
+    value: *mut fmi2Integer,
+) -> fmi2Status {
+    with_instance::<M>(c, Call::GetInteger, |inst| {
+        // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
+        let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?) };
+        inst.model.get_integer(&inst.logger, vr, value).map(ok)
+    })
+}
+
+/// Reads Boolean variables.
+pub unsafe fn fmi2GetBoolean<M: Model>(
+    c: fmi2Component,
+    vr: *const fmi2ValueReference,
+    nvr: usize,
+    value: *mut fmi2Boolean,
+) -> fmi2Status {
+    with_instance::<M>(c, Call::GetBoolean, |inst| {
+        // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
+        let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?) };
+        inst.model.get_boolean(&inst.logger, vr, value).map(ok)
+    })
+}
+
+/// The FMU has no String variables: any value reference is an error.
+pub unsafe fn fmi2GetString<M: Model>(
+    c: fmi2Component,
+    vr: *const fmi2ValueReference,
+    nvr: usize,
+    value: *mut fmi2String,
+) -> fmi2Status {
+    with_instance::<M>(c, Call::GetString, |_| {
+        // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
+        let (vr, _) = unsafe { (slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?) };
+        match vr.first() {
+            Some(r) => Err(FmuError::Invalid(format!(
+                "value reference {r} is not a String variable"
+            ))),
+            None => Ok(OK),
+        }
+    })
+}
+
+/// Writes Real parameters (before initialization ends) and inputs.
+pub unsafe fn fmi2SetReal<M: Model>(
+    c: fmi2Component,
+    vr: *const fmi2ValueReference,
+    nvr: usize,
+    value: *const fmi2Real,
+) -> fmi2Status {
+    with_instance::<M>(c, Call::SetReal, |inst| {
+        // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
+        let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice(value, nvr, "value")?) };
+        inst.model.set_real(inst.state, vr, value).map(ok)
+    })
+}
+
+/// Writes Integer parameters, the switches among them (before initialization ends).
+pub unsafe fn fmi2SetInteger<M: Model>(
+    c: fmi2Component,
+    vr: *const fmi2ValueReference,
+    nvr: usize,
+    value: *const fmi2Integer,
+) -> fmi2Status {
+    with_instance::<M>(c, Call::SetInteger, |inst| {
+        // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
+        let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice(value, nvr, "value")?) };
+        inst.model.set_integer(inst.state, vr, value).map(ok)
+    })
+}
+
+/// No Boolean variable is settable: any value reference is an error.
+pub unsafe fn fmi2SetBoolean<M: Model>(
+    c: fmi2Component,
+    vr: *const fmi2ValueReference,
+    nvr: usize,
+    value: *const fmi2Boolean,
+) -> fmi2Status {
+    with_instance::<M>(c, Call::SetBoolean, |inst| {
+        // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
+        let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice(value, nvr, "value")?) };
+        inst.model.set_boolean(inst.state, vr, value).map(ok)
+    })
+}
+
+/// The FMU has no String variables: any value reference is an error.
+pub unsafe fn fmi2SetString<M: Model>(
+    c: fmi2Component,
+    vr: *const fmi2ValueReference,
+    nvr: usize,
+    value: *const fmi2String,
+) -> fmi2Status {
+    with_instance::<M>(c, Call::SetString, |_| {
+        // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
+        let (vr, _) = unsafe { (slice(vr, nvr, "vr")?, slice(value, nvr, "value")?) };
+        match vr.first() {
+            Some(r) => Err(FmuError::Invalid(format!(
+                "value reference {r} is not a String variable"
+            ))),
+            None => Ok(OK),
+        }
+    })
+}
+
+/// Not provided: error.
+pub unsafe fn fmi2GetDirectionalDerivative<M: Model>(
+    c: fmi2Component,
+    _vUnknown_ref: *const fmi2ValueReference,
+    _nUnknown: usize,
+    _vKnown_ref: *const fmi2ValueReference,
+    _nKnown: usize,
+    _dvKnown: *const fmi2Real,
+    _dvUnknown: *mut fmi2Real,
+) -> fmi2Status {
+    with_instance::<M>(c, Call::GetDirectionalDerivative, |_| {
+        Err(FmuError::Invalid(
+            "directional derivatives are not provided (providesDirectionalDerivative = false)"
+                .into(),
+        ))
+    })
+}
+
+/// Sets first or second time derivatives of inputs at the current communication point; the
+/// inputs are the resulting polynomials over the next communication step.
+pub unsafe fn fmi2SetRealInputDerivatives<M: Model>(
+    c: fmi2Component,
+    vr: *const fmi2ValueReference,
+    nvr: usize,
+    order: *const fmi2Integer,
+    value: *const fmi2Real,
+) -> fmi2Status {
+    with_instance::<M>(c, Call::SetRealInputDerivatives, |inst| {
+        // SAFETY: nvr elements each (FMI 2.0.4 §4.2.1).
+        let (vr, order, value) = unsafe {
+            (
+                slice(vr, nvr, "vr")?,
+                slice(order, nvr, "order")?,
+                slice(value, nvr, "value")?,
+            )
+        };
+        inst.model
+            .set_real_input_derivatives(vr, order, value)
+            .map(ok)
+    })
+}
+
+/// Time derivatives of the kinematic outputs at the current communication point.
+pub unsafe fn fmi2GetRealOutputDerivatives<M: Model>(
+    c: fmi2Component,
+    vr: *const fmi2ValueReference,
+    nvr: usize,
+    order: *const fmi2Integer,
+    value: *mut fmi2Real,
+) -> fmi2Status {
+    with_instance::<M>(c, Call::GetRealOutputDerivatives, |inst| {
+        // SAFETY: nvr elements each (FMI 2.0.4 §4.2.1).
+        let (vr, order, value) = unsafe {
+            (
+                slice(vr, nvr, "vr")?,
+                slice(order, nvr, "order")?,
+                slice_mut(value, nvr, "value")?,
+            )
+        };
+        inst.model
+            .get_real_output_derivatives(&inst.logger, vr, order, value)
+            .map(ok)
+    })
+}
