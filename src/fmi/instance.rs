@@ -5,6 +5,7 @@
 use fmi2_slave::model::{check_real, check_settable, check_step, lookup};
 use fmi2_slave::{FmuError, Logger, Model, State};
 
+use super::outputs::real_output;
 use super::snapshot::FmuSnapshot;
 use super::variables::{Causality, ENUMERATIONS, Kind, LOG_CATEGORIES, VARIABLES, Variable, Vr};
 use crate::error::ModelError;
@@ -269,36 +270,16 @@ impl Model for SliderCrankFmu {
                 *value = x;
                 continue;
             }
+            if let Some(x) = real_output(&o, v.vr) {
+                *value = x;
+                continue;
+            }
             let p = &self.parameters;
             *value = match v.vr {
                 Vr::JointContactStiffness => Simulation::contact_stiffness(p),
                 Vr::DriveSpeed => self.inputs.value.drive_speed,
                 Vr::DriveTorque => self.inputs.value.drive_torque,
                 Vr::SliderForce => self.inputs.value.slider_force,
-                Vr::CrankAngle => o.crank_angle,
-                Vr::CrankSpeed => o.crank_speed,
-                Vr::CrankTorque => o.crank_torque,
-                Vr::SliderPosition => o.slider_position,
-                Vr::SliderVelocity => o.slider_velocity,
-                Vr::SliderAcceleration => o.slider_acceleration,
-                Vr::JointForce => o.joint_force,
-                Vr::JointForceX => o.joint_force_x,
-                Vr::JointForceY => o.joint_force_y,
-                Vr::JointEccentricityX => o.eccentricity_x,
-                Vr::JointEccentricityY => o.eccentricity_y,
-                Vr::JointPenetration => o.penetration,
-                Vr::RodMidspanDeflection => o.midspan_deflection,
-                Vr::RodDeformationEnergy => o.deformation_energy,
-                Vr::EnergyKinetic => o.kinetic_energy,
-                Vr::EnergyDriveWork => o.drive_work,
-                Vr::EnergyDissipated => o.dissipated_energy,
-                Vr::JointForcePeak => o.joint_force_peak,
-                Vr::EnergyContact => o.contact_energy,
-                Vr::EnergyGravity => o.gravity_energy,
-                Vr::EnergySliderWork => o.slider_work,
-                Vr::EnergyMaterialDamping => o.material_damping,
-                Vr::SliderAccelerationPeak => o.slider_acceleration_peak,
-                Vr::RodDeformationEnergyPeak => o.deformation_energy_peak,
                 _ => unreachable_type(v)?,
             };
         }

@@ -10,6 +10,7 @@
 
 pub mod instance;
 pub mod model_description;
+pub mod outputs;
 pub mod snapshot;
 pub mod variables;
 

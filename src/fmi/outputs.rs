@@ -1,0 +1,36 @@
+//! The Real outputs of the FMU by value reference: the one list that maps each output row of the
+//! variable table to its field of [`Outputs`].
+
+use super::variables::Vr;
+use crate::simulation::Outputs;
+
+/// The value of a Real output, None for other variables.
+pub fn real_output(o: &Outputs, vr: Vr) -> Option<f64> {
+    Some(match vr {
+        Vr::CrankAngle => o.crank_angle,
+        Vr::CrankSpeed => o.crank_speed,
+        Vr::CrankTorque => o.crank_torque,
+        Vr::SliderPosition => o.slider_position,
+        Vr::SliderVelocity => o.slider_velocity,
+        Vr::SliderAcceleration => o.slider_acceleration,
+        Vr::JointForce => o.joint_force,
+        Vr::JointForceX => o.joint_force_x,
+        Vr::JointForceY => o.joint_force_y,
+        Vr::JointEccentricityX => o.eccentricity_x,
+        Vr::JointEccentricityY => o.eccentricity_y,
+        Vr::JointPenetration => o.penetration,
+        Vr::RodMidspanDeflection => o.midspan_deflection,
+        Vr::RodDeformationEnergy => o.deformation_energy,
+        Vr::EnergyKinetic => o.kinetic_energy,
+        Vr::EnergyDriveWork => o.drive_work,
+        Vr::EnergyDissipated => o.dissipated_energy,
+        Vr::JointForcePeak => o.joint_force_peak,
+        Vr::EnergyContact => o.contact_energy,
+        Vr::EnergyGravity => o.gravity_energy,
+        Vr::EnergySliderWork => o.slider_work,
+        Vr::EnergyMaterialDamping => o.material_damping,
+        Vr::SliderAccelerationPeak => o.slider_acceleration_peak,
+        Vr::RodDeformationEnergyPeak => o.deformation_energy_peak,
+        _ => return None,
+    })
+}
