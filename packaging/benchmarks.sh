@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# Re-runs the measurements of BENCHMARKS.md, each with the command its table names, and prints their
+# tables. Without arguments every section runs (about an hour and a half on the benchmark machine,
+# the fuzzing half an hour per target of it); with arguments only the named ones:
+#
+#   bash packaging/benchmarks.sh [fmu] [native] [impacts] [integrators] [accuracy] [criterion]
+#                                [modes] [coupling] [system] [dask] [space] [platforms] [fuzz]
+#
+# Needs the packaged FMU and the venv (the README's first command makes both). Figures vary with the
+# machine's load: compare ratios within one table, measured in one run.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+py=.venv/bin/python
+fmu=target/fmu/FlexibleSliderCrank.fmu
+all=(fmu native impacts integrators accuracy criterion modes coupling system dask space platforms fuzz)
+sections=("$@")
+[ ${#sections[@]} -eq 0 ] && sections=("${all[@]}")
+
+[ -x "$py" ] && [ -f "$fmu" ] || { echo "run the README's first command first (venv and FMU)" >&2; exit 1; }
+for s in "${sections[@]}"; do
+  echo
+  echo "== $s ($(date -u +%F))"
+  case "$s" in
+    fmu) "$py" packaging/python/benchmark.py "$fmu" ;;
+    native) cargo run --release --quiet --example fmu_loop ;;
+    impacts)
+      cargo run --release --quiet --example impacts
+      cargo run --release --quiet --example impacts 3e-3 ;;
+    integrators) cargo run --release --quiet --example integrators ;;
+    accuracy) cargo run --release --quiet --example accuracy 1e-2 3e-2 ;;
+    criterion)
+      cargo bench --bench evaluation -- --warm-up-time 0.5 --measurement-time 2
+      cargo bench --bench element -- --warm-up-time 0.5 --measurement-time 1
+      cargo bench --bench step ;;
+    modes) cargo run --release --quiet --example mode_study ;;
+    coupling) "$py" packaging/python/coupling_benchmark.py "$fmu" ;;
+    system) "$py" packaging/python/system.py ;;
+    dask) "$py" packaging/python/sweep_benchmark.py "$fmu" ;;
+    space)
+      "$py" packaging/python/parameter_space.py
+      "$py" packaging/python/parameter_space.py --listed ;;
+    platforms) bash packaging/release.sh ;;
+    fuzz) bash packaging/fuzz.sh 1800 ;;
+    *) echo "unknown section $s (one of: ${all[*]})" >&2; exit 1 ;;
+  esac
+done
