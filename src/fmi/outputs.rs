@@ -34,3 +34,25 @@ pub fn real_output(o: &Outputs, vr: Vr) -> Option<f64> {
         _ => return None,
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::fmi::variables::{Causality, Kind, VARIABLES};
+
+    /// Exactly the Real outputs of the table have an entry.
+    #[test]
+    fn every_real_output_and_nothing_else_has_a_value() {
+        let o = Outputs::default();
+        for v in VARIABLES {
+            let real_output_row =
+                v.causality == Causality::Output && matches!(v.kind, Kind::Real { .. });
+            assert_eq!(
+                real_output(&o, v.vr).is_some(),
+                real_output_row,
+                "{}",
+                v.name
+            );
+        }
+    }
+}

@@ -1,8 +1,10 @@
 //! THE variable table of the FMU: one row per FMI variable, in value-reference order.
 //!
 //! This file is plain data over the table types of `fmi2-slave`: `build.rs` compiles it too and
-//! renders `modelDescription.xml` from [`DESCRIPTION`], and the FMI layer gets and sets values
-//! through an exhaustive `match` on [`Vr`], so the code and the XML cannot disagree.
+//! renders `modelDescription.xml` from [`DESCRIPTION`], the library validates parameters against
+//! its ranges, and values are got and set through one list per kind keyed by [`Vr`] (parameters in
+//! `params::access`, Real outputs in `fmi::outputs`), each tested to cover exactly its rows, so the
+//! code and the XML cannot disagree.
 
 pub use fmi2_slave::description::Description;
 pub use fmi2_slave::table::{Causality, Enumeration, Kind, ValueReference, Variability};
