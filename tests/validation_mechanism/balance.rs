@@ -1,0 +1,131 @@
+//! The energy outputs close the balance, and the balance converges with the tolerance.
+
+use super::*;
+
+/// The energy account from the outputs alone: energy.kinetic + rod.deformationEnergy +
+/// energy.contact + energy.gravity + energy.dissipated + energy.materialDamping −
+/// energy.driveWork − energy.sliderWork, constant in exact arithmetic.
+fn output_balance(o: &Outputs) -> f64 {
+    o.kinetic_energy
+        + o.deformation_energy
+        + o.contact_energy
+        + o.gravity_energy
+        + o.dissipated_energy
+        + o.material_damping
+        - o.drive_work
+        - o.slider_work
+}
+
+/// Largest |balance(t) − balance(0)| of the outputs over a run, relative to the largest kinetic
+/// energy.
+fn output_balance_residual(rows: &[Outputs]) -> f64 {
+    let kinetic = rows.iter().fold(0.0f64, |m, o| m.max(o.kinetic_energy));
+    let start = output_balance(&rows[0]);
+    rows.iter()
+        .fold(0.0f64, |m, o| m.max((output_balance(o) - start).abs()))
+        / kinetic
+}
+
+/// Energy account: from the outputs alone the balance closes with the dry joint and
+/// gravity (before energy.contact was an output, it was off by 2.6e-3 of the kinetic energy on
+/// benchmark B).
+#[test]
+fn energy_outputs_close_the_balance() {
+    let p = Parameters {
+        gravity: 9.81,
+        relative_tolerance: 1e-8,
+        ..Parameters::default()
+    };
+    let (_, rows) = run(p, REVOLUTION, 200);
+    let kinetic = rows.iter().fold(0.0f64, |m, o| m.max(o.kinetic_energy));
+    let contact = rows.iter().fold(0.0f64, |m, o| m.max(o.contact_energy));
+    let residual = output_balance_residual(&rows);
+    println!(
+        "outputs' energy balance over one revolution: residual {residual:.1e} of the kinetic \
+         energy (largest contact energy {contact:.3} J)"
+    );
+    assert!(contact > 1e-3 * kinetic);
+    assert!(residual < 1e-6, "{residual:e}");
+}
+
+/// The outputs' energy-balance residual over one revolution falls at least
+/// 100× from rtol 1e-4 to 1e-8 on benchmarks A, B (4 modes and full), C, with the torque drive
+/// and a slider force, with friction 0.1, with gravity 9.81 and with material damping 1e-5 s
+/// (the work integrals are states under the same error control as the motion).
+#[test]
+fn energy_balance_converges_with_the_tolerance() {
+    let cases = [
+        ("A", Parameters::benchmark_a(), 0.0, 0.0),
+        ("B, 4 modes", Parameters::default(), 0.0, 0.0),
+        ("B, full rod", Parameters::benchmark_b(), 0.0, 0.0),
+        ("C", Parameters::benchmark_c(), 0.0, 0.0),
+        (
+            "torque drive 20 N m, slider force -500 N",
+            Parameters {
+                drive_mode: DriveMode::Torque,
+                ..Parameters::default()
+            },
+            20.0,
+            -500.0,
+        ),
+        (
+            "friction 0.1",
+            Parameters {
+                friction: 0.1,
+                ..Parameters::default()
+            },
+            0.0,
+            0.0,
+        ),
+        (
+            "gravity 9.81",
+            Parameters {
+                gravity: 9.81,
+                ..Parameters::default()
+            },
+            0.0,
+            0.0,
+        ),
+        (
+            "material damping 1e-5 s",
+            Parameters {
+                rod: RodProperties {
+                    stiffness_damping: 1e-5,
+                    ..RodProperties::benchmark_b()
+                },
+                ..Parameters::default()
+            },
+            0.0,
+            0.0,
+        ),
+    ];
+    for (name, p, torque, slider_force) in cases {
+        let residual = |rtol: f64| {
+            let mut sim = Simulation::new(Parameters {
+                relative_tolerance: rtol,
+                ..p.clone()
+            })
+            .unwrap();
+            sim.set_input(Input::DriveTorque, torque);
+            sim.set_input(Input::SliderForce, slider_force);
+            let mut rows = vec![sim.outputs().unwrap()];
+            for i in 1..=60 {
+                sim.advance_to(REVOLUTION * f64::from(i) / 60.0).unwrap();
+                rows.push(sim.outputs().unwrap());
+            }
+            let last = rows[rows.len() - 1];
+            (output_balance_residual(&rows), last)
+        };
+        let (coarse, _) = residual(1e-4);
+        let (fine, last) = residual(1e-8);
+        println!(
+            "{name}: residual {coarse:.2e} at rtol 1e-4, {fine:.2e} at 1e-8 ({:.0}×); \
+             dissipated {:.3e} J, material damping {:.3e} J, slider work {:.3e} J",
+            coarse / fine,
+            last.dissipated_energy,
+            last.material_damping,
+            last.slider_work
+        );
+        assert!(fine * 100.0 <= coarse, "{name}: {coarse:e} → {fine:e}");
+    }
+}
