@@ -116,3 +116,16 @@ def test_no_long_source_file():
             if lines > MAX_LINES and name not in TABLES:
                 long.append(f"{name}: {lines} lines")
     assert not long, "\n".join(long)
+
+
+def test_the_fmi_layer_sees_only_the_simulation_facade():
+    """The slider-crank's FMI model imports the simulation, the parameters and the error type (what
+    the library's root re-exports), never the physics modules behind them."""
+    files = modules("src")
+    facade = {"simulation", "simulation::codec", "params", "error"}
+    found = []
+    for module, targets in imports(files).items():
+        if module == "fmi" or module.startswith("fmi::"):
+            outside = {t for t in targets if not (t == "fmi" or t.startswith("fmi::"))} - facade
+            found += [f"{module} imports {t}" for t in sorted(outside)]
+    assert not found, "\n".join(found)
