@@ -84,14 +84,14 @@ pub struct Rod {
 }
 
 impl Rod {
-    /// A rod of `n_elements` ∈ [1, 64] equal elements.
+    /// A rod of `n_elements` ∈ [1, [`MAX_ELEMENTS`]] equal elements.
     pub fn new(properties: RodProperties, n_elements: usize) -> Result<Self, ModelError> {
         properties.validate()?;
         if !(1..=MAX_ELEMENTS).contains(&n_elements) {
             return Err(ModelError::invalid(
                 "rod.nElements",
                 n_elements as f64,
-                "[1, 64]",
+                format!("[1, {MAX_ELEMENTS}]"),
             ));
         }
         let p = &properties;
