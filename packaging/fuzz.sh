@@ -6,20 +6,27 @@
 #
 #   bash packaging/fuzz.sh [seconds]
 #
-# Needs the nightly toolchain (for the address sanitizer) and installs cargo-fuzz if missing.
+# With the nightly toolchain the targets are built with the address sanitizer; without it (a machine
+# with the stable toolchain only) they are built without a sanitizer, still coverage-guided. Installs
+# cargo-fuzz if missing.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
 mkdir -p target
 
-if ! rustup run nightly rustc --version >/dev/null 2>&1; then
-  rustup toolchain install nightly --profile minimal
+if rustup run nightly rustc --version >/dev/null 2>&1; then
+  fuzz=(cargo +nightly fuzz)
+  sanitizer=address
+else
+  fuzz=(cargo +stable fuzz)
+  sanitizer=none
 fi
 command -v cargo-fuzz >/dev/null 2>&1 || cargo install cargo-fuzz --locked --quiet
 
 cargo fmt --manifest-path fuzz/Cargo.toml --all -- --check
 cargo clippy --quiet --manifest-path fuzz/Cargo.toml --all-targets -- -D warnings
-if ! cargo +nightly fuzz build --fuzz-dir fuzz >target/fuzz-build.log 2>&1; then
+echo "== fuzz targets built with sanitizer: $sanitizer"
+if ! "${fuzz[@]}" build -s "$sanitizer" --fuzz-dir fuzz >target/fuzz-build.log 2>&1; then
   cat target/fuzz-build.log >&2
   exit 1
 fi
@@ -27,7 +34,7 @@ for target in fmu_state call_sequence; do
   scratch=$(mktemp -d)
   echo "== fuzz $target for ${seconds} s"
   status=0
-  cargo +nightly fuzz run --fuzz-dir fuzz "$target" "$scratch" "fuzz/corpus/$target" -- \
+  "${fuzz[@]}" run -s "$sanitizer" --fuzz-dir fuzz "$target" "$scratch" "fuzz/corpus/$target" -- \
     -max_total_time="$seconds" -rss_limit_mb=4096 -print_final_stats=1 \
     >"target/fuzz-$target.log" 2>&1 || status=$?
   rm -rf "$scratch"
