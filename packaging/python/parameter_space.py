@@ -51,7 +51,7 @@ STEP = 1e-4
 BALANCE = {"energy.kinetic": 1, "rod.deformationEnergy": 1, "energy.contact": 1,
            "energy.gravity": 1, "energy.dissipated": 1, "energy.materialDamping": 1,
            "energy.driveWork": -1, "energy.sliderWork": -1}
-#: Validity-monitor bounds (src/simulation.rs, `validity`), with the word their warning contains.
+#: Validity-monitor bounds (src/simulation/validity.rs), with the word their warning contains.
 MONITORS = {"penetration": 0.01, "deflection": 0.05, "crank speed": 1.01e4, "slider position": 0.01}
 
 #: The documented edge cases, each with the variables it changes (and a longer run where whole
