@@ -212,6 +212,19 @@ impl SliderCrank {
         self.contact = contact;
     }
 
+    /// Runs `f` on the mechanism with the discrete contact state `contact` (e.g. the one a step
+    /// was integrated with, or the one at a time inside it) and restores the current one after.
+    pub fn with_contact_state<R>(
+        &mut self,
+        contact: ContactState,
+        f: impl FnOnce(&mut Self) -> R,
+    ) -> R {
+        let current = std::mem::replace(&mut self.contact, contact);
+        let result = f(self);
+        self.contact = current;
+        result
+    }
+
     /// The inputs as functions of time.
     pub fn input_signal(&self) -> &InputSignal {
         &self.signal

@@ -301,21 +301,20 @@ impl Simulation {
             self.state.copy_from_slice(&self.y_end);
         } else {
             let h = self.step_end - self.step_start;
-            let contact = self.mechanism.contact_state();
-            self.mechanism.set_contact_state(self.contact_start);
-            let dense = self.integrator.state_within(
-                &mut self.mechanism,
-                self.step_start,
-                h,
-                &self.y_start,
-                &self.f_start,
-                &self.y_end,
-                &self.f_end,
-                (t_end - self.step_start) / h,
-                &mut self.state,
-            );
-            self.mechanism.set_contact_state(contact);
-            dense?;
+            self.mechanism
+                .with_contact_state(self.contact_start, |mechanism| {
+                    self.integrator.state_within(
+                        mechanism,
+                        self.step_start,
+                        h,
+                        &self.y_start,
+                        &self.f_start,
+                        &self.y_end,
+                        &self.f_end,
+                        (t_end - self.step_start) / h,
+                        &mut self.state,
+                    )
+                })?;
             self.check_validity(false);
         }
         Ok(())
@@ -406,38 +405,31 @@ impl Simulation {
 
     /// Energies of the current state.
     pub fn energies(&mut self) -> Energies {
-        let contact = self.mechanism.contact_state();
-        self.mechanism.set_contact_state(self.contact_now());
-        let energies = self.mechanism.energies(&self.state);
-        self.mechanism.set_contact_state(contact);
-        energies
+        let (contact, state) = (self.contact_now(), &self.state);
+        self.mechanism
+            .with_contact_state(contact, |mechanism| mechanism.energies(state))
     }
 
     /// Outputs at the current time (one right-hand-side evaluation, no allocation).
     pub fn outputs(&mut self) -> Result<Outputs, ModelError> {
-        let contact = self.mechanism.contact_state();
-        self.mechanism.set_contact_state(self.contact_now());
-        let outputs = self.outputs_here();
-        self.mechanism.set_contact_state(contact);
-        outputs
-    }
-
-    fn outputs_here(&mut self) -> Result<Outputs, ModelError> {
-        // The inputs as set now (an output with direct feedthrough shows a value just set).
-        let current = *self.mechanism.input_signal();
-        let next = InputSignal {
+        let contact = self.contact_now();
+        let inputs = InputSignal {
             start: self.time,
             ..self.next
         };
-        self.mechanism.set_input_signal(next, self.time);
-        let outputs = outputs::outputs(
-            &mut self.mechanism,
-            self.time,
-            &self.state,
-            &mut self.scratch,
-            &self.peaks,
-            self.monitor.total,
-        );
+        // The inputs as set now (an output with direct feedthrough shows a value just set).
+        let current = *self.mechanism.input_signal();
+        self.mechanism.set_input_signal(inputs, self.time);
+        let outputs = self.mechanism.with_contact_state(contact, |mechanism| {
+            outputs::outputs(
+                mechanism,
+                self.time,
+                &self.state,
+                &mut self.scratch,
+                &self.peaks,
+                self.monitor.total,
+            )
+        });
         self.mechanism.set_input_signal(current, self.time);
         outputs
     }

@@ -112,7 +112,18 @@ pub(super) fn within_step(
         return Peaks::default();
     }
     // The contact state the step was integrated with (an onset inside it is latched at its end).
-    mechanism.set_contact_state(step.contact_start);
+    mechanism.with_contact_state(step.contact_start, |mechanism| {
+        largest_loads(mechanism, step, sample)
+    })
+}
+
+/// The largest |joint force|, |slider acceleration| and deformation energy among the samples of
+/// the step and at the vertex of the parabola through each largest sample and its neighbours.
+fn largest_loads(
+    mechanism: &mut SliderCrank,
+    step: &AcceptedStep<'_>,
+    sample: &mut [f64],
+) -> Peaks {
     let mut samples = [[0.0; PEAK_SAMPLES + 2]; 3];
     for k in 0..PEAK_SAMPLES + 2 {
         for (series, value) in samples
@@ -129,7 +140,6 @@ pub(super) fn within_step(
             largest[i] = largest[i].max(load_within(mechanism, step, sample, k)[i]);
         }
     }
-    mechanism.set_contact_state(end_contact);
     Peaks {
         joint_force: largest[0],
         slider_acceleration: largest[1],
