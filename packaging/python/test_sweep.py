@@ -72,6 +72,26 @@ def test_local_cluster_equals_serial_runs(tmp_path):
         assert kept["slider.position"] == list(series["slider.position"])
 
 
+def test_the_unpacked_fmu_is_removed_when_the_worker_ends(tmp_path):
+    """A worker process unpacks the FMU once into a temporary directory and removes it when it
+    exits."""
+    code = f"""
+import sys
+sys.path.insert(0, {str(Path(__file__).resolve().parent)!r})
+from fsc import study as study_mod
+from fsc.runner import run_case
+study = study_mod.load({str(write_study(tmp_path, SMALL))!r})
+run_case(study.fmu.read_bytes(), study.guid, dict(study.cases[0]), study.stop_time,
+         study.output_interval, study.series)
+from fsc.runner import _unpacked
+print(next(iter(_unpacked.values()))[0])
+"""
+    out = subprocess.run([PYTHON, "-c", code], capture_output=True, text=True, check=True)
+    directory = Path(out.stdout.strip().splitlines()[-1])
+    assert directory.name.startswith("fsc-")
+    assert not directory.exists()
+
+
 def test_reused_instance_equals_fresh_simulate_fmu(tmp_path):
     """The runner resets one FMU instance per worker between cases (fmpy's efficient loop): every
     case, also one after a failing case and after a change of rod model, gives bit for bit the

@@ -7,8 +7,10 @@ modelDescription and its FMU instances for every later case: an idle instance is
 (one instance per thread that runs cases at the same time), and an instance whose case failed is
 discarded.
 """
+import atexit
 import itertools
 import os
+import shutil
 import tempfile
 import time
 import zipfile
@@ -74,6 +76,8 @@ def unpacked(fmu_bytes: bytes, guid: str):
     """The FMU unpacked in this process (once per GUID) and its model description."""
     if guid not in _unpacked:
         directory = tempfile.mkdtemp(prefix=f"fsc-{os.getpid()}-")
+        # Removed when the worker process ends (the instances use the library until then).
+        atexit.register(shutil.rmtree, directory, True)
         with zipfile.ZipFile(BytesIO(fmu_bytes)) as z:
             z.extractall(directory)
         md = read_model_description(directory)
