@@ -9,7 +9,7 @@
 use std::ffi::{CString, c_char};
 use std::ptr;
 
-use flexible_slider_crank::fmi::variables::{Kind, VARIABLES};
+use flexible_slider_crank::fmi::variables::{ENUMERATIONS, Kind, VARIABLES};
 use flexible_slider_crank::fmi::{self, GUID};
 use fmi_sys::fmi2::*;
 
@@ -305,7 +305,10 @@ pub fn value_for(vr: u32, pick: u8, raw: f64) -> f64 {
             f64::from(min),
             f64::from(max),
         ),
-        Some(Kind::Enumeration { start, .. }) => (f64::from(start), 1.0, 3.0),
+        Some(Kind::Enumeration { start, type_index }) => {
+            let items = ENUMERATIONS.get(type_index).map_or(1, |e| e.items.len());
+            (f64::from(start), 1.0, items as f64)
+        }
         _ => (0.0, 0.0, 1.0),
     };
     match pick % 10 {

@@ -5,6 +5,7 @@
 //! or model is rejected), every parameter in table order, inputs, clock, the simulation snapshot.
 
 use fmi2_slave::FmuError;
+use fmi2_slave::model::check_real;
 
 use super::variables::{Causality, Kind, VARIABLES, Vr};
 use crate::params::{
@@ -41,22 +42,14 @@ fn parameter_count() -> u32 {
         .count() as u32
 }
 
-/// `value` checked against the declared range of variable `vr` (finite, within [min, max]).
+/// `value` checked against the declared range of variable `vr`, as fmi2SetReal checks it.
 fn check_range(vr: Vr, value: f64) -> Result<(), FmuError> {
-    let v = &VARIABLES[vr as usize];
-    let (min, max) = match v.kind {
-        Kind::Real { min, max, .. } => (min, max),
-        Kind::Integer { min, max, .. } => (f64::from(min), f64::from(max)),
-        _ => (f64::NEG_INFINITY, f64::INFINITY),
-    };
-    if value.is_finite() && min <= value && value <= max {
-        Ok(())
-    } else {
-        Err(FmuError::Invalid(format!(
-            "FMU state rejected: {} = {value:e} is outside the allowed range [{min:e}, {max:e}]",
-            v.name
-        )))
-    }
+    check_real(&VARIABLES[vr as usize], value).map_err(|e| rejected(&e.to_string()))
+}
+
+/// The error for a state that cannot be restored, saying why.
+fn rejected(what: &str) -> FmuError {
+    FmuError::Invalid(format!("FMU state rejected: {what}"))
 }
 
 impl From<CodecError> for FmuError {
@@ -71,39 +64,31 @@ impl FmuSnapshot {
     /// simulation's inputs equal to the instance's, and (once the model is built) consistent
     /// parameters.
     pub fn validate(&self) -> Result<(), FmuError> {
-        for v in VARIABLES
-            .iter()
-            .filter(|v| v.causality == Causality::Parameter)
-        {
-            let value = match v.kind {
-                Kind::Real { .. } => real_parameter(&self.parameters, v.vr),
-                _ => integer_parameter(&self.parameters, v.vr).map(f64::from),
-            };
-            if let Some(value) = value {
-                check_range(v.vr, value)?;
-            }
-        }
+        self.parameters
+            .check_declared_ranges()
+            .map_err(|e| rejected(&e.to_string()))?;
         let i = &self.inputs;
         check_range(Vr::DriveSpeed, i.value.drive_speed)?;
         check_range(Vr::DriveTorque, i.value.drive_torque)?;
         check_range(Vr::SliderForce, i.value.slider_force)?;
-        let bad = |what: &str| Err(FmuError::Invalid(format!("FMU state rejected: {what}")));
         let times = [self.start_time, self.time, self.last_successful_time];
         if times.iter().any(|t| !t.is_finite()) || self.stop_time.is_some_and(|t| !t.is_finite()) {
-            return bad("a non-finite time");
+            return Err(rejected("a non-finite time"));
         }
         if self.tolerance.is_some_and(|t| !(t.is_finite() && t > 0.0)) {
-            return bad("a tolerance that is not a finite positive number");
+            return Err(rejected("a tolerance that is not a finite positive number"));
         }
         if let Some(s) = &self.simulation {
             self.parameters
                 .validate()
                 .map_err(|e| FmuError::Invalid(format!("FMU state rejected: {e}")))?;
             if !s.is_finite() {
-                return bad("a non-finite simulation time, state or input");
+                return Err(rejected("a non-finite simulation time, state or input"));
             }
             if (s.next.value, s.next.derivatives) != (i.value, i.derivatives) {
-                return bad("the simulation's inputs differ from the instance's");
+                return Err(rejected(
+                    "the simulation's inputs differ from the instance's",
+                ));
             }
         }
         Ok(())
@@ -140,11 +125,10 @@ impl FmuSnapshot {
     /// Parses bytes written by [`FmuSnapshot::write`] (ranges are checked by
     /// [`FmuSnapshot::validate`]).
     pub fn read(body: &[u8]) -> Result<Self, FmuError> {
-        let bad = |what: String| FmuError::Invalid(format!("FMU state rejected: {what}"));
         let mut r = ByteReader::new(body);
         let count = r.u32()?;
         if count != parameter_count() {
-            return Err(bad(format!(
+            return Err(rejected(&format!(
                 "{count} parameters, this FMU has {}",
                 parameter_count()
             )));
@@ -160,11 +144,11 @@ impl FmuSnapshot {
                 _ => set_integer_parameter(&mut parameters, v.vr, r.u32()? as i32),
             };
             if !ok {
-                return Err(bad(format!("invalid value of {}", v.name)));
+                return Err(rejected(&format!("invalid value of {}", v.name)));
             }
         }
         if parameters.n_modes as u32 != n_modes {
-            return Err(bad(format!(
+            return Err(rejected(&format!(
                 "nModes {} in the header, {} in the parameters",
                 n_modes, parameters.n_modes
             )));
@@ -183,7 +167,7 @@ impl FmuSnapshot {
             None
         };
         if r.remaining() != 0 {
-            return Err(bad(format!("{} trailing bytes", r.remaining())));
+            return Err(rejected(&format!("{} trailing bytes", r.remaining())));
         }
         Ok(Self {
             parameters,

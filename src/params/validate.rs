@@ -131,8 +131,9 @@ impl Parameters {
     }
 
     /// Every parameter within the [min, max] its row of the variable table declares (NaN never
-    /// is); the error quotes the bounds as the FMU does.
-    fn check_declared_ranges(&self) -> Result<(), ModelError> {
+    /// is); the error quotes the bounds as the FMU does. Rules between parameters are not checked
+    /// (a parameter set still being entered may break them).
+    pub fn check_declared_ranges(&self) -> Result<(), ModelError> {
         for v in VARIABLES
             .iter()
             .filter(|v| v.causality == Causality::Parameter)
