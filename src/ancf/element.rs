@@ -193,6 +193,17 @@ impl Element {
         )
     }
 
+    /// Axial strain ε = |r'| − 1 at a Gauss point (the energy alone, without derivatives).
+    fn strain_at(p: &GaussPoint, e: &ElementVector) -> f64 {
+        field(&p.s_x, e).norm() - 1.0
+    }
+
+    /// Curvature κ = (r' × r'')/|r'|² at a Gauss point (the energy alone, without derivatives).
+    fn curvature_at(p: &GaussPoint, e: &ElementVector) -> f64 {
+        let r_x = field(&p.s_x, e);
+        cross(r_x, field(&p.s_xx, e)) / r_x.norm_squared()
+    }
+
     fn axial_at(p: &GaussPoint, e: &ElementVector) -> Axial {
         let r_x = field(&p.s_x, e);
         let norm = r_x.norm();
@@ -328,12 +339,12 @@ impl Element {
         let axial: f64 = self
             .axial
             .iter()
-            .map(|p| p.weight * ea * Self::axial_at(p, e).eps.powi(2))
+            .map(|p| p.weight * ea * Self::strain_at(p, e).powi(2))
             .sum();
         let bending: f64 = self
             .bending
             .iter()
-            .map(|p| p.weight * ei * Self::bending_at(p, e).kappa.powi(2))
+            .map(|p| p.weight * ei * Self::curvature_at(p, e).powi(2))
             .sum();
         0.5 * (axial + bending)
     }
