@@ -43,7 +43,8 @@ impl Tolerances {
 }
 
 /// Per-component weights of the error norm: component i is compared with
-/// `absolute · absolute[i] + relative · relative[i] · |yᵢ|`.
+/// `absolute · absolute[i] + relative · relative[i] · |yᵢ|`, and each [`HeldDifference`] with
+/// `absolute · scale` on its own.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ErrorScales {
     /// Scale of each component's absolute tolerance, in its units.
@@ -51,6 +52,22 @@ pub struct ErrorScales {
     /// Weight of each component's relative tolerance (1: relative to its size, 0: absolute only,
     /// for quantities whose size depends on an arbitrary origin, such as positions).
     pub relative: Vec<f64>,
+    /// Quantities held to the tolerance each on its own (max-norm), besides the RMS over all
+    /// components.
+    pub held: Vec<HeldDifference>,
+}
+
+/// A component yᵢ, or a difference yᵢ − yⱼ, whose local error is held to `absolute · scale` on
+/// its own: for a quantity that is a small part of the state but decides the motion, such as the
+/// journal's velocity in its bearing, which the RMS over all components would let drift.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HeldDifference {
+    /// i.
+    pub component: usize,
+    /// j (`None`: yᵢ alone).
+    pub minus: Option<usize>,
+    /// Scale of its absolute tolerance, in its units.
+    pub scale: f64,
 }
 
 impl ErrorScales {
@@ -59,6 +76,7 @@ impl ErrorScales {
         Self {
             absolute: vec![1.0; n],
             relative: vec![1.0; n],
+            held: Vec::new(),
         }
     }
 
@@ -95,7 +113,8 @@ pub struct Stats {
     pub factorizations: u64,
 }
 
-/// The error norm: RMS over i of err_i / [`ErrorScales`] weight, or ∞ when not finite.
+/// The error norm: RMS over i of err_i / [`ErrorScales`] weight, at least the largest
+/// [`HeldDifference`] in units of its tolerance, or ∞ when not finite.
 pub(super) fn scaled_norm(
     err: &[f64],
     y0: &[f64],
@@ -107,7 +126,11 @@ pub(super) fn scaled_norm(
     for (i, ((e, a), b)) in err.iter().zip(y0).zip(y1).enumerate() {
         sum += (e / scales.weight(i, tol, *a, *b)).powi(2);
     }
-    let norm = (sum / err.len().max(1) as f64).sqrt();
+    let mut norm = (sum / err.len().max(1) as f64).sqrt();
+    for held in &scales.held {
+        let e = err[held.component] - held.minus.map_or(0.0, |j| err[j]);
+        norm = norm.max(e.abs() / (tol.absolute * held.scale));
+    }
     if norm.is_finite() {
         norm
     } else {

@@ -8,6 +8,7 @@
 mod balance;
 mod contract;
 mod domain;
+mod impacts;
 mod joints;
 mod motion;
 
