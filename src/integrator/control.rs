@@ -43,7 +43,7 @@ impl Tolerances {
 }
 
 /// Per-component weights of the error norm: component i is compared with
-/// `absolute · absolute[i] + relative · relative[i] · |yᵢ|`, and each [`HeldDifference`] with
+/// `absolute · absolute[i] + relative · relative[i] · |yᵢ|`, and each [`HeldProjection`] with
 /// `absolute · scale` on its own.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ErrorScales {
@@ -54,20 +54,55 @@ pub struct ErrorScales {
     pub relative: Vec<f64>,
     /// Quantities held to the tolerance each on its own (max-norm), besides the RMS over all
     /// components.
-    pub held: Vec<HeldDifference>,
+    pub held: Vec<HeldProjection>,
 }
 
-/// A component yᵢ, or a difference yᵢ − yⱼ, whose local error is held to `absolute · scale` on
-/// its own: for a quantity that is a small part of the state but decides the motion, such as the
-/// journal's velocity in its bearing, which the RMS over all components would let drift.
+/// A planar vector made of state components: (y\[x\] − y\[x_offset\], y\[y\]), the offset
+/// optional.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct HeldDifference {
-    /// i.
-    pub component: usize,
-    /// j (`None`: yᵢ alone).
-    pub minus: Option<usize>,
-    /// Scale of its absolute tolerance, in its units.
+pub struct PlanarVector {
+    /// Index of the x component.
+    pub x: usize,
+    /// Index of the y component.
+    pub y: usize,
+    /// Index of a component subtracted from the x component.
+    pub x_offset: Option<usize>,
+}
+
+impl PlanarVector {
+    /// The vector's value in `y`.
+    fn of(&self, y: &[f64]) -> (f64, f64) {
+        (y[self.x] - self.x_offset.map_or(0.0, |j| y[j]), y[self.y])
+    }
+}
+
+/// The component of a planar rate along the direction of a planar position, whose local error is
+/// held to `absolute · scale` on its own: for a quantity that is a small part of the state but
+/// decides the motion, such as the journal's normal velocity in its bearing, which the RMS over
+/// all components would let drift. The direction is the position's at the end of the step (the
+/// error's magnitude when the position is zero).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HeldProjection {
+    /// The position whose direction the rate is projected on.
+    pub position: PlanarVector,
+    /// The rate.
+    pub rate: PlanarVector,
+    /// Scale of its absolute tolerance, in the rate's units.
     pub scale: f64,
+}
+
+impl HeldProjection {
+    /// |local error of the projected rate| for the error estimate `err` of a step ending at `y`.
+    fn error(&self, err: &[f64], y: &[f64]) -> f64 {
+        let (px, py) = self.position.of(y);
+        let (ex, ey) = self.rate.of(err);
+        let length = (px * px + py * py).sqrt();
+        if length > 0.0 {
+            (px * ex + py * ey).abs() / length
+        } else {
+            (ex * ex + ey * ey).sqrt()
+        }
+    }
 }
 
 impl ErrorScales {
@@ -114,7 +149,7 @@ pub struct Stats {
 }
 
 /// The error norm: RMS over i of err_i / [`ErrorScales`] weight, at least the largest
-/// [`HeldDifference`] in units of its tolerance, or ∞ when not finite.
+/// [`HeldProjection`] in units of its tolerance, or ∞ when not finite.
 pub(super) fn scaled_norm(
     err: &[f64],
     y0: &[f64],
@@ -128,8 +163,7 @@ pub(super) fn scaled_norm(
     }
     let mut norm = (sum / err.len().max(1) as f64).sqrt();
     for held in &scales.held {
-        let e = err[held.component] - held.minus.map_or(0.0, |j| err[j]);
-        norm = norm.max(e.abs() / (tol.absolute * held.scale));
+        norm = norm.max(held.error(err, y1) / (tol.absolute * held.scale));
     }
     if norm.is_finite() {
         norm

@@ -46,7 +46,7 @@ mod generalized_alpha;
 mod implicit;
 mod system;
 
-pub use control::{ErrorScales, HeldDifference, Stats, Tolerances};
+pub use control::{ErrorScales, HeldProjection, PlanarVector, Stats, Tolerances};
 
 pub use dormand_prince::DormandPrince;
 pub use esdirk::{ESDIRK54, Tableau};
