@@ -149,9 +149,10 @@ pub struct Stats {
 }
 
 /// The error norm: RMS over i of err_i / [`ErrorScales`] weight, at least the largest
-/// [`HeldProjection`] in units of its tolerance, or ∞ when not finite.
+/// [`HeldProjection`] of `held_err` in units of its tolerance, or ∞ when not finite.
 pub(super) fn scaled_norm(
     err: &[f64],
+    held_err: &[f64],
     y0: &[f64],
     y1: &[f64],
     scales: &ErrorScales,
@@ -163,7 +164,7 @@ pub(super) fn scaled_norm(
     }
     let mut norm = (sum / err.len().max(1) as f64).sqrt();
     for held in &scales.held {
-        norm = norm.max(held.error(err, y1) / (tol.absolute * held.scale));
+        norm = norm.max(held.error(held_err, y1) / (tol.absolute * held.scale));
     }
     if norm.is_finite() {
         norm

@@ -16,7 +16,9 @@
 //! units (positions, slopes, modal amplitudes, velocities and energies differ by orders of
 //! magnitude) and rᵢ says whether a relative tolerance means anything for it (not for positions,
 //! whose size depends on the origin); the mechanism provides them,
-//! [`crate::mechanism::SliderCrank::error_scales`].
+//! [`crate::mechanism::SliderCrank::error_scales`]. The implicit methods also hold single
+//! quantities to the tolerance on their own, in max-norm ([`HeldProjection`]: the dry journal's
+//! normal velocity, which decides every impact).
 //!
 //! The default is the implicit method, chosen by measurement (BENCHMARKS.md, "Integrators"): over
 //! two revolutions of benchmark B/C at the default tolerance it is 1.7–20× faster than the explicit

@@ -186,13 +186,48 @@ impl Implicit {
             self.y_new[m] = y[m] + h * sum;
             self.err[m] = h * diff;
         }
+        let held_err = if self.scales.held.is_empty() {
+            &self.err
+        } else {
+            self.filter_error(h);
+            &self.filtered
+        };
         Ok(scaled_norm(
             &self.err,
+            held_err,
             y,
             &self.y_new,
             &self.scales,
             &self.tolerances,
         ))
+    }
+
+    /// The ESDIRK error estimate filtered by the Newton matrix, (I − hγJ)⁻¹ err, written to
+    /// `filtered` (Shampine's device, Hairer & Wanner §IV.8): the unresolved stiff components, which
+    /// the L-stable method damps, no longer count as error. With J = [0 I; ∂a/∂q ∂a/∂q̇] and
+    /// λ = hγ the block system reduces to the Newton matrix already factorised:
+    /// ```text
+    /// x_v = (I − λ ∂a/∂q̇ − λ² ∂a/∂q)⁻¹ (e_v + λ ∂a/∂q e_q),   x_q = e_q + λ x_v
+    /// ```
+    /// (quadrature components copied). Used for the held quantities only: for the RMS over all
+    /// components a Jacobian reused over many steps hid real errors (module documentation).
+    fn filter_error(&mut self, h: f64) {
+        let n_q = self.n_q;
+        let (lambda, _) = self.scheme.newton_coefficients(h);
+        let (e_q, rest) = self.err.split_at(n_q);
+        let velocities = &mut self.filtered[n_q..2 * n_q];
+        velocities.copy_from_slice(&rest[..n_q]);
+        for (column, &e) in self.state.jacobian_q.chunks_exact(n_q).zip(e_q) {
+            for (x, &j) in velocities.iter_mut().zip(column) {
+                *x += lambda * j * e;
+            }
+        }
+        self.lu.solve(velocities);
+        let (coordinates, rest) = self.filtered.split_at_mut(n_q);
+        for ((x_q, &e), &x_v) in coordinates.iter_mut().zip(e_q).zip(&rest[..n_q]) {
+            *x_q = e + lambda * x_v;
+        }
+        rest[n_q..].copy_from_slice(&self.err[2 * n_q..]);
     }
 
     /// A generalized-α trial step: one implicit stage for (qₙ₊₁, q̇ₙ₊₁), the trapezoidal rule for
@@ -246,6 +281,7 @@ impl Implicit {
         }
         k1[2 * n_q..].copy_from_slice(&self.rates[2 * n_q..]);
         Ok(scaled_norm(
+            &self.err[..2 * n_q],
             &self.err[..2 * n_q],
             &y[..2 * n_q],
             &self.y_new[..2 * n_q],
