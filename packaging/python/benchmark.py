@@ -4,7 +4,10 @@ and lubricated joints, all in one run. Prints a Markdown table of wall time (bes
 running every case once), the ratio to the rigid rod with the same joint, and the integrator's steps and
 right-hand-side evaluations.
 
-usage: benchmark.py FMU [--quick] [NAME=VALUE ...]   (start values applied to every case)
+usage: benchmark.py FMU [--quick] [--baseline=OTHER_FMU] [NAME=VALUE ...]   (start values applied to every case)
+
+With --baseline every case also runs with OTHER_FMU (another build) in the same rounds, right after the
+FMU under test, and the table adds its best wall time and the ratio of the two.
 """
 import sys
 import time
@@ -41,25 +44,33 @@ def run_once(fmu, start_values):
     return wall, int(result["solver.steps"][-1]), int(result["solver.evaluations"][-1])
 
 
-def main(fmu: str, quick: bool, common: dict) -> None:
+def main(fmu: str, quick: bool, common: dict, baseline: str | None = None) -> None:
     md = read_model_description(fmu)
     stop = float(md.defaultExperiment.stopTime)
     cases = CASES[:4] + CASES[8:10] if quick else CASES
-    # Round-robin: every round runs every case once, so a slow spell of the machine hits all cases
-    # alike instead of one; each case keeps its best round.
-    best = [(float("inf"), 0, 0)] * len(cases)
+    builds = [fmu] if baseline is None else [fmu, baseline]
+    # Round-robin: every round runs every case once (with each build), so a slow spell of the machine
+    # hits all cases alike instead of one; each case keeps its best round.
+    best = [[(float("inf"), 0, 0)] * len(cases) for _ in builds]
     for _ in range(ROUNDS):
         for i, (_, joint, values) in enumerate(cases):
-            best[i] = min(best[i], run_once(fmu, {"joint.model": joint, **common, **values}))
-    print("| rod model | joint | wall time [s] | ratio to rigid | real-time factor | steps | evaluations |")
-    print("|---|---|---|---|---|---|---|")
+            for b, path in enumerate(builds):
+                best[b][i] = min(best[b][i], run_once(path, {"joint.model": joint, **common, **values}))
+    extra = " baseline wall time [s] | ratio to baseline |" if baseline else ""
+    print(f"| rod model | joint | wall time [s] | ratio to rigid | real-time factor | steps | evaluations |{extra}")
+    print("|---|---|---|---|---|---|---|" + ("---|---|" if baseline else ""))
     rigid = {}
-    for (label, joint, _), (wall, steps, evaluations) in zip(cases, best):
+    for i, ((label, joint, _), (wall, steps, evaluations)) in enumerate(zip(cases, best[0])):
         rigid.setdefault(joint, wall)
-        print(f"| {label} | {JOINT_NAMES[joint]} | {wall:.3f} | {wall / rigid[joint]:.2f} | "
-              f"{stop / wall:.3f} | {steps} | {evaluations} |", flush=True)
+        row = (f"| {label} | {JOINT_NAMES[joint]} | {wall:.3f} | {wall / rigid[joint]:.2f} | "
+               f"{stop / wall:.3f} | {steps} | {evaluations} |")
+        if baseline:
+            row += f" {best[1][i][0]:.3f} | {wall / best[1][i][0]:.2f} |"
+        print(row, flush=True)
 
 
 if __name__ == "__main__":
-    settings = dict(a.split("=", 1) for a in sys.argv[2:] if "=" in a)
-    main(sys.argv[1], "--quick" in sys.argv[2:], {k: float(v) for k, v in settings.items()})
+    flags = sys.argv[2:]
+    settings = dict(a.split("=", 1) for a in flags if "=" in a and not a.startswith("--"))
+    other = next((a.split("=", 1)[1] for a in flags if a.startswith("--baseline=")), None)
+    main(sys.argv[1], "--quick" in flags, {k: float(v) for k, v in settings.items()}, other)
