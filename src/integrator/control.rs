@@ -221,3 +221,38 @@ pub(super) fn initial_step<F: OdeSystem>(
     };
     (100.0 * h0).min(h1).min(tol.max_step)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The held quantity is the rate's error along the position's direction (offsets subtracted),
+    /// its magnitude when the position is zero; the norm is at least it in units of its tolerance.
+    #[test]
+    fn held_projection_measures_the_rate_error_along_the_position() {
+        let held = HeldProjection {
+            position: PlanarVector {
+                x: 0,
+                y: 1,
+                x_offset: Some(2),
+            },
+            rate: PlanarVector {
+                x: 3,
+                y: 4,
+                x_offset: Some(5),
+            },
+            scale: 2.0,
+        };
+        // Position (4 − 1, 4) = (3, 4): direction (0.6, 0.8); rate error (1 − 0.5, 2) = (0.5, 2).
+        let y = [4.0, 4.0, 1.0, 0.0, 0.0, 0.0];
+        let err = [0.0, 0.0, 0.0, 1.0, 2.0, 0.5];
+        assert!((held.error(&err, &y) - (0.6 * 0.5 + 0.8 * 2.0)).abs() < 1e-15);
+        let centred = [1.0, 0.0, 1.0, 0.0, 0.0, 0.0];
+        assert!((held.error(&err, &centred) - (0.25f64 + 4.0).sqrt()).abs() < 1e-15);
+        let tol = Tolerances::from_relative(1e-2, 1.0);
+        let mut scales = ErrorScales::uniform(6);
+        scales.held.push(held);
+        let norm = scaled_norm(&[0.0; 6], &err, &y, &y, &scales, &tol);
+        assert!((norm - 1.9 / (1e-2 * 2.0)).abs() < 1e-12, "{norm}");
+    }
+}

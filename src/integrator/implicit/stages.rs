@@ -211,7 +211,7 @@ impl Implicit {
     /// ```
     /// (quadrature components copied). Used for the held quantities only: for the RMS over all
     /// components a Jacobian reused over many steps hid real errors (module documentation).
-    fn filter_error(&mut self, h: f64) {
+    pub(super) fn filter_error(&mut self, h: f64) {
         let n_q = self.n_q;
         let (lambda, _) = self.scheme.newton_coefficients(h);
         let (e_q, rest) = self.err.split_at(n_q);
