@@ -2,9 +2,10 @@
 //! 4 and 8 modes, full rod), its peak force and onset angle at given settings against a converged
 //! run (explicit Dormand–Prince at rtol 1e-8); definitions in `tests/support/load_spectrum.rs`.
 //!
-//! `cargo run --release --example impacts [rtol]` (default: the library default) prints per model
-//! the worst peak and onset errors, the first impact's, and the run's internal steps;
-//! `IMPACTS_VERBOSE=1` also every impact.
+//! `cargo run --release --example impacts [rtol [weight]]` (defaults: the library's
+//! `solver.relativeTolerance` and `solver.impactErrorWeight`) prints per model the worst peak and
+//! onset errors, the first impact's, and the run's internal steps; `IMPACTS_VERBOSE=1` also every
+//! impact.
 
 use std::error::Error;
 
@@ -18,6 +19,7 @@ use load_spectrum::{benchmarks, converged, impacts, pair};
 
 fn main() -> Result<(), Box<dyn Error>> {
     let rtol: Option<f64> = std::env::args().nth(1).map(|a| a.parse()).transpose()?;
+    let weight: Option<f64> = std::env::args().nth(2).map(|a| a.parse()).transpose()?;
     let verbose = std::env::var_os("IMPACTS_VERBOSE").is_some();
     println!(
         "| rod | impacts | worst peak error | worst onset error [deg] | first peak error | steps |"
@@ -27,6 +29,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         let (reference, _) = impacts(converged(&p))?;
         let run = Parameters {
             relative_tolerance: rtol.unwrap_or(p.relative_tolerance),
+            impact_error_weight: weight.unwrap_or(p.impact_error_weight),
             ..p
         };
         let (events, steps) = impacts(run)?;

@@ -15,15 +15,6 @@ use crate::linalg::small;
 use crate::math;
 use crate::params::{DriveMode, JointModel, Parameters};
 
-/// Scale of the dry journal's normal velocity in the error control, in units of the velocity scale
-/// V ([`SliderCrank::error_scales`]). Measured over the first 60° of benchmarks A and B
-/// (`cargo run --release --example impacts [rtol]`): at 0.25 every impact's peak force is within
-/// 1.6 % of a converged run at the default tolerance, for the rigid rod, 4 and 8 modes and the full
-/// rod, and within 2.3 % at each of eight tolerances from 3e-3 to 1.25e-2; without the term, up to
-/// 67 % at the default. The impact sequence is chaotic (an impact's error grows in the next ones),
-/// so the figures move by about a percent with any change to the step sequence.
-pub const JOURNAL_RATE_SCALE: f64 = 0.25;
-
 /// Quantities computed by the last right-hand-side evaluation.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Evaluation {
@@ -59,6 +50,8 @@ pub struct SliderCrank {
     pub(super) reference_speed: f64,
     /// Length scale ℓ of the error scales \[m\].
     pub(super) position_scale: f64,
+    /// Weight of the dry journal's normal velocity in the error control (0: not held).
+    pub(super) impact_error_weight: f64,
     /// M_rod⁻¹ e_j for j ∈ {A_x, A_y, B_x, B_y}, column-major (n_rod × 4).
     pub(super) rod_compliance: Vec<f64>,
     /// W = E_sᵀ M⁻¹ E_s.
@@ -124,6 +117,7 @@ impl SliderCrank {
             rod_mass: p.rod.mass(),
             reference_speed: p.crank_initial_speed.abs().max(1.0),
             position_scale: scales::position_scale(p),
+            impact_error_weight: p.impact_error_weight,
             rod_compliance,
             w,
             signal: InputSignal::held(Inputs {
@@ -174,8 +168,8 @@ impl SliderCrank {
     /// error control asks the same physical accuracy of every coordinate.
     ///
     /// With the dry joint the journal's normal velocity in the bearing, δ̇ = n · ė with
-    /// ė = ṙ_B − (ẋ_s, 0) and n = e/|e|, is also held to `rtol · JOURNAL_RATE_SCALE · V` on its
-    /// own (max-norm; the implicit methods): it decides when and how fast the journal meets the
+    /// ė = ṙ_B − (ẋ_s, 0) and n = e/|e|, is also held to `rtol · V / w` on its own, w =
+    /// `solver.impactErrorWeight` (max-norm; the implicit methods; not at w = 0): it decides when and how fast the journal meets the
     /// wall, hence every impact's onset and peak, yet the RMS over all 2n + 4 components lets it
     /// drift. (The tangential velocity is left to the RMS: with friction it is stiff while the
     /// journal sticks.)
@@ -203,7 +197,7 @@ impl SliderCrank {
             .map(|i| if l.integrals().contains(&i) { 1.0 } else { 0.0 })
             .collect();
         let held = match self.joint {
-            Joint::Dry(_) => {
+            Joint::Dry(_) if self.impact_error_weight > 0.0 => {
                 let journal = |at: usize, slider: usize| PlanarVector {
                     x: at,
                     y: at + 1,
@@ -212,7 +206,7 @@ impl SliderCrank {
                 vec![HeldProjection {
                     position: journal(l.pin_b(), l.slider()),
                     rate: journal(l.rate_of(l.pin_b()), l.slider_velocity()),
-                    scale: JOURNAL_RATE_SCALE * speed,
+                    scale: speed / self.impact_error_weight,
                 }]
             }
             _ => Vec::new(),
@@ -504,6 +498,34 @@ impl MechanicalSystem for SliderCrank {
 mod tests {
     use super::*;
     use crate::params::{JointModel, RodFormulation};
+
+    /// The dry journal's normal velocity is held to rtol · V / w on its own (`solver.
+    /// impactErrorWeight` = w): its scale falls as 1/w, w = 0 leaves it to the RMS, and the
+    /// lubricated and ideal joints hold nothing.
+    #[test]
+    fn the_impact_error_weight_sets_the_held_journal_velocity() {
+        let held = |joint_model, impact_error_weight| {
+            let p = Parameters {
+                joint_model,
+                impact_error_weight,
+                ..Parameters::default()
+            };
+            SliderCrank::new(&p)
+                .expect("valid parameters")
+                .error_scales()
+                .held
+        };
+        let (strict, loose) = (held(JointModel::Dry, 4.0), held(JointModel::Dry, 1.0));
+        assert_eq!((strict.len(), loose.len()), (1, 1));
+        assert_eq!(strict[0].position, loose[0].position);
+        assert_eq!(strict[0].rate, loose[0].rate);
+        assert!(strict[0].scale > 0.0);
+        assert_eq!(4.0 * strict[0].scale, loose[0].scale);
+        assert!(held(JointModel::Dry, 0.0).is_empty());
+        for joint_model in [JointModel::Lubricated, JointModel::Ideal] {
+            assert!(held(joint_model, 4.0).is_empty());
+        }
+    }
 
     /// The joint load from the kinematics alone equals the full right-hand side's, for every
     /// clearance joint and rod, in contact (inside and at the start of an event) and with a

@@ -59,6 +59,7 @@ real_fields! {
     SolverRelativeTolerance => relative_tolerance;
     SolverMaxStepSize => max_step_size;
     SolverSpectralRadius => spectral_radius;
+    SolverImpactErrorWeight => impact_error_weight;
 }
 
 /// `integer_parameter` and `set_integer_parameter` over one list of switches (value reference,
