@@ -113,7 +113,7 @@ impl SliderCrank {
         }
         self.quasi_static_residual(&base, &others, &u, y, &mut dy, &mut residual)?;
         Err(ModelError::Numerical(format!(
-            "equilibrated initial state: Newton did not converge (residual {:.3e} of {:.3e})",
+            "Newton did not converge (residual {:.3e} of {:.3e})",
             residual.iter().map(|r| r * r).sum::<f64>().sqrt(),
             first_norm
         )))

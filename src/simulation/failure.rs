@@ -35,6 +35,20 @@ pub(super) fn step_failure(p: &Parameters, error: ModelError) -> ModelError {
     }
 }
 
+/// A quasi-static start (`rod.initialState` = equilibrated) that failed, with what usually causes
+/// it: a rod so compliant that its deflection under the inertial loads of the initial motion is
+/// far from the straight rod the Newton iteration starts from.
+pub(super) fn unequilibrated(p: &Parameters, error: &ModelError) -> ModelError {
+    ModelError::Numerical(format!(
+        "rod.initialState = equilibrated: the rod's quasi-static deflection under the inertial \
+             loads of the initial motion was not found: {error}. Likely cause: a rod too compliant \
+             for that motion (rod.youngsModulus = {:e} Pa, rod.secondMomentOfArea = {:e} m4, \
+             rod.length = {} m, crank.initialSpeed = {} rad/s); start with rod.initialState = \
+             straight, or make the rod stiffer or the start slower",
+        p.rod.youngs_modulus, p.rod.second_moment_of_area, p.rod.length, p.crank_initial_speed
+    ))
+}
+
 /// The parameters that make the equations stiff or non-smooth, with their values.
 fn likely_causes(p: &Parameters) -> String {
     let joint = format!("{:?}", p.joint_model).to_lowercase();

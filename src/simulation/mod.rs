@@ -65,7 +65,9 @@ impl Simulation {
             parameters.crank_initial_speed,
         );
         if parameters.initial_state == InitialState::Equilibrated {
-            mechanism.equilibrate(&mut state)?;
+            mechanism
+                .equilibrate(&mut state)
+                .map_err(|e| failure::unequilibrated(&parameters, &e))?;
         }
         let integrator = Integrator::new(
             parameters.method,

@@ -128,3 +128,31 @@ fn a_failing_step_names_the_likely_parameters() {
     );
     assert!(sim.outputs().unwrap().slider_position.is_finite());
 }
+
+/// A rod too compliant for a quasi-static start (slenderness 16 000: I = 7.8e-14 m⁴ at the
+/// default area) is refused with a message naming `rod.initialState` and the rod's stiffness,
+/// and runs when started straight.
+#[test]
+fn a_failed_quasi_static_start_names_the_initial_state() {
+    let mut p = Parameters {
+        contact_law: ContactLaw::Flores,
+        crank_initial_angle: -77.332_090_043_934_3,
+        ..Parameters::default()
+    };
+    p.rod.second_moment_of_area = 7.820_745_747_472_193e-14;
+    let message = Simulation::new(p.clone())
+        .err()
+        .expect("no quasi-static start for this rod")
+        .to_string();
+    println!("{message}");
+    for name in [
+        "rod.initialState = equilibrated",
+        "rod.secondMomentOfArea = 7.820745747472193e-14",
+        "rod.initialState = straight",
+    ] {
+        assert!(message.contains(name), "{message}");
+    }
+    p.initial_state = InitialState::Straight;
+    let mut sim = Simulation::new(p).unwrap();
+    sim.advance_to(1e-3).unwrap();
+}

@@ -16,7 +16,7 @@ use flexible_slider_crank::ancf::RodProperties;
 use flexible_slider_crank::integrator::Method;
 use flexible_slider_crank::math;
 use flexible_slider_crank::params::{
-    BENCHMARK_SPEED, ContactLaw, DriveMode, JointModel, RodFormulation,
+    BENCHMARK_SPEED, ContactLaw, DriveMode, InitialState, JointModel, RodFormulation,
 };
 use flexible_slider_crank::{Input, Outputs, Parameters, Simulation};
 
