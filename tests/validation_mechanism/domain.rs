@@ -141,8 +141,7 @@ fn a_failed_quasi_static_start_names_the_initial_state() {
     };
     p.rod.second_moment_of_area = 7.820_745_747_472_193e-14;
     let message = Simulation::new(p.clone())
-        .err()
-        .expect("no quasi-static start for this rod")
+        .expect_err("no quasi-static start for this rod")
         .to_string();
     println!("{message}");
     for name in [
