@@ -168,10 +168,10 @@ impl SliderCrank {
     /// error control asks the same physical accuracy of every coordinate.
     ///
     /// With the dry joint the journal's normal velocity in the bearing, δ̇ = n · ė with
-    /// ė = ṙ_B − (ẋ_s, 0) and n = e/|e|, is also held to `rtol · V / w` on its own, w =
-    /// `solver.impactErrorWeight` (max-norm; the implicit methods; not at w = 0): it decides when and how fast the journal meets the
-    /// wall, hence every impact's onset and peak, yet the RMS over all 2n + 4 components lets it
-    /// drift. (The tangential velocity is left to the RMS: with friction it is stiff while the
+    /// ė = ṙ_B − (ẋ_s, 0) and n = e/|e|, is also held to `rtol · V / w` on its own, with
+    /// w = `solver.impactErrorWeight` (max-norm; the implicit methods; not at w = 0): it decides
+    /// when and how fast the journal meets the wall, hence every impact's onset and peak, yet the
+    /// RMS over all 2n + 4 components lets it drift. (The tangential velocity is left to the RMS: with friction it is stiff while the
     /// journal sticks.)
     pub fn error_scales(&self) -> ErrorScales {
         let l = self.layout;
@@ -499,8 +499,8 @@ mod tests {
     use super::*;
     use crate::params::{JointModel, RodFormulation};
 
-    /// The dry journal's normal velocity is held to rtol · V / w on its own (`solver.
-    /// impactErrorWeight` = w): its scale falls as 1/w, w = 0 leaves it to the RMS, and the
+    /// The dry journal's normal velocity is held to rtol · V / w on its own, with
+    /// w = `solver.impactErrorWeight`: its scale falls as 1/w, w = 0 leaves it to the RMS, and the
     /// lubricated and ideal joints hold nothing.
     #[test]
     fn the_impact_error_weight_sets_the_held_journal_velocity() {
