@@ -57,8 +57,8 @@ pub struct ErrorScales {
     pub held: Vec<HeldProjection>,
 }
 
-/// A planar vector made of state components: (y\[x\] − y\[x_offset\], y\[y\]), the offset
-/// optional.
+/// A planar vector made of state components, relative to a moving origin along x:
+/// (y\[x\] − y\[x_offset\], y\[y\]) (the journal relative to the slider that carries the bearing).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PlanarVector {
     /// Index of the x component.
@@ -66,13 +66,13 @@ pub struct PlanarVector {
     /// Index of the y component.
     pub y: usize,
     /// Index of a component subtracted from the x component.
-    pub x_offset: Option<usize>,
+    pub x_offset: usize,
 }
 
 impl PlanarVector {
     /// The vector's value in `y`.
     fn of(&self, y: &[f64]) -> (f64, f64) {
-        (y[self.x] - self.x_offset.map_or(0.0, |j| y[j]), y[self.y])
+        (y[self.x] - y[self.x_offset], y[self.y])
     }
 }
 
@@ -234,12 +234,12 @@ mod tests {
             position: PlanarVector {
                 x: 0,
                 y: 1,
-                x_offset: Some(2),
+                x_offset: 2,
             },
             rate: PlanarVector {
                 x: 3,
                 y: 4,
-                x_offset: Some(5),
+                x_offset: 5,
             },
             scale: 2.0,
         };

@@ -201,7 +201,7 @@ impl SliderCrank {
                 let journal = |at: usize, slider: usize| PlanarVector {
                     x: at,
                     y: at + 1,
-                    x_offset: Some(slider),
+                    x_offset: slider,
                 };
                 vec![HeldProjection {
                     position: journal(l.pin_b(), l.slider()),
