@@ -22,15 +22,15 @@
 //!
 //! The default is the implicit method, chosen by measurement (BENCHMARKS.md, "Integrators"): over
 //! two revolutions of benchmark B/C at the default tolerance it is faster than the explicit method
-//! at its loosest accepted tolerance on every flexible rod, with every joint model (2.8–18× with the
-//! ideal and lubricated joints, 1.2–2.2× with the dry one, whose held journal velocity resolves the
-//! rod end's vibration; 4-mode rod, dry joint: 5 021 steps against 13 049; full rod, lubricated:
-//! 359 against 150 148), with peak joint forces within 0.6 % of converged runs. The explicit method
-//! stays the reference (conservation tests) and is cheaper only for the rigid rod, where nothing is
-//! stiff. The generalized-α method is faster on the reduced rods with the dry joint, with peak
-//! forces within 1 %, but filters part of the rod's vibration (slider-acceleration RMS error 14 %
-//! against 3.5 % over the first 40° of benchmark B): it is offered for its dissipation parameter,
-//! not as the default.
+//! at its loosest accepted tolerance on every flexible rod, with every joint model (2.8–18× with
+//! the ideal and lubricated joints, 1.2–2.2× with the dry one, whose held journal velocity resolves
+//! the rod end's vibration; 4-mode rod, dry joint: 5 021 steps against 13 049; full rod,
+//! lubricated: 359 against 150 148), with peak joint forces within 0.6 % of converged runs. The
+//! explicit method stays the reference (conservation tests) and is cheaper only for the rigid rod,
+//! where nothing is stiff. The generalized-α method is faster on the reduced rods with the dry
+//! joint, with peak forces within 1 %, but filters part of the rod's vibration (slider-acceleration
+//! RMS error 14 % against 3.5 % over the first 40° of benchmark B): it is offered for its
+//! dissipation parameter, not as the default.
 //!
 //! # References
 //! - J. R. Dormand, P. J. Prince (1980), A family of embedded Runge–Kutta formulae, J. Comput. Appl.

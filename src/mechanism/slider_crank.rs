@@ -171,8 +171,8 @@ impl SliderCrank {
     /// ė = ṙ_B − (ẋ_s, 0) and n = e/|e|, is also held to `rtol · V / w` on its own, with
     /// w = `solver.impactErrorWeight` (max-norm; the implicit methods; not at w = 0): it decides
     /// when and how fast the journal meets the wall, hence every impact's onset and peak, yet the
-    /// RMS over all 2n + 4 components lets it drift. (The tangential velocity is left to the RMS: with friction it is stiff while the
-    /// journal sticks.)
+    /// RMS over all 2n + 4 components lets it drift. (The tangential velocity is left to the RMS:
+    /// with friction it is stiff while the journal sticks.)
     pub fn error_scales(&self) -> ErrorScales {
         let l = self.layout;
         let length = self.position_scale;

@@ -159,8 +159,8 @@ pub const DEFAULT_SPECTRAL_RADIUS: f64 = 0.8;
 /// (`solver.impactErrorWeight`): its local error is held to a quarter of the tolerance of the
 /// velocities. Measured over the first 60° of benchmarks A and B (`cargo run --release --example
 /// impacts [rtol]`): at 4 every impact's peak force is within 1.6 % of a converged run at the
-/// default tolerance, for the rigid rod, 4 and 8 modes and the full rod, and within 2.3 % at each of
-/// eight tolerances from 3e-3 to 1.25e-2; at 0 (the RMS over all states only), up to 67 % at the
+/// default tolerance, for the rigid rod, 4 and 8 modes and the full rod, and within 2.3 % at each
+/// of eight tolerances from 3e-3 to 1.25e-2; at 0 (the RMS over all states only), up to 67 % at the
 /// default. The impact sequence is chaotic (an impact's error grows in the next ones), so the
 /// figures move by about a percent with any change to the step sequence.
 pub const DEFAULT_IMPACT_ERROR_WEIGHT: f64 = 4.0;

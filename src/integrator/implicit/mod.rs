@@ -27,8 +27,9 @@
 //! the oil film, whose stiffness changes by orders of magnitude with the eccentricity (measured:
 //! benchmark C at rtol 1e-4 peaked at 6 kN instead of 3.05 kN). The quantities the system holds on
 //! their own ([`super::ErrorScales::held`], the dry journal's normal velocity) are measured on the
-//! filtered ESDIRK estimate: the rod-end vibration of unresolved stiff modes, which the L-stable method
-//! damps, would otherwise set the step (a 64-element rod with 126 modes took 3.5× the time).
+//! filtered ESDIRK estimate: the rod-end vibration of unresolved stiff modes, which the L-stable
+//! method damps, would otherwise set the step (a 64-element rod with 126 modes took 3.5× the
+//! time).
 //!
 //! # References
 //! - E. Hairer, G. Wanner (1996), Solving Ordinary Differential Equations II, 2nd ed., §IV.8
