@@ -17,6 +17,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
+user_cargo_home=${CARGO_HOME:-$HOME/.cargo}
 
 bash packaging/bootstrap.sh
 
@@ -54,13 +55,34 @@ flock -u 9
 zig_dir=$(.venv/bin/python -c 'import ziglang, os; print(os.path.dirname(ziglang.__file__))')
 export PATH="$root/.venv/bin:$zig_dir:$PATH"
 clang_include="$(clang -print-resource-dir)/include"
-cargo fetch --locked --quiet
+
+# Debian's toolchain (its std sources serve -Zbuild-std).
+debian() {
+  env PATH="$toolchain/usr/bin:$PATH" RUSTC_BOOTSTRAP=1 \
+    LD_LIBRARY_PATH="$toolchain/usr/lib/x86_64-linux-gnu${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" "$@"
+}
+
+# --- set-up: every crate the offline builds compile ---------------------------------------------
+# The builds run offline with a cargo home of their own, emptied and filled here at every run with
+# exactly what they need: this workspace's crates (Cargo.lock) and those of the standard library's
+# own workspace (rust-web-src's library/Cargo.lock: rustc-demangle, the windows crates, …), which
+# -Zbuild-std compiles and which this workspace's lock file does not list. A crate that is not
+# fetched here then fails the build on every machine, not only on one whose cargo cache happens
+# to lack it. Fetching takes seconds.
+out=$root/target/cross
+cargo_home=$out/cargo-home
+std_workspace=$toolchain/usr/lib/rustlib/src/rust/library/Cargo.toml
+rm -rf "$cargo_home"
+mkdir -p "$cargo_home"
+echo "== fetching the crates of this workspace and of the standard library into $cargo_home"
+CARGO_HOME=$cargo_home cargo fetch --locked --quiet
+CARGO_HOME=$cargo_home debian cargo fetch --locked --quiet --manifest-path "$std_workspace"
 
 # --- builds: three jobs in parallel (each is mostly one serial chain of crates) ---------------
-out=$root/target/cross
 bin=$out/binaries
 mkdir -p "$bin/linux64" "$bin/win64" "$bin/darwin64" "$out/logs"
-remap="--remap-path-prefix=$root=/build --remap-path-prefix=${CARGO_HOME:-$HOME/.cargo}=/cargo"
+export CARGO_HOME=$cargo_home
+remap="--remap-path-prefix=$root=/build --remap-path-prefix=$cargo_home=/cargo"
 remap="$remap --remap-path-prefix=$toolchain/usr/lib/rustlib/src/rust=/rustc/$rust_web"
 lib=(--offline --locked --quiet --release --lib -p flexible-slider-crank -p dc-motor)
 
@@ -70,12 +92,6 @@ linux64() {
     cargo zigbuild "${lib[@]}" --target x86_64-unknown-linux-gnu.2.28 --target-dir "$out/linux"
   cp "$out/linux/x86_64-unknown-linux-gnu/release/libflexible_slider_crank.so" "$bin/linux64/FlexibleSliderCrank.so"
   cp "$out/linux/x86_64-unknown-linux-gnu/release/libdc_motor.so" "$bin/linux64/DcMotor.so"
-}
-
-# Debian's toolchain (its std sources serve -Zbuild-std).
-debian() {
-  env PATH="$toolchain/usr/bin:$PATH" RUSTC_BOOTSTRAP=1 \
-    LD_LIBRARY_PATH="$toolchain/usr/lib/x86_64-linux-gnu${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" "$@"
 }
 
 # The standard library is built without backtrace symbolization (a panic inside the FMU is caught
@@ -126,4 +142,5 @@ done
 [ "$failed" -eq 0 ]
 
 # --- the FMU -----------------------------------------------------------------------------------
+export CARGO_HOME=$user_cargo_home
 cargo run --release --quiet -p packaging -- --binaries "$bin"
