@@ -1,6 +1,6 @@
 """The README's parameter, input and output tables, generated from modelDescription.xml.
 
-`python packaging/python/readme_tables.py` prints them; test_readme.py checks that the README's
+`python packaging/python/readme_tables.py` prints them (`--write`: into README.md); test_readme.py checks that the README's
 tables are exactly these, so documentation and FMU cannot disagree.
 """
 import re
@@ -63,7 +63,20 @@ def readme_rows(readme: str, heading: str) -> list:
     return table[2:]
 
 
+def write_readme(readme_path=ROOT / "README.md", xml=XML):
+    """Replaces the rows of each table in the README by the generated ones."""
+    readme = readme_path.read_text()
+    for causality, rows in tables(xml).items():
+        old = readme_rows(readme, HEADINGS[causality])
+        start = readme.index("\n".join(old), readme.index(HEADINGS[causality]))
+        readme = readme[:start] + "\n".join(rows) + readme[start + len("\n".join(old)):]
+    readme_path.write_text(readme)
+
+
 if __name__ == "__main__":
+    if sys.argv[1:] == ["--write"]:
+        write_readme()
+        sys.exit()
     for causality, rows in tables(sys.argv[1] if len(sys.argv) > 1 else XML).items():
         print(HEADINGS[causality])
         print("\n".join(rows))

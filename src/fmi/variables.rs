@@ -36,6 +36,7 @@ pub const DESCRIPTION: Description<Vr> = Description {
         (Vr::CrankSpeed, "rpm"),
         (Vr::CrankInitialAngle, "deg"),
         (Vr::CrankAngle, "deg"),
+        (Vr::GravityAngle, "deg"),
         (Vr::JointClearance, "mm"),
         (Vr::JointJournalRadius, "mm"),
         (Vr::JointEccentricityX, "mm"),
@@ -292,6 +293,7 @@ pub enum Vr {
     SolverWarnings,
     RodDeformationEnergyPeak,
     SolverImpactErrorWeight,
+    GravityAngle,
 }
 
 /// 5000 rpm in rad/s (benchmark B); the same expression as `params::BENCHMARK_SPEED`.
@@ -548,7 +550,7 @@ pub const VARIABLES: &[Variable] = &[
         -1000.0,
         1000.0,
         "m/s2",
-        "Gravitational acceleration along -y",
+        "Gravitational acceleration, along -y unless gravityAngle turns it",
     ),
     Variable::parameter(
         Vr::SolverRelativeTolerance,
@@ -833,5 +835,14 @@ pub const VARIABLES: &[Variable] = &[
         100.0,
         "1",
         "Dry joint, implicit methods: the journal's normal velocity in the bearing is held to solver.relativeTolerance / weight on its own (in units of the speed scale), so that every impact's peak and onset come out right; 0 leaves it to the RMS over all states (flexible rods about 2x faster, but the impacts after the first then off by up to 67 % at the default tolerance)",
+    ),
+    Variable::parameter(
+        Vr::GravityAngle,
+        "gravityAngle",
+        0.0,
+        -7.0,
+        7.0,
+        "rad",
+        "Direction of gravity: angle from -y, counter-clockwise positive (0: across the guide along -y; -90 deg: along -x, a vertical guide with the slider above the crank pivot)",
     ),
 ];

@@ -63,6 +63,17 @@ impl SliderCrank {
         0.5 * (self.crank_inertia * crank * crank + rod + self.slider_mass * slider * slider)
     }
 
+    /// Gravitational potential −m g·r of the crank (centre of mass at (r_c/2)(cos θ, sin θ)) and of
+    /// the slider (at (x_s, 0)) \[J\]; the rod's is −Q_gᵀp (its gravity load is constant).
+    fn gravity_potential(&self, theta: f64, x_s: f64) -> f64 {
+        if self.gravity == nalgebra::Vector2::zeros() {
+            return 0.0;
+        }
+        let (sin, cos) = math::sin_cos(theta);
+        -self.crank_mass * 0.5 * self.crank_length * (self.gravity.x * cos + self.gravity.y * sin)
+            - self.slider_mass * self.gravity.x * x_s
+    }
+
     /// Energies of a state (evaluates the joint force for the stored contact energy).
     pub fn energies(&mut self, y: &[f64]) -> Energies {
         let l = self.layout;
@@ -74,12 +85,7 @@ impl SliderCrank {
             kinetic: self.kinetic_energy(y),
             strain: self.rod.strain_energy(p),
             contact: contact.potential,
-            gravity: self.crank_mass
-                * self.gravity
-                * 0.5
-                * self.crank_length
-                * math::sin(y[CRANK_ANGLE])
-                - rod_gravity,
+            gravity: self.gravity_potential(y[CRANK_ANGLE], y[l.slider()]) - rod_gravity,
             drive_work: y[l.drive_work()],
             joint_work: y[l.joint_work()],
             external_work: y[l.external_work()],

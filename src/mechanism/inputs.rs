@@ -23,6 +23,15 @@ pub enum Input {
 }
 
 impl Inputs {
+    /// The inputs a model starts with when none are given: the prescribed speed equal to the
+    /// crank's initial speed, no torque, no slider force.
+    pub fn at_start(p: &crate::params::Parameters) -> Self {
+        Self {
+            drive_speed: p.crank_initial_speed,
+            ..Self::default()
+        }
+    }
+
     /// The value of one input.
     pub fn get(&self, input: Input) -> f64 {
         match input {

@@ -125,12 +125,15 @@ impl RodBody {
         }
     }
 
-    /// Constant gravity load for acceleration (0, −g).
-    pub fn gravity_force(&self, g: f64) -> Vec<f64> {
+    /// Constant gravity load for the acceleration `g`.
+    pub fn gravity_force(&self, g: Vector2<f64>) -> Vec<f64> {
         match self {
-            Self::Rigid { mass, .. } => vec![0.0, -0.5 * mass * g, 0.0, -0.5 * mass * g],
+            Self::Rigid { mass, .. } => {
+                let half = 0.5 * mass;
+                vec![half * g.x, half * g.y, half * g.x, half * g.y]
+            }
             Self::Flexible(model) => {
-                let q = model.rod().gravity_force(Vector2::new(0.0, -g));
+                let q = model.rod().gravity_force(g);
                 let mut out = vec![0.0; model.n_coordinates()];
                 model.project_force(&q, &mut out);
                 out

@@ -2,17 +2,33 @@
 //! changes, in which the integrators measure every coordinate's error
 //! ([`super::SliderCrank::error_scales`]).
 
+use super::inputs::Inputs;
 use crate::params::{JointModel, Parameters, RodFormulation};
+
+/// Round-off floor of the length scale, in units of ε_mach (r_c + l) / rtol: the error control
+/// never asks for a position error below 100 units in the last place of the mechanism's
+/// coordinates, which no step size can deliver (a 4-mode rod at rest under gravity, at
+/// rtol 1e-8, otherwise shrank its steps to 5e-10 s and stalled).
+const ROUND_OFF_FLOOR: f64 = 100.0 * f64::EPSILON;
 
 /// The length ℓ at which the joint's force law changes (the error scales' unit of length):
 /// 1 % of the crank length at most, and
 /// - dry joint: the clearance c (contact starts when the journal crosses it);
 /// - lubricated joint: the film thickness at the switch, c (1 − ε_b) (the film force grows as
 ///   (1 − ε)^−5/2 towards it);
-/// - ideal joint on a flexible rod: the rod's axial deformation under the inertial load,
-///   F L / EA with F = (m_rod + m_slider) ω₀² r_c (the joint force is the rod's axial force),
-///   per element (L/n) for the full rod, whose coordinates resolve each element's stretch.
-pub(super) fn position_scale(p: &Parameters) -> f64 {
+/// - ideal joint on a flexible rod: the rod's axial deformation under its load, F L / EA with
+///   F = (m_rod + m_slider) ω₀² r_c + |F_s| + |T|/r_c + (m_crank + m_rod + m_slider) |g|
+///   (inertia, the start's slider force and drive torque, gravity: the joint force is the rod's
+///   axial force), per element (L/n) for the full rod, whose coordinates resolve each element's
+///   stretch;
+///
+/// and at least the round-off floor [`ROUND_OFF_FLOOR`] · (r_c + l) / rtol.
+pub(super) fn position_scale(p: &Parameters, inputs: &Inputs) -> f64 {
+    let floor = ROUND_OFF_FLOOR * (p.crank_length + p.rod.length) / p.relative_tolerance;
+    joint_length(p, inputs).max(floor)
+}
+
+fn joint_length(p: &Parameters, inputs: &Inputs) -> f64 {
     let base = 0.01 * p.crank_length;
     match (p.joint_model, p.rod_formulation) {
         (JointModel::Dry, _) => p.clearance.min(base),
@@ -20,7 +36,11 @@ pub(super) fn position_scale(p: &Parameters) -> f64 {
         (JointModel::Ideal, RodFormulation::Rigid) => base,
         (JointModel::Ideal, rod) => {
             let speed = p.crank_initial_speed.abs().max(1.0);
-            let load = (p.rod.mass() + p.slider_mass) * speed * speed * p.crank_length;
+            let masses = p.rod.mass() + p.slider_mass;
+            let load = masses * speed * speed * p.crank_length
+                + inputs.slider_force.abs()
+                + inputs.drive_torque.abs() / p.crank_length
+                + (masses + p.crank_mass) * p.gravity.abs();
             // The full rod's coordinates resolve each element's stretch, the reduced rod's the
             // stretch between the pins.
             let length = match rod {

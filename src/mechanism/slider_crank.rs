@@ -43,7 +43,8 @@ pub struct SliderCrank {
     pub(super) crank_mass: f64,
     pub(super) crank_inertia: f64,
     pub(super) slider_mass: f64,
-    pub(super) gravity: f64,
+    /// Gravitational acceleration \[m/s²\].
+    pub(super) gravity: Vector2<f64>,
     pub(super) rod_length: f64,
     pub(super) rod_mass: f64,
     /// Reference crank speed for the error scales (the initial speed, at least 1 rad/s).
@@ -71,8 +72,15 @@ pub struct SliderCrank {
 }
 
 impl SliderCrank {
-    /// Builds the mechanism after validating the parameters.
+    /// Builds the mechanism after validating the parameters, with the inputs of
+    /// [`Inputs::at_start`].
     pub fn new(p: &Parameters) -> Result<Self, ModelError> {
+        Self::with_inputs(p, Inputs::at_start(p))
+    }
+
+    /// Builds the mechanism after validating the parameters, with `inputs` held from the start
+    /// (they enter the error scales' length as loads, see `scales::position_scale`).
+    pub fn with_inputs(p: &Parameters, inputs: Inputs) -> Result<Self, ModelError> {
         p.validate()?;
         let rod = RodBody::from_parameters(p)?;
         let n_rod = rod.n_coordinates();
@@ -99,7 +107,7 @@ impl SliderCrank {
             speed_drive: p.drive_mode == DriveMode::Speed,
         };
         Ok(Self {
-            rod_gravity: rod.gravity_force(p.gravity),
+            rod_gravity: rod.gravity_force(p.gravity_vector()),
             layout: StateLayout::new(
                 n_rod,
                 b,
@@ -112,22 +120,16 @@ impl SliderCrank {
             crank_mass: p.crank_mass,
             crank_inertia,
             slider_mass: p.slider_mass,
-            gravity: p.gravity,
+            gravity: p.gravity_vector(),
             rod_length: p.rod.length,
             rod_mass: p.rod.mass(),
             reference_speed: p.crank_initial_speed.abs().max(1.0),
-            position_scale: scales::position_scale(p),
+            position_scale: scales::position_scale(p, &inputs),
             impact_error_weight: p.impact_error_weight,
             rod_compliance,
             w,
-            signal: InputSignal::held(Inputs {
-                drive_speed: p.crank_initial_speed,
-                ..Inputs::default()
-            }),
-            inputs: Inputs {
-                drive_speed: p.crank_initial_speed,
-                ..Inputs::default()
-            },
+            signal: InputSignal::held(inputs),
+            inputs,
             drive_acceleration: 0.0,
             contact: ContactState {
                 in_contact: false,
@@ -332,7 +334,7 @@ impl SliderCrank {
         }
         let kin = self.joint_kinematics(y);
         let force = self.joint.force(&kin, self.impact_velocity(&kin)).force;
-        let acceleration = (self.inputs.slider_force - force.x) / self.slider_mass;
+        let acceleration = (self.inputs.slider_force - force.x) / self.slider_mass + self.gravity.x;
         Some((force.norm(), acceleration.abs()))
     }
 
@@ -411,11 +413,16 @@ impl SliderCrank {
             DriveMode::Torque => self.inputs.drive_torque,
             DriveMode::Speed => 0.0,
         };
-        // No cosine per evaluation without gravity (the common case).
-        let gravity_torque = if self.gravity == 0.0 {
+        // No sine or cosine per evaluation without gravity (the common case).
+        let gravity_torque = if self.gravity == Vector2::zeros() {
             0.0
         } else {
-            -self.crank_mass * self.gravity * 0.5 * self.crank_length * math::cos(q[CRANK_ANGLE])
+            // r_G × m_c g with r_G = (r_c/2)(cos θ, sin θ).
+            let (sin, cos) = math::sin_cos(q[CRANK_ANGLE]);
+            self.crank_mass
+                * 0.5
+                * self.crank_length
+                * (cos * self.gravity.y - sin * self.gravity.x)
         };
 
         let (dq, rest) = dy.split_at_mut(l.n_coordinates());
@@ -424,7 +431,8 @@ impl SliderCrank {
         acc[CRANK_ANGLE] = (torque_in + gravity_torque) / self.crank_inertia;
         acc[l.rod()].copy_from_slice(&self.force);
         self.rod.solve_mass(&mut acc[l.rod()]);
-        acc[l.slider()] = (self.inputs.slider_force - joint.force.x) / self.slider_mass;
+        acc[l.slider()] =
+            (self.inputs.slider_force - joint.force.x) / self.slider_mass + self.gravity.x;
 
         let c = self.constraints(y);
         let lambda = self.solve_schur(&c, c.jacobian * self.on_s(acc) - c.acceleration_rhs())?;

@@ -56,6 +56,7 @@ real_fields! {
     JointBearingLength => bearing_length;
     JointSwitchEccentricity => switch_eccentricity;
     Gravity => gravity;
+    GravityAngle => gravity_angle;
     SolverRelativeTolerance => relative_tolerance;
     SolverMaxStepSize => max_step_size;
     SolverSpectralRadius => spectral_radius;

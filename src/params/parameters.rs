@@ -114,8 +114,12 @@ pub struct Parameters {
     pub switch_eccentricity: f64,
     /// Drive mode.
     pub drive_mode: DriveMode,
-    /// Gravitational acceleration along −y \[m/s²\].
+    /// Magnitude of the gravitational acceleration \[m/s²\] (along −y by default, see
+    /// `gravity_angle`).
     pub gravity: f64,
+    /// Direction of gravity: the angle from −y, counter-clockwise positive \[rad\]
+    /// ([`Parameters::gravity_vector`]).
+    pub gravity_angle: f64,
     /// Time-integration method.
     pub method: Method,
     /// Spectral radius at infinity ρ∞ ∈ [0, 1] of the generalized-α method (1: no numerical
@@ -203,6 +207,7 @@ impl Default for Parameters {
             switch_eccentricity: 0.95,
             drive_mode: DriveMode::Speed,
             gravity: 0.0,
+            gravity_angle: 0.0,
             method: Method::Esdirk,
             spectral_radius: DEFAULT_SPECTRAL_RADIUS,
             relative_tolerance: 1e-2,
@@ -249,6 +254,14 @@ impl Parameters {
             slider_mass: 0.5,
             ..Self::default()
         }
+    }
+
+    /// The gravitational acceleration vector g = `gravity` (sin α, −cos α), α = `gravity_angle`:
+    /// along −y at α = 0, along −x at α = −π/2 (a vertical guide with the slider above the crank
+    /// pivot) \[m/s²\].
+    pub fn gravity_vector(&self) -> nalgebra::Vector2<f64> {
+        let (sin, cos) = crate::math::sin_cos(self.gravity_angle);
+        self.gravity * nalgebra::Vector2::new(sin, -cos)
     }
 
     /// Bearing (hole) radius R_i = R_j + c \[m\].
