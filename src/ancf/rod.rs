@@ -33,13 +33,16 @@ pub struct RodProperties {
     pub area: f64,
     /// Second moment of area I \[m⁴\].
     pub second_moment_of_area: f64,
+    /// Outer-fibre distance c: the largest distance of the section from its neutral axis (h/2
+    /// for a rectangle of height h) \[m\].
+    pub outer_fibre_distance: f64,
     /// Strain-rate (stiffness-proportional) damping coefficient β \[s\]; 0 = undamped.
     pub stiffness_damping: f64,
 }
 
 impl RodProperties {
     /// The steel rod of benchmark B (docs/model.md §5(b)): L = 0.12 m, E = 207 GPa, ρ = 7800 kg/m³,
-    /// A = 2.2436e-4 m² (mass 0.21 kg), I = 4.195e-9 m⁴, undamped.
+    /// A = 2.2436e-4 m² (mass 0.21 kg), I = 4.195e-9 m⁴ (a 14.98 mm square: c = 7.49 mm), undamped.
     pub fn benchmark_b() -> Self {
         Self {
             length: 0.12,
@@ -47,6 +50,7 @@ impl RodProperties {
             density: 7800.0,
             area: 0.21 / (7800.0 * 0.12),
             second_moment_of_area: 4.195e-9,
+            outer_fibre_distance: 7.4893e-3,
             stiffness_damping: 0.0,
         }
     }
@@ -58,6 +62,7 @@ impl RodProperties {
         require_positive("rod.density", self.density)?;
         require_positive("rod.area", self.area)?;
         require_positive("rod.secondMomentOfArea", self.second_moment_of_area)?;
+        require_positive("rod.outerFibreDistance", self.outer_fibre_distance)?;
         require_non_negative("rod.stiffnessDamping", self.stiffness_damping)?;
         Ok(())
     }
@@ -74,6 +79,41 @@ impl RodProperties {
             * (self.youngs_modulus * self.second_moment_of_area / (self.density * self.area)).sqrt()
     }
 }
+
+/// Weights of the four Gauss-point values of two neighbouring elements (at a, b, 1 + a, 1 + b
+/// element lengths from the patch's start, a, b = (1 ∓ 1/√3)/2) in the value of their
+/// least-squares quadratic at the patch's start (a pin): the first row of (VᵀV)⁻¹Vᵀ for the
+/// points' Vandermonde matrix V (checked by a unit test), and at the first element's mid-point and
+/// at the node between the elements. The patch's end and its second element's mid-point take the
+/// mirrored weights.
+const PATCH_AT_END: [f64; 4] = [
+    1.418_856_620_135_745_3,
+    -0.168_856_620_135_744,
+    -0.485_843_918_243_526,
+    0.235_843_918_243_524_58,
+];
+/// See [`PATCH_AT_END`].
+const PATCH_AT_HALF: [f64; 4] = [
+    0.473_584_391_824_351,
+    0.401_415_608_175_649,
+    0.242_921_959_121_758_43,
+    -0.117_921_959_121_758_76,
+];
+/// See [`PATCH_AT_END`].
+const PATCH_AT_NODE: [f64; 4] = [
+    -0.038_675_134_594_817_306,
+    0.538_675_134_594_817,
+    0.538_675_134_594_817_2,
+    -0.038_675_134_594_816_97,
+];
+
+/// A one-element rod's linear field through its two Gauss-point values (given twice, as
+/// [g₁, g₂, g₁, g₂]) at ξ = 0, 1/2 and 1.
+const SINGLE_ELEMENT: [[f64; 4]; 3] = {
+    let (a, b) = (0.211_324_865_405_187_1, 0.788_675_134_594_812_9);
+    let (w, v) = (0.5 * b / (b - a), -0.5 * a / (b - a));
+    [[w, v, w, v], [0.25; 4], [v, w, v, w]]
+};
 
 /// An assembled ANCF rod of `n` equal elements.
 #[derive(Clone, Debug)]
@@ -197,6 +237,64 @@ impl Rod {
         }
     }
 
+    /// Largest normal stress magnitude over the rod, max |N|/A + |M| c/I = E max (|ε| + c |κ|)
+    /// (Euler–Bernoulli, c the outer-fibre distance) \[Pa\].
+    ///
+    /// N and M are taken at the elements' Gauss points, where they are superconvergent
+    /// ([`Element::strain_at_stress_points`]), and recovered at the nodes and the element
+    /// mid-points from the least-squares quadratic through the four Gauss-point values of two
+    /// neighbouring elements (superconvergent patch recovery; O. C. Zienkiewicz, J. Z. Zhu (1992),
+    /// Int. J. Numer. Meth. Eng. 33, 1331–1364). The recovery is exact for a quadratic moment (a
+    /// beam under a uniform load), so the largest moment is found wherever it lies: at a node, in
+    /// an element, at a pin. A one-element rod uses its own linear field.
+    pub fn largest_normal_stress(&self, e: &[f64]) -> f64 {
+        let n = self.n_elements;
+        let c = self.properties.outer_fibre_distance;
+        // (ε, κ) at the Gauss points, in order along the rod (no allocation: at most 64 elements).
+        let mut points = [(0.0, 0.0); 2 * MAX_ELEMENTS];
+        for j in 0..n {
+            let [a, b] = self
+                .element
+                .strain_at_stress_points(&Self::element_coordinates(e, j));
+            points[2 * j] = a;
+            points[2 * j + 1] = b;
+        }
+        let points = &points[..2 * n];
+        let sigma = |(eps, kappa): (f64, f64)| eps.abs() + c * kappa.abs();
+        let combine = |weights: &[f64; 4], values: &[(f64, f64)]| {
+            weights
+                .iter()
+                .zip(values)
+                .fold((0.0, 0.0), |(eps, kappa), (w, v)| {
+                    (eps + w * v.0, kappa + w * v.1)
+                })
+        };
+        let mut largest = points.iter().map(|&p| sigma(p)).fold(0.0, f64::max);
+        if n == 1 {
+            let doubled = [points[0], points[1], points[0], points[1]];
+            for weights in &SINGLE_ELEMENT {
+                largest = largest.max(sigma(combine(weights, &doubled)));
+            }
+        }
+        // Patch j: elements j and j + 1, its points at a, b, 1 + a, 1 + b element lengths.
+        for j in 0..n.saturating_sub(1) {
+            let patch = &points[2 * j..2 * j + 4];
+            largest = largest
+                .max(sigma(combine(&PATCH_AT_NODE, patch)))
+                .max(sigma(combine(&PATCH_AT_HALF, patch)));
+            if j == 0 {
+                largest = largest.max(sigma(combine(&PATCH_AT_END, patch)));
+            }
+            if j + 2 == n {
+                let mirrored = |w: &[f64; 4]| [w[3], w[2], w[1], w[0]];
+                largest = largest
+                    .max(sigma(combine(&mirrored(&PATCH_AT_HALF), patch)))
+                    .max(sigma(combine(&mirrored(&PATCH_AT_END), patch)));
+            }
+        }
+        self.properties.youngs_modulus * largest
+    }
+
     /// Strain energy U(e) = Σ element energies \[J\].
     pub fn strain_energy(&self, e: &[f64]) -> f64 {
         (0..self.n_elements)
@@ -263,6 +361,79 @@ pub fn kron_identity(a: &Mat<f64>) -> Mat<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The patch weights are the least-squares quadratic's values at 0, 1/2 and 1 (in element
+    /// lengths) from its four Gauss points, and each set sums to 1 (a constant is recovered).
+    #[test]
+    fn patch_weights_are_the_least_squares_quadratic() {
+        let (a, b) = (0.5 - 0.5 / 3f64.sqrt(), 0.5 + 0.5 / 3f64.sqrt());
+        let x = [a, b, 1.0 + a, 1.0 + b];
+        let v = nalgebra::Matrix4x3::from_fn(|i, k| x[i].powi(k as i32));
+        let fit = (v.transpose() * v).try_inverse().expect("regular") * v.transpose();
+        for (at, weights) in [
+            (0.0, PATCH_AT_END),
+            (0.5, PATCH_AT_HALF),
+            (1.0, PATCH_AT_NODE),
+        ] {
+            let row = nalgebra::RowVector3::new(1.0, at, at * at) * fit;
+            for (w, expected) in weights.iter().zip(row.iter()) {
+                assert!((w - expected).abs() < 1e-14, "at {at}: {w} vs {expected}");
+            }
+            assert!((weights.iter().sum::<f64>() - 1.0).abs() < 1e-14);
+        }
+    }
+
+    /// Uniform stretch ε: σ = E ε, for one element and for several.
+    #[test]
+    fn a_stretched_rod_carries_e_times_the_strain() {
+        let p = RodProperties::benchmark_b();
+        for n in [1, 3, 8] {
+            let rod = Rod::new(p, n).unwrap();
+            let strain = 1e-4;
+            let mut e = rod.straight_configuration(Vector2::new(0.1, -0.2), 0.3);
+            for k in 0..=n {
+                for d in 0..4 {
+                    e[4 * k + d] = if d < 2 {
+                        let origin = [0.1, -0.2][d];
+                        origin + (1.0 + strain) * (e[4 * k + d] - origin)
+                    } else {
+                        (1.0 + strain) * e[4 * k + d]
+                    };
+                }
+            }
+            let sigma = rod.largest_normal_stress(&e);
+            let expected = p.youngs_modulus * strain;
+            assert!((sigma - expected).abs() < 1e-9 * expected, "{n}: {sigma}");
+        }
+    }
+
+    /// A pinned beam under a uniform load q (small deflection, exact nodal values w(x) =
+    /// q x (L³ − 2Lx² + x³)/(24 EI)): the largest stress is the mid-span moment's,
+    /// σ = (q L²/8) c/I, whether mid-span is a node (even n) or inside an element (odd n), and
+    /// the recovered nodal moments are exact (a quadratic moment); the end moments are zero.
+    #[test]
+    fn a_pinned_beam_under_a_uniform_load_has_the_midspan_stress() {
+        let p = RodProperties::benchmark_b();
+        let (l, ei) = (p.length, p.youngs_modulus * p.second_moment_of_area);
+        let q = 1e-5 * 8.0 * ei / (l * l);
+        let w = |x: f64| q * x * (l.powi(3) - 2.0 * l * x * x + x.powi(3)) / (24.0 * ei);
+        let slope = |x: f64| q * (l.powi(3) - 6.0 * l * x * x + 4.0 * x.powi(3)) / (24.0 * ei);
+        let expected = q * l * l / 8.0 * p.outer_fibre_distance / p.second_moment_of_area;
+        for n in 2..=9 {
+            let rod = Rod::new(p, n).unwrap();
+            let e: Vec<f64> = (0..=n)
+                .flat_map(|k| {
+                    let x = l * k as f64 / n as f64;
+                    [x, w(x), 1.0, slope(x)]
+                })
+                .collect();
+            let sigma = rod.largest_normal_stress(&e);
+            assert!(
+                (sigma - expected).abs() < 1e-6 * expected,
+                "{n} elements: {sigma} vs {expected}"
+            );
+        }
+    }
 
     #[test]
     fn invalid_input_names_the_parameter() {

@@ -56,6 +56,33 @@ pub fn interpolate(
     }
 }
 
+/// Writes the accelerations at t₀ + s·h of the same interpolant (the second derivative of the
+/// quintic, a cubic in s) to the velocity rows `n_q .. 2 n_q` of `out`; other rows are untouched.
+#[allow(clippy::too_many_arguments)]
+pub fn acceleration(
+    n_q: usize,
+    h: f64,
+    y0: &[f64],
+    f0: &[f64],
+    y1: &[f64],
+    f1: &[f64],
+    s: f64,
+    out: &mut [f64],
+) {
+    let (s2, s3) = (s * s, s * s * s);
+    let e0 = -60.0 * s + 180.0 * s2 - 120.0 * s3;
+    let e1 = -36.0 * s + 96.0 * s2 - 60.0 * s3;
+    let e2 = 1.0 - 9.0 * s + 18.0 * s2 - 10.0 * s3;
+    let e3 = 3.0 * s - 12.0 * s2 + 10.0 * s3;
+    let e4 = -24.0 * s + 84.0 * s2 - 60.0 * s3;
+    let e5 = 60.0 * s - 180.0 * s2 + 120.0 * s3;
+    for i in 0..n_q {
+        let (q0, v0, a0) = (y0[i], y0[n_q + i], f0[n_q + i]);
+        let (q1, v1, a1) = (y1[i], y1[n_q + i], f1[n_q + i]);
+        out[n_q + i] = (e0 * q0 + e5 * q1) / (h * h) + (e1 * v0 + e4 * v1) / h + e2 * a0 + e3 * a1;
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -83,6 +110,8 @@ mod tests {
             assert!((out[0] - q(t)).abs() < 1e-14, "q at s = {s}");
             assert!((out[1] - v(t)).abs() < 1e-13, "v at s = {s}");
             assert!((out[2] - w(t)).abs() < 1e-14, "w at s = {s}");
+            acceleration(1, h, &y0, &f0, &y1, &f1, s, &mut out);
+            assert!((out[1] - a(t)).abs() < 1e-12, "a at s = {s}: {}", out[1]);
         }
     }
 }

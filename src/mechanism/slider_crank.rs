@@ -8,6 +8,7 @@ use super::inputs::{InputSignal, Inputs};
 use super::layout::{CRANK_ANGLE, PIN_A, StateLayout, pair};
 use super::rod_body::RodBody;
 use super::scales;
+use crate::ancf::RodProperties;
 use crate::error::ModelError;
 use crate::integrator::{ErrorScales, HeldProjection, MechanicalSystem, PlanarVector};
 use crate::joint::{ContactState, Joint, JointKinematics, MIN_IMPACT_VELOCITY};
@@ -47,6 +48,11 @@ pub struct SliderCrank {
     pub(super) gravity: Vector2<f64>,
     pub(super) rod_length: f64,
     pub(super) rod_mass: f64,
+    /// The rod's material and section (the rigid rod's stress).
+    pub(super) rod_section: RodProperties,
+    /// M t for the rigid translations t along x and y of the rod's coordinates: m a_G = (M t)ᵀ p̈
+    /// is the rate of the rod's linear momentum (see [`super::loads`]).
+    pub(super) rod_translation: [Vec<f64>; 2],
     /// Reference crank speed for the error scales (the initial speed, at least 1 rad/s).
     pub(super) reference_speed: f64,
     /// Length scale ℓ of the error scales \[m\].
@@ -92,6 +98,13 @@ impl SliderCrank {
             column[pin] = 1.0;
             rod.solve_mass(column);
         }
+        let rod_translation = [Vector2::x(), Vector2::y()].map(|d| {
+            let t = rod.straight(d, d);
+            let m = rod.mass_matrix();
+            (0..t.len())
+                .map(|i| (0..t.len()).map(|j| m[(i, j)] * t[j]).sum())
+                .collect()
+        });
         let crank_inertia = p.crank_inertia_about_pivot();
         let mut w = SMatrix::<f64, 6, 6>::zeros();
         w[(0, 0)] = 1.0 / crank_inertia;
@@ -123,6 +136,8 @@ impl SliderCrank {
             gravity: p.gravity_vector(),
             rod_length: p.rod.length,
             rod_mass: p.rod.mass(),
+            rod_section: p.rod,
+            rod_translation,
             reference_speed: p.crank_initial_speed.abs().max(1.0),
             position_scale: scales::position_scale(p, &inputs),
             impact_error_weight: p.impact_error_weight,
@@ -321,21 +336,22 @@ impl SliderCrank {
         }
     }
 
-    /// |joint force| and |slider acceleration| of a state from the joint kinematics alone, for a
-    /// clearance joint (`None` for the ideal joint, whose force is a constraint reaction).
+    /// Joint force on the journal and slider acceleration of a state from the joint kinematics
+    /// alone, for a clearance joint (`None` for the ideal joint, whose force is a constraint
+    /// reaction).
     ///
     /// With a clearance joint no constraint acts on the slider, so its equation of motion is
     /// m_s ẍ_s = F_s − F_x (the slider row of [`SliderCrank::evaluate`]): both values follow from
     /// the joint law without the rod's mass matrix or the constraint solve, at a small fraction of
     /// a right-hand side's cost. They equal those of [`SliderCrank::evaluate`].
-    pub fn clearance_joint_load(&self, y: &[f64]) -> Option<(f64, f64)> {
+    pub fn clearance_joint_load(&self, y: &[f64]) -> Option<(Vector2<f64>, f64)> {
         if self.active.ideal_joint {
             return None;
         }
         let kin = self.joint_kinematics(y);
         let force = self.joint.force(&kin, self.impact_velocity(&kin)).force;
         let acceleration = (self.inputs.slider_force - force.x) / self.slider_mass + self.gravity.x;
-        Some((force.norm(), acceleration.abs()))
+        Some((force, acceleration))
     }
 
     /// Solves (C W Cᵀ) x = r on the k active rows (rows of C beyond k are zero; x is zero there).
@@ -572,9 +588,9 @@ mod tests {
                     match load {
                         None => assert_eq!(joint_model, JointModel::Ideal),
                         Some((force, acceleration)) => {
-                            assert!(force > 100.0, "{joint_model:?}: {force} N");
-                            assert_eq!(force, ev.joint_force.norm());
-                            assert_eq!(acceleration, ev.slider_acceleration.abs());
+                            assert!(force.norm() > 100.0, "{joint_model:?}: {force} N");
+                            assert_eq!(force, ev.joint_force);
+                            assert_eq!(acceleration, ev.slider_acceleration);
                         }
                     }
                 }

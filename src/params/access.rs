@@ -37,6 +37,7 @@ real_fields! {
     RodDensity => rod.density;
     RodArea => rod.area;
     RodSecondMomentOfArea => rod.second_moment_of_area;
+    RodOuterFibreDistance => rod.outer_fibre_distance;
     RodStiffnessDamping => rod.stiffness_damping;
     CrankLength => crank_length;
     CrankMass => crank_mass;

@@ -20,6 +20,17 @@ use nalgebra::Vector2;
 use crate::ancf::Rod;
 use crate::error::ModelError;
 
+/// What the rod's deformation gives a designer at one instant.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Deformation {
+    /// Strain energy \[J\].
+    pub energy: f64,
+    /// Largest normal stress magnitude over the rod ([`Rod::largest_normal_stress`]) \[Pa\].
+    pub stress: f64,
+    /// Unit tangents r,ₓ/|r,ₓ| at the crank-pin end and at the slider-pin end.
+    pub tangents: [Vector2<f64>; 2],
+}
+
 /// The rod in full ANCF coordinates or in Craig–Bampton coordinates p (e = V p), with the buffers
 /// its force evaluation needs, so that evaluating forces never allocates.
 ///
@@ -242,6 +253,25 @@ impl RodModel {
                 self.rod.strain_energy(&self.e)
             }
             None => self.rod.strain_energy(p),
+        }
+    }
+
+    /// The rod's strain energy, largest normal stress and end tangents at `p`, from one expansion
+    /// to nodal coordinates.
+    pub fn deformation(&mut self, p: &[f64]) -> Deformation {
+        let e: &[f64] = match &self.reduction {
+            Some(cb) => {
+                cb.expand(p, &mut self.e);
+                &self.e
+            }
+            None => p,
+        };
+        let last = self.rod.last_node_offset();
+        let unit = |at: usize| Vector2::new(e[at], e[at + 1]).normalize();
+        Deformation {
+            energy: self.rod.strain_energy(e),
+            stress: self.rod.largest_normal_stress(e),
+            tangents: [unit(2), unit(last + 2)],
         }
     }
 

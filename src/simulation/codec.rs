@@ -63,6 +63,10 @@ impl ByteWriter<'_> {
         self.f64(p.joint_force);
         self.f64(p.slider_acceleration);
         self.f64(p.deformation_energy);
+        self.f64(p.crank_pin_force);
+        self.f64(p.main_bearing_force);
+        self.f64(p.guide_force);
+        self.f64(p.rod_stress);
         self.u64(p.contact_onsets);
     }
     /// Writes an input signal ([`signal_values`]).
@@ -159,6 +163,10 @@ impl<'a> ByteReader<'a> {
             joint_force: self.f64()?,
             slider_acceleration: self.f64()?,
             deformation_energy: self.f64()?,
+            crank_pin_force: self.f64()?,
+            main_bearing_force: self.f64()?,
+            guide_force: self.f64()?,
+            rod_stress: self.f64()?,
             contact_onsets: self.u64()?,
         })
     }

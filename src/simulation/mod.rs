@@ -44,6 +44,8 @@ pub struct Simulation {
     f_end: Vec<f64>,
     scratch: Vec<f64>,
     y_sample: Vec<f64>,
+    /// Accelerations of the dense output at a peak-hold sample (velocity rows).
+    a_sample: Vec<f64>,
     /// The inputs for the next interval (from `start`, the last communication point).
     next: InputSignal,
     peaks: PeakHold,
@@ -57,9 +59,18 @@ impl Simulation {
         crate::joint::contact_stiffness(parameters)
     }
 
-    /// A simulation at t = 0 in the initial state of the parameters (docs/model.md §10).
+    /// A simulation at t = 0 in the initial state of the parameters (docs/model.md §10), with
+    /// the inputs of [`Inputs::at_start`] (the drive speed at the crank's initial speed).
     pub fn new(parameters: Parameters) -> Result<Self, ModelError> {
-        let mut mechanism = SliderCrank::new(&parameters)?;
+        let inputs = Inputs::at_start(&parameters);
+        Self::with_inputs(parameters, inputs)
+    }
+
+    /// A simulation at t = 0 whose inputs start at `inputs`: the start is in equilibrium with
+    /// them (the rod's quasi-static deformation carries the slider force and the drive torque as
+    /// well as the inertial loads).
+    pub fn with_inputs(parameters: Parameters, inputs: Inputs) -> Result<Self, ModelError> {
+        let mut mechanism = SliderCrank::with_inputs(&parameters, inputs)?;
         let mut state = mechanism.initial_state(
             parameters.crank_initial_angle,
             parameters.crank_initial_speed,
@@ -85,6 +96,7 @@ impl Simulation {
         Ok(Self {
             scratch: vec![0.0; state.len()],
             y_sample: vec![0.0; state.len()],
+            a_sample: vec![0.0; state.len()],
             contact_start: mechanism.contact_state(),
             parameters,
             mechanism,
@@ -352,14 +364,19 @@ impl Simulation {
     fn record_step_end(&mut self) -> Result<(), ModelError> {
         let onset = !self.contact_start.in_contact && self.mechanism.contact_state().in_contact;
         self.mechanism.set_time(self.step_end);
-        let (force, acceleration) = match self.mechanism.clearance_joint_load(&self.y_end) {
-            Some(load) => load,
+        let at_end = match self.mechanism.clearance_joint_load(&self.y_end) {
+            Some((force, acceleration)) => {
+                let loads = self.mechanism.loads(&self.y_end, &self.f_end, force);
+                peaks::sample(force, acceleration, &loads)
+            }
             None => {
-                let ev = self.mechanism.evaluate(&self.y_end, &mut self.scratch)?;
-                (ev.joint_force.norm(), ev.slider_acceleration.abs())
+                let ev = *self.mechanism.evaluate(&self.y_end, &mut self.scratch)?;
+                let loads = self
+                    .mechanism
+                    .loads(&self.y_end, &self.scratch, ev.joint_force);
+                peaks::sample(ev.joint_force, ev.slider_acceleration, &loads)
             }
         };
-        let energy = self.mechanism.strain_energy(&self.y_end);
         let step = AcceptedStep {
             start: self.step_start,
             end: self.step_end,
@@ -369,13 +386,13 @@ impl Simulation {
             f_end: &self.f_end,
             contact_start: self.contact_start,
         };
-        let within = peaks::within_step(&mut self.mechanism, &step, &mut self.y_sample);
-        self.peaks.step_end = Peaks {
-            joint_force: force.max(within.joint_force),
-            slider_acceleration: acceleration.max(within.slider_acceleration),
-            deformation_energy: energy.max(within.deformation_energy),
-            contact_onsets: u64::from(onset),
-        };
+        let within = peaks::within_step(
+            &mut self.mechanism,
+            &step,
+            &mut self.y_sample,
+            &mut self.a_sample,
+        );
+        self.peaks.step_end = Peaks::from_sample(peaks::larger(at_end, within), u64::from(onset));
         self.peaks.pending = true;
         self.check_validity(true);
         Ok(())

@@ -68,6 +68,34 @@ pub struct Outputs {
     pub slider_acceleration_peak: f64,
     /// Largest rod deformation energy over the last communication interval \[J\].
     pub deformation_energy_peak: f64,
+    /// Force of the crank on the rod at the crank pin, x \[N\].
+    pub crank_pin_force_x: f64,
+    /// Force of the crank on the rod at the crank pin, y \[N\].
+    pub crank_pin_force_y: f64,
+    /// Magnitude of the crank-pin force \[N\].
+    pub crank_pin_force: f64,
+    /// Largest crank-pin force over the last communication interval \[N\].
+    pub crank_pin_force_peak: f64,
+    /// Force of the ground on the crank at the main bearing, x \[N\].
+    pub main_bearing_force_x: f64,
+    /// Force of the ground on the crank at the main bearing, y \[N\].
+    pub main_bearing_force_y: f64,
+    /// Magnitude of the main-bearing force \[N\].
+    pub main_bearing_force: f64,
+    /// Largest main-bearing force over the last communication interval \[N\].
+    pub main_bearing_force_peak: f64,
+    /// Normal force of the guide on the slider, along y \[N\].
+    pub guide_force: f64,
+    /// Largest |guide force| over the last communication interval \[N\].
+    pub guide_force_peak: f64,
+    /// Largest normal stress magnitude over the rod \[Pa\].
+    pub rod_stress: f64,
+    /// Largest rod stress over the last communication interval \[Pa\].
+    pub rod_stress_peak: f64,
+    /// The rod's axial force at the crank pin, tension positive \[N\].
+    pub rod_axial_force_crank_pin: f64,
+    /// The rod's axial force at the slider pin, tension positive \[N\].
+    pub rod_axial_force_slider_pin: f64,
     /// Contact onsets in the last communication interval.
     pub contact_onsets: u64,
     /// Contact onsets since the start.
@@ -88,6 +116,7 @@ pub(super) fn outputs(
     warnings: u64,
 ) -> Result<Outputs, ModelError> {
     let ev = *mechanism.evaluate(y, scratch)?;
+    let loads = mechanism.loads(y, scratch, ev.joint_force);
     let l = mechanism.layout();
     let kin = mechanism.joint_kinematics(y);
     let penetration = mechanism.penetration(y);
@@ -126,6 +155,23 @@ pub(super) fn outputs(
             .slider_acceleration
             .max(ev.slider_acceleration.abs()),
         deformation_energy_peak: peaks.interval.deformation_energy.max(energies.strain),
+        crank_pin_force_x: loads.crank_pin.x,
+        crank_pin_force_y: loads.crank_pin.y,
+        crank_pin_force: loads.crank_pin.norm(),
+        crank_pin_force_peak: peaks.interval.crank_pin_force.max(loads.crank_pin.norm()),
+        main_bearing_force_x: loads.main_bearing.x,
+        main_bearing_force_y: loads.main_bearing.y,
+        main_bearing_force: loads.main_bearing.norm(),
+        main_bearing_force_peak: peaks
+            .interval
+            .main_bearing_force
+            .max(loads.main_bearing.norm()),
+        guide_force: loads.guide,
+        guide_force_peak: peaks.interval.guide_force.max(loads.guide.abs()),
+        rod_stress: loads.stress,
+        rod_stress_peak: peaks.interval.rod_stress.max(loads.stress),
+        rod_axial_force_crank_pin: loads.axial[0],
+        rod_axial_force_slider_pin: loads.axial[1],
         contact_onsets: peaks.interval.contact_onsets,
         contact_onsets_total: peaks.total_onsets,
         warnings,

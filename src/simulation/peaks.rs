@@ -1,8 +1,10 @@
-//! Peak-hold outputs: the extremes of the joint load, the slider acceleration and the rod's
-//! deformation energy over each communication interval, and the contact onsets in it.
+//! Peak-hold outputs: the extremes of the joint loads, the slider acceleration, the rod's
+//! deformation energy and stress over each communication interval, and the contact onsets in it.
+
+use nalgebra::Vector2;
 
 use crate::integrator::dense;
-use crate::mechanism::{ContactState, SliderCrank};
+use crate::mechanism::{ContactState, Loads, SliderCrank};
 
 /// Extremes of the solution over a stretch of time, and the contact onsets in it.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -13,18 +15,88 @@ pub struct Peaks {
     pub slider_acceleration: f64,
     /// Largest rod deformation energy \[J\].
     pub deformation_energy: f64,
+    /// Largest |crank-pin force| \[N\].
+    pub crank_pin_force: f64,
+    /// Largest |main-bearing force| \[N\].
+    pub main_bearing_force: f64,
+    /// Largest |guide force| \[N\].
+    pub guide_force: f64,
+    /// Largest rod stress \[Pa\].
+    pub rod_stress: f64,
     /// Number of contact onsets.
     pub contact_onsets: u64,
 }
 
+/// Number of peak-held quantities.
+const SERIES: usize = 7;
+
+/// The peak-held magnitudes of one instant, in the order of [`Peaks::from_sample`].
+pub(super) type Sample = [f64; SERIES];
+
 impl Peaks {
     /// Extends these extremes by `other`'s and adds its onsets.
     pub(super) fn absorb(&mut self, other: &Peaks) {
-        self.joint_force = self.joint_force.max(other.joint_force);
-        self.slider_acceleration = self.slider_acceleration.max(other.slider_acceleration);
-        self.deformation_energy = self.deformation_energy.max(other.deformation_energy);
-        self.contact_onsets += other.contact_onsets;
+        let mut sample = self.sample();
+        for (s, o) in sample.iter_mut().zip(other.sample()) {
+            *s = s.max(o);
+        }
+        *self = Self::from_sample(sample, self.contact_onsets + other.contact_onsets);
     }
+
+    /// Peaks of one instant's magnitudes `sample` with `contact_onsets` onsets.
+    pub(super) fn from_sample(sample: Sample, contact_onsets: u64) -> Self {
+        let [
+            joint_force,
+            slider_acceleration,
+            deformation_energy,
+            crank_pin_force,
+            main_bearing_force,
+            guide_force,
+            rod_stress,
+        ] = sample;
+        Self {
+            joint_force,
+            slider_acceleration,
+            deformation_energy,
+            crank_pin_force,
+            main_bearing_force,
+            guide_force,
+            rod_stress,
+            contact_onsets,
+        }
+    }
+
+    /// The extremes as a sample (see [`Peaks::from_sample`]).
+    fn sample(&self) -> Sample {
+        [
+            self.joint_force,
+            self.slider_acceleration,
+            self.deformation_energy,
+            self.crank_pin_force,
+            self.main_bearing_force,
+            self.guide_force,
+            self.rod_stress,
+        ]
+    }
+}
+
+/// The peak-held magnitudes of one instant: the joint force on the journal, the slider
+/// acceleration and the loads.
+pub(super) fn sample(joint_force: Vector2<f64>, slider_acceleration: f64, loads: &Loads) -> Sample {
+    [
+        joint_force.norm(),
+        slider_acceleration.abs(),
+        loads.deformation_energy,
+        loads.crank_pin.norm(),
+        loads.main_bearing.norm(),
+        loads.guide.abs(),
+        loads.stress,
+    ]
+}
+
+/// The larger of two samples, quantity by quantity.
+pub(super) fn larger(a: Sample, b: Sample) -> Sample {
+    std::array::from_fn(|i| a[i].max(b[i]))
 }
 
 /// Interior points of an accepted step at which the peak-hold outputs sample the joint load while
@@ -99,81 +171,66 @@ pub(super) struct AcceptedStep<'a> {
     pub(super) contact_start: ContactState,
 }
 
-/// Largest |joint force| and |slider acceleration| inside the step just accepted, if the
-/// journal touches the bearing at either end of it (zero otherwise); see [`PeakHold`]. `sample`
-/// is scratch space of one state.
+/// The largest peak-held magnitudes inside the step just accepted, if the journal touches the
+/// bearing at either end of it (zeros otherwise); see [`PeakHold`]. `sample` and `acceleration`
+/// are scratch space of one state each.
 pub(super) fn within_step(
     mechanism: &mut SliderCrank,
     step: &AcceptedStep<'_>,
     sample: &mut [f64],
-) -> Peaks {
+    acceleration: &mut [f64],
+) -> Sample {
     let end_contact = mechanism.contact_state();
     if !(step.contact_start.in_contact || end_contact.in_contact) {
-        return Peaks::default();
+        return [0.0; SERIES];
     }
     // The contact state the step was integrated with (an onset inside it is latched at its end).
     mechanism.with_contact_state(step.contact_start, |mechanism| {
-        largest_loads(mechanism, step, sample)
+        let mut at = |k: f64| load_within(mechanism, step, sample, acceleration, k);
+        largest_loads(&mut at)
     })
 }
 
-/// The largest |joint force|, |slider acceleration| and deformation energy among the samples of
-/// the step and at the vertex of the parabola through each largest sample and its neighbours.
-fn largest_loads(
-    mechanism: &mut SliderCrank,
-    step: &AcceptedStep<'_>,
-    sample: &mut [f64],
-) -> Peaks {
-    let mut samples = [[0.0; PEAK_SAMPLES + 2]; 3];
+/// The largest of each quantity among the samples k = 0 … [`PEAK_SAMPLES`] + 1 of a step and at
+/// the vertex of the parabola through each quantity's largest sample and its neighbours.
+fn largest_loads(at: &mut impl FnMut(f64) -> Sample) -> Sample {
+    let mut series = [[0.0; PEAK_SAMPLES + 2]; SERIES];
     for k in 0..PEAK_SAMPLES + 2 {
-        for (series, value) in samples
-            .iter_mut()
-            .zip(load_within(mechanism, step, sample, k as f64))
-        {
-            series[k] = value;
+        for (values, value) in series.iter_mut().zip(at(k as f64)) {
+            values[k] = value;
         }
     }
-    let mut largest = [0.0; 3];
-    for (i, series) in samples.iter().enumerate() {
-        largest[i] = series.iter().copied().fold(0.0, f64::max);
-        if let Some(k) = parabola_vertex(series) {
-            largest[i] = largest[i].max(load_within(mechanism, step, sample, k)[i]);
+    std::array::from_fn(|i| {
+        let largest = series[i].iter().copied().fold(0.0, f64::max);
+        match parabola_vertex(&series[i]) {
+            Some(k) => largest.max(at(k)[i]),
+            None => largest,
         }
-    }
-    Peaks {
-        joint_force: largest[0],
-        slider_acceleration: largest[1],
-        deformation_energy: largest[2],
-        contact_onsets: 0,
-    }
+    })
 }
 
-/// |Joint force|, |slider acceleration| and rod deformation energy at sample `k` (of
-/// [`PEAK_SAMPLES`] + 1 intervals) of the step just accepted.
+/// The peak-held magnitudes at sample `k` (of [`PEAK_SAMPLES`] + 1 intervals) of the step just
+/// accepted, from the dense output's state and accelerations.
 fn load_within(
     mechanism: &mut SliderCrank,
     step: &AcceptedStep<'_>,
     sample: &mut [f64],
+    acceleration: &mut [f64],
     k: f64,
-) -> [f64; 3] {
+) -> Sample {
     let h = step.end - step.start;
     let theta = k / (PEAK_SAMPLES + 1) as f64;
     mechanism.set_time(step.start + theta * h);
-    dense::interpolate(
-        mechanism.n_coordinates(),
-        h,
-        step.y_start,
-        step.f_start,
-        step.y_end,
-        step.f_end,
-        theta,
-        sample,
-    );
-    let (force, acceleration) = mechanism.clearance_joint_load(sample).unwrap_or((0.0, 0.0));
-    let energy = mechanism.strain_energy(sample);
-    [force, acceleration, energy]
+    let n_q = mechanism.n_coordinates();
+    let (y0, f0, y1, f1) = (step.y_start, step.f_start, step.y_end, step.f_end);
+    dense::interpolate(n_q, h, y0, f0, y1, f1, theta, sample);
+    dense::acceleration(n_q, h, y0, f0, y1, f1, theta, acceleration);
+    let (force, slider_acceleration) = mechanism
+        .clearance_joint_load(sample)
+        .unwrap_or((Vector2::zeros(), 0.0));
+    let loads = mechanism.loads(sample, acceleration, force);
+    self::sample(force, slider_acceleration, &loads)
 }
-
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -10,6 +10,7 @@ mod contract;
 mod domain;
 mod impacts;
 mod joints;
+mod loads;
 mod motion;
 
 use flexible_slider_crank::ancf::RodProperties;

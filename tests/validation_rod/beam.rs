@@ -142,8 +142,9 @@ fn assembled_and_reduced_tangents_equal_central_differences() {
 }
 
 /// Tip displacement (along, across) the undeformed axis of a cantilever clamped at node 0 under a
-/// transverse tip load with α = P L²/EI, solved by Newton in `steps` load increments.
-fn cantilever_tip(rod: Rod, alpha: f64, steps: usize) -> (f64, f64) {
+/// transverse tip load with α = P L²/EI, solved by Newton in `steps` load increments, and the
+/// rod's largest normal stress.
+fn cantilever_tip(rod: Rod, alpha: f64, steps: usize) -> (f64, f64, f64) {
     let p = rod.properties();
     let (length, ei) = (p.length, p.youngs_modulus * p.second_moment_of_area);
     let tip = rod.last_node_offset();
@@ -152,19 +153,25 @@ fn cantilever_tip(rod: Rod, alpha: f64, steps: usize) -> (f64, f64) {
     let mut load = vec![0.0; e.len()];
     load[tip + 1] = alpha * ei / (length * length);
     solve_static(&mut model, &mut e, &[0, 1, 2, 3], &load, steps);
-    (length - e[tip], e[tip + 1])
+    let stress = model.rod().largest_normal_stress(&e);
+    (length - e[tip], e[tip + 1], stress)
 }
 
-/// Small tip load, 4 elements: v = P L³/(3 EI) within 0.1 %. Cubic Hermite elements
-/// reproduce the linear cubic solution exactly; at α = 1e-4 the geometric nonlinearity is ~α².
+/// Small tip load, 4 elements: v = P L³/(3 EI) within 0.1 %, and the largest stress is the
+/// clamped end's, σ = P L c/I (its moment, recovered at the end node from the Gauss points),
+/// within 0.1 %. Cubic Hermite elements reproduce the linear cubic solution exactly; at α = 1e-4
+/// the geometric nonlinearity is ~α².
 #[test]
 fn linear_cantilever_tip_deflection() {
     let rod = benchmark_rod(4);
-    let length = rod.properties().length;
+    let p = *rod.properties();
+    let length = p.length;
     let alpha = 1e-4;
-    let (_, v) = cantilever_tip(rod, alpha, 1);
+    let (_, v, stress) = cantilever_tip(rod, alpha, 1);
     let expected = alpha * length / 3.0;
     assert_close(v, expected, 1e-3, 0.0, "tip deflection");
+    let root_stress = alpha * p.youngs_modulus * p.outer_fibre_distance / length;
+    assert_close(stress, root_stress, 1e-3, 0.0, "clamped-end stress");
     println!(
         "linear cantilever, 4 elements: v = {v:.9e} m, PL³/3EI = {expected:.9e} m, rel. error {:.2e}",
         (v - expected).abs() / expected
@@ -176,7 +183,7 @@ fn linear_cantilever_tip_deflection() {
 #[test]
 fn large_deflection_matches_elastica() {
     for (alpha, u_ref, v_ref, steps) in [(1.0, 0.05643, 0.30172, 4), (10.0, 0.55500, 0.81061, 20)] {
-        let (u, v) = cantilever_tip(slender_rod(16), alpha, steps);
+        let (u, v, _) = cantilever_tip(slender_rod(16), alpha, steps);
         println!(
             "elastica α = {alpha}: u/L = {u:.5} (ref {u_ref}, err {:.2e}), v/L = {v:.5} (ref {v_ref}, err {:.2e})",
             (u - u_ref).abs() / u_ref,

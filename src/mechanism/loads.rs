@@ -1,0 +1,219 @@
+//! The loads parts are sized from: the force at every joint, the guide's normal force, the rod's
+//! axial force at its pins and its largest normal stress.
+//!
+//! ```text
+//! crank pin     F_A = m_rod a_G,rod − F_B − m_rod g          (the rod's linear momentum)
+//! main bearing  F_O = m_c a_G,crank + F_A − m_c g             (the crank's)
+//! guide         N   = F_B,y − m_s g_y                         (the slider's y equation)
+//! axial force   N_A = −F_A · t_A,   N_B = F_B · t_B           (tension positive)
+//! ```
+//! with F_B the joint force on the journal (on the rod's slider end), F_A the force of the crank on
+//! the rod, t_A, t_B the rod's unit tangents at its ends (crank → slider), and m_rod a_G,rod =
+//! Σ_j (M t)_j p̈_j for the rigid translations t of the rod's coordinates: the rod's internal forces
+//! cancel in its momentum (they are invariant under translation), so the pin force follows from
+//! the accelerations alone, without the constraint solve, and the same formula serves the
+//! accelerations of an evaluation and those of the dense output inside a step.
+//!
+//! The stress: for a flexible rod from its strains ([`crate::ancf::Rod::largest_normal_stress`]);
+//! for the rigid rod from the equilibrium of its parts under the pin force and the distributed
+//! inertia and gravity (d'Alembert), in closed form ([`rigid_rod_stress`]).
+
+use nalgebra::Vector2;
+
+use super::layout::{CRANK_ANGLE, PIN_A, pair};
+use super::rod_body::RodBody;
+use super::slider_crank::SliderCrank;
+use crate::ancf::RodProperties;
+use crate::math;
+use crate::reduction::Deformation;
+
+/// Loads of one instant (SI units).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Loads {
+    /// Force of the crank on the rod at the crank pin \[N\].
+    pub crank_pin: Vector2<f64>,
+    /// Force of the ground on the crank at the main bearing (the crank pivot) \[N\].
+    pub main_bearing: Vector2<f64>,
+    /// Normal force of the guide on the slider, along y \[N\].
+    pub guide: f64,
+    /// The rod's axial force at the crank pin and at the slider pin, tension positive \[N\].
+    pub axial: [f64; 2],
+    /// Largest normal stress magnitude over the rod, |N|/A + |M| c/I \[Pa\].
+    pub stress: f64,
+    /// The rod's strain energy \[J\].
+    pub deformation_energy: f64,
+}
+
+impl SliderCrank {
+    /// The loads of state `y` whose time derivative is `dy` (only its accelerations are read),
+    /// with `joint_force` the rod–slider joint's force on the journal.
+    pub fn loads(&mut self, y: &[f64], dy: &[f64], joint_force: Vector2<f64>) -> Loads {
+        let l = self.layout;
+        let p_ddot = &dy[l.rod_rates()];
+        let momentum_rate = Vector2::new(
+            self.rod_translation[0]
+                .iter()
+                .zip(p_ddot)
+                .map(|(u, a)| u * a)
+                .sum(),
+            self.rod_translation[1]
+                .iter()
+                .zip(p_ddot)
+                .map(|(u, a)| u * a)
+                .sum(),
+        );
+        let crank_pin = momentum_rate - joint_force - self.rod_mass * self.gravity;
+        let (theta, omega, alpha) = (y[CRANK_ANGLE], y[l.crank_speed()], dy[l.crank_speed()]);
+        let (sin, cos) = math::sin_cos(theta);
+        let crank_centre_acceleration = 0.5
+            * self.crank_length
+            * (alpha * Vector2::new(-sin, cos) - omega * omega * Vector2::new(cos, sin));
+        let main_bearing = self.crank_mass * crank_centre_acceleration + crank_pin
+            - self.crank_mass * self.gravity;
+        let deformation = match &mut self.rod {
+            RodBody::Rigid { .. } => {
+                let (r_a, r_b) = (pair(y, PIN_A), pair(y, l.pin_b()));
+                let t = (r_b - r_a).normalize();
+                let accelerations = [pair(dy, l.rate_of(PIN_A)), pair(dy, l.rate_of(l.pin_b()))];
+                Deformation {
+                    energy: 0.0,
+                    stress: rigid_rod_stress(
+                        &self.rod_section,
+                        t,
+                        accelerations,
+                        crank_pin,
+                        self.gravity,
+                    ),
+                    tangents: [t, t],
+                }
+            }
+            RodBody::Flexible(model) => model.deformation(&y[l.rod()]),
+        };
+        let [t_a, t_b] = deformation.tangents;
+        Loads {
+            crank_pin,
+            main_bearing,
+            guide: joint_force.y - self.slider_mass * self.gravity.y,
+            axial: [-crank_pin.dot(&t_a), joint_force.dot(&t_b)],
+            stress: deformation.stress,
+            deformation_energy: deformation.energy,
+        }
+    }
+}
+
+/// Largest normal stress \[Pa\] of a rigid uniform rod with unit direction `t` (crank → slider),
+/// pin accelerations `accelerations` = [a_A, a_B], loaded by the force `f_a` of the crank at pin A,
+/// its weight and its inertia (the slider pin's force closes the balance).
+///
+/// The rod's acceleration field is linear along it, a(u) = a_A + (a_B − a_A) u/l, so the load per
+/// length q(u) = ρA (g − a(u)) is linear too, with axial part q·t = p₀ + p₁u and transverse part
+/// t × q = α + βu. The equilibrium of the part [0, s] gives the axial force (tension positive) and
+/// the bending moment
+/// ```text
+/// N(s) = −F_A·t − p₀ s − p₁ s²/2,      M(s) = (t × F_A) s + α s²/2 + β s³/6,
+/// ```
+/// and the stress σ(s) = |N|/A + |M| c/I. On each stretch where N and M keep their signs σ is a
+/// cubic, so its maximum over [0, l] lies at an end or where ±N'/A ± M' c/I = 0: the
+/// roots of four quadratics are the only candidates besides the ends (exact, no sampling).
+pub fn rigid_rod_stress(
+    section: &RodProperties,
+    t: Vector2<f64>,
+    accelerations: [Vector2<f64>; 2],
+    f_a: Vector2<f64>,
+    g: Vector2<f64>,
+) -> f64 {
+    let cross = |a: Vector2<f64>, b: Vector2<f64>| a.x * b.y - a.y * b.x;
+    let (length, area) = (section.length, section.area);
+    let bending = section.outer_fibre_distance / section.second_moment_of_area;
+    let rho_a = section.density * area;
+    let [a_a, a_b] = accelerations;
+    let (q0, q1) = (rho_a * (g - a_a), -rho_a * (a_b - a_a) / length);
+    let (p0, p1) = (q0.dot(&t), q1.dot(&t));
+    let (alpha, beta) = (cross(t, q0), cross(t, q1));
+    let (n0, f_perp) = (-f_a.dot(&t), cross(t, f_a));
+    let axial = |s: f64| n0 - p0 * s - 0.5 * p1 * s * s;
+    let moment = |s: f64| f_perp * s + 0.5 * alpha * s * s + beta * s * s * s / 6.0;
+    let sigma = |s: f64| axial(s).abs() / area + moment(s).abs() * bending;
+    let mut largest = sigma(0.0).max(sigma(length));
+    for sign_n in [-1.0, 1.0] {
+        for sign_m in [-1.0, 1.0] {
+            // sign_n N'/A + sign_m M' c/I = a s² + b s + c = 0.
+            let (n, m) = (sign_n / area, sign_m * bending);
+            let (a, b, c) = (0.5 * beta * m, alpha * m - p1 * n, f_perp * m - p0 * n);
+            for s in quadratic_roots(a, b, c).into_iter().flatten() {
+                if s > 0.0 && s < length {
+                    largest = largest.max(sigma(s));
+                }
+            }
+        }
+    }
+    largest
+}
+
+/// The real roots of a s² + b s + c = 0 (a linear or constant equation when a vanishes).
+fn quadratic_roots(a: f64, b: f64, c: f64) -> [Option<f64>; 2] {
+    if a == 0.0 {
+        return [(b != 0.0).then(|| -c / b), None];
+    }
+    let discriminant = b * b - 4.0 * a * c;
+    if discriminant < 0.0 {
+        return [None, None];
+    }
+    // The numerically stable pair: q = −(b + sign(b) √D)/2, roots q/a and c/q.
+    let q = -0.5 * (b + b.signum() * discriminant.sqrt());
+    [Some(q / a), (q != 0.0).then(|| c / q)]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The closed form against a dense sampling of σ(s) from the parts' equilibrium summed
+    /// numerically: a rod with a pin force, inertia and oblique gravity.
+    #[test]
+    fn rigid_rod_stress_is_the_largest_over_the_rod() {
+        let section = RodProperties::benchmark_b();
+        let t = Vector2::new(0.8, 0.6);
+        let accelerations = [Vector2::new(-900.0, 4000.0), Vector2::new(2500.0, -300.0)];
+        let f_a = Vector2::new(700.0, -1500.0);
+        let g = Vector2::new(3.0, -9.81);
+        let stress = rigid_rod_stress(&section, t, accelerations, f_a, g);
+        let (l, n) = (section.length, 20_000);
+        let rho_a = section.density * section.area;
+        let ds = l / n as f64;
+        let mut sampled = 0.0f64;
+        // March along the rod: the internal force T and moment M of the part [0, s].
+        let (mut force, mut moment) = (-f_a, 0.0f64);
+        let cross = |a: Vector2<f64>, b: Vector2<f64>| a.x * b.y - a.y * b.x;
+        for k in 0..=n {
+            let s = k as f64 * ds;
+            let sigma = force.dot(&t).abs() / section.area
+                + moment.abs() * section.outer_fibre_distance / section.second_moment_of_area;
+            sampled = sampled.max(sigma);
+            // Midpoint rule for the load on [s, s + ds].
+            let u = s + 0.5 * ds;
+            let a = accelerations[0] + (accelerations[1] - accelerations[0]) * (u / l);
+            let q = rho_a * (g - a) * ds;
+            // (−M, by the sign convention of this sum: |M| is compared.)
+            moment += cross(t, force) * ds - cross(t, q) * 0.5 * ds;
+            force -= q;
+        }
+        assert!(
+            (stress - sampled).abs() < 1e-6 * stress,
+            "closed form {stress} vs sampled {sampled}"
+        );
+    }
+
+    /// Quadratic roots, also with a vanishing leading coefficient.
+    #[test]
+    fn quadratic_roots_are_the_roots() {
+        let mut roots: Vec<f64> = quadratic_roots(2.0, -6.0, 4.0)
+            .into_iter()
+            .flatten()
+            .collect();
+        roots.sort_by(f64::total_cmp);
+        assert_eq!(roots, vec![1.0, 2.0]);
+        assert_eq!(quadratic_roots(0.0, 2.0, -1.0), [Some(0.5), None]);
+        assert_eq!(quadratic_roots(1.0, 0.0, 1.0), [None, None]);
+    }
+}
