@@ -70,10 +70,9 @@ impl SliderCrankFmu {
                     self.parameters.relative_tolerance, parameters.relative_tolerance
                 ));
             }
-            let mut sim = Simulation::new(parameters)?;
+            let mut sim = Simulation::with_inputs(parameters, self.inputs.value)?;
             sim.set_time(self.time);
             for i in [Input::DriveSpeed, Input::DriveTorque, Input::SliderForce] {
-                sim.set_input(i, self.inputs.value.get(i));
                 for (k, d) in self.inputs.derivatives.iter().enumerate() {
                     sim.set_input_derivative(i, k + 1, d.get(i))?;
                 }
@@ -299,9 +298,14 @@ impl Model for SliderCrankFmu {
             }
             match input(v.vr) {
                 Some(i) => {
+                    let changed = self.inputs.value.get(i) != value;
                     *self.inputs.value.get_mut(i) = value;
-                    if let Some(sim) = &mut self.simulation {
-                        sim.set_input(i, value);
+                    match &mut self.simulation {
+                        // Before the first step the start follows the inputs: it is rebuilt in
+                        // equilibrium with them (and the crank at the new drive.speed).
+                        Some(sim) if changed && sim.stats().steps == 0 => self.simulation = None,
+                        Some(sim) => sim.set_input(i, value),
+                        None => {}
                     }
                 }
                 None => unreachable_type(v)?,

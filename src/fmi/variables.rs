@@ -166,6 +166,19 @@ pub const ENUMERATIONS: &[Enumeration] = &[
             ),
         ],
     },
+    Enumeration {
+        name: "JournalStart",
+        items: &[
+            (
+                "centred",
+                "centred in the bearing (the benchmarks' start): it crosses the clearance and impacts",
+            ),
+            (
+                "settled",
+                "in quasi-static equilibrium with the ideal joint's initial reaction, at rest in the bearing: no start-up impact",
+            ),
+        ],
+    },
 ];
 
 /// Units: name and SI base-unit exponents (kg, m, s, A, rad), or None where FMI 2's integer
@@ -339,6 +352,7 @@ pub enum Vr {
     RodStressPeak,
     RodAxialForceCrankPin,
     RodAxialForceSliderPin,
+    JointInitialState,
 }
 
 /// 5000 rpm in rad/s (benchmark B); the same expression as `params::BENCHMARK_SPEED`.
@@ -982,5 +996,12 @@ pub const VARIABLES: &[Variable] = &[
         "rod.axialForceSliderPin",
         "N",
         "Axial force of the rod at the slider pin (along the rod's end tangent), tension positive",
+    ),
+    Variable::enumeration(
+        Vr::JointInitialState,
+        "joint.initialState",
+        1,
+        7,
+        "Where the journal of a clearance joint starts",
     ),
 ];

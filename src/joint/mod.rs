@@ -17,6 +17,8 @@ pub use bearing::JournalBearing;
 pub use contact::{DryContact, hertz_stiffness};
 pub use kinematics::{ContactState, JointForce, JointKinematics, MIN_IMPACT_VELOCITY};
 
+use nalgebra::Vector2;
+
 use crate::params::{JointModel, Parameters};
 
 /// The joint model with its constants.
@@ -73,6 +75,61 @@ impl Joint {
             Self::Dry(dry) => Some(dry),
             Self::Lubricated(bearing) => Some(&bearing.dry),
         }
+    }
+
+    /// The eccentricity at which the journal, at rest in the bearing (ė = 0) and turning at
+    /// `omega_journal`, receives the force `force` from the joint: its quasi-static equilibrium
+    /// against a steady load (the settled start, docs/model.md §10).
+    ///
+    /// Dry and frictionless in closed form, e = −(c + δ) F/|F| with K δ^1.5 = |F|; with friction
+    /// or a film, Newton's method on F(e) = F from that point (a 2 × 2 difference Jacobian, steps
+    /// halved until the residual falls). The ideal joint and a zero force give the centre.
+    pub fn eccentricity_carrying(&self, force: Vector2<f64>, omega_journal: f64) -> Vector2<f64> {
+        let Some(dry) = self.dry_contact() else {
+            return Vector2::zeros();
+        };
+        let magnitude = force.norm();
+        if magnitude == 0.0 {
+            return Vector2::zeros();
+        }
+        let depth = crate::math::powf(magnitude / dry.stiffness, 2.0 / 3.0);
+        let mut e = -(dry.clearance + depth) / magnitude * force;
+        let residual = |e: Vector2<f64>| {
+            let kinematics = JointKinematics {
+                e,
+                e_dot: Vector2::zeros(),
+                omega_journal,
+            };
+            self.force(&kinematics, MIN_IMPACT_VELOCITY).force - force
+        };
+        let mut r = residual(e);
+        for _ in 0..50 {
+            if r.norm() <= 1e-10 * magnitude {
+                break;
+            }
+            let h = 1e-7 * (dry.clearance + e.norm());
+            let jacobian = nalgebra::Matrix2::from_columns(&[
+                (residual(e + Vector2::new(h, 0.0)) - r) / h,
+                (residual(e + Vector2::new(0.0, h)) - r) / h,
+            ]);
+            let Some(step) = jacobian.lu().solve(&(-r)) else {
+                break;
+            };
+            let mut scale = 1.0;
+            loop {
+                let trial = e + scale * step;
+                let r_trial = residual(trial);
+                if r_trial.norm() < r.norm() {
+                    (e, r) = (trial, r_trial);
+                    break;
+                }
+                scale *= 0.5;
+                if scale < 1e-6 {
+                    return e;
+                }
+            }
+        }
+        e
     }
 
     /// Force on the journal; `impact_velocity` is δ̇⁽⁻⁾ of the current contact event.

@@ -35,7 +35,7 @@ fn joint_length(p: &Parameters, inputs: &Inputs) -> f64 {
         (JointModel::Lubricated, _) => p.clearance.min(base) * (1.0 - p.switch_eccentricity),
         (JointModel::Ideal, RodFormulation::Rigid) => base,
         (JointModel::Ideal, rod) => {
-            let speed = p.crank_initial_speed.abs().max(1.0);
+            let speed = p.start_speed(inputs.drive_speed).abs().max(1.0);
             let masses = p.rod.mass() + p.slider_mass;
             let load = masses * speed * speed * p.crank_length
                 + inputs.slider_force.abs()

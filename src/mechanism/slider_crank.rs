@@ -138,7 +138,7 @@ impl SliderCrank {
             rod_mass: p.rod.mass(),
             rod_section: p.rod,
             rod_translation,
-            reference_speed: p.crank_initial_speed.abs().max(1.0),
+            reference_speed: p.start_speed(inputs.drive_speed).abs().max(1.0),
             position_scale: scales::position_scale(p, &inputs),
             impact_error_weight: p.impact_error_weight,
             rod_compliance,
@@ -172,7 +172,7 @@ impl SliderCrank {
     ///
     /// Every state is measured by the displacement (or velocity) it causes in the mechanism, in
     /// units of the joint's length scale ℓ (see `position_scale`) and of the speed V = ω₀ ℓ
-    /// (ω₀ = |crank.initialSpeed|, at least 1 rad/s):
+    /// (ω₀ = |the crank's start speed|, at least 1 rad/s, [`Parameters::start_speed`]):
     /// ```text
     /// θ, θ_d          ℓ / r_c               θ̇            V / r_c
     /// rod coordinate  ℓ / d_j               its rate     V / d_j

@@ -6,6 +6,7 @@ use nalgebra::Vector2;
 use super::layout::{CRANK_ANGLE, PIN_A, pair};
 use super::slider_crank::SliderCrank;
 use crate::error::ModelError;
+use crate::joint::{ContactState, Joint, MIN_IMPACT_VELOCITY};
 use crate::linalg::lu::Lu;
 use crate::math;
 
@@ -13,10 +14,21 @@ impl SliderCrank {
     /// Initial state: crank at `angle` turning at `speed`, rod straight and unstressed, journal
     /// centred, every velocity that of the ideal mechanism (docs/model.md §10).
     pub fn initial_state(&self, angle: f64, speed: f64) -> Vec<f64> {
+        self.initial_state_with_eccentricity(angle, speed, Vector2::zeros())
+    }
+
+    /// As [`SliderCrank::initial_state`] with the journal at eccentricity `e` in the bearing and
+    /// at rest in it: the rod's slider end at height e_y, moving along the guide with the slider.
+    pub fn initial_state_with_eccentricity(
+        &self,
+        angle: f64,
+        speed: f64,
+        e: Vector2<f64>,
+    ) -> Vec<f64> {
         let (r_c, l) = (self.crank_length, self.rod_length);
         let (sin, cos) = math::sin_cos(angle);
         let a = r_c * Vector2::new(cos, sin);
-        let sin_beta = -r_c * sin / l;
+        let sin_beta = (e.y - r_c * sin) / l;
         let cos_beta = (1.0 - sin_beta * sin_beta).sqrt();
         let b = a + l * Vector2::new(cos_beta, sin_beta);
         let v_a = r_c * speed * Vector2::new(-sin, cos);
@@ -27,12 +39,71 @@ impl SliderCrank {
         let mut y = vec![0.0; l.n_states()];
         y[CRANK_ANGLE] = angle;
         y[l.rod()].copy_from_slice(&p);
-        y[l.slider()] = b.x;
+        y[l.slider()] = b.x - e.x;
         y[l.crank_speed()] = speed;
         y[l.rod_rates()].copy_from_slice(&p_dot);
         y[l.slider_velocity()] = v_b.x;
         y[l.drive_angle()] = angle;
         y
+    }
+
+    /// Settled start: moves the journal of a clearance joint, in a state from
+    /// [`SliderCrank::initial_state`], to its quasi-static equilibrium against the ideal joint's
+    /// reaction there ([`Joint::eccentricity_carrying`]), at rest relative to the bearing, and
+    /// equilibrates a flexible rod with it (with the ideal joint's reaction first, then with the
+    /// joint's own force): the mechanism then starts carrying its load, without the start-up
+    /// impact of a centred journal. With `equilibrate` false the rod stays straight. A journal in
+    /// contact starts a contact event whose impact velocity is that of a journal crossing the
+    /// clearance from the centre under the load (docs/model.md §10).
+    pub fn settle_journal(
+        &mut self,
+        y: &mut Vec<f64>,
+        angle: f64,
+        speed: f64,
+        equilibrate: bool,
+    ) -> Result<(), ModelError> {
+        if self.active.ideal_joint {
+            return if equilibrate {
+                self.equilibrate(y)
+            } else {
+                Ok(())
+            };
+        }
+        let mut dy = vec![0.0; y.len()];
+        let reaction = self.with_ideal_joint(|m| -> Result<Vector2<f64>, ModelError> {
+            if equilibrate {
+                m.equilibrate(y)?;
+            }
+            Ok(m.evaluate(y, &mut dy)?.joint_force)
+        })?;
+        let omega = self.joint_kinematics(y).omega_journal;
+        let e = self.joint.eccentricity_carrying(reaction, omega);
+        *y = self.initial_state_with_eccentricity(angle, speed, e);
+        if let Some(dry) = self.joint.dry_contact() {
+            // The contact event's impact velocity: the speed of a journal crossing the clearance
+            // from the centre under the load, √(2 |F₀| c / m_s). The contact is then damped as
+            // after the centred start's first impact; the floor instead would make its hysteresis
+            // damping some fifty times critical and the force hypersensitive to the normal velocity.
+            let crossing = (2.0 * reaction.norm() * dry.clearance / self.slider_mass).sqrt();
+            self.contact = ContactState {
+                in_contact: self.penetration(y) > 0.0,
+                impact_velocity: crossing.max(MIN_IMPACT_VELOCITY),
+            };
+        }
+        if equilibrate {
+            self.equilibrate(y)?;
+        }
+        Ok(())
+    }
+
+    /// Runs `f` on the mechanism with the rod–slider joint made ideal, and restores it after.
+    fn with_ideal_joint<R>(&mut self, f: impl FnOnce(&mut Self) -> R) -> R {
+        let joint = std::mem::replace(&mut self.joint, Joint::Ideal);
+        let ideal = std::mem::replace(&mut self.active.ideal_joint, true);
+        let result = f(self);
+        self.joint = joint;
+        self.active.ideal_joint = ideal;
+        result
     }
 
     /// Quasi-static start: changes the rod's deformation in a state from

@@ -2,7 +2,7 @@
 //! table to its field, from which both the getter and the setter are generated.
 
 use super::parameters::{
-    ContactLaw, DriveMode, InitialState, JointModel, Parameters, RodFormulation,
+    ContactLaw, DriveMode, InitialState, JointModel, JournalStart, Parameters, RodFormulation,
 };
 use crate::fmi::variables::Vr;
 use crate::integrator::Method;
@@ -115,6 +115,7 @@ integer_fields! {
         RodInitialState => initial_state: [InitialState::Equilibrated, InitialState::Straight];
         JointContactLaw => contact_law:
             [ContactLaw::LankaraniNikravesh, ContactLaw::Flores, ContactLaw::HuGuo];
+        JointInitialState => journal_start: [JournalStart::Centred, JournalStart::Settled];
     }
     counts {
         RodNElements => n_elements;

@@ -11,5 +11,5 @@ pub use access::{integer_parameter, real_parameter, set_integer_parameter, set_r
 pub use parameters::{
     BENCHMARK_SPEED, ContactLaw, DEFAULT_MAX_STEPS_PER_INTERVAL, DEFAULT_SPECTRAL_RADIUS,
     DriveMode, EXPLICIT_MAX_TOLERANCE, GENERALIZED_ALPHA_MAX_TOLERANCE, InitialState, JointModel,
-    Parameters, RodFormulation,
+    JournalStart, Parameters, RodFormulation,
 };

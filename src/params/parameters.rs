@@ -50,6 +50,16 @@ pub enum InitialState {
     Straight,
 }
 
+/// Where a clearance joint's journal starts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum JournalStart {
+    /// Centred in the bearing (the benchmarks' start): it crosses the clearance and impacts.
+    Centred,
+    /// In quasi-static equilibrium with the ideal joint's initial reaction, at rest relative to
+    /// the bearing ([`crate::mechanism::SliderCrank::settle_journal`]): no start-up impact.
+    Settled,
+}
+
 /// What drives the crank.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum DriveMode {
@@ -82,12 +92,14 @@ pub struct Parameters {
     pub crank_inertia: f64,
     /// Initial crank angle \[rad\].
     pub crank_initial_angle: f64,
-    /// Initial crank speed \[rad/s\].
+    /// Initial crank speed \[rad/s\] (with the speed drive, see [`Parameters::start_speed`]).
     pub crank_initial_speed: f64,
     /// Slider mass \[kg\].
     pub slider_mass: f64,
     /// Joint model.
     pub joint_model: JointModel,
+    /// Where the journal starts.
+    pub journal_start: JournalStart,
     /// Radial clearance c = R_bearing − R_journal \[m\].
     pub clearance: f64,
     /// Journal (pin) radius R_j \[m\].
@@ -193,6 +205,7 @@ impl Default for Parameters {
             crank_initial_speed: BENCHMARK_SPEED,
             slider_mass: 0.14,
             joint_model: JointModel::Dry,
+            journal_start: JournalStart::Centred,
             clearance: 0.5e-3,
             journal_radius: 9.5e-3,
             joint_youngs_modulus: 207e9,
@@ -262,6 +275,19 @@ impl Parameters {
     pub fn gravity_vector(&self) -> nalgebra::Vector2<f64> {
         let (sin, cos) = crate::math::sin_cos(self.gravity_angle);
         self.gravity * nalgebra::Vector2::new(sin, -cos)
+    }
+
+    /// The crank's speed at the start when the prescribed speed starts at `drive_speed`:
+    /// `crank_initial_speed`, except with the speed drive while `crank_initial_speed` keeps its
+    /// default ([`BENCHMARK_SPEED`]), when the crank starts at the prescribed speed: setting only
+    /// `drive.speed` starts the mechanism in its motion, without an impulsive jump at the first
+    /// step \[rad/s\].
+    pub fn start_speed(&self, drive_speed: f64) -> f64 {
+        if self.drive_mode == DriveMode::Speed && self.crank_initial_speed == BENCHMARK_SPEED {
+            drive_speed
+        } else {
+            self.crank_initial_speed
+        }
     }
 
     /// Bearing (hole) radius R_i = R_j + c \[m\].

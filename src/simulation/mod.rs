@@ -17,7 +17,7 @@ use crate::error::ModelError;
 use crate::integrator::{Integrator, Stats};
 use crate::mechanism::{ContactState, Energies, SliderCrank};
 pub use crate::mechanism::{Input, InputSignal, Inputs};
-use crate::params::{DriveMode, InitialState, Parameters};
+use crate::params::{DriveMode, InitialState, JournalStart, Parameters};
 
 pub use fmi2_slave::clock::{CLOCK_RESOLUTION, on_clock_grid};
 
@@ -68,18 +68,28 @@ impl Simulation {
 
     /// A simulation at t = 0 whose inputs start at `inputs`: the start is in equilibrium with
     /// them (the rod's quasi-static deformation carries the slider force and the drive torque as
-    /// well as the inertial loads).
+    /// well as the inertial loads), the crank at [`Parameters::start_speed`]. A start speed that
+    /// differs from the prescribed one jumps to it at the first step, with a warning.
     pub fn with_inputs(parameters: Parameters, inputs: Inputs) -> Result<Self, ModelError> {
-        let mut mechanism = SliderCrank::with_inputs(&parameters, inputs)?;
-        let mut state = mechanism.initial_state(
+        let (angle, speed) = (
             parameters.crank_initial_angle,
-            parameters.crank_initial_speed,
+            parameters.start_speed(inputs.drive_speed),
         );
-        if parameters.initial_state == InitialState::Equilibrated {
-            mechanism
-                .equilibrate(&mut state)
-                .map_err(|e| failure::unequilibrated(&parameters, &e))?;
+        let start = Inputs {
+            drive_speed: speed,
+            ..inputs
+        };
+        let mut mechanism = SliderCrank::with_inputs(&parameters, start)?;
+        let mut state = mechanism.initial_state(angle, speed);
+        let equilibrate = parameters.initial_state == InitialState::Equilibrated;
+        match parameters.journal_start {
+            JournalStart::Settled => {
+                mechanism.settle_journal(&mut state, angle, speed, equilibrate)
+            }
+            JournalStart::Centred if equilibrate => mechanism.equilibrate(&mut state),
+            JournalStart::Centred => Ok(()),
         }
+        .map_err(|e| failure::unequilibrated(&parameters, &e))?;
         let integrator = Integrator::new(
             parameters.method,
             parameters.spectral_radius,
@@ -88,7 +98,7 @@ impl Simulation {
             parameters.tolerances(),
             mechanism.error_scales(),
         )?;
-        let next = *mechanism.input_signal();
+        let next = InputSignal::held(inputs);
         let mut monitor = Monitor::default();
         for warning in parameters.warnings() {
             monitor.warn(warning);
@@ -258,8 +268,9 @@ impl Simulation {
                 self.monitor.warn(format!(
                     "crank.initialSpeed = {} rad/s differs from drive.speed = {} rad/s: with the \
                      speed drive the crank's speed jumps to drive.speed at the first step (an \
-                     impulsive change through the constraints, booked as drive work); set \
-                     crank.initialSpeed = drive.speed for a smooth start",
+                     impulsive change through the constraints, booked as drive work); leave \
+                     crank.initialSpeed at its start value (the crank then starts at drive.speed) \
+                     or set it to drive.speed for a smooth start",
                     self.parameters.crank_initial_speed, next.value.drive_speed
                 ));
             }

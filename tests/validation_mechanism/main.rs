@@ -12,6 +12,7 @@ mod impacts;
 mod joints;
 mod loads;
 mod motion;
+mod start;
 
 use flexible_slider_crank::ancf::RodProperties;
 use flexible_slider_crank::integrator::Method;
