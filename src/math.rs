@@ -1,6 +1,6 @@
 //! Elementary functions that give the same bits on every platform.
 //!
-//! `f64::sin`, `cos`, `powf` and `hypot` call the C library of the target (glibc on Linux,
+//! `f64::sin`, `cos`, `powf`, `atan2` and `hypot` call the C library of the target (glibc on Linux,
 //! mingw-w64's CRT on Windows, libSystem on macOS). Their results are faithful but not correctly
 //! rounded, and they differ between those libraries in the last bit. With impacts such
 //! differences grow without bound: the same FMU run on Windows and Linux would part at the first
@@ -32,6 +32,12 @@ pub fn sin_cos(x: f64) -> (f64, f64) {
 #[inline]
 pub fn powf(x: f64, y: f64) -> f64 {
     libm::pow(x, y)
+}
+
+/// The angle of the point (x, y) from the x axis, in (−π, π].
+#[inline]
+pub fn atan2(y: f64, x: f64) -> f64 {
+    libm::atan2(y, x)
 }
 
 /// √(x² + y²) without undue overflow or underflow.

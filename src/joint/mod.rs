@@ -82,8 +82,10 @@ impl Joint {
     /// against a steady load (the settled start, docs/model.md §10).
     ///
     /// Dry and frictionless in closed form, e = −(c + δ) F/|F| with K δ^1.5 = |F|; with friction
-    /// or a film, Newton's method on F(e) = F from that point (a 2 × 2 difference Jacobian, steps
-    /// halved until the residual falls). The ideal joint and a zero force give the centre.
+    /// or a film, Newton's method on F(e) = F in polar coordinates e = ρ (cos φ, sin φ) from that
+    /// point (friction and film turn the force against e, so the angle is the natural unknown),
+    /// with a difference Jacobian and steps halved until the residual falls. The ideal joint and
+    /// a zero force give the centre.
     pub fn eccentricity_carrying(&self, force: Vector2<f64>, omega_journal: f64) -> Vector2<f64> {
         let Some(dry) = self.dry_contact() else {
             return Vector2::zeros();
@@ -92,44 +94,60 @@ impl Joint {
         if magnitude == 0.0 {
             return Vector2::zeros();
         }
-        let depth = crate::math::powf(magnitude / dry.stiffness, 2.0 / 3.0);
-        let mut e = -(dry.clearance + depth) / magnitude * force;
-        let residual = |e: Vector2<f64>| {
+        let eccentricity = |(rho, phi): (f64, f64)| {
+            let (sin, cos) = crate::math::sin_cos(phi);
+            rho * Vector2::new(cos, sin)
+        };
+        let residual = |x: (f64, f64)| {
             let kinematics = JointKinematics {
-                e,
+                e: eccentricity(x),
                 e_dot: Vector2::zeros(),
                 omega_journal,
             };
             self.force(&kinematics, MIN_IMPACT_VELOCITY).force - force
         };
-        let mut r = residual(e);
-        for _ in 0..50 {
-            if r.norm() <= 1e-10 * magnitude {
-                break;
-            }
-            let h = 1e-7 * (dry.clearance + e.norm());
-            let jacobian = nalgebra::Matrix2::from_columns(&[
-                (residual(e + Vector2::new(h, 0.0)) - r) / h,
-                (residual(e + Vector2::new(0.0, h)) - r) / h,
-            ]);
-            let Some(step) = jacobian.lu().solve(&(-r)) else {
-                break;
-            };
-            let mut scale = 1.0;
-            loop {
-                let trial = e + scale * step;
-                let r_trial = residual(trial);
-                if r_trial.norm() < r.norm() {
-                    (e, r) = (trial, r_trial);
+        let depth = crate::math::powf(magnitude / dry.stiffness, 2.0 / 3.0);
+        let (h_rho, h_phi) = (1e-7 * depth.max(1e-3 * dry.clearance), 1e-7);
+        let newton = |mut x: (f64, f64)| {
+            let mut r = residual(x);
+            for _ in 0..50 {
+                if r.norm() <= 1e-10 * magnitude {
                     break;
                 }
-                scale *= 0.5;
-                if scale < 1e-6 {
-                    return e;
+                let jacobian = nalgebra::Matrix2::from_columns(&[
+                    (residual((x.0 + h_rho, x.1)) - r) / h_rho,
+                    (residual((x.0, x.1 + h_phi)) - r) / h_phi,
+                ]);
+                let Some(step) = jacobian.lu().solve(&(-r)) else {
+                    break;
+                };
+                let mut scale = 1.0;
+                loop {
+                    let trial = (x.0 + scale * step.x, x.1 + scale * step.y);
+                    let r_trial = residual(trial);
+                    if r_trial.norm() < r.norm() {
+                        (x, r) = (trial, r_trial);
+                        break;
+                    }
+                    scale *= 0.5;
+                    if scale < 1e-6 {
+                        return (x, r.norm());
+                    }
                 }
             }
+            (x, r.norm())
+        };
+        let angle = crate::math::atan2(-force.y, -force.x);
+        // From the wall (dry contact), and for a film from inside its range too: between the
+        // switch eccentricity and the wall the clamped film does not change with ρ.
+        let mut best = newton((dry.clearance + depth, angle));
+        if let Self::Lubricated(bearing) = self {
+            let inside = newton((0.5 * bearing.switch_eccentricity * dry.clearance, angle));
+            if inside.1 < best.1 {
+                best = inside;
+            }
         }
-        e
+        eccentricity(best.0)
     }
 
     /// Force on the journal; `impact_velocity` is δ̇⁽⁻⁾ of the current contact event.
@@ -139,5 +157,68 @@ impl Joint {
             Self::Dry(dry) => dry.force(k, impact_velocity),
             Self::Lubricated(bearing) => bearing.force(k, impact_velocity),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The settled eccentricity carries the given force, at rest in the bearing: dry without
+    /// friction (on the line of the force, beyond the clearance), dry with friction and
+    /// lubricated (the film carries part or all of it), for loads from 10 N to 10 kN in several
+    /// directions; the ideal joint and no load give the centre.
+    #[test]
+    fn the_settled_eccentricity_carries_the_load() {
+        let p = Parameters::default();
+        let omega = -120.0;
+        for (name, joint) in [
+            ("dry", Joint::from_parameters(&p)),
+            (
+                "dry, friction 0.2",
+                Joint::from_parameters(&Parameters {
+                    friction: 0.2,
+                    ..p.clone()
+                }),
+            ),
+            (
+                "lubricated",
+                Joint::from_parameters(&Parameters {
+                    joint_model: JointModel::Lubricated,
+                    ..p.clone()
+                }),
+            ),
+        ] {
+            for magnitude in [10.0, 1e3, 1e4] {
+                for angle in [0.0, 2.0, 4.5] {
+                    let (sin, cos) = crate::math::sin_cos(angle);
+                    let force = magnitude * Vector2::new(cos, sin);
+                    let e = joint.eccentricity_carrying(force, omega);
+                    let kinematics = JointKinematics {
+                        e,
+                        e_dot: Vector2::zeros(),
+                        omega_journal: omega,
+                    };
+                    let carried = joint.force(&kinematics, MIN_IMPACT_VELOCITY).force;
+                    assert!(
+                        (carried - force).norm() < 1e-8 * magnitude,
+                        "{name}, {magnitude} N at {angle} rad: carries {carried:?}"
+                    );
+                    if name == "dry" {
+                        assert!(e.norm() > p.clearance);
+                        assert!(e.dot(&force) < 0.0);
+                    }
+                }
+            }
+        }
+        let joint = Joint::from_parameters(&p);
+        assert_eq!(
+            joint.eccentricity_carrying(Vector2::zeros(), omega),
+            Vector2::zeros()
+        );
+        assert_eq!(
+            Joint::Ideal.eccentricity_carrying(Vector2::new(5.0, 1.0), omega),
+            Vector2::zeros()
+        );
     }
 }
