@@ -48,6 +48,8 @@ pub struct Simulation {
     a_sample: Vec<f64>,
     /// The inputs for the next interval (from `start`, the last communication point).
     next: InputSignal,
+    /// Whether an input or input derivative was set since the last communication point.
+    inputs_set: bool,
     peaks: PeakHold,
     monitor: Monitor,
 }
@@ -120,6 +122,7 @@ impl Simulation {
             step_start: 0.0,
             step_end: 0.0,
             next,
+            inputs_set: false,
             peaks: PeakHold::default(),
             monitor,
         })
@@ -170,6 +173,7 @@ impl Simulation {
     /// the torque drive) is kept but restarts nothing.
     pub fn set_input(&mut self, input: Input, value: f64) {
         *self.next.value.get_mut(input) = value;
+        self.inputs_set = true;
     }
 
     /// Sets the `order`-th time derivative (1 or 2) of an input at the current time. It holds for
@@ -184,6 +188,7 @@ impl Simulation {
         match self.next.derivatives.get_mut(order.wrapping_sub(1)) {
             Some(d) if value.is_finite() => {
                 *d.get_mut(input) = value;
+                self.inputs_set = true;
                 Ok(())
             }
             _ => Err(ModelError::Numerical(format!(
@@ -322,6 +327,7 @@ impl Simulation {
         }
         self.time = t_end;
         self.hold_inputs();
+        self.inputs_set = false;
         if t_end == self.step_end {
             self.state.copy_from_slice(&self.y_end);
         } else {
@@ -361,6 +367,7 @@ impl Simulation {
     fn stop_at_step_end(&mut self, error: ModelError) -> ModelError {
         self.time = self.step_end;
         self.hold_inputs();
+        self.inputs_set = false;
         self.state.copy_from_slice(&self.y_end);
         error
     }
@@ -441,14 +448,22 @@ impl Simulation {
     }
 
     /// Outputs at the current time (one right-hand-side evaluation, no allocation).
+    ///
+    /// The inputs they see: at a communication point those of the interval that just ended, as
+    /// it ended (values and derivatives there, so the accelerations of a ramped drive speed include
+    /// its rate), until an input or derivative is set; from then on the inputs as set (an output
+    /// with direct feedthrough shows a value just set).
     pub fn outputs(&mut self) -> Result<Outputs, ModelError> {
         let contact = self.contact_now();
-        let inputs = InputSignal {
-            start: self.time,
-            ..self.next
-        };
-        // The inputs as set now (an output with direct feedthrough shows a value just set).
         let current = *self.mechanism.input_signal();
+        let inputs = if self.inputs_set {
+            InputSignal {
+                start: self.time,
+                ..self.next
+            }
+        } else {
+            current
+        };
         self.mechanism.set_input_signal(inputs, self.time);
         let outputs = self.mechanism.with_contact_state(contact, |mechanism| {
             outputs::outputs(
@@ -480,6 +495,7 @@ impl Simulation {
             contact: self.mechanism.contact_state(),
             signal: *self.mechanism.input_signal(),
             next: self.next,
+            inputs_set: self.inputs_set,
             peaks: self.peaks,
             warnings: self.monitor.total,
         }
@@ -514,6 +530,7 @@ impl Simulation {
         self.mechanism
             .set_input_signal(snapshot.signal, snapshot.time);
         self.next = snapshot.next;
+        self.inputs_set = snapshot.inputs_set;
         self.peaks = snapshot.peaks;
         self.monitor.total = snapshot.warnings;
         Ok(())

@@ -25,6 +25,8 @@ pub struct Snapshot {
     pub signal: InputSignal,
     /// The inputs set for the next interval.
     pub next: InputSignal,
+    /// Whether an input was set since the last communication point.
+    pub inputs_set: bool,
     /// Peak-hold outputs.
     pub peaks: PeakHold,
     /// Warnings raised since the start.
@@ -92,6 +94,7 @@ impl Snapshot {
         w.contact(&self.contact);
         w.signal(&self.signal);
         w.signal(&self.next);
+        w.u8(u8::from(self.inputs_set));
         w.peaks(&self.peaks.interval);
         w.peaks(&self.peaks.step_end);
         w.u8(u8::from(self.peaks.pending));
@@ -142,6 +145,7 @@ impl Snapshot {
             contact,
             signal: r.signal()?,
             next: r.signal()?,
+            inputs_set: r.flag()?,
             peaks: PeakHold {
                 interval: r.peaks()?,
                 step_end: r.peaks()?,

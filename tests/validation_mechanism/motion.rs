@@ -244,3 +244,58 @@ fn a_crank_at_rest_carries_the_weights_in_any_direction() {
         }
     }
 }
+
+/// A speed run-up through interpolated inputs: the master ramps drive.speed from 1500 to 3000 rpm
+/// in 50 ms, setting the value and its first derivative at every 1e-4 s communication point, then
+/// holds it. Rigid rod, ideal joint, default tolerance: slider.acceleration at every communication
+/// point equals the closed form ẍ = x''(θ) ω² + x'(θ) ω̇ of the ramp as the step ended (the
+/// crank's angular acceleration included) within 1e-3 of its peak.
+#[test]
+fn outputs_follow_a_ramped_drive_speed() {
+    let (omega0, omega1, ramp) = (
+        50.0 * std::f64::consts::PI,
+        100.0 * std::f64::consts::PI,
+        0.05,
+    );
+    let alpha = (omega1 - omega0) / ramp;
+    let p = Parameters {
+        rod_formulation: RodFormulation::Rigid,
+        joint_model: JointModel::Ideal,
+        ..Parameters::default()
+    };
+    let (r, l) = (p.crank_length, p.rod.length);
+    let speed = |t: f64| omega0 + alpha * t.min(ramp);
+    let angle = |t: f64| {
+        let t_ramp = t.min(ramp);
+        omega0 * t_ramp + 0.5 * alpha * t_ramp * t_ramp + omega1 * (t - t_ramp)
+    };
+    let slider_acceleration = |t: f64, rate: f64| {
+        let (s, c) = math::sin_cos(angle(t));
+        let root = (l * l - r * r * s * s).sqrt();
+        let dx = -r * s - r * r * s * c / root;
+        let ddx =
+            -r * c - r * r * (c * c - s * s) / root - r.powi(4) * s * s * c * c / root.powi(3);
+        ddx * speed(t).powi(2) + dx * rate
+    };
+    let inputs = flexible_slider_crank::Inputs {
+        drive_speed: omega0,
+        ..Default::default()
+    };
+    let mut sim = Simulation::with_inputs(p, inputs).unwrap();
+    let h = 1e-4;
+    let peak = r * omega1 * omega1 * (1.0 + r / l);
+    let mut worst = 0.0f64;
+    for k in 0..600 {
+        let t = f64::from(k) * h;
+        let rate = if t < ramp - 1e-12 { alpha } else { 0.0 };
+        sim.set_input(Input::DriveSpeed, speed(t));
+        sim.set_input_derivative(Input::DriveSpeed, 1, rate)
+            .unwrap();
+        sim.advance_to(t + h).unwrap();
+        let o = sim.outputs().unwrap();
+        let error = (o.slider_acceleration - slider_acceleration(t + h, rate)).abs() / peak;
+        worst = worst.max(error);
+    }
+    println!("ramped drive speed: largest slider.acceleration error {worst:.2e} of its peak");
+    assert!(worst < 1e-3, "{worst:e}");
+}
