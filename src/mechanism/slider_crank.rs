@@ -211,7 +211,13 @@ impl SliderCrank {
             *s = 0.5 * mass * pin_speed * pin_speed * length / self.crank_length;
         }
         let relative = (0..scales.len())
-            .map(|i| if l.integrals().contains(&i) { 1.0 } else { 0.0 })
+            .map(|i| {
+                if l.integrals().contains(&i) && std::env::var_os("ABSINT").is_none() {
+                    1.0
+                } else {
+                    0.0
+                }
+            })
             .collect();
         let held = match self.joint {
             Joint::Dry(_) if self.impact_error_weight > 0.0 => {
