@@ -5,6 +5,8 @@
 
 use std::fmt;
 
+pub use fmi2_slave::number::Num;
+
 /// An error of the model library.
 #[derive(Clone, Debug, PartialEq)]
 pub enum ModelError {
@@ -36,7 +38,11 @@ impl fmt::Display for ModelError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Self::InvalidParameter { name, value, range } => {
-                write!(f, "{name} = {value} is outside the allowed range {range}")
+                write!(
+                    f,
+                    "{name} = {} is outside the allowed range {range}",
+                    Num(*value)
+                )
             }
             Self::Numerical(what) => f.write_str(what),
         }

@@ -3,6 +3,7 @@
 
 use fmi2_slave::clock::on_clock_grid;
 use fmi2_slave::model::{check_real, check_settable, check_step, lookup};
+use fmi2_slave::number::Num;
 use fmi2_slave::{FmuError, Logger, Model, State};
 
 use crate::motor::{MotorInputs, MotorParameters, MotorState};
@@ -136,8 +137,9 @@ impl Model for DcMotorFmu {
     ) -> Result<(), FmuError> {
         if !start.is_finite() || stop.is_some_and(|s| !(s.is_finite() && s >= start)) {
             return Err(FmuError::Invalid(format!(
-                "fmi2SetupExperiment: startTime = {start} and stopTime = {stop:?} must be finite, \
-                 stopTime >= startTime"
+                "startTime = {} and stopTime = {} must be finite, stopTime >= startTime",
+                Num(start),
+                stop.map_or("undefined".to_string(), |s| Num(s).to_string())
             )));
         }
         self.time = on_clock_grid(start);
@@ -151,7 +153,8 @@ impl Model for DcMotorFmu {
         let x = self.state();
         log.event(&format!(
             "motor initialised in steady state: current {} A, speed {} rad/s",
-            x[0], x[1]
+            Num(x[0]),
+            Num(x[1])
         ));
         Ok(())
     }
@@ -165,8 +168,9 @@ impl Model for DcMotorFmu {
             ((end - t) / self.parameters[Vr::SolverStepSize as usize] * (1.0 - 1e-9)).ceil();
         if steps > MAX_STEPS {
             return Err(FmuError::Invalid(format!(
-                "fmi2DoStep: communicationStepSize = {h:e} is more than {MAX_STEPS:e} \
-                 solver.stepSize"
+                "communicationStepSize = {} s is more than {} solver.stepSize",
+                Num(h),
+                Num(MAX_STEPS)
             )));
         }
         let mut x = self.state();
@@ -259,17 +263,14 @@ impl Model for DcMotorFmu {
     ) -> Result<(), FmuError> {
         for ((vr, &order), &value) in vrs.iter().zip(orders).zip(values) {
             let v = lookup(VARIABLES, *vr, "Real")?;
-            let k = Self::input_index(v.vr).ok_or_else(|| {
-                FmuError::Invalid(format!(
-                    "fmi2SetRealInputDerivatives: {} is not an input",
-                    v.name
-                ))
-            })?;
+            let k = Self::input_index(v.vr)
+                .ok_or_else(|| FmuError::Invalid(format!("{} is not an input", v.name)))?;
             if !(order == 1 || order == 2) || !value.is_finite() {
                 return Err(FmuError::Invalid(format!(
-                    "fmi2SetRealInputDerivatives: derivative of order {order} of {} = {value}: \
-                     the order must be 1 or 2 and the value finite",
-                    v.name
+                    "derivative of order {order} of {} = {}: the order must be 1 or 2 and the \
+                     value finite",
+                    v.name,
+                    Num(value)
                 )));
             }
             self.inputs.derivatives[order as usize - 1][k] = value;
@@ -301,7 +302,7 @@ impl Model for DcMotorFmu {
                 (Vr::ShaftTwist, 1) => d[2],
                 _ => {
                     return Err(FmuError::Invalid(format!(
-                        "fmi2GetRealOutputDerivatives: {} has no derivative of order {order} \
+                        "{} has no derivative of order {order} \
                          (order 1 exists for shaft.torque, motor.speed, motor.current and \
                          shaft.twist)",
                         v.name

@@ -32,7 +32,11 @@ impl fmt::Display for FmuError {
             Self::Invalid(message) => f.write_str(message),
             Self::Model(message) => f.write_str(message),
             Self::Discard { time, reason } => {
-                write!(f, "step discarded, last successful time {time} s: {reason}")
+                write!(
+                    f,
+                    "step discarded, last successful time {} s: {reason}",
+                    crate::number::Num(*time)
+                )
             }
         }
     }

@@ -97,19 +97,27 @@ pub fn with_instance<M: Model>(
             )));
         }
         if !call.allowed().contains(&instance.state) {
-            return Err(match &instance.first_error {
-                Some(first) if instance.state == State::Error => FmuError::Invalid(format!(
-                    "Illegal call sequence. The instance is in the Error state since: {first}"
+            return Err(match &instance.cause {
+                Some(cause) => FmuError::Invalid(format!(
+                    "Illegal call sequence. The instance is in the {:?} state since: {cause}",
+                    instance.state
                 )),
-                _ => FmuError::IllegalCall(call),
+                None => FmuError::IllegalCall(call),
             });
         }
         f(instance)
     }));
     match result {
-        Ok(Ok(status)) => status,
+        Ok(Ok(status)) => {
+            if !matches!(instance.state, State::Error | State::StepFailed) {
+                instance.cause = None;
+            }
+            status
+        }
         Ok(Err(e @ FmuError::Discard { .. })) => {
-            instance.logger.discard(&format!("{}: {e}", call.name()));
+            let message = format!("{}: {e}", call.name());
+            instance.logger.discard(&message);
+            instance.cause = Some(message);
             instance.state = State::StepFailed;
             fmi2Status_fmi2Discard
         }
@@ -120,7 +128,7 @@ pub fn with_instance<M: Model>(
             };
             instance.logger.error(&message);
             if instance.state != State::Error {
-                instance.first_error = Some(message);
+                instance.cause = Some(message);
             }
             instance.state = State::Error;
             fmi2Status_fmi2Error
@@ -132,7 +140,7 @@ pub fn with_instance<M: Model>(
                 panic_text(&*payload)
             ));
             instance.poisoned = true;
-            instance.first_error = Some(format!("{}: internal error", call.name()));
+            instance.cause = Some(format!("{}: internal error", call.name()));
             instance.state = State::Error;
             fmi2Status_fmi2Error
         }

@@ -12,6 +12,7 @@
 
 pub mod clock;
 pub mod description;
+pub mod number;
 pub mod table;
 
 #[cfg(feature = "slave")]

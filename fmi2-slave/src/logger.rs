@@ -54,10 +54,7 @@ impl Logger {
         for c in categories {
             let i = self.category_index(c).ok_or_else(|| {
                 let known: Vec<&str> = self.categories.iter().map(|(n, _)| *n).collect();
-                format!(
-                    "fmi2SetDebugLogging: unknown log category \"{c}\"; known: {}",
-                    known.join(", ")
-                )
+                format!("unknown log category \"{c}\"; known: {}", known.join(", "))
             })?;
             enabled[i] = true;
         }

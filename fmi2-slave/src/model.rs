@@ -3,6 +3,7 @@
 
 use crate::error::FmuError;
 use crate::logger::Logger;
+use crate::number::Num;
 use crate::state::State;
 use crate::table::{Causality, Kind, ValueReference, Variable};
 
@@ -154,8 +155,11 @@ pub fn check_real<V>(v: &Variable<V>, value: f64) -> Result<(), FmuError> {
     if let Kind::Real { min, max, unit, .. } = v.kind {
         if !(value.is_finite() && min <= value && value <= max) {
             return Err(FmuError::Invalid(format!(
-                "{} = {value:e} is outside the allowed range [{min:e}, {max:e}] {unit}",
-                v.name
+                "{} = {} is outside the allowed range [{}, {}] {unit}",
+                v.name,
+                Num(value),
+                Num(min),
+                Num(max)
             )));
         }
     }
@@ -171,19 +175,26 @@ pub const TIME_TOLERANCE: f64 = 1e-9;
 pub fn check_step(time: f64, t: f64, h: f64, stop: Option<f64>) -> Result<(), FmuError> {
     if (t - time).abs() > TIME_TOLERANCE * (1.0 + t.abs()) {
         return Err(FmuError::Invalid(format!(
-            "fmi2DoStep: Expected currentCommunicationPoint = {time:.16e} but was {t:.16e}."
+            "expected currentCommunicationPoint = {} s but was {} s",
+            Num(time),
+            Num(t)
         )));
     }
     if !(h > 0.0 && h.is_finite()) {
         return Err(FmuError::Invalid(format!(
-            "fmi2DoStep: communicationStepSize must be > 0 and finite but was {h:.16e}."
+            "communicationStepSize must be > 0 and finite but was {} s",
+            Num(h)
         )));
     }
     let end = t + h;
     match stop {
-        Some(stop) if end > stop + TIME_TOLERANCE * (1.0 + stop.abs()) => Err(FmuError::Invalid(
-            format!("fmi2DoStep: t + h = {end:.16e} is past stopTime = {stop:.16e}."),
-        )),
+        Some(stop) if end > stop + TIME_TOLERANCE * (1.0 + stop.abs()) => {
+            Err(FmuError::Invalid(format!(
+                "currentCommunicationPoint + communicationStepSize = {} s is past stopTime = {} s",
+                Num(end),
+                Num(stop)
+            )))
+        }
         _ => Ok(()),
     }
 }
@@ -197,9 +208,9 @@ pub struct Instance<M> {
     pub state: State,
     /// Set after a caught panic: only Reset and FreeInstance are accepted.
     pub poisoned: bool,
-    /// The message of the error that put the instance in the Error state, for the calls refused
-    /// there.
-    pub first_error: Option<String>,
+    /// The message of the event that put the instance in the Error or StepFailed state (the
+    /// first error, the discarded step), for the calls refused there.
+    pub cause: Option<String>,
     /// The model.
     pub model: M,
 }
@@ -228,7 +239,7 @@ impl<M: Model> Instance<M> {
             logger,
             state: State::Instantiated,
             poisoned: false,
-            first_error: None,
+            cause: None,
             model: M::new(),
         }
     }
@@ -237,7 +248,7 @@ impl<M: Model> Instance<M> {
     pub fn reset(&mut self) {
         self.state = State::Instantiated;
         self.poisoned = false;
-        self.first_error = None;
+        self.cause = None;
         self.model = M::new();
     }
 

@@ -8,7 +8,7 @@ use fmi2_slave::{FmuError, Logger, Model, State};
 use super::outputs::real_output;
 use super::snapshot::FmuSnapshot;
 use super::variables::{Causality, ENUMERATIONS, Kind, LOG_CATEGORIES, VARIABLES, Variable, Vr};
-use crate::error::ModelError;
+use crate::error::{ModelError, Num};
 use crate::params::{
     Parameters, integer_parameter, real_parameter, set_integer_parameter, set_real_parameter,
 };
@@ -65,9 +65,10 @@ impl SliderCrankFmu {
             let parameters = model_parameters(&self.parameters, self.tolerance);
             if parameters.relative_tolerance != self.parameters.relative_tolerance {
                 log.event(&format!(
-                    "solver.relativeTolerance = {:e} tightened to {:e} by the tolerance of \
+                    "solver.relativeTolerance = {} tightened to {} by the tolerance of \
                      fmi2SetupExperiment",
-                    self.parameters.relative_tolerance, parameters.relative_tolerance
+                    Num(self.parameters.relative_tolerance),
+                    Num(parameters.relative_tolerance)
                 ));
             }
             let mut sim = Simulation::with_inputs(parameters, self.inputs.value)?;
@@ -195,19 +196,23 @@ impl Model for SliderCrankFmu {
         if let Some(tolerance) = tolerance {
             if !(tolerance.is_finite() && tolerance > 0.0) {
                 return Err(FmuError::Invalid(format!(
-                    "fmi2SetupExperiment: tolerance = {tolerance} must be finite and > 0"
+                    "tolerance = {} must be finite and > 0",
+                    Num(tolerance)
                 )));
             }
         }
         if !start.is_finite() {
             return Err(FmuError::Invalid(format!(
-                "fmi2SetupExperiment: startTime = {start} is not finite"
+                "startTime = {} is not finite",
+                Num(start)
             )));
         }
         if let Some(stop) = stop {
             if !(stop.is_finite() && stop >= start) {
                 return Err(FmuError::Invalid(format!(
-                    "fmi2SetupExperiment: stopTime = {stop} must be finite and >= startTime = {start}"
+                    "stopTime = {} must be finite and >= startTime = {}",
+                    Num(stop),
+                    Num(start)
                 )));
             }
         }
@@ -338,7 +343,7 @@ impl Model for SliderCrankFmu {
                 (Vr::EnergyDriveWork, 1) => o.crank_torque * o.crank_speed,
                 _ => {
                     return Err(FmuError::Invalid(format!(
-                        "fmi2GetRealOutputDerivatives: {} has no derivative of order {order} \
+                        "{} has no derivative of order {order} \
                          (derivatives exist of order 1 for crank.angle, crank.speed, \
                          slider.position, slider.velocity, joint.eccentricityX/Y and \
                          energy.driveWork, of order 2 for crank.angle and slider.position)",
@@ -360,26 +365,22 @@ impl Model for SliderCrankFmu {
     ) -> Result<(), FmuError> {
         for ((vr, &order), &value) in vrs.iter().zip(orders).zip(values) {
             let v = lookup(VARIABLES, *vr, "Real")?;
-            let i = input(v.vr).ok_or_else(|| {
-                FmuError::Invalid(format!(
-                    "fmi2SetRealInputDerivatives: {} is not an input",
-                    v.name
-                ))
-            })?;
+            let i = input(v.vr)
+                .ok_or_else(|| FmuError::Invalid(format!("{} is not an input", v.name)))?;
             let d = match order {
                 1 | 2 => &mut self.inputs.derivatives[order as usize - 1],
                 _ => {
                     return Err(FmuError::Invalid(format!(
-                        "fmi2SetRealInputDerivatives: order {order} of {} is not 1 or 2",
+                        "order {order} of {} is not 1 or 2",
                         v.name
                     )));
                 }
             };
             if !value.is_finite() {
                 return Err(FmuError::Invalid(format!(
-                    "fmi2SetRealInputDerivatives: derivative of order {order} of {} = {value} is \
-                     not finite",
-                    v.name
+                    "derivative of order {order} of {} = {} is not finite",
+                    v.name,
+                    Num(value)
                 )));
             }
             *d.get_mut(i) = value;

@@ -11,6 +11,7 @@
 use super::control::{ErrorScales, Stats, Tolerances, initial_step};
 use super::system::OdeSystem;
 use crate::error::ModelError;
+use crate::error::Num;
 use crate::math;
 
 const C: [f64; 7] = [0.0, 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0, 1.0, 1.0];
@@ -262,9 +263,11 @@ impl DormandPrince {
             }
             if self.h < min_step {
                 return Err(ModelError::Numerical(format!(
-                    "step size {:.3e} s fell below the minimum {:.3e} s at t = {} s \
-                     (error estimate {err:.3e})",
-                    self.h, min_step, *t
+                    "step size {} s fell below the minimum {} s at t = {} s (error estimate {})",
+                    Num(self.h),
+                    Num(min_step),
+                    Num(*t),
+                    Num(err)
                 )));
             }
         }

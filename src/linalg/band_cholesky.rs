@@ -12,6 +12,7 @@
 //! # References
 //! - G. H. Golub, C. F. Van Loan (2013), Matrix Computations, 4th ed., §4.3.5 (band Cholesky).
 
+use crate::error::Num;
 use faer::MatRef;
 
 use crate::error::ModelError;
@@ -53,7 +54,8 @@ impl BandCholesky {
                 if i == j {
                     if !(sum > 0.0 && sum.is_finite()) {
                         return Err(ModelError::Numerical(format!(
-                            "rod mass matrix is not positive definite (pivot {i} is {sum:e})"
+                            "rod mass matrix is not positive definite (pivot {i} is {})",
+                            Num(sum)
                         )));
                     }
                     rows[at(i, i)] = sum.sqrt();

@@ -11,6 +11,7 @@
 //! - G. H. Golub, C. F. Van Loan (2013), Matrix Computations, 4th ed., §3.4 (Algorithm 3.4.1).
 
 use crate::error::ModelError;
+use crate::error::Num;
 
 /// An n × n matrix factorised in place (column-major), with its row permutation.
 #[derive(Clone, Debug)]
@@ -50,7 +51,8 @@ impl Lu {
             }
             if !(best > 0.0 && best.is_finite()) {
                 return Err(ModelError::Numerical(format!(
-                    "singular Newton matrix (pivot {k} of {n} is {best:e})"
+                    "singular Newton matrix (pivot {k} of {n} is {})",
+                    Num(best)
                 )));
             }
             self.pivots[k] = p;

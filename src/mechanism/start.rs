@@ -5,7 +5,7 @@ use nalgebra::Vector2;
 
 use super::layout::{CRANK_ANGLE, PIN_A, pair};
 use super::slider_crank::SliderCrank;
-use crate::error::ModelError;
+use crate::error::{ModelError, Num};
 use crate::joint::{ContactState, Joint, MIN_IMPACT_VELOCITY};
 use crate::linalg::lu::Lu;
 use crate::math;
@@ -184,9 +184,9 @@ impl SliderCrank {
         }
         self.quasi_static_residual(&base, &others, &u, y, &mut dy, &mut residual)?;
         Err(ModelError::Numerical(format!(
-            "Newton did not converge (residual {:.3e} of {:.3e})",
-            residual.iter().map(|r| r * r).sum::<f64>().sqrt(),
-            first_norm
+            "Newton did not converge (residual {} of {})",
+            Num(residual.iter().map(|r| r * r).sum::<f64>().sqrt()),
+            Num(first_norm)
         )))
     }
 

@@ -318,10 +318,11 @@ impl Parameters {
         let ratio = self.bearing_length / (2.0 * self.journal_radius);
         if self.joint_model == JointModel::Lubricated && ratio > Self::SHORT_BEARING_MAX_RATIO {
             warnings.push(format!(
-                "joint.bearingLength / (2 joint.journalRadius) = {ratio:.3} is outside the \
+                "joint.bearingLength / (2 joint.journalRadius) = {} is outside the \
                  short-bearing range L/D <= {}: the film force is the infinitely-short-bearing \
                  model's, which overestimates a long bearing's squeeze and wedge forces",
-                Self::SHORT_BEARING_MAX_RATIO
+                crate::error::Num(ratio),
+                crate::error::Num(Self::SHORT_BEARING_MAX_RATIO)
             ));
         }
         warnings

@@ -7,7 +7,7 @@ use super::access::{integer_parameter, real_parameter};
 use super::parameters::{
     EXPLICIT_MAX_TOLERANCE, GENERALIZED_ALPHA_MAX_TOLERANCE, JointModel, Parameters, RodFormulation,
 };
-use crate::error::ModelError;
+use crate::error::{ModelError, Num};
 use crate::fmi::variables::{Causality, Kind, VARIABLES};
 use crate::integrator::Method;
 use crate::reduction::check_mode_count;
@@ -26,14 +26,14 @@ impl Parameters {
                 "rod.secondMomentOfArea",
                 self.rod.second_moment_of_area,
                 format!(
-                    "(0, {:.4e}] m4 for a flexible rod with rod.area = {:e} m2 and rod.length = \
-                     {} m: the slenderness rod.length / sqrt(I/A) = {:.3} must be at least {} \
-                     for the Euler-Bernoulli beam the ANCF element is",
-                    self.rod.area * (self.rod.length / Self::MIN_SLENDERNESS).powi(2),
-                    self.rod.area,
-                    self.rod.length,
-                    self.rod.length / r,
-                    Self::MIN_SLENDERNESS
+                    "(0, {}] m4 for a flexible rod with rod.area = {} m2 and rod.length = {} m: \
+                     the slenderness rod.length / sqrt(I/A) = {} must be at least {} for the \
+                     Euler-Bernoulli beam the ANCF element is",
+                    Num(self.rod.area * (self.rod.length / Self::MIN_SLENDERNESS).powi(2)),
+                    Num(self.rod.area),
+                    Num(self.rod.length),
+                    Num(self.rod.length / r),
+                    Num(Self::MIN_SLENDERNESS)
                 ),
             ));
         }
@@ -53,12 +53,13 @@ impl Parameters {
                 "rod.stiffnessDamping",
                 beta,
                 format!(
-                    "[0, {:.3e}] s for this rod: its first bending mode (ω₁ = π²/L² √(EI/ρA) = \
-                     {omega:.4e} rad/s from rod.length, rod.youngsModulus, rod.secondMomentOfArea, \
-                     rod.density, rod.area) would get the damping ratio β ω₁/2 = {:.3e} > 1, \
+                    "[0, {}] s for this rod: its first bending mode (ω₁ = π²/L² √(EI/ρA) = {} \
+                     rad/s from rod.length, rod.youngsModulus, rod.secondMomentOfArea, \
+                     rod.density, rod.area) would get the damping ratio β ω₁/2 = {} > 1, \
                      overdamping every mode",
-                    2.0 / omega,
-                    0.5 * beta * omega
+                    Num(2.0 / omega),
+                    Num(omega),
+                    Num(0.5 * beta * omega)
                 ),
             ));
         }
@@ -78,7 +79,7 @@ impl Parameters {
                 self.rod.length,
                 format!(
                     "(crank.length, inf) = ({}, inf): the rod must be longer than the crank",
-                    self.crank_length
+                    Num(self.crank_length)
                 ),
             ));
         }
@@ -101,7 +102,7 @@ impl Parameters {
             return Err(ModelError::invalid(
                 "joint.frictionV1",
                 self.friction_v1,
-                format!("(joint.frictionV0, inf) = ({}, inf)", self.friction_v0),
+                format!("(joint.frictionV0, inf) = ({}, inf)", Num(self.friction_v0)),
             ));
         }
         let tolerance = self.relative_tolerance;
@@ -110,9 +111,10 @@ impl Parameters {
                 "solver.relativeTolerance",
                 tolerance,
                 format!(
-                    "[1e-12, {EXPLICIT_MAX_TOLERANCE:e}] with solver.method = explicit: looser \
+                    "[1e-12, {}] with solver.method = explicit: looser \
                      explicit runs leave the flexible rod's stiff content ringing at the edge of \
-                     stability (peak ideal-joint force +25 % at 1e-3 with 8 modes)"
+                     stability (peak ideal-joint force +25 % at 1e-3 with 8 modes)",
+                    Num(EXPLICIT_MAX_TOLERANCE)
                 ),
             ));
         }
@@ -121,9 +123,10 @@ impl Parameters {
                 "solver.relativeTolerance",
                 tolerance,
                 format!(
-                    "[1e-12, {GENERALIZED_ALPHA_MAX_TOLERANCE:e}] with solver.method = \
+                    "[1e-12, {}] with solver.method = \
                      generalizedAlpha: looser second-order steps mis-resolve the dry impacts \
-                     (rigid rod: peak joint force +60 % at 5e-2)"
+                     (rigid rod: peak joint force +60 % at 5e-2)",
+                    Num(GENERALIZED_ALPHA_MAX_TOLERANCE)
                 ),
             ));
         }
@@ -153,7 +156,9 @@ impl Parameters {
                 return Err(ModelError::invalid(
                     v.name,
                     value,
-                    format!("[{min:e}, {max:e}] {unit}").trim_end().to_string(),
+                    format!("[{}, {}] {unit}", Num(min), Num(max))
+                        .trim_end()
+                        .to_string(),
                 ));
             }
         }
@@ -207,7 +212,8 @@ mod tests {
                 .unwrap_err()
                 .to_string();
             assert!(
-                message.contains("rod.stiffnessDamping") && message.contains("[0, 1.310e-4] s"),
+                message.contains("rod.stiffnessDamping")
+                    && message.contains(&format!("[0, {}] s", Num(2.0 / omega))),
                 "{message}"
             );
         }

@@ -1,8 +1,9 @@
 //! Why an interval failed: the messages of the work limit and of integrator failures, with the
 //! parameters that usually cause them.
 
-use crate::error::ModelError;
-use crate::params::Parameters;
+use crate::error::{ModelError, Num};
+use crate::integrator::Method;
+use crate::params::{JointModel, Parameters, RodFormulation};
 
 /// The error of an interval [t_start, t_end] that ran out of work
 /// ([`Parameters::max_steps_per_interval`]): where it stopped, at what step size, and the
@@ -15,11 +16,13 @@ pub(super) fn work_limit(
 ) -> ModelError {
     ModelError::Numerical(format!(
         "solver.maxStepsPerInterval = {} internal steps exhausted in the communication interval \
-             [{t_start}, {t_end}] s, stopped at t = {} s with a step of {:.3e} s. {}; raise \
+             [{}, {}] s, stopped at t = {} s with a step of {} s. {}; raise \
              solver.maxStepsPerInterval to go on",
         p.max_steps_per_interval,
-        stopped_at,
-        step_size,
+        Num(t_start),
+        Num(t_end),
+        Num(stopped_at),
+        Num(step_size),
         likely_causes(p)
     ))
 }
@@ -42,21 +45,63 @@ pub(super) fn unequilibrated(p: &Parameters, error: &ModelError) -> ModelError {
     ModelError::Numerical(format!(
         "rod.initialState = equilibrated: the rod's quasi-static deflection under the inertial \
              loads of the initial motion was not found: {error}. Likely cause: a rod too compliant \
-             for that motion (rod.youngsModulus = {:e} Pa, rod.secondMomentOfArea = {:e} m4, \
+             for that motion (rod.youngsModulus = {} Pa, rod.secondMomentOfArea = {} m4, \
              rod.length = {} m, crank.initialSpeed = {} rad/s); start with rod.initialState = \
              straight, or make the rod stiffer or the start slower",
-        p.rod.youngs_modulus, p.rod.second_moment_of_area, p.rod.length, p.crank_initial_speed
+        Num(p.rod.youngs_modulus),
+        Num(p.rod.second_moment_of_area),
+        Num(p.rod.length),
+        Num(p.crank_initial_speed)
     ))
 }
 
-/// The parameters that make the equations stiff or non-smooth, with their values.
+/// Tolerances below this count as a likely cause of a stalled interval.
+const TIGHT_TOLERANCE: f64 = 1e-5;
+
+/// The parameters of `p` that make the equations stiff or non-smooth, with their values: only
+/// those that apply (friction only with friction, material damping only with it, …), and the
+/// tolerance last.
 fn likely_causes(p: &Parameters) -> String {
-    let joint = format!("{:?}", p.joint_model).to_lowercase();
-    format!(
-        "Likely causes: sticking friction (joint.friction = {}), strong material damping \
-             (rod.stiffnessDamping = {} s), a very stiff contact or film (joint.clearance = {:e} m \
-             with joint.model = {joint}: the contact and film stiffness grow as the clearance \
-             shrinks) or a tight tolerance (solver.relativeTolerance = {:e})",
-        p.friction, p.rod.stiffness_damping, p.clearance, p.relative_tolerance
-    )
+    let clearance_joint = p.joint_model != JointModel::Ideal;
+    let mut causes = Vec::new();
+    if clearance_joint && p.friction > 0.0 {
+        causes.push(format!(
+            "sticking friction (joint.friction = {})",
+            Num(p.friction)
+        ));
+    }
+    if p.rod_formulation != RodFormulation::Rigid && p.rod.stiffness_damping > 0.0 {
+        causes.push(format!(
+            "strong material damping (rod.stiffnessDamping = {} s)",
+            Num(p.rod.stiffness_damping)
+        ));
+    }
+    if clearance_joint {
+        let joint = format!("{:?}", p.joint_model).to_lowercase();
+        causes.push(format!(
+            "a very stiff contact or film (joint.clearance = {} m with joint.model = {joint}: the \
+             contact and film stiffness grow as the clearance shrinks)",
+            Num(p.clearance)
+        ));
+    }
+    if p.rod_formulation == RodFormulation::Ancf && p.method == Method::DormandPrince {
+        causes.push(format!(
+            "the full rod's highest frequencies with the explicit method (rod.nElements = {}: \
+             they grow as its square)",
+            p.n_elements
+        ));
+    }
+    let tolerance = format!(
+        "a tight tolerance (solver.relativeTolerance = {})",
+        Num(p.relative_tolerance)
+    );
+    if p.relative_tolerance < TIGHT_TOLERANCE || causes.is_empty() {
+        causes.push(tolerance);
+    }
+    let last = causes.pop().unwrap_or_default();
+    if causes.is_empty() {
+        format!("Likely cause: {last}")
+    } else {
+        format!("Likely causes: {} or {last}", causes.join(", "))
+    }
 }

@@ -13,7 +13,7 @@ use self::peaks::AcceptedStep;
 pub use self::peaks::{PeakHold, Peaks};
 pub use self::snapshot::Snapshot;
 use self::validity::Monitor;
-use crate::error::ModelError;
+use crate::error::{ModelError, Num};
 use crate::integrator::{Integrator, Stats};
 use crate::mechanism::{ContactState, Energies, SliderCrank};
 pub use crate::mechanism::{Input, InputSignal, Inputs};
@@ -192,8 +192,9 @@ impl Simulation {
                 Ok(())
             }
             _ => Err(ModelError::Numerical(format!(
-                "derivative of order {order} = {value} of {input:?}: the order must be 1 or 2 and \
-                 the value finite"
+                "derivative of order {order} = {} of {input:?}: the order must be 1 or 2 and the \
+                 value finite",
+                Num(value)
             ))),
         }
     }
@@ -243,8 +244,9 @@ impl Simulation {
         let t_end = on_clock_grid(t_end);
         if !(t_end.is_finite() && t_end >= self.time) {
             return Err(ModelError::Numerical(format!(
-                "cannot advance from t = {} s to t = {t_end} s",
-                self.time
+                "cannot advance from t = {} s to t = {} s",
+                Num(self.time),
+                Num(t_end)
             )));
         }
         let t_start = self.time;
@@ -276,7 +278,8 @@ impl Simulation {
                      impulsive change through the constraints, booked as drive work); leave \
                      crank.initialSpeed at its start value (the crank then starts at drive.speed) \
                      or set it to drive.speed for a smooth start",
-                    self.parameters.crank_initial_speed, next.value.drive_speed
+                    Num(self.parameters.crank_initial_speed),
+                    Num(next.value.drive_speed)
                 ));
             }
             let work = self.mechanism.project_velocities(&mut self.y_end)?;

@@ -2,6 +2,7 @@
 //! Each cause is reported once per simulation, as a message for the FMU's logger
 //! ([`super::Simulation::take_warnings`]).
 
+use crate::error::Num;
 use crate::mechanism::SliderCrank;
 use crate::params::{Parameters, RodFormulation};
 
@@ -67,27 +68,33 @@ impl Monitor {
             self.fired[i] = true;
             let message = match i {
                 0 => format!(
-                    "joint penetration {penetration:.3e} m exceeds {} % of joint.journalRadius = {} m \
-                     (Hertz contact assumes a small contact zone)",
-                    100.0 * PENETRATION_PER_RADIUS,
-                    p.journal_radius
+                    "joint penetration {} m exceeds {} % of joint.journalRadius = {} m (Hertz \
+                     contact assumes a small contact zone)",
+                    Num(penetration),
+                    Num(100.0 * PENETRATION_PER_RADIUS),
+                    Num(p.journal_radius)
                 ),
                 1 => format!(
-                    "rod mid-span deflection {deflection:.3e} m exceeds {} % of rod.length = {l} m",
-                    100.0 * DEFLECTION_PER_LENGTH
+                    "rod mid-span deflection {} m exceeds {} % of rod.length = {} m",
+                    Num(deflection),
+                    Num(100.0 * DEFLECTION_PER_LENGTH),
+                    Num(l)
                 ),
                 2 => format!(
-                    "crank speed {speed:.4e} rad/s is more than 1 % beyond the drive's range ±1e4 rad/s"
+                    "crank speed {} rad/s is more than 1 % beyond the drive's range ±1e4 rad/s",
+                    Num(speed)
                 ),
                 _ => format!(
-                    "slider position {x:.6} m is {excess:.3e} m beyond its kinematic stroke \
-                     [{:.6}, {:.6}] m",
-                    l - r_c - c,
-                    l + r_c + c
+                    "slider position {} m is {} m beyond its kinematic stroke [{}, {}] m",
+                    Num(x),
+                    Num(excess),
+                    Num(l - r_c - c),
+                    Num(l + r_c + c)
                 ),
             };
             self.warn(format!(
-                "t = {t:.6e} s: the model left its domain: {message}"
+                "t = {} s: the model left its domain: {message}",
+                Num(t)
             ));
         }
     }

@@ -191,13 +191,13 @@ fn out_of_range_values_name_variable_value_and_range() {
         (
             "rod.youngsModulus",
             -3.0,
-            "rod.youngsModulus = -3e0 is outside the allowed range [1e6, 1e13] Pa",
+            "rod.youngsModulus = -3 is outside the allowed range [1e6, 1e13] Pa",
         ),
-        ("joint.clearance", f64::NAN, "joint.clearance = NaNe0"),
+        ("joint.clearance", f64::NAN, "joint.clearance = NaN"),
         (
             "joint.restitution",
             1.5,
-            "joint.restitution = 1.5e0 is outside the allowed range [1e-3, 1e0] 1",
+            "joint.restitution = 1.5 is outside the allowed range [0.001, 1] 1",
         ),
         (
             "drive.torque",

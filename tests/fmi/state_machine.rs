@@ -212,6 +212,37 @@ fn calls_after_an_error_name_the_first_error() {
     );
 }
 
+/// After a discarded step every refused call names the discard that put the instance in the
+/// StepFailed state, with its reason, once (no doubled function name); the number format is the
+/// one of every message (the shortest round-trip decimal).
+#[test]
+fn calls_after_a_discard_name_the_discard() {
+    let inst = Instance::new("discard");
+    assert_eq!(
+        inst.set_integer(vr("solver.maxStepsPerInterval"), 5),
+        fmi2Status_fmi2OK
+    );
+    inst.initialize();
+    assert_eq!(inst.do_step(0.0, 1e-3), fmi2Status_fmi2Discard);
+    let discard = inst.last_message();
+    assert!(
+        discard.starts_with("fmi2DoStep: step discarded")
+            && !discard.contains("fmi2DoStep: fmi2DoStep"),
+        "{discard}"
+    );
+    assert_eq!(inst.do_step(0.0, 1e-4), ERROR);
+    let refused = inst.last_message();
+    assert!(
+        refused.contains("Illegal call sequence. The instance is in the StepFailed state since: fmi2DoStep: step discarded")
+            && refused.contains("solver.maxStepsPerInterval = 5"),
+        "{refused}"
+    );
+    assert!(
+        !refused.contains("e0") && !refused.contains("e-0"),
+        "{refused}"
+    );
+}
+
 /// Every instance function in every reachable state where the FMI 2 state machine forbids it
 /// returns fmi2Error with "fmi2X: Illegal call sequence." and no crash (the table of
 /// src/fmi/state.rs is the oracle; 30 functions × 5 states).

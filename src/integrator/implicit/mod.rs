@@ -40,6 +40,7 @@ use super::esdirk::Tableau;
 use super::generalized_alpha::GeneralizedAlpha;
 use super::system::MechanicalSystem;
 use crate::error::ModelError;
+use crate::error::Num;
 use crate::linalg::lu::Lu;
 use crate::math;
 
@@ -368,9 +369,11 @@ impl Implicit {
             }
             if self.state.h < min_step {
                 return Err(ModelError::Numerical(format!(
-                    "step size {:.3e} s fell below the minimum {min_step:.3e} s at t = {} s \
-                     (implicit integrator)",
-                    self.state.h, *t
+                    "step size {} s fell below the minimum {} s at t = {} s (implicit \
+                     integrator)",
+                    Num(self.state.h),
+                    Num(min_step),
+                    Num(*t)
                 )));
             }
         }
@@ -424,7 +427,7 @@ impl Implicit {
                 Err(_) => {
                     break Err(ModelError::Numerical(format!(
                         "dense output at t = {} s: Newton did not converge",
-                        t0 + dt
+                        Num(t0 + dt)
                     )));
                 }
             }
