@@ -24,6 +24,7 @@
 
 pub mod constraints;
 mod energy;
+mod error_scales;
 mod events;
 mod inputs;
 pub mod layout;

@@ -1,0 +1,78 @@
+//! The error scales of the mechanism's state: how the integrators measure each component's local
+//! error, in units of the joint's length scale ([`super::scales::position_scale`]).
+
+use super::layout::CRANK_ANGLE;
+use super::slider_crank::SliderCrank;
+use crate::integrator::{ErrorScales, HeldProjection, PlanarVector};
+use crate::joint::Joint;
+
+impl SliderCrank {
+    /// Error weights of each state component ([`ErrorScales`]): the integrators compare its
+    /// local error with `rtol · sᵢ` for coordinates and velocities (absolute only: positions and
+    /// velocities have no natural origin) and with `rtol · (sᵢ + |yᵢ|)` for the work integrals.
+    ///
+    /// Every state is measured by the displacement (or velocity) it causes in the mechanism, in
+    /// units of the joint's length scale ℓ (see `position_scale`) and of the speed V = ω₀ ℓ
+    /// (ω₀ = |the crank's start speed|, at least 1 rad/s, [`Parameters::start_speed`]):
+    /// ```text
+    /// θ, θ_d          ℓ / r_c               θ̇            V / r_c
+    /// rod coordinate  ℓ / d_j               its rate     V / d_j
+    /// x_s             ℓ                     ẋ_s          V
+    /// works           ½ m (ω₀ r_c)² ℓ / r_c,   m = I_O/r_c² + m_rod + m_slider
+    /// ```
+    /// with d_j the largest displacement along the rod per unit of coordinate j (1 for positions,
+    /// ≈ (4/27) l_e for ANCF slopes, the mode shape's largest value for modal amplitudes). A
+    /// coordinate whose unit moves the rod little gets a proportionally larger scale, so the
+    /// error control asks the same physical accuracy of every coordinate.
+    ///
+    /// With the dry joint the journal's normal velocity in the bearing, δ̇ = n · ė with
+    /// ė = ṙ_B − (ẋ_s, 0) and n = e/|e|, is also held to `rtol · V / w` on its own, with
+    /// w = `solver.impactErrorWeight` (max-norm; the implicit methods; not at w = 0): it decides
+    /// when and how fast the journal meets the wall, hence every impact's onset and peak, yet the
+    /// RMS over all 2n + 4 components lets it drift. (The tangential velocity is left to the RMS:
+    /// with friction it is stiff while the journal sticks.)
+    pub fn error_scales(&self) -> ErrorScales {
+        let l = self.layout;
+        let length = self.position_scale;
+        let speed = self.reference_speed * length;
+        let pin_speed = self.reference_speed * self.crank_length;
+        let mass =
+            self.crank_inertia / self.crank_length.powi(2) + self.rod_mass + self.slider_mass;
+        let mut scales = vec![0.0; l.n_states()];
+        scales[CRANK_ANGLE] = length / self.crank_length;
+        scales[l.crank_speed()] = speed / self.crank_length;
+        for (j, d) in self.rod.displacement_scales().into_iter().enumerate() {
+            scales[l.rod_coordinate(j)] = length / d;
+            scales[l.rod_rate(j)] = speed / d;
+        }
+        scales[l.slider()] = length;
+        scales[l.slider_velocity()] = speed;
+        scales[l.drive_angle()] = scales[CRANK_ANGLE];
+        for s in &mut scales[l.integrals()] {
+            *s = 0.5 * mass * pin_speed * pin_speed * length / self.crank_length;
+        }
+        let relative = (0..scales.len())
+            .map(|i| if l.integrals().contains(&i) { 1.0 } else { 0.0 })
+            .collect();
+        let held = match self.joint {
+            Joint::Dry(_) if self.impact_error_weight > 0.0 => {
+                let journal = |at: usize, slider: usize| PlanarVector {
+                    x: at,
+                    y: at + 1,
+                    x_offset: slider,
+                };
+                vec![HeldProjection {
+                    position: journal(l.pin_b(), l.slider()),
+                    rate: journal(l.rate_of(l.pin_b()), l.slider_velocity()),
+                    scale: speed / self.impact_error_weight,
+                }]
+            }
+            _ => Vec::new(),
+        };
+        ErrorScales {
+            absolute: scales,
+            relative,
+            held,
+        }
+    }
+}
