@@ -6,7 +6,7 @@
 //!
 //! Communication points follow fmpy's arithmetic (t_n = n·dt, step h = t_{n+1} − t_n, end t + h) and
 //! values are printed in shortest round-trip form, so the FMU run through fmpy can be compared with
-//! this library run bit for bit (packaging/python/test_fmu.py).
+//! this library run bit for bit (packaging/python/tests/test_fmu.py).
 
 use flexible_slider_crank::params::{JointModel, RodFormulation};
 use flexible_slider_crank::{ModelError, Parameters, Simulation};

@@ -40,11 +40,11 @@ for s in "${sections[@]}"; do
       cargo bench --bench step ;;
     modes) cargo run --release --quiet --example mode_study ;;
     coupling) "$py" packaging/python/coupling_benchmark.py "$fmu" ;;
-    system) "$py" packaging/python/system.py ;;
+    system) "$py" -m fsc.system ;;
     dask) "$py" packaging/python/sweep_benchmark.py "$fmu" ;;
     space)
-      "$py" packaging/python/parameter_space.py
-      "$py" packaging/python/parameter_space.py --listed ;;
+      "$py" -m fsc.parameter_space
+      "$py" -m fsc.parameter_space --listed ;;
     platforms) bash packaging/release.sh ;;
     fuzz) bash packaging/fuzz.sh 1800 ;;
     *) echo "unknown section $s (one of: ${all[*]})" >&2; exit 1 ;;

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Idempotent set-up on a fresh Debian machine with Rust: the system packages the build needs
 # (libclang for fmi-sys's bindgen, DejaVu fonts for the plots, venv support) and a Python venv
-# (.venv) with the pinned FMI masters and test tools of packaging/python/requirements.txt.
+# (.venv) with the pinned FMI masters and test tools of packaging/python/requirements.txt and the
+# repository's own Python package, fsc.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -22,3 +23,5 @@ if [ ! -x .venv/bin/python ]; then
   python3 -m venv .venv
 fi
 .venv/bin/pip install -q --disable-pip-version-check -r packaging/python/requirements.txt
+# The repository's Python tooling (packaging/python/fsc), editable: the tests import it.
+.venv/bin/pip install -q --disable-pip-version-check -e packaging/python

@@ -53,7 +53,7 @@ if [ -n "$root_pid" ] && ! wait "$root_pid"; then
 fi
 echo "== pytest (packaged FMU through fmpy and libcosimpy; release binaries on every platform)"
 set +e
-.venv/bin/python -m pytest -q packaging/python
+.venv/bin/python -m pytest -q packaging/python/tests
 status=$?
 set -e
 if [ "$status" -eq 5 ]; then

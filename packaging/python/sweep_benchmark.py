@@ -14,9 +14,8 @@ from pathlib import Path
 from dask.distributed import Client, LocalCluster
 from fmpy import extract, read_model_description, simulate_fmu
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from fsc import study as study_mod  # noqa: E402
-from fsc.sweep import read_results, run  # noqa: E402
+from fsc import study as study_mod
+from fsc.sweep import read_results, run
 
 STUDY = """stop_time = 0.024
 output_interval = 1e-4

@@ -72,6 +72,11 @@ impl RodProperties {
         self.density * self.area * self.length
     }
 
+    /// First axial frequency of the rod held at both ends, ω = (π/L) √(E/ρ) \[rad/s\].
+    pub fn first_axial_frequency(&self) -> f64 {
+        std::f64::consts::PI / self.length * (self.youngs_modulus / self.density).sqrt()
+    }
+
     /// First bending frequency of the rod pinned at both ends (Euler–Bernoulli),
     /// ω₁ = (π/L)² √(EI/ρA) \[rad/s\].
     pub fn first_bending_frequency(&self) -> f64 {

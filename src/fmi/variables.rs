@@ -214,7 +214,7 @@ pub const DEFAULT_EXPERIMENT: (f64, f64, f64, f64) = (0.0, 0.024, 1e-2, 1e-4);
 /// that shows a change of an input at once, before the next fmi2DoStep, with those inputs. Every
 /// other output reacts to the inputs only through the motion (after a step): the positions,
 /// speeds, energies and counters are states or integrals of the motion. The lists are the union
-/// over every drive, joint and rod model, as measured by `test_fmu.py`.
+/// over every drive, joint and rod model, as measured by `packaging/python/tests/test_fmu.py`.
 pub const FEEDTHROUGH: &[(Vr, &[Vr])] = &[
     (Vr::CrankTorque, ALL_INPUTS),
     (Vr::SliderAcceleration, ALL_INPUTS),

@@ -16,6 +16,11 @@ impl Parameters {
     /// Smallest slenderness L/r (r = √(I/A), the radius of gyration) of a flexible rod.
     pub const MIN_SLENDERNESS: f64 = 10.0;
 
+    /// Largest damping ratio of the rod's first axial mode under its material damping: that of
+    /// benchmark B's rod at its largest allowed damping (ω_axial/ω₁ = 8.8), so that the rule on
+    /// the first bending mode alone decides for every rod of ordinary proportions.
+    pub const MAX_AXIAL_DAMPING_RATIO: f64 = 9.0;
+
     /// The ANCF element is an Euler–Bernoulli beam (no shear deformation, no rotary inertia): a
     /// rod whose radius of gyration exceeds a tenth of its length is a block, not a beam (shear
     /// would change its first bending frequency by tens of percent). Benchmark B: L/r = 27.8.
@@ -44,10 +49,18 @@ impl Parameters {
     /// ζ₁ = 1 the rod's first bending mode, and with it every mode, is overdamped: no structural
     /// material behaves so, and the equations become too stiff for the work integrals to follow
     /// the tolerance (measured: energy-balance residual 0.3 of the kinetic energy at ζ₁ = 76,
-    /// β = 1e-2 s on benchmark B, rtol 1e-2; 8e-3 at ζ₁ = 1). So β ≤ 2/ω₁.
+    /// β = 1e-2 s on benchmark B, rtol 1e-2; 8e-3 at ζ₁ = 1). So β ≤ 2/ω₁, and the first axial
+    /// mode's damping ratio at most [`Self::MAX_AXIAL_DAMPING_RATIO`]: a very thin rod's bending
+    /// frequency allows a damping that overdamps its axial modes by orders of magnitude
+    /// (measured: a 12 cm rod with I = 1.5e-17 m⁴ and β = 1 s, ζ_axial = 7e4, energy-balance
+    /// residual 1.2 of the largest energy at rtol 1e-2).
     fn check_material_damping(&self) -> Result<(), ModelError> {
         let beta = self.rod.stiffness_damping;
-        let omega = self.rod.first_bending_frequency();
+        let axial = self.rod.first_axial_frequency();
+        let omega = self
+            .rod
+            .first_bending_frequency()
+            .max(axial / Self::MAX_AXIAL_DAMPING_RATIO);
         if beta * omega > 2.0 {
             return Err(ModelError::invalid(
                 "rod.stiffnessDamping",
@@ -56,10 +69,13 @@ impl Parameters {
                     "[0, {}] s for this rod: its first bending mode (ω₁ = π²/L² √(EI/ρA) = {} \
                      rad/s from rod.length, rod.youngsModulus, rod.secondMomentOfArea, \
                      rod.density, rod.area) would get the damping ratio β ω₁/2 = {} > 1, \
-                     overdamping every mode",
+                     overdamping every mode, or its first axial mode (ω = π/L √(E/ρ) = {} rad/s) \
+                     a damping ratio above {}",
                     Num(2.0 / omega),
-                    Num(omega),
-                    Num(0.5 * beta * omega)
+                    Num(self.rod.first_bending_frequency()),
+                    Num(0.5 * beta * self.rod.first_bending_frequency()),
+                    Num(axial),
+                    Num(Self::MAX_AXIAL_DAMPING_RATIO)
                 ),
             ));
         }
@@ -189,7 +205,7 @@ mod tests {
 
     /// Material damping is accepted up to a critically damped first bending mode (β ω₁ = 2,
     /// ω₁ = 15 270 rad/s for benchmark B's rod) and only for a flexible rod; the message names
-    /// the limit for this rod.
+    /// the limit for this rod. A very thin rod is limited by its first axial mode instead.
     #[test]
     fn overdamped_rods_are_rejected() {
         let omega = Parameters::default().rod.first_bending_frequency();
@@ -246,6 +262,22 @@ mod tests {
             message.contains("rod.secondMomentOfArea") && message.contains("at least 10"),
             "{message}"
         );
+        let thin = RodProperties {
+            second_moment_of_area: 1.5e-17,
+            ..RodProperties::benchmark_b()
+        };
+        let axial_limit = 2.0 * Parameters::MAX_AXIAL_DAMPING_RATIO / thin.first_axial_frequency();
+        assert!(axial_limit < 2.0 / thin.first_bending_frequency());
+        for (beta, accepted) in [(0.99 * axial_limit, true), (1.01 * axial_limit, false)] {
+            let p = Parameters {
+                rod: RodProperties {
+                    stiffness_damping: beta,
+                    ..thin
+                },
+                ..Parameters::default()
+            };
+            assert_eq!(p.validate().is_ok(), accepted, "β = {beta} s");
+        }
     }
 
     /// The library rejects just beyond every declared bound with an error naming the parameter:

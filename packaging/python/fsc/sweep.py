@@ -2,7 +2,7 @@
 
 - Scheduler: an embedded LocalCluster (one single-threaded worker process per core) or an existing
   Dask cluster (`scheduler` = its address), whose workers need fmpy, numpy and this package
-  importable (`packaging/python` on PYTHONPATH); the FMU itself reaches them through Dask.
+  importable (the `fsc` package installed); the FMU itself reaches them through Dask.
 - Results: `OUT/results/` is a Parquet dataset with one file per finished case (parameters, metrics,
   status, message, case id). A re-run skips the cases whose file exists, so an interrupted study
   resumes. Kept time series go to `OUT/series/case=<id>/`.

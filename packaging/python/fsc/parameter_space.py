@@ -42,7 +42,7 @@ from fmpy.fmi2 import calloc, free
 from fmpy.logging import addLoggerProxy
 from ctypes import byref
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 FMU = ROOT / "target" / "fmu" / "FlexibleSliderCrank.fmu"
 STOP_TIME = 4e-3
 STEP = 1e-4

@@ -5,7 +5,7 @@ from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 CRATES = ["src", "fmi2-slave/src", "dc-motor/src", "packaging/src", "fuzz/src"]
 #: Longest file, in lines before its unit tests.
 MAX_LINES = 520

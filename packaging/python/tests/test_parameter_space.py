@@ -1,10 +1,6 @@
 """Random parameter sets through the FMU keep its promises (a fixed-seed sample of
-parameter_space.py's study, small enough for CI), and the study's checks can fail."""
-import sys
-from pathlib import Path
-
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-import parameter_space as ps  # noqa: E402
+fsc.parameter_space's study, small enough for CI), and the study's checks can fail."""
+from fsc import parameter_space as ps
 
 
 def test_a_fixed_seed_sample_keeps_every_promise():

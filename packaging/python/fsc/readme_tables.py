@@ -1,6 +1,6 @@
 """The README's parameter, input and output tables, generated from modelDescription.xml.
 
-`python packaging/python/readme_tables.py` prints them (`--write`: into README.md); test_readme.py checks that the README's
+`python -m fsc.readme_tables` prints them (`--write`: into README.md); tests/test_readme.py checks that the README's
 tables are exactly these, so documentation and FMU cannot disagree.
 """
 import re
@@ -8,7 +8,7 @@ import sys
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1].parent
+ROOT = Path(__file__).resolve().parents[3]
 XML = ROOT / "modelDescription" / "modelDescription.xml"
 #: README heading of each table, by causality.
 HEADINGS = {

@@ -16,7 +16,7 @@ import pytest
 from fmpy import read_model_description, supported_platforms
 from fmpy.validation import validate_fmu
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 RELEASE_FMU = ROOT / "target" / "fmu" / "release" / "FlexibleSliderCrank.fmu"
 BINARIES = ROOT / "target" / "cross" / "binaries"
 HOST_LIBRARY = ROOT / "target" / "release" / "libflexible_slider_crank.so"

@@ -1,10 +1,8 @@
 """The README's variable tables equal those generated from modelDescription.xml, and its code runs."""
 import re
 import sys
-from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from readme_tables import HEADINGS, ROOT, readme_rows, tables  # noqa: E402
+from fsc.readme_tables import HEADINGS, ROOT, readme_rows, tables
 
 
 def test_readme_tables_match_the_model_description():

@@ -4,7 +4,7 @@ import re
 import subprocess
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 TEXT = {".rs", ".py", ".md", ".sh", ".toml", ".xml", ".ssd", ".txt", ".c", ".yml", ".yaml", ""}
 #: A reference to a tracker item or its numbered checks (a word followed by a number).
 HISTORY = re.compile(r"\b(issue|acceptance) #?\d", re.IGNORECASE)

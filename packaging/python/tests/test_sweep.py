@@ -10,12 +10,11 @@ from pathlib import Path
 import psutil
 import pytest
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from fsc import study as study_mod  # noqa: E402
-from fsc.runner import run_case  # noqa: E402
-from fsc.sweep import read_results, run  # noqa: E402
+from fsc import study as study_mod
+from fsc.runner import run_case
+from fsc.sweep import read_results, run
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 FMU = ROOT / "target" / "fmu" / "FlexibleSliderCrank.fmu"
 PYTHON = sys.executable
 
@@ -76,8 +75,6 @@ def test_the_unpacked_fmu_is_removed_when_the_worker_ends(tmp_path):
     """A worker process unpacks the FMU once into a temporary directory and removes it when it
     exits."""
     code = f"""
-import sys
-sys.path.insert(0, {str(Path(__file__).resolve().parent)!r})
 from fsc import study as study_mod
 from fsc.runner import run_case
 study = study_mod.load({str(write_study(tmp_path, SMALL))!r})
@@ -194,7 +191,7 @@ def test_bad_study_fails_before_any_run(tmp_path, entry, expected):
         study_mod.load(path)
     assert expected in str(e.value), str(e.value)
     cli = subprocess.run([PYTHON, "-m", "fsc", "sweep", str(path), "--out", str(tmp_path / "o")],
-                         cwd=Path(__file__).parent, capture_output=True, text=True)
+                         cwd=tmp_path, capture_output=True, text=True)
     assert cli.returncode == 2 and expected in cli.stderr
     assert not (tmp_path / "o").exists()
 
@@ -229,7 +226,7 @@ def test_existing_scheduler(tmp_path):
     `dask worker` (with this package on their path; the FMU reaches them through Dask)."""
     port = 8786 + os.getpid() % 1000
     address = f"tcp://127.0.0.1:{port}"
-    env = dict(os.environ, PYTHONPATH=str(Path(__file__).resolve().parent))
+    env = dict(os.environ)
     dask = [str(Path(PYTHON).parent / "dask")]
     scheduler = subprocess.Popen(dask + ["scheduler", "--host", "127.0.0.1", "--port", str(port),
                                          "--no-dashboard"], env=env, cwd=tmp_path,
@@ -252,7 +249,7 @@ def test_existing_scheduler(tmp_path):
         path = write_study(tmp_path, SMALL)
         cli = subprocess.run([PYTHON, "-m", "fsc", "sweep", str(path), "--out",
                               str(tmp_path / "out"), "--scheduler", address],
-                             cwd=Path(__file__).parent, capture_output=True, text=True,
+                             cwd=tmp_path, capture_output=True, text=True,
                              timeout=300)
         assert cli.returncode == 0, cli.stderr
         study = study_mod.load(path)

@@ -13,7 +13,7 @@ Inputs between communication points are
 - "extrapolated": first derivatives the other FMU computes itself (fmi2GetRealOutputDerivatives:
   the crank's angular acceleration for the motor, the rate of the shaft torque for the crank).
 
-usage: system.py [--plot FILE]
+usage: python -m fsc.system [--plot FILE]
                       prints the coupling-error table of the README: crank speed at 1 ms against a
                       run with a 2.5e-6 s communication step and second-order inputs, at
                       communication steps 1e-4, 5e-5 and 1e-5 s, the crank integrated at
@@ -27,7 +27,7 @@ from pathlib import Path
 from fmpy import extract, read_model_description
 from fmpy.fmi2 import FMU2Slave
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 CRANK_FMU = ROOT / "target" / "fmu" / "FlexibleSliderCrank.fmu"
 MOTOR_FMU = ROOT / "target" / "fmu" / "DcMotor.fmu"
 SSP = ROOT / "target" / "fmu" / "MotorCrank.ssp"

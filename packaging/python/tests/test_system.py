@@ -8,7 +8,7 @@ from fmpy.ssp.simulation import simulate_ssp
 from fmpy.ssp.ssd import Parameter, ParameterSet, find_components, read_ssd
 from fmpy.validation import validate_fmu
 
-import system
+from fsc import system
 
 STOP, STEP = 0.024, 1e-4
 NS = 100_000  # STEP in libcosim's nanoseconds

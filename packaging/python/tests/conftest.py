@@ -1,0 +1,32 @@
+"""Fixtures the tests share: the repository, the packaged FMU (built by `cargo run --release -p
+packaging`, which the test command runs first) and its model description."""
+from pathlib import Path
+
+import pytest
+from fmpy import read_model_description
+
+ROOT = Path(__file__).resolve().parents[3]
+
+
+@pytest.fixture(scope="session")
+def root() -> Path:
+    """The repository's root directory."""
+    return ROOT
+
+
+@pytest.fixture(scope="session")
+def fmu() -> str:
+    """The packaged FlexibleSliderCrank FMU (this machine's binary)."""
+    return str(ROOT / "target" / "fmu" / "FlexibleSliderCrank.fmu")
+
+
+@pytest.fixture(scope="session")
+def model_description(fmu):
+    """The FMU's model description, as fmpy reads it."""
+    return read_model_description(fmu)
+
+
+@pytest.fixture(scope="session")
+def value_references(model_description) -> dict:
+    """Value reference of every variable, by name."""
+    return {v.name: v.valueReference for v in model_description.modelVariables}
