@@ -13,15 +13,14 @@
 //!
 //! The archive is reproducible: its entries come in a fixed order with a fixed time stamp.
 
+mod documentation;
+
 use std::error::Error;
-use std::fmt::Write as _;
 use std::io::{BufRead, BufReader, Write};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
-use flexible_slider_crank::fmi::variables::{Causality, ENUMERATIONS, Kind, VARIABLES};
-use flexible_slider_crank::fmi::{GUID, MODEL_DESCRIPTION, MODEL_IDENTIFIER};
-use fmi2_slave::table::{Enumeration, Variable};
+use flexible_slider_crank::fmi::{MODEL_DESCRIPTION, MODEL_IDENTIFIER};
 use zip::write::SimpleFileOptions;
 
 /// Builds the cdylib of `package` in release mode and returns the path of the `.so` cargo reports.
@@ -58,130 +57,6 @@ fn build_library(root: &Path, package: &str) -> Result<PathBuf, Box<dyn Error>> 
         return Err("cargo build --release failed".into());
     }
     library.ok_or_else(|| "cargo reported no .so for the cdylib".into())
-}
-
-/// An HTML table of the variables of one causality: name, unit, start, range, description.
-fn variable_rows<V>(
-    variables: &[Variable<V>],
-    enumerations: &[Enumeration],
-    causality: Causality,
-) -> String {
-    let mut t = String::from(
-        "<table><tr><th>name</th><th>unit</th><th>start</th><th>range</th><th>description</th></tr>\n",
-    );
-    for v in variables.iter().filter(|v| v.causality == causality) {
-        let (unit, start, range) = match v.kind {
-            Kind::Real {
-                start,
-                min,
-                max,
-                unit,
-            } => (
-                unit.to_string(),
-                start.map_or(String::new(), |s| format!("{s}")),
-                if min.is_finite() {
-                    format!("[{min}, {max}]")
-                } else {
-                    String::new()
-                },
-            ),
-            Kind::Integer { start, min, max } => (
-                String::new(),
-                start.map_or(String::new(), |s| s.to_string()),
-                format!("[{min}, {max}]"),
-            ),
-            Kind::Boolean => (String::new(), String::new(), "true/false".into()),
-            Kind::Enumeration { start, type_index } => {
-                let items = enumerations[type_index].items;
-                let names: Vec<String> = items
-                    .iter()
-                    .enumerate()
-                    .map(|(i, (n, _))| format!("{}={n}", i + 1))
-                    .collect();
-                (
-                    String::new(),
-                    items[(start - 1) as usize].0.to_string(),
-                    names.join(", "),
-                )
-            }
-        };
-        let _ = writeln!(
-            t,
-            "<tr><td><code>{}</code></td><td>{unit}</td><td>{start}</td><td>{range}</td><td>{}</td></tr>",
-            v.name, v.description
-        );
-    }
-    t + "</table>\n"
-}
-
-/// documentation/index.html of the slider-crank: model, parameters, inputs and outputs with units
-/// (from the variable table), validation status and the plots.
-fn documentation(readme_validation: &str) -> String {
-    let rows = |causality| variable_rows(VARIABLES, ENUMERATIONS, causality);
-    format!(
-        r#"<!DOCTYPE html>
-<html lang="en"><head><meta charset="utf-8"><title>FlexibleSliderCrank</title>
-<style>body{{font-family:sans-serif;max-width:1100px;margin:auto}}table{{border-collapse:collapse}}td,th{{border:1px solid #ccc;padding:3px 6px;font-size:90%}}</style></head>
-<body>
-<h1>FlexibleSliderCrank — FMI 2.0 co-simulation FMU</h1>
-<p>Slider-crank mechanism: rigid crank, connecting rod as planar ANCF beam (full or reduced by Craig–Bampton
-component mode synthesis, or rigid), slider on a straight guide; the rod–slider joint is ideal, a dry clearance
-joint (Lankarani–Nikravesh contact with Coulomb–Ambrósio friction) or a lubricated short journal bearing
-(with dry contact near metal contact), with the contact law chosen among Lankarani–Nikravesh, Flores and Hu–Guo.
-Drive: prescribed crank speed or crank torque. The internal integrator is, by default, an L-stable implicit ESDIRK
-5(4) method with error control that locates contact onsets (Dormand–Prince 5(4) and generalized-α on request). After Sun et al., Mech. Mach.
-Theory 85 (2015) 106–115. GUID <code>{GUID}</code>.</p>
-<p>Defaults: benchmark B (steel rod 0.12 m, 0.21 kg, 8 elements, 4 mode shapes, dry joint with 0.5 mm
-clearance, 5000 rpm). DefaultExperiment: two crank revolutions (0.024 s), step 1e-4 s.</p>
-<h2>Parameters</h2>{}
-<h2>Calculated parameters</h2>{}
-<h2>Inputs</h2>{}
-<h2>Outputs</h2>{}
-<h2>Example run</h2><p><img src="demo.png" alt="demo run" width="100%"></p>
-{readme_validation}
-</body></html>
-"#,
-        rows(Causality::Parameter),
-        rows(Causality::CalculatedParameter),
-        rows(Causality::Input),
-        rows(Causality::Output)
-    )
-}
-
-/// The README's validation section as HTML, and the images it shows (files of
-/// `modelDescription/documentation/`, to be packed beside the page).
-fn validation_summary(root: &Path) -> (String, Vec<PathBuf>) {
-    use pulldown_cmark::{Event, Options, Parser, Tag, html};
-
-    let readme = std::fs::read_to_string(root.join("README.md")).unwrap_or_default();
-    let section = readme
-        .split("\n## ")
-        .find(|s| s.starts_with("Validation"))
-        .unwrap_or("Validation: see README.md");
-    let section = format!("## {section}");
-    let mut images = Vec::new();
-    // Images are packed flat beside index.html; links into the repository lose their target.
-    let events = Parser::new_ext(&section, Options::ENABLE_TABLES).map(|event| match event {
-        Event::Start(Tag::Image {
-            link_type,
-            dest_url,
-            title,
-            id,
-        }) => {
-            let name = dest_url.rsplit('/').next().unwrap_or_default().to_string();
-            images.push(root.join("modelDescription/documentation").join(&name));
-            Event::Start(Tag::Image {
-                link_type,
-                dest_url: name.into(),
-                title,
-                id,
-            })
-        }
-        other => other,
-    });
-    let mut out = String::new();
-    html::push_html(&mut out, events);
-    (out, images)
 }
 
 /// FMI 2.0 platform folders and the file extension of their shared libraries.
@@ -322,40 +197,6 @@ fn zip_options() -> SimpleFileOptions {
         .last_modified_time(zip::DateTime::default())
 }
 
-/// documentation/index.html of the DC motor.
-fn motor_documentation() -> String {
-    use dc_motor::variables::VARIABLES as MOTOR;
-    let rows = |causality| variable_rows(MOTOR, &[], causality);
-    format!(
-        r#"<!DOCTYPE html>
-<html lang="en"><head><meta charset="utf-8"><title>DcMotor</title>
-<style>body{{font-family:sans-serif;max-width:1100px;margin:auto}}table{{border-collapse:collapse}}td,th{{border:1px solid #ccc;padding:3px 6px;font-size:90%}}</style></head>
-<body>
-<h1>DcMotor — FMI 2.0 co-simulation FMU</h1>
-<p>{}</p>
-<pre>
-L di/dt = u - R i - k w            armature (back-EMF constant = torque constant k)
-J dw/dt = k i - tau - b w          rotor
-dphi/dt = w - w_L                  shaft twist (w_L = shaft.speed, the load's speed)
-tau     = k_s phi + d_s (w - w_L)  shaft.torque on the load
-v       = Kp e + Ki z, e = w_ref - w,  u = clamp(v, -U, U),  dz/dt = e + (u - v)/(Ki Tt)
-</pre>
-<p>Starts in steady state at speed.setPoint holding shaft.initialTorque (controller at its set-point).
-Classical Runge-Kutta in equal steps of at most solver.stepSize per communication step; inputs can be
-interpolated (first and second derivatives, for one communication step). GUID <code>{}</code>.</p>
-<h2>Parameters</h2>{}
-<h2>Inputs</h2>{}
-<h2>Outputs</h2>{}
-</body></html>
-"#,
-        dc_motor::variables::DESCRIPTION.description,
-        dc_motor::GUID,
-        rows(Causality::Parameter),
-        rows(Causality::Input),
-        rows(Causality::Output)
-    )
-}
-
 /// A zip of `entries` (name in the archive, file).
 fn write_zip(path: &Path, entries: &[(String, PathBuf)]) -> Result<(), Box<dyn Error>> {
     let mut zip = zip::ZipWriter::new(std::fs::File::create(path)?);
@@ -377,14 +218,13 @@ fn package(
     motor_binaries: &[(&str, PathBuf)],
 ) -> Result<Vec<PathBuf>, Box<dyn Error>> {
     std::fs::create_dir_all(out_dir)?;
-    let (validation, mut images) = validation_summary(root);
-    images.insert(0, root.join("modelDescription/documentation/demo.png"));
+    let (guide, images) = documentation::slider_crank(root);
     let crank_fmu = out_dir.join(format!("{MODEL_IDENTIFIER}.fmu"));
     write_fmu(
         &crank_fmu,
         (MODEL_IDENTIFIER, MODEL_DESCRIPTION),
         crank_binaries,
-        &documentation(&validation),
+        &guide,
         &images,
     )?;
     let motor = (dc_motor::MODEL_IDENTIFIER, dc_motor::MODEL_DESCRIPTION);
@@ -393,7 +233,7 @@ fn package(
         &motor_fmu,
         motor,
         motor_binaries,
-        &motor_documentation(),
+        &documentation::motor(),
         &[],
     )?;
     let system = root.join("systems/motor-crank");

@@ -351,20 +351,32 @@ def test_warnings_are_counted_without_logging(fmu):
     assert warnings(**{"drive.speed": 5000.0, "crank.initialSpeed": 5000.0}) >= 1
 
 
-def test_the_fmus_documentation_is_current_and_complete(fmu):
-    """documentation/index.html inside the .fmu is generated from the variable table and the
-    README: it names the default integrator and every contact law, shows the validation section as
-    HTML (no raw Markdown), and every image it shows is in the archive."""
+def test_the_fmus_documentation_is_a_user_guide(fmu, model_description):
+    """documentation/index.html inside the .fmu — all that someone who receives only the .fmu has —
+    is generated from the variable table and the README: a quick start for fmpy and libcosim, the
+    behaviour a master can rely on, every variable with its value reference (and display unit),
+    the validation, performance and limits; HTML, no raw Markdown; every link resolves inside the
+    FMU (an anchor of the page or an image packed beside it), none points outside."""
     import re
     import zipfile
 
-    with zipfile.ZipFile(fmu) as fmu:
-        page = fmu.read("documentation/index.html").decode()
-        names = set(fmu.namelist())
-    for phrase in ("ESDIRK", "Lankarani", "Flores", "Hu–Guo", "joint.forcePeak"):
+    with zipfile.ZipFile(fmu) as archive:
+        page = archive.read("documentation/index.html").decode()
+        names = set(archive.namelist())
+    for heading in ("Quick start", "Behaviour a master can rely on", "Variables", "Validation",
+                    "Performance", "Current limits"):
+        assert f">{heading}</h2>" in page, heading
+    for phrase in ("simulate_fmu", "libcosimpy", "ESDIRK", "Lankarani", "Flores",
+                   "joint.forcePeak", "crankPin.forcePeak", "rod.stressPeak"):
         assert phrase in page, phrase
+    for v in model_description.modelVariables:
+        assert f"<td><code>{v.name}</code></td><td>{v.valueReference}</td>" in page, v.name
+    assert "<td>rpm</td>" in page and "<td>MPa</td>" in page
     assert "|---|" not in page and "\n### " not in page
-    images = re.findall(r'<img src="([^"]+)"', page)
+    anchors = set(re.findall(r'id="([^"]+)"', page))
+    links = re.findall(r'href="([^"]*)"', page)
+    assert links and all(link.startswith("#") and link[1:] in anchors for link in links), links
+    images = re.findall(r'src="([^"]+)"', page)
     assert len(images) >= 3
     for image in images:
         assert f"documentation/{image}" in names, image
