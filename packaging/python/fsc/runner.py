@@ -27,7 +27,8 @@ from fmpy.logging import addLoggerProxy
 #: Outputs the metrics are computed from (those the FMU does not have are skipped).
 METRIC_OUTPUTS = ["joint.force", "joint.forcePeak", "joint.contactOnsetsTotal", "slider.acceleration",
                   "slider.accelerationPeak", "rod.deformationEnergy", "energy.dissipated",
-                  "solver.steps"]
+                  "solver.steps", "crankPin.forcePeak", "mainBearing.forcePeak", "guide.forcePeak",
+                  "rod.stressPeak"]
 
 _unpacked = {}   # GUID -> (directory, model description), per worker process
 _idle = {}       # GUID -> FMU instances not running a case, per worker process
@@ -87,28 +88,44 @@ def unpacked(fmu_bytes: bytes, guid: str):
     return _unpacked[guid]
 
 
-def metrics(result) -> dict:
-    """Metrics of one result (fmpy structured array)."""
+def metrics(result, start: float = 0.0) -> dict:
+    """Metrics of one result (fmpy structured array) over the rows after `start` [s] (all rows at
+    0): the peaks, the RMS and the largest energy of that window, the contact onsets and the
+    dissipated energy in it. A row's peak-hold covers the interval that ends at it."""
     names = result.dtype.names
-    col = (lambda n: result[n].astype(float) if n in names else None)
+    window = result["time"] > start if start > 0 else np.ones(len(result), dtype=bool)
+    first = max(int(np.argmax(window)) - 1, 0) if start > 0 else None
+    col = (lambda n: result[n].astype(float)[window] if n in names else None)
+
+    def change(name):
+        total = result[name].astype(float)
+        return total[-1] - (total[first] if first is not None else 0.0)
+
+    def peak(name):
+        return float(np.max(col(name))) if name in names else float("nan")
+
     force = col("joint.forcePeak") if "joint.forcePeak" in names else col("joint.force")
     accel = col("slider.acceleration")
     accel_peak = col("slider.accelerationPeak")
     return {
         "peak_joint_force": float(np.max(force)),
-        "contact_onsets": int(result["joint.contactOnsetsTotal"][-1])
+        "peak_crank_pin_force": peak("crankPin.forcePeak"),
+        "peak_main_bearing_force": peak("mainBearing.forcePeak"),
+        "peak_guide_force": peak("guide.forcePeak"),
+        "peak_rod_stress": peak("rod.stressPeak"),
+        "contact_onsets": int(change("joint.contactOnsetsTotal"))
         if "joint.contactOnsetsTotal" in names else -1,
         "slider_acceleration_rms": float(np.sqrt(np.mean(accel ** 2))),
         "slider_acceleration_peak": float(np.max(accel_peak if accel_peak is not None
                                                  else np.abs(accel))),
         "max_deformation_energy": float(np.max(col("rod.deformationEnergy"))),
-        "energy_dissipated": float(col("energy.dissipated")[-1]),
+        "energy_dissipated": float(change("energy.dissipated")),
         "solver_steps": int(result["solver.steps"][-1]),
     }
 
 
 def run_case(fmu_bytes: bytes, guid: str, values: dict, stop_time: float,
-             output_interval: float, series: list):
+             output_interval: float, series: list, metrics_start: float = 0.0):
     """Runs one case: (status, message, metrics, series columns or None). Never raises for a
     failing case: its status is "error" and its message the FMU's logged error (or the
     exception)."""
@@ -133,7 +150,7 @@ def run_case(fmu_bytes: bytes, guid: str, values: dict, stop_time: float,
     _errors.pop(fmu.instanceName, None)
     _idle[md.guid].append(fmu)
     wall = time.perf_counter() - start
-    m = metrics(result)
+    m = metrics(result, metrics_start)
     m["wall_time"] = wall
     kept = None
     if series:

@@ -5,6 +5,7 @@ A study is a TOML file:
     fmu = "../target/fmu/FlexibleSliderCrank.fmu"   # relative to the study file (optional)
     stop_time = 0.024                               # default: the DefaultExperiment's
     output_interval = 1e-4                          # default: the DefaultExperiment's step
+    metrics_start = 0.005                           # metrics over t > 5 ms (default 0: all)
     series = ["slider.acceleration"]                # time series to keep (optional)
 
     [fixed]                                         # start values of every case
@@ -40,7 +41,8 @@ import numpy as np
 from fmpy import read_model_description
 
 #: Metrics computed for every case (see runner.metrics).
-METRICS = ["peak_joint_force", "contact_onsets", "slider_acceleration_rms",
+METRICS = ["peak_joint_force", "peak_crank_pin_force", "peak_main_bearing_force",
+           "peak_guide_force", "peak_rod_stress", "contact_onsets", "slider_acceleration_rms",
            "slider_acceleration_peak", "max_deformation_energy", "energy_dissipated",
            "solver_steps", "wall_time"]
 
@@ -58,12 +60,17 @@ class Study:
     stop_time: float
     output_interval: float
     series: list
+    #: Start of the window the metrics cover [s]: a start-up transient before it is left out.
+    metrics_start: float
     swept: list                     # names of the parameters that vary (grid, then random)
     cases: list = field(default_factory=list)   # list of dict name -> value
 
     def case_id(self, values: dict) -> str:
-        key = json.dumps({"values": values, "guid": self.guid, "stop_time": self.stop_time,
-                          "output_interval": self.output_interval}, sort_keys=True)
+        experiment = {"values": values, "guid": self.guid, "stop_time": self.stop_time,
+                      "output_interval": self.output_interval}
+        if self.metrics_start:
+            experiment["metrics_start"] = self.metrics_start
+        key = json.dumps(experiment, sort_keys=True)
         return hashlib.sha256(key.encode()).hexdigest()[:16]
 
 
@@ -123,7 +130,8 @@ def load(path, fmu=None) -> Study:
         spec = tomllib.loads(path.read_text())
     except (OSError, tomllib.TOMLDecodeError) as e:
         raise StudyError(f"{path}: {e}") from e
-    known = {"fmu", "stop_time", "output_interval", "series", "fixed", "grid", "cases", "random"}
+    known = {"fmu", "stop_time", "output_interval", "metrics_start", "series", "fixed", "grid",
+             "cases", "random"}
     for key in spec:
         if key not in known:
             raise StudyError(f"{path}: unknown entry {key!r} (known: {sorted(known)})")
@@ -137,6 +145,9 @@ def load(path, fmu=None) -> Study:
     interval = float(spec.get("output_interval", ex.stepSize if ex else stop_time / 500))
     if not (stop_time > 0 and 0 < interval <= stop_time):
         raise StudyError(f"{path}: need 0 < output_interval <= stop_time, got {interval}, {stop_time}")
+    metrics_start = float(spec.get("metrics_start", 0.0))
+    if not 0 <= metrics_start < stop_time:
+        raise StudyError(f"{path}: need 0 <= metrics_start < stop_time, got {metrics_start}")
     series = list(spec.get("series", []))
     for name in series:
         if name not in variables:
@@ -190,4 +201,5 @@ def load(path, fmu=None) -> Study:
                 case.update(sample)
                 cases.append(case)
     return Study(path=path, fmu=fmu_path, guid=md.guid, stop_time=stop_time,
-                 output_interval=interval, series=series, swept=swept, cases=cases)
+                 output_interval=interval, series=series, metrics_start=metrics_start,
+                 swept=swept, cases=cases)

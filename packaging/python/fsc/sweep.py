@@ -86,8 +86,8 @@ def run(study, out, scheduler=None, workers=None, progress=True, on_result=None,
         futures = {}
         for case_id, values in todo.items():
             f = client.submit(run_case, fmu, study.guid, values, study.stop_time,
-                              study.output_interval, study.series, key=f"case-{case_id}",
-                              pure=False)
+                              study.output_interval, study.series, study.metrics_start,
+                              key=f"case-{case_id}", pure=False)
             futures[f] = case_id
         bar = tqdm(total=len(futures), disable=not progress, unit="case")
         for future in as_completed(futures):

@@ -260,3 +260,28 @@ def test_existing_scheduler(tmp_path):
         for p in (worker, scheduler):
             p.terminate()
             p.wait(timeout=30)
+
+
+def test_metrics_leave_out_a_start_window():
+    """With metrics_start the metrics cover only the rows after it: a start-up peak before it does
+    not count, and the onsets and dissipated energy are those of the window."""
+    import numpy as np
+
+    from fsc.runner import metrics
+
+    names = ["time", "joint.force", "joint.forcePeak", "joint.contactOnsetsTotal",
+             "slider.acceleration", "slider.accelerationPeak", "rod.deformationEnergy",
+             "energy.dissipated", "solver.steps", "crankPin.forcePeak", "rod.stressPeak"]
+    rows = [(0.000, 0, 0, 0, 0, 0, 0.0, 0.0, 0, 0, 0),
+            (0.001, 900, 6000, 1, 5, 50, 0.2, 1.0, 10, 6500, 9e7),
+            (0.002, 800, 950, 2, 4, 40, 0.1, 1.5, 20, 1000, 2e7),
+            (0.003, 700, 900, 3, 3, 30, 0.1, 2.5, 30, 980, 1e7)]
+    result = np.array(rows, dtype=[(n, float) for n in names])
+    everything, window = metrics(result), metrics(result, start=0.0015)
+    assert everything["peak_joint_force"] == 6000 and window["peak_joint_force"] == 950
+    assert everything["peak_crank_pin_force"] == 6500 and window["peak_crank_pin_force"] == 1000
+    assert window["peak_rod_stress"] == 2e7
+    assert np.isnan(window["peak_main_bearing_force"])
+    assert everything["contact_onsets"] == 3 and window["contact_onsets"] == 2
+    assert everything["energy_dissipated"] == 2.5 and window["energy_dissipated"] == 1.5
+    assert window["max_deformation_energy"] == 0.1
