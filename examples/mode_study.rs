@@ -1,4 +1,4 @@
-//! Mode-count study (Sun et al. 2015, docs/model.md §2 and §10): the Craig–Bampton rod against the full
+//! Mode-count study (Sun et al. 2015, docs/model.md §2 and §7): the Craig–Bampton rod against the full
 //! ANCF rod (8 elements, benchmark B steel rod, 5000 rpm) for the dry joint (benchmark B) and the
 //! lubricated joint (benchmark C). For each nModes it reports the error in the maximum deformation
 //! energy over the second revolution (e_U), the RMS slider-acceleration error over the point-wise

@@ -355,7 +355,7 @@ impl Element {
     /// Axial strain ε and curvature κ at the element's two Gauss points, ξ = (1 ∓ 1/√3)/2, where
     /// the curvature of cubic Hermite elements is superconvergent: with exact nodal values (a
     /// beam under a uniform load) the element's linear curvature is the L² projection of the exact
-    /// quadratic one, which it meets exactly there (G. Barlow (1976), Int. J. Numer. Meth. Eng. 10,
+    /// quadratic one, which it meets exactly there (J. Barlow (1976), Int. J. Numer. Meth. Eng. 10,
     /// 243–251). The stress resultants are N = EA ε and M = EI κ.
     pub fn strain_at_stress_points(&self, e: &ElementVector) -> [(f64, f64); 2] {
         self.barlow

@@ -79,7 +79,7 @@ impl Joint {
 
     /// The eccentricity at which the journal, at rest in the bearing (ė = 0) and turning at
     /// `omega_journal`, receives the force `force` from the joint: its quasi-static equilibrium
-    /// against a steady load (the settled start, docs/model.md §10).
+    /// against a steady load (the settled start, docs/model.md §8).
     ///
     /// Dry and frictionless in closed form, e = −(c + δ) F/|F| with K δ^1.5 = |F|; with friction
     /// or a film, Newton's method on F(e) = F in polar coordinates e = ρ (cos φ, sin φ) from that

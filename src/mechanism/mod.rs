@@ -20,7 +20,7 @@
 //! # References
 //! - Sun et al. (2015), Mech. Mach. Theory 85, eqs. (1)–(3).
 //! - P. Flores et al. (2008), Kinematics and Dynamics of Multibody Systems with Imperfect Joints.
-//! - docs/model.md §0, §3–§6, §10.
+//! - docs/model.md §0, §3–§8.
 
 pub mod constraints;
 mod energy;

@@ -190,7 +190,7 @@ impl RodBody {
     }
 
     /// Mid-span deflection: displacement of the point at arc length l/2 perpendicular to the chord
-    /// A → B, positive to the left of the chord direction (docs/model.md §10). 0 for the rigid rod.
+    /// A → B, positive to the left of the chord direction (docs/model.md §7). 0 for the rigid rod.
     pub fn midspan_deflection(&mut self, p: &[f64]) -> f64 {
         match self {
             Self::Rigid { .. } => 0.0,

@@ -12,7 +12,7 @@ use crate::math;
 
 impl SliderCrank {
     /// Initial state: crank at `angle` turning at `speed`, rod straight and unstressed, journal
-    /// centred, every velocity that of the ideal mechanism (docs/model.md §10).
+    /// centred, every velocity that of the ideal mechanism (docs/model.md §7).
     pub fn initial_state(&self, angle: f64, speed: f64) -> Vec<f64> {
         self.initial_state_with_eccentricity(angle, speed, Vector2::zeros())
     }
@@ -54,7 +54,7 @@ impl SliderCrank {
     /// joint's own force): the mechanism then starts carrying its load, without the start-up
     /// impact of a centred journal. With `equilibrate` false the rod stays straight. A journal in
     /// contact starts a contact event whose impact velocity is that of a journal crossing the
-    /// clearance from the centre under the load (docs/model.md §10).
+    /// clearance from the centre under the load (docs/model.md §8).
     pub fn settle_journal(
         &mut self,
         y: &mut Vec<f64>,

@@ -46,7 +46,7 @@ pub enum InitialState {
     /// Quasi-statically equilibrated: deformed by the inertial loads of the initial motion
     /// ([`crate::mechanism::SliderCrank::equilibrate`]).
     Equilibrated,
-    /// Straight and unstressed (docs/model.md §10, the reference start).
+    /// Straight and unstressed (docs/model.md §7, the reference start).
     Straight,
 }
 

@@ -31,7 +31,7 @@
 //! - R. R. Craig, M. C. C. Bampton (1968), Coupling of substructures for dynamic analyses, AIAA J. 6,
 //!   1313–1319.
 //! - Sun et al. (2015), Mech. Mach. Theory 85, eqs. (2)–(3) (read as q ≈ V p).
-//! - docs/model.md §2 and §10 (mode count, isotropic pairs; positions-only interface "also valid because
+//! - docs/model.md §2 and §7 (mode count, isotropic pairs; positions-only interface "also valid because
 //!   both joints are pins").
 
 use faer::linalg::matmul::matmul;

@@ -62,7 +62,7 @@ impl Simulation {
         crate::joint::contact_stiffness(parameters)
     }
 
-    /// A simulation at t = 0 in the initial state of the parameters (docs/model.md §10), with
+    /// A simulation at t = 0 in the initial state of the parameters (docs/model.md §7), with
     /// the inputs of [`Inputs::at_start`] (the drive speed at the crank's initial speed).
     pub fn new(parameters: Parameters) -> Result<Self, ModelError> {
         let inputs = Inputs::at_start(&parameters);

@@ -14,7 +14,7 @@ const OK: fmi2Status = fmi2Status_fmi2OK;
 const ERROR: fmi2Status = fmi2Status_fmi2Error;
 
 /// Exactly the 34 fmi2* functions of a co-simulation FMU are exported (plus fmi-sys's
-/// `callback_log`, docs/fmi.md §5), and the version strings are right.
+/// `callback_log`, docs/fmi.md §2), and the version strings are right.
 #[test]
 fn exports_exactly_the_34_functions() {
     let out = std::process::Command::new("nm")

@@ -1,7 +1,7 @@
 //! FMI 2.0 conformance of the built shared library, loaded through fmi-sys's `Fmi2Binding`
 //! (libloading): exported symbols, instantiation checks, the state machine, argument checks, range
 //! errors naming the variable, logging of `%` and `#`, reset, FMU state (bit-exact, corrupted bytes
-//! rejected), interleaved instances and threads, and FMU = library (docs/fmi.md §6).
+//! rejected), interleaved instances and threads, and FMU = library (docs/fmi.md §3).
 
 // Test code: a failed unwrap is a failed test, with its message; calling a C API needs unsafe.
 #![allow(clippy::unwrap_used, clippy::expect_used, unsafe_code)]

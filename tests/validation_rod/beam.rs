@@ -1,5 +1,5 @@
 //! The ANCF rod against beam theory: rigid-body invariance, consistent tangent, Euler–Bernoulli
-//! cantilever and frequencies, and the large-deflection elastica (docs/model.md §10 anchors).
+//! cantilever and frequencies, and the large-deflection elastica (docs/model.md §7 anchors).
 
 use faer::Mat;
 use flexible_slider_crank::ancf::element::{ElementVector, Section};
@@ -178,7 +178,7 @@ fn linear_cantilever_tip_deflection() {
     );
 }
 
-/// Large deflection with 16 elements against the elastica (docs/model.md §10 table):
+/// Large deflection with 16 elements against the elastica (docs/model.md §7 table):
 /// u/L and v/L within 0.5 %.
 #[test]
 fn large_deflection_matches_elastica() {
