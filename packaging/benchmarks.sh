@@ -4,8 +4,8 @@
 # the fuzzing half an hour per target of it); with arguments only the named ones:
 #
 #   bash packaging/benchmarks.sh [fmu] [native] [impacts] [weight] [integrators] [accuracy]
-#                                [criterion] [modes] [coupling] [system] [dask] [space] [platforms]
-#                                [fuzz]
+#                                [energy] [criterion] [modes] [coupling] [system] [dask] [space]
+#                                [platforms] [fuzz]
 #
 # Needs the packaged FMU and the venv (the README's first command makes both). Figures vary with the
 # machine's load: compare ratios within one table, measured in one run.
@@ -13,7 +13,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 py=.venv/bin/python
 fmu=target/fmu/FlexibleSliderCrank.fmu
-all=(fmu native impacts weight integrators accuracy criterion modes coupling system dask space platforms fuzz)
+all=(fmu native impacts weight integrators accuracy energy criterion modes coupling system dask space platforms fuzz)
 sections=("$@")
 [ ${#sections[@]} -eq 0 ] && sections=("${all[@]}")
 
@@ -34,6 +34,7 @@ for s in "${sections[@]}"; do
       done ;;
     integrators) cargo run --release --quiet --example integrators ;;
     accuracy) cargo run --release --quiet --example accuracy 1e-2 3e-2 ;;
+    energy) cargo run --release --quiet --example energy_account ;;
     criterion)
       cargo bench --bench evaluation -- --warm-up-time 0.5 --measurement-time 2
       cargo bench --bench element -- --warm-up-time 0.5 --measurement-time 1
