@@ -191,8 +191,15 @@ pub(super) fn within_step(
     })
 }
 
+/// Number of quantities whose parabola vertex is evaluated: the joint force, the slider acceleration
+/// and the deformation energy. The joint loads and the stress peak with the joint force at an impact:
+/// they take the largest of every evaluation made, those vertices included, without evaluations of
+/// their own.
+const REFINED: usize = 3;
+
 /// The largest of each quantity among the samples k = 0 … [`PEAK_SAMPLES`] + 1 of a step and at
-/// the vertex of the parabola through each quantity's largest sample and its neighbours.
+/// the vertex of the parabola through each refined quantity's largest sample and its neighbours
+/// (see [`REFINED`]).
 fn largest_loads(at: &mut impl FnMut(f64) -> Sample) -> Sample {
     let mut series = [[0.0; PEAK_SAMPLES + 2]; SERIES];
     for k in 0..PEAK_SAMPLES + 2 {
@@ -200,13 +207,22 @@ fn largest_loads(at: &mut impl FnMut(f64) -> Sample) -> Sample {
             values[k] = value;
         }
     }
-    std::array::from_fn(|i| {
-        let largest = series[i].iter().copied().fold(0.0, f64::max);
-        match parabola_vertex(&series[i]) {
-            Some(k) => largest.max(at(k)[i]),
-            None => largest,
+    let mut largest: Sample =
+        std::array::from_fn(|i| series[i].iter().copied().fold(0.0, f64::max));
+    let mut vertices: Sample = [0.0; SERIES];
+    for (i, values) in series.iter().enumerate().take(REFINED) {
+        if let Some(k) = parabola_vertex(values) {
+            let sample = at(k);
+            largest[i] = largest[i].max(sample[i]);
+            for (v, s) in vertices.iter_mut().zip(sample) {
+                *v = v.max(s);
+            }
         }
-    })
+    }
+    for i in REFINED..SERIES {
+        largest[i] = largest[i].max(vertices[i]);
+    }
+    largest
 }
 
 /// The peak-held magnitudes at sample `k` (of [`PEAK_SAMPLES`] + 1 intervals) of the step just
