@@ -13,7 +13,7 @@ impl SliderCrank {
     ///
     /// Every state is measured by the displacement (or velocity) it causes in the mechanism, in
     /// units of the joint's length scale ℓ (see `position_scale`) and of the speed V = ω₀ ℓ
-    /// (ω₀ = |the crank's start speed|, at least 1 rad/s, [`Parameters::start_speed`]):
+    /// (ω₀ = |the crank's start speed|, at least 1 rad/s, [`crate::Parameters::start_speed`]):
     /// ```text
     /// θ, θ_d          ℓ / r_c               θ̇            V / r_c
     /// rod coordinate  ℓ / d_j               its rate     V / d_j
