@@ -8,6 +8,7 @@ use std::hint::black_box;
 use criterion::{Criterion, criterion_group, criterion_main};
 use flexible_slider_crank::integrator::{ESDIRK54, Implicit, OdeSystem, Scheme};
 use flexible_slider_crank::mechanism::SliderCrank;
+use flexible_slider_crank::params::JointParameters;
 use flexible_slider_crank::params::{JointModel, RodFormulation};
 use flexible_slider_crank::reduction::Boundary;
 use flexible_slider_crank::{Parameters, Simulation};
@@ -17,7 +18,10 @@ const T: f64 = 1e-3;
 
 fn cases() -> Vec<(&'static str, Parameters)> {
     let dry = Parameters {
-        joint_model: JointModel::Dry,
+        joint: JointParameters {
+            model: JointModel::Dry,
+            ..Parameters::default().joint
+        },
         ..Parameters::default()
     };
     let rod = |formulation, boundary, n_modes| Parameters {

@@ -5,6 +5,7 @@
 use std::hint::black_box;
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
+use flexible_slider_crank::params::JointParameters;
 use flexible_slider_crank::params::{BENCHMARK_SPEED, JointModel, RodFormulation};
 use flexible_slider_crank::{Parameters, Simulation};
 
@@ -19,8 +20,11 @@ fn revolution(c: &mut Criterion) {
     ] {
         for joint in [JointModel::Ideal, JointModel::Dry, JointModel::Lubricated] {
             let p = Parameters {
+                joint: JointParameters {
+                    model: joint,
+                    ..Parameters::default().joint
+                },
                 rod_formulation: rod,
-                joint_model: joint,
                 ..Parameters::default()
             };
             let id = BenchmarkId::new(format!("{rod:?}"), format!("{joint:?}"));

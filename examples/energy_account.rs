@@ -9,6 +9,7 @@
 use std::error::Error;
 use std::time::Instant;
 
+use flexible_slider_crank::params::JointParameters;
 use flexible_slider_crank::params::{JointModel, RodFormulation};
 use flexible_slider_crank::{Outputs, Parameters, Simulation};
 
@@ -53,7 +54,10 @@ fn main() -> Result<(), Box<dyn Error>> {
         for &rtol in &tolerances {
             let start = Instant::now();
             let mut sim = Simulation::new(Parameters {
-                joint_model,
+                joint: JointParameters {
+                    model: joint_model,
+                    ..Parameters::default().joint
+                },
                 relative_tolerance: rtol,
                 rod_formulation,
                 ..Parameters::default()

@@ -18,7 +18,7 @@ const STOP: f64 = 0.024;
 
 fn main() -> Result<(), Box<dyn Error>> {
     let p = Parameters::benchmark_d();
-    let (c, switch) = (p.clearance, p.switch_eccentricity);
+    let (c, switch) = (p.joint.clearance, p.joint.switch_eccentricity);
     let mut sim = Simulation::new(p)?;
     let mut ratio = Vec::with_capacity(SAMPLES);
     let mut force = Vec::with_capacity(SAMPLES);

@@ -14,6 +14,7 @@ use std::error::Error;
 use std::time::Instant;
 
 use flexible_slider_crank::integrator::{Method, Stats};
+use flexible_slider_crank::params::JointParameters;
 use flexible_slider_crank::params::{EXPLICIT_MAX_TOLERANCE, JointModel, RodFormulation};
 use flexible_slider_crank::reduction::Boundary;
 use flexible_slider_crank::{Parameters, Simulation};
@@ -101,10 +102,13 @@ fn main() -> Result<(), Box<dyn Error>> {
     for (rod_name, rod_formulation, n_modes, boundary) in rods {
         for joint in [JointModel::Ideal, JointModel::Dry, JointModel::Lubricated] {
             let base = Parameters {
+                joint: JointParameters {
+                    model: joint,
+                    ..Parameters::default().joint
+                },
                 rod_formulation,
                 n_modes,
                 boundary,
-                joint_model: joint,
                 ..Parameters::default()
             };
             let reference = run(Parameters {

@@ -21,6 +21,7 @@
 use std::error::Error;
 use std::time::Instant;
 
+use flexible_slider_crank::params::JointParameters;
 use flexible_slider_crank::params::{BENCHMARK_SPEED, JointModel, RodFormulation};
 use flexible_slider_crank::reduction::{Boundary, max_modes};
 use flexible_slider_crank::{Parameters, Simulation};
@@ -112,7 +113,10 @@ fn main() -> Result<(), Box<dyn Error>> {
         ("lubricated", JointModel::Lubricated),
     ] {
         let base = Parameters {
-            joint_model: joint,
+            joint: JointParameters {
+                model: joint,
+                ..Parameters::default().joint
+            },
             n_elements: ELEMENTS,
             relative_tolerance: TOLERANCE,
             ..Parameters::default()

@@ -20,8 +20,8 @@ fn main() -> Result<(), ModelError> {
         _ => {}
     }
     match args.get(1).map(String::as_str) {
-        Some("ideal") => p.joint_model = JointModel::Ideal,
-        Some("lubricated") => p.joint_model = JointModel::Lubricated,
+        Some("ideal") => p.joint.model = JointModel::Ideal,
+        Some("lubricated") => p.joint.model = JointModel::Lubricated,
         _ => {}
     }
     let stop: f64 = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(0.024);

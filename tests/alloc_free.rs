@@ -9,6 +9,7 @@
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 
+use flexible_slider_crank::params::JointParameters;
 use flexible_slider_crank::params::{JointModel, RodFormulation};
 use flexible_slider_crank::{Input, Parameters, Simulation};
 
@@ -69,8 +70,11 @@ fn stepping_does_not_allocate() {
     ] {
         for joint in [JointModel::Ideal, JointModel::Dry, JointModel::Lubricated] {
             let p = Parameters {
+                joint: JointParameters {
+                    model: joint,
+                    ..Parameters::default().joint
+                },
                 rod_formulation: rod,
-                joint_model: joint,
                 ..Parameters::default()
             };
             let mut sim = Simulation::new(p).unwrap();

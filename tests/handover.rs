@@ -21,7 +21,7 @@ fn lubricated_joint_hands_over_to_dry_contact_continuously() {
         relative_tolerance: 1e-6,
         ..Parameters::benchmark_d()
     };
-    let (c, switch) = (p.clearance, p.switch_eccentricity);
+    let (c, switch) = (p.joint.clearance, p.joint.switch_eccentricity);
     let ratio = |sim: &mut Simulation| {
         let o = sim.outputs().unwrap();
         (

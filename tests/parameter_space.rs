@@ -32,22 +32,24 @@ fn random_sets_near_the_defaults_run_or_fail_cleanly() {
     let mut rng = Random(2026);
     let (mut ran, mut rejected) = (0, 0);
     for case in 0..12 {
-        let mut p = Parameters::default();
-        p.rod_formulation = [RodFormulation::Rigid, RodFormulation::CraigBampton][case % 2];
-        p.joint_model = [JointModel::Dry, JointModel::Lubricated, JointModel::Ideal][case % 3];
-        p.contact_law = [
+        let mut p = Parameters {
+            rod_formulation: [RodFormulation::Rigid, RodFormulation::CraigBampton][case % 2],
+            ..Parameters::default()
+        };
+        p.joint.model = [JointModel::Dry, JointModel::Lubricated, JointModel::Ideal][case % 3];
+        p.joint.contact_law = [
             ContactLaw::LankaraniNikravesh,
             ContactLaw::Flores,
             ContactLaw::HuGuo,
         ][case % 3];
-        p.clearance = rng.scale(p.clearance);
+        p.joint.clearance = rng.scale(p.joint.clearance);
         p.crank_initial_speed = rng.scale(p.crank_initial_speed);
-        p.restitution = (rng.scale(p.restitution)).min(1.0);
-        p.friction = 0.05 * rng.next();
+        p.joint.restitution = (rng.scale(p.joint.restitution)).min(1.0);
+        p.joint.friction = 0.05 * rng.next();
         p.slider_mass = rng.scale(p.slider_mass);
         p.crank_length = rng.scale(p.crank_length);
         p.rod.youngs_modulus = rng.scale(p.rod.youngs_modulus);
-        p.viscosity = rng.scale(p.viscosity);
+        p.joint.viscosity = rng.scale(p.joint.viscosity);
         p.relative_tolerance = 1e-7;
         let sim = Simulation::new(p.clone());
         let mut sim = match sim {
@@ -83,8 +85,8 @@ fn random_sets_near_the_defaults_run_or_fail_cleanly() {
         println!(
             "case {case}: {:?} rod, {:?} joint, c = {:.2e} m, ω₀ = {:.0} rad/s: balance residual {rel:.1e}, {} steps, warnings {:?}",
             p.rod_formulation,
-            p.joint_model,
-            p.clearance,
+            p.joint.model,
+            p.joint.clearance,
             p.crank_initial_speed,
             sim.stats().steps,
             sim.take_warnings()

@@ -10,6 +10,7 @@
 
 use std::collections::BTreeMap;
 
+use flexible_slider_crank::params::JointParameters;
 use flexible_slider_crank::params::{JointModel, RodFormulation};
 use flexible_slider_crank::{Outputs, Parameters, Simulation};
 
@@ -98,7 +99,10 @@ fn the_default_experiments_results_are_locked() {
         (
             "lubricated",
             Parameters {
-                joint_model: JointModel::Lubricated,
+                joint: JointParameters {
+                    model: JointModel::Lubricated,
+                    ..Parameters::default().joint
+                },
                 ..Parameters::default()
             },
         ),

@@ -81,7 +81,7 @@ impl SliderCrankFmu {
             log.event(&format!(
                 "model built: {:?} rod, {:?} joint, {:?} drive, {} states",
                 self.parameters.rod_formulation,
-                self.parameters.joint_model,
+                self.parameters.joint.model,
                 self.parameters.drive_mode,
                 sim.state().len()
             ));

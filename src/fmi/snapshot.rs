@@ -225,7 +225,7 @@ mod tests {
         s.time = f64::NAN;
         assert!(rejected(&s).contains("non-finite time"));
         let mut s = snapshot();
-        s.parameters.clearance = 1.0;
+        s.parameters.joint.clearance = 1.0;
         assert!(rejected(&s).contains("joint.clearance"));
         let mut s = snapshot();
         s.inputs.value.drive_torque = 5.0;

@@ -147,8 +147,8 @@ impl JournalBearing {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::joint::ContactLaw;
     use crate::joint::hertz_stiffness;
-    use crate::params::ContactLaw;
 
     fn bearing() -> JournalBearing {
         JournalBearing {

@@ -32,7 +32,7 @@
 use nalgebra::Vector2;
 
 use super::kinematics::{JointForce, JointKinematics, MIN_IMPACT_VELOCITY};
-use crate::params::ContactLaw;
+use super::parameters::ContactLaw;
 
 /// Hertz-type stiffness K \[N/m^1.5\] of a journal of radius `r_journal` in a bearing of radius
 /// `r_bearing`, both of Young's modulus `e` and Poisson ratio `nu`.

@@ -12,14 +12,16 @@
 pub mod bearing;
 pub mod contact;
 pub mod kinematics;
+pub mod parameters;
 
 pub use bearing::JournalBearing;
 pub use contact::{DryContact, hertz_stiffness};
 pub use kinematics::{ContactState, JointForce, JointKinematics, MIN_IMPACT_VELOCITY};
+pub use parameters::{
+    ContactLaw, JointField, JointModel, JointParameters, JointRole, JournalStart,
+};
 
 use nalgebra::Vector2;
-
-use crate::params::{JointModel, Parameters};
 
 /// The joint model with its constants.
 #[derive(Clone, Debug, PartialEq)]
@@ -32,22 +34,11 @@ pub enum Joint {
     Lubricated(JournalBearing),
 }
 
-/// Hertz-type stiffness K \[N/m^1.5\] of the parameters' journal in their bearing
-/// ([`hertz_stiffness`]), the FMU's calculated parameter joint.contactStiffness.
-pub fn contact_stiffness(p: &Parameters) -> f64 {
-    hertz_stiffness(
-        p.bearing_radius(),
-        p.journal_radius,
-        p.joint_youngs_modulus,
-        p.joint_poisson_ratio,
-    )
-}
-
 impl Joint {
-    /// The joint described by the parameters (validated beforehand).
-    pub fn from_parameters(p: &Parameters) -> Self {
+    /// The joint of the parameters `p` (validated beforehand).
+    pub fn new(p: &JointParameters) -> Self {
         let dry = DryContact {
-            stiffness: contact_stiffness(p),
+            stiffness: p.contact_stiffness(),
             clearance: p.clearance,
             journal_radius: p.journal_radius,
             restitution: p.restitution,
@@ -56,7 +47,7 @@ impl Joint {
             friction_v0: p.friction_v0,
             friction_v1: p.friction_v1,
         };
-        match p.joint_model {
+        match p.model {
             JointModel::Ideal => Self::Ideal,
             JointModel::Dry => Self::Dry(dry),
             JointModel::Lubricated => Self::Lubricated(JournalBearing {
@@ -170,22 +161,19 @@ mod tests {
     /// directions; the ideal joint and no load give the centre.
     #[test]
     fn the_settled_eccentricity_carries_the_load() {
-        let p = Parameters::default();
+        let p = JointParameters::benchmark();
         let omega = -120.0;
         for (name, joint) in [
-            ("dry", Joint::from_parameters(&p)),
+            ("dry", Joint::new(&p)),
             (
                 "dry, friction 0.2",
-                Joint::from_parameters(&Parameters {
-                    friction: 0.2,
-                    ..p.clone()
-                }),
+                Joint::new(&JointParameters { friction: 0.2, ..p }),
             ),
             (
                 "lubricated",
-                Joint::from_parameters(&Parameters {
-                    joint_model: JointModel::Lubricated,
-                    ..p.clone()
+                Joint::new(&JointParameters {
+                    model: JointModel::Lubricated,
+                    ..p
                 }),
             ),
         ] {
@@ -211,7 +199,7 @@ mod tests {
                 }
             }
         }
-        let joint = Joint::from_parameters(&p);
+        let joint = Joint::new(&p);
         assert_eq!(
             joint.eccentricity_carrying(Vector2::zeros(), omega),
             Vector2::zeros()

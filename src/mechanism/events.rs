@@ -87,7 +87,7 @@ impl OdeSystem for SliderCrank {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::params::{JointModel, Parameters};
+    use crate::params::{JointModel, JointParameters, Parameters};
 
     /// Contact-onset anticipation: a step that ends 1 µm short of the wall and approaching it
     /// limits the next one to the time at which δ reaches half the onset depth; moving away, in
@@ -98,7 +98,7 @@ mod tests {
         let mut m = SliderCrank::new(&p).expect("default parameters build");
         let l = m.layout();
         let mut y = m.initial_state(0.3, 400.0);
-        y[l.slider()] -= p.clearance - 1e-6;
+        y[l.slider()] -= p.joint.clearance - 1e-6;
         let y0 = y.clone();
         let mut approaching = y.clone();
         approaching[l.slider_velocity()] -= 0.5;
@@ -115,7 +115,10 @@ mod tests {
         assert_eq!(m.accept_step(0.0, &y0, 1e-6, &inside), None);
         assert!(m.contact_state().in_contact);
         let mut ideal = SliderCrank::new(&Parameters {
-            joint_model: JointModel::Ideal,
+            joint: JointParameters {
+                model: JointModel::Ideal,
+                ..p.joint
+            },
             ..p
         })
         .expect("ideal joint builds");

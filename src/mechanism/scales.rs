@@ -30,9 +30,11 @@ pub(super) fn position_scale(p: &Parameters, inputs: &Inputs) -> f64 {
 
 fn joint_length(p: &Parameters, inputs: &Inputs) -> f64 {
     let base = 0.01 * p.crank_length;
-    match (p.joint_model, p.rod_formulation) {
-        (JointModel::Dry, _) => p.clearance.min(base),
-        (JointModel::Lubricated, _) => p.clearance.min(base) * (1.0 - p.switch_eccentricity),
+    match (p.joint.model, p.rod_formulation) {
+        (JointModel::Dry, _) => p.joint.clearance.min(base),
+        (JointModel::Lubricated, _) => {
+            p.joint.clearance.min(base) * (1.0 - p.joint.switch_eccentricity)
+        }
         (JointModel::Ideal, RodFormulation::Rigid) => base,
         (JointModel::Ideal, rod) => {
             let speed = p.start_speed(inputs.drive_speed).abs().max(1.0);

@@ -115,7 +115,7 @@ impl SliderCrank {
             }
         }
         let active = Active {
-            ideal_joint: p.joint_model == JointModel::Ideal,
+            ideal_joint: p.joint.model == JointModel::Ideal,
             rigid_rod: rod.rigid_length().is_some(),
             speed_drive: p.drive_mode == DriveMode::Speed,
         };
@@ -126,7 +126,7 @@ impl SliderCrank {
                 b,
                 rod.rigid_length().is_none() && p.rod.stiffness_damping > 0.0,
             ),
-            joint: Joint::from_parameters(p),
+            joint: Joint::new(&p.joint),
             drive: p.drive_mode,
             active,
             crank_length: p.crank_length,
@@ -452,7 +452,7 @@ impl MechanicalSystem for SliderCrank {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::params::{JointModel, RodFormulation};
+    use crate::params::{JointModel, JointParameters, RodFormulation};
 
     /// The dry journal's normal velocity is held to rtol · V / w on its own, with
     /// w = `solver.impactErrorWeight`: its scale falls as 1/w, w = 0 leaves it to the RMS, and the
@@ -461,7 +461,10 @@ mod tests {
     fn the_impact_error_weight_sets_the_held_journal_velocity() {
         let held = |joint_model, impact_error_weight| {
             let p = Parameters {
-                joint_model,
+                joint: JointParameters {
+                    model: joint_model,
+                    ..Parameters::default().joint
+                },
                 impact_error_weight,
                 ..Parameters::default()
             };
@@ -490,7 +493,10 @@ mod tests {
         for joint_model in [JointModel::Dry, JointModel::Lubricated, JointModel::Ideal] {
             for rod_formulation in [RodFormulation::Rigid, RodFormulation::CraigBampton] {
                 let p = Parameters {
-                    joint_model,
+                    joint: JointParameters {
+                        model: joint_model,
+                        ..Parameters::default().joint
+                    },
                     rod_formulation,
                     ..Parameters::default()
                 };
@@ -503,7 +509,7 @@ mod tests {
                 let mut y = m.initial_state(0.3, 400.0);
                 let l = m.layout();
                 // Journal 20 µm into the wall, moving into it.
-                y[l.slider()] -= p.clearance + 2e-5;
+                y[l.slider()] -= p.joint.clearance + 2e-5;
                 y[l.slider_velocity()] -= 0.5;
                 let mut dy = vec![0.0; y.len()];
                 for contact in [

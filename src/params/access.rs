@@ -1,11 +1,10 @@
 //! [`Parameters`] by value reference: the one list that maps each parameter row of the variable
 //! table to its field, from which both the getter and the setter are generated.
 
-use super::parameters::{
-    ContactLaw, DriveMode, InitialState, JointModel, JournalStart, Parameters, RodFormulation,
-};
+use super::parameters::{DriveMode, InitialState, Parameters, RodFormulation};
 use crate::fmi::variables::Vr;
 use crate::integrator::Method;
+use crate::joint::{ContactLaw, JointModel, JournalStart};
 use crate::reduction::Boundary;
 
 /// `real_parameter` and `set_real_parameter` over one list of (value reference, field).
@@ -45,17 +44,17 @@ real_fields! {
     CrankInitialAngle => crank_initial_angle;
     CrankInitialSpeed => crank_initial_speed;
     SliderMass => slider_mass;
-    JointClearance => clearance;
-    JointJournalRadius => journal_radius;
-    JointYoungsModulus => joint_youngs_modulus;
-    JointPoissonRatio => joint_poisson_ratio;
-    JointRestitution => restitution;
-    JointFriction => friction;
-    JointFrictionV0 => friction_v0;
-    JointFrictionV1 => friction_v1;
-    JointViscosity => viscosity;
-    JointBearingLength => bearing_length;
-    JointSwitchEccentricity => switch_eccentricity;
+    JointClearance => joint.clearance;
+    JointJournalRadius => joint.journal_radius;
+    JointYoungsModulus => joint.youngs_modulus;
+    JointPoissonRatio => joint.poisson_ratio;
+    JointRestitution => joint.restitution;
+    JointFriction => joint.friction;
+    JointFrictionV0 => joint.friction_v0;
+    JointFrictionV1 => joint.friction_v1;
+    JointViscosity => joint.viscosity;
+    JointBearingLength => joint.bearing_length;
+    JointSwitchEccentricity => joint.switch_eccentricity;
     Gravity => gravity;
     GravityAngle => gravity_angle;
     SolverRelativeTolerance => relative_tolerance;
@@ -68,7 +67,7 @@ real_fields! {
 /// field, items in the table's order) and one of counts (value reference, field).
 macro_rules! integer_fields {
     (
-        switches { $($svr:ident => $sfield:ident: [$($item:expr),+ $(,)?];)* }
+        switches { $($svr:ident => $($sfield:ident).+: [$($item:expr),+ $(,)?];)* }
         counts { $($cvr:ident => $cfield:ident;)* }
     ) => {
         /// Value of an Integer or Enumeration parameter (a switch as its item number, from 1),
@@ -77,7 +76,7 @@ macro_rules! integer_fields {
             match vr {
                 $(Vr::$svr => [$($item),+]
                     .iter()
-                    .position(|x| *x == p.$sfield)
+                    .position(|x| *x == p.$($sfield).+)
                     .and_then(|i| i32::try_from(i + 1).ok()),)*
                 $(Vr::$cvr => Some(i32::try_from(p.$cfield).unwrap_or(i32::MAX)),)*
                 _ => None,
@@ -90,7 +89,7 @@ macro_rules! integer_fields {
             let item = usize::try_from(value).ok().and_then(|v| v.checked_sub(1));
             match vr {
                 $(Vr::$svr => match item.and_then(|i| [$($item),+].get(i).copied()) {
-                    Some(x) => p.$sfield = x,
+                    Some(x) => p.$($sfield).+ = x,
                     None => return false,
                 },)*
                 $(Vr::$cvr => match usize::try_from(value) {
@@ -108,14 +107,14 @@ integer_fields! {
     switches {
         RodFormulation => rod_formulation:
             [RodFormulation::Rigid, RodFormulation::Ancf, RodFormulation::CraigBampton];
-        JointModel => joint_model: [JointModel::Ideal, JointModel::Dry, JointModel::Lubricated];
+        JointModel => joint.model: [JointModel::Ideal, JointModel::Dry, JointModel::Lubricated];
         DriveMode => drive_mode: [DriveMode::Speed, DriveMode::Torque];
         RodBoundary => boundary: [Boundary::Pins, Boundary::PositionsAndSlopes];
         SolverMethod => method: [Method::Esdirk, Method::DormandPrince, Method::GeneralizedAlpha];
         RodInitialState => initial_state: [InitialState::Equilibrated, InitialState::Straight];
-        JointContactLaw => contact_law:
+        JointContactLaw => joint.contact_law:
             [ContactLaw::LankaraniNikravesh, ContactLaw::Flores, ContactLaw::HuGuo];
-        JointInitialState => journal_start: [JournalStart::Centred, JournalStart::Settled];
+        JointInitialState => joint.initial_state: [JournalStart::Centred, JournalStart::Settled];
     }
     counts {
         RodNElements => n_elements;

@@ -3,6 +3,7 @@
 
 use crate::ancf::RodProperties;
 use crate::integrator::{Method, Tolerances};
+use crate::joint::{JointField, JointModel, JointParameters, JointRole};
 use crate::reduction::Boundary;
 
 /// How the connecting rod is modelled.
@@ -16,30 +17,6 @@ pub enum RodFormulation {
     CraigBampton,
 }
 
-/// Model of the rod–slider joint.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum JointModel {
-    /// Ideal revolute joint (constraint).
-    Ideal,
-    /// Dry clearance joint: Lankarani–Nikravesh contact with Coulomb–Ambrósio friction.
-    Dry,
-    /// Lubricated journal bearing (short-bearing film), dry contact near metal contact.
-    Lubricated,
-}
-
-/// Hysteresis-damping law of the dry contact force F_N = K δ^1.5 (1 + χ δ̇/δ̇⁻)
-/// ([`crate::joint::DryContact`]).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ContactLaw {
-    /// Lankarani & Nikravesh (1990), χ = 3(1 − c_e²)/4: derived for restitution near 1 (the seed
-    /// paper's law).
-    LankaraniNikravesh,
-    /// Flores, Machado, Silva & Martins (2011), χ = 8(1 − c_e)/(5 c_e): any restitution.
-    Flores,
-    /// Hu & Guo (2015), χ = 3(1 − c_e)/(2 c_e): any restitution.
-    HuGuo,
-}
-
 /// How the rod starts.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum InitialState {
@@ -48,16 +25,6 @@ pub enum InitialState {
     Equilibrated,
     /// Straight and unstressed (docs/model.md §7, the reference start).
     Straight,
-}
-
-/// Where a clearance joint's journal starts.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum JournalStart {
-    /// Centred in the bearing (the benchmarks' start): it crosses the clearance and impacts.
-    Centred,
-    /// In quasi-static equilibrium with the ideal joint's initial reaction, at rest relative to
-    /// the bearing ([`crate::mechanism::SliderCrank::settle_journal`]): no start-up impact.
-    Settled,
 }
 
 /// What drives the crank.
@@ -96,34 +63,12 @@ pub struct Parameters {
     pub crank_initial_speed: f64,
     /// Slider mass \[kg\].
     pub slider_mass: f64,
-    /// Joint model.
-    pub joint_model: JointModel,
-    /// Where the journal starts.
-    pub journal_start: JournalStart,
-    /// Radial clearance c = R_bearing − R_journal \[m\].
-    pub clearance: f64,
-    /// Journal (pin) radius R_j \[m\].
-    pub journal_radius: f64,
-    /// Young's modulus of journal and bearing \[Pa\].
-    pub joint_youngs_modulus: f64,
-    /// Poisson ratio of journal and bearing.
-    pub joint_poisson_ratio: f64,
-    /// Coefficient of restitution c_e ∈ (0, 1].
-    pub restitution: f64,
-    /// Hysteresis-damping law of the dry contact.
-    pub contact_law: ContactLaw,
-    /// Coulomb friction coefficient μ.
-    pub friction: f64,
-    /// Tangential speed below which friction vanishes v₀ \[m/s\].
-    pub friction_v0: f64,
-    /// Tangential speed above which friction is fully developed v₁ \[m/s\].
-    pub friction_v1: f64,
-    /// Lubricant dynamic viscosity \[Pa s\].
-    pub viscosity: f64,
-    /// Bearing length L \[m\].
-    pub bearing_length: f64,
-    /// Eccentricity ratio above which dry contact takes over, ε_b ∈ (0, 1).
-    pub switch_eccentricity: f64,
+    /// The rod–slider joint (the FMU's `joint.*`).
+    pub joint: JointParameters,
+    /// The crank pin (`crankPin.*`): the crank's pin in the rod's eye.
+    pub crank_pin: JointParameters,
+    /// The main bearing (`mainBearing.*`): the crank's pivot in the ground.
+    pub main_bearing: JointParameters,
     /// Drive mode.
     pub drive_mode: DriveMode,
     /// Magnitude of the gravitational acceleration \[m/s²\] (along −y by default, see
@@ -204,20 +149,9 @@ impl Default for Parameters {
             crank_initial_angle: 0.0,
             crank_initial_speed: BENCHMARK_SPEED,
             slider_mass: 0.14,
-            joint_model: JointModel::Dry,
-            journal_start: JournalStart::Centred,
-            clearance: 0.5e-3,
-            journal_radius: 9.5e-3,
-            joint_youngs_modulus: 207e9,
-            joint_poisson_ratio: 0.3,
-            restitution: 0.9,
-            contact_law: ContactLaw::LankaraniNikravesh,
-            friction: 0.0,
-            friction_v0: 1e-4,
-            friction_v1: 1e-3,
-            viscosity: 0.4,
-            bearing_length: 0.04,
-            switch_eccentricity: 0.95,
+            joint: JointParameters::benchmark(),
+            crank_pin: JointParameters::ideal(),
+            main_bearing: JointParameters::ideal(),
             drive_mode: DriveMode::Speed,
             gravity: 0.0,
             gravity_angle: 0.0,
@@ -250,9 +184,13 @@ impl Parameters {
 
     /// Benchmark C (docs/model.md §5(b)): as B with the lubricated joint.
     pub fn benchmark_c() -> Self {
+        let b = Self::benchmark_b();
         Self {
-            joint_model: JointModel::Lubricated,
-            ..Self::benchmark_b()
+            joint: JointParameters {
+                model: JointModel::Lubricated,
+                ..b.joint
+            },
+            ..b
         }
     }
 
@@ -262,8 +200,11 @@ impl Parameters {
     /// revolution.
     pub fn benchmark_d() -> Self {
         Self {
-            joint_model: JointModel::Lubricated,
-            viscosity: 0.01,
+            joint: JointParameters {
+                model: JointModel::Lubricated,
+                viscosity: 0.01,
+                ..JointParameters::benchmark()
+            },
             slider_mass: 0.5,
             ..Self::default()
         }
@@ -290,9 +231,22 @@ impl Parameters {
         }
     }
 
-    /// Bearing (hole) radius R_i = R_j + c \[m\].
-    pub fn bearing_radius(&self) -> f64 {
-        self.journal_radius + self.clearance
+    /// The three revolute joints with their parameters, from the ground to the slider.
+    pub fn joints(&self) -> [(JointRole, &JointParameters); 3] {
+        [
+            (JointRole::MainBearing, &self.main_bearing),
+            (JointRole::CrankPin, &self.crank_pin),
+            (JointRole::RodSlider, &self.joint),
+        ]
+    }
+
+    /// The parameters of one joint.
+    pub fn joint(&self, role: JointRole) -> &JointParameters {
+        match role {
+            JointRole::MainBearing => &self.main_bearing,
+            JointRole::CrankPin => &self.crank_pin,
+            JointRole::RodSlider => &self.joint,
+        }
     }
 
     /// Crank moment of inertia about the pivot, I_c + m_c (r_c/2)² \[kg m²\].
@@ -315,15 +269,19 @@ impl Parameters {
     /// cause, for the FMU to log as a warning when it builds the model.
     pub fn warnings(&self) -> Vec<String> {
         let mut warnings = Vec::new();
-        let ratio = self.bearing_length / (2.0 * self.journal_radius);
-        if self.joint_model == JointModel::Lubricated && ratio > Self::SHORT_BEARING_MAX_RATIO {
-            warnings.push(format!(
-                "joint.bearingLength / (2 joint.journalRadius) = {} is outside the \
-                 short-bearing range L/D <= {}: the film force is the infinitely-short-bearing \
-                 model's, which overestimates a long bearing's squeeze and wedge forces",
-                crate::error::Num(ratio),
-                crate::error::Num(Self::SHORT_BEARING_MAX_RATIO)
-            ));
+        for (role, joint) in self.joints() {
+            let ratio = joint.bearing_length / (2.0 * joint.journal_radius);
+            if joint.model == JointModel::Lubricated && ratio > Self::SHORT_BEARING_MAX_RATIO {
+                warnings.push(format!(
+                    "{} / (2 {}) = {} is outside the short-bearing range L/D <= {}: the film \
+                     force is the infinitely-short-bearing model's, which overestimates a long \
+                     bearing's squeeze and wedge forces",
+                    role.parameter(JointField::BearingLength),
+                    role.parameter(JointField::JournalRadius),
+                    crate::error::Num(ratio),
+                    crate::error::Num(Self::SHORT_BEARING_MAX_RATIO)
+                ));
+            }
         }
         warnings
     }

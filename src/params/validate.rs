@@ -5,11 +5,12 @@
 
 use super::access::{integer_parameter, real_parameter};
 use super::parameters::{
-    EXPLICIT_MAX_TOLERANCE, GENERALIZED_ALPHA_MAX_TOLERANCE, JointModel, Parameters, RodFormulation,
+    EXPLICIT_MAX_TOLERANCE, GENERALIZED_ALPHA_MAX_TOLERANCE, Parameters, RodFormulation,
 };
 use crate::error::{ModelError, Num};
 use crate::fmi::variables::{Causality, Kind, VARIABLES};
 use crate::integrator::Method;
+use crate::joint::{JointField, JointModel, JointParameters, JointRole};
 use crate::reduction::check_mode_count;
 
 impl Parameters {
@@ -103,23 +104,8 @@ impl Parameters {
             self.check_slenderness()?;
             self.check_material_damping()?;
         }
-        if self.joint_model != JointModel::Ideal && self.clearance <= 0.0 {
-            return Err(ModelError::invalid(
-                "joint.clearance",
-                self.clearance,
-                format!(
-                    "(0, inf) with joint.model = {}: a clearance joint needs a gap \
-                     (joint.model = ideal for none)",
-                    format!("{:?}", self.joint_model).to_lowercase()
-                ),
-            ));
-        }
-        if self.friction_v1 <= self.friction_v0 {
-            return Err(ModelError::invalid(
-                "joint.frictionV1",
-                self.friction_v1,
-                format!("(joint.frictionV0, inf) = ({}, inf)", Num(self.friction_v0)),
-            ));
+        for (role, joint) in self.joints() {
+            check_joint(role, joint)?;
         }
         let tolerance = self.relative_tolerance;
         if self.method == Method::DormandPrince && tolerance > EXPLICIT_MAX_TOLERANCE {
@@ -148,7 +134,39 @@ impl Parameters {
         }
         Ok(())
     }
+}
 
+/// The rules between one joint's parameters: a clearance joint needs a gap, and friction
+/// develops over a speed band.
+fn check_joint(role: JointRole, joint: &JointParameters) -> Result<(), ModelError> {
+    let name = |field| role.parameter(field);
+    if joint.model != JointModel::Ideal && joint.clearance <= 0.0 {
+        return Err(ModelError::invalid(
+            name(JointField::Clearance),
+            joint.clearance,
+            format!(
+                "(0, inf) with {} = {}: a clearance joint needs a gap ({} = ideal for none)",
+                name(JointField::Model),
+                format!("{:?}", joint.model).to_lowercase(),
+                name(JointField::Model),
+            ),
+        ));
+    }
+    if joint.friction_v1 <= joint.friction_v0 {
+        return Err(ModelError::invalid(
+            name(JointField::FrictionV1),
+            joint.friction_v1,
+            format!(
+                "({}, inf) = ({}, inf)",
+                name(JointField::FrictionV0),
+                Num(joint.friction_v0)
+            ),
+        ));
+    }
+    Ok(())
+}
+
+impl Parameters {
     /// Every parameter within the [min, max] its row of the variable table declares (NaN never
     /// is); the error quotes the bounds as the FMU does. Rules between parameters are not checked
     /// (a parameter set still being entered may break them).
@@ -196,7 +214,10 @@ mod tests {
         assert_eq!(warnings.len(), 1);
         assert!(warnings[0].contains("2.105") && warnings[0].contains("L/D <= 0.5"));
         let short = Parameters {
-            bearing_length: 0.009,
+            joint: JointParameters {
+                bearing_length: 0.009,
+                ..c.joint
+            },
             ..c
         };
         assert!(short.warnings().is_empty());
@@ -334,7 +355,7 @@ mod tests {
         let p = Parameters::default();
         p.validate().unwrap();
         assert!((p.rod.mass() - 0.21).abs() < 1e-12);
-        assert!((p.bearing_radius() - 0.010).abs() < 1e-15);
+        assert!((p.joint.bearing_radius() - 0.010).abs() < 1e-15);
     }
 
     /// Every listed bad value is rejected with an error naming the parameter.
@@ -355,49 +376,70 @@ mod tests {
             (
                 "joint.clearance",
                 Parameters {
-                    clearance: 0.0,
+                    joint: JointParameters {
+                        clearance: 0.0,
+                        ..base.clone().joint
+                    },
                     ..base.clone()
                 },
             ),
             (
                 "joint.clearance",
                 Parameters {
-                    clearance: f64::NAN,
+                    joint: JointParameters {
+                        clearance: f64::NAN,
+                        ..base.clone().joint
+                    },
                     ..base.clone()
                 },
             ),
             (
                 "joint.restitution",
                 Parameters {
-                    restitution: 0.0,
+                    joint: JointParameters {
+                        restitution: 0.0,
+                        ..base.clone().joint
+                    },
                     ..base.clone()
                 },
             ),
             (
                 "joint.restitution",
                 Parameters {
-                    restitution: 1.2,
+                    joint: JointParameters {
+                        restitution: 1.2,
+                        ..base.clone().joint
+                    },
                     ..base.clone()
                 },
             ),
             (
                 "joint.switchEccentricity",
                 Parameters {
-                    switch_eccentricity: 1.0,
+                    joint: JointParameters {
+                        switch_eccentricity: 1.0,
+                        ..base.clone().joint
+                    },
                     ..base.clone()
                 },
             ),
             (
                 "joint.frictionV1",
                 Parameters {
-                    friction_v1: 1e-5,
+                    joint: JointParameters {
+                        friction_v1: 1e-5,
+                        ..base.clone().joint
+                    },
                     ..base.clone()
                 },
             ),
             (
                 "joint.friction",
                 Parameters {
-                    friction: -0.1,
+                    joint: JointParameters {
+                        friction: -0.1,
+                        ..base.clone().joint
+                    },
                     ..base.clone()
                 },
             ),
@@ -467,9 +509,12 @@ mod tests {
             }
         }
         let ok = Parameters {
-            restitution: 1.0,
-            joint_model: JointModel::Ideal,
-            clearance: 0.0,
+            joint: JointParameters {
+                restitution: 1.0,
+                model: JointModel::Ideal,
+                clearance: 0.0,
+                ..base.joint
+            },
             ..base
         };
         ok.validate().unwrap();

@@ -62,12 +62,12 @@ const TIGHT_TOLERANCE: f64 = 1e-5;
 /// those that apply (friction only with friction, material damping only with it, …), and the
 /// tolerance last.
 fn likely_causes(p: &Parameters) -> String {
-    let clearance_joint = p.joint_model != JointModel::Ideal;
+    let clearance_joint = p.joint.model != JointModel::Ideal;
     let mut causes = Vec::new();
-    if clearance_joint && p.friction > 0.0 {
+    if clearance_joint && p.joint.friction > 0.0 {
         causes.push(format!(
             "sticking friction (joint.friction = {})",
-            Num(p.friction)
+            Num(p.joint.friction)
         ));
     }
     if p.rod_formulation != RodFormulation::Rigid && p.rod.stiffness_damping > 0.0 {
@@ -77,11 +77,11 @@ fn likely_causes(p: &Parameters) -> String {
         ));
     }
     if clearance_joint {
-        let joint = format!("{:?}", p.joint_model).to_lowercase();
+        let joint = format!("{:?}", p.joint.model).to_lowercase();
         causes.push(format!(
             "a very stiff contact or film (joint.clearance = {} m with joint.model = {joint}: the \
              contact and film stiffness grow as the clearance shrinks)",
-            Num(p.clearance)
+            Num(p.joint.clearance)
         ));
     }
     if p.rod_formulation == RodFormulation::Ancf && p.method == Method::DormandPrince {

@@ -59,7 +59,7 @@ impl Simulation {
     /// The Hertz-type contact stiffness the parameters give the joint \[N/m^1.5\]
     /// ([`crate::joint::contact_stiffness`]), before any simulation is built.
     pub fn contact_stiffness(parameters: &Parameters) -> f64 {
-        crate::joint::contact_stiffness(parameters)
+        parameters.joint.contact_stiffness()
     }
 
     /// A simulation at t = 0 in the initial state of the parameters (docs/model.md §7), with
@@ -85,7 +85,7 @@ impl Simulation {
         let mut mechanism = SliderCrank::with_inputs(&parameters, start)?;
         let mut state = mechanism.initial_state(angle, speed);
         let equilibrate = parameters.initial_state == InitialState::Equilibrated;
-        match parameters.journal_start {
+        match parameters.joint.initial_state {
             JournalStart::Settled => {
                 mechanism.settle_journal(&mut state, angle, speed, equilibrate)
             }

@@ -46,7 +46,7 @@ impl Monitor {
     pub(super) fn check(&mut self, p: &Parameters, mechanism: &mut SliderCrank, t: f64, y: &[f64]) {
         let layout = mechanism.layout();
         let penetration = mechanism.penetration(y);
-        let (r_c, l, c) = (p.crank_length, p.rod.length, p.clearance);
+        let (r_c, l, c) = (p.crank_length, p.rod.length, p.joint.clearance);
         let x = y[layout.slider()];
         let excess = ((l - r_c - c) - x).max(x - (l + r_c + c));
         let speed = y[layout.crank_speed()];
@@ -56,7 +56,7 @@ impl Monitor {
             mechanism.midspan_deflection(y)
         };
         let left = [
-            penetration > PENETRATION_PER_RADIUS * p.journal_radius,
+            penetration > PENETRATION_PER_RADIUS * p.joint.journal_radius,
             deflection.abs() > DEFLECTION_PER_LENGTH * l,
             speed.abs() > CRANK_SPEED,
             excess > STROKE_EXCESS_PER_CRANK * r_c,
@@ -72,7 +72,7 @@ impl Monitor {
                      contact assumes a small contact zone)",
                     Num(penetration),
                     Num(100.0 * PENETRATION_PER_RADIUS),
-                    Num(p.journal_radius)
+                    Num(p.joint.journal_radius)
                 ),
                 1 => format!(
                     "rod mid-span deflection {} m exceeds {} % of rod.length = {} m",

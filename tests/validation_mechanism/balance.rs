@@ -72,7 +72,10 @@ fn energy_balance_converges_with_the_tolerance() {
         (
             "friction 0.1",
             Parameters {
-                friction: 0.1,
+                joint: JointParameters {
+                    friction: 0.1,
+                    ..Parameters::default().joint
+                },
                 ..Parameters::default()
             },
             0.0,

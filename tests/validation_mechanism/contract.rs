@@ -88,7 +88,10 @@ fn inconsistent_geometry_is_rejected() {
 #[test]
 fn work_limit_ends_an_interval_with_a_named_cause() {
     let p = Parameters {
-        friction: 0.3,
+        joint: JointParameters {
+            friction: 0.3,
+            ..Parameters::default().joint
+        },
         max_steps_per_interval: 20,
         ..Parameters::default()
     };

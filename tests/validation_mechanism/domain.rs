@@ -45,7 +45,10 @@ fn leaving_the_domain_is_reported_once_per_cause() {
         (
             "joint penetration",
             Parameters {
-                journal_radius: 1e-4,
+                joint: JointParameters {
+                    journal_radius: 1e-4,
+                    ..Parameters::default().joint
+                },
                 ..Parameters::default()
             },
         ),
@@ -111,8 +114,11 @@ fn start_from_rest_is_equilibrated() {
 #[test]
 fn a_failing_step_names_the_likely_parameters() {
     let p = Parameters {
-        joint_model: JointModel::Lubricated,
-        clearance: 1e-9,
+        joint: JointParameters {
+            model: JointModel::Lubricated,
+            clearance: 1e-9,
+            ..Parameters::default().joint
+        },
         ..Parameters::default()
     };
     let mut sim = Simulation::new(p).unwrap();
@@ -135,7 +141,10 @@ fn a_failing_step_names_the_likely_parameters() {
 #[test]
 fn a_failed_quasi_static_start_names_the_initial_state() {
     let mut p = Parameters {
-        contact_law: ContactLaw::Flores,
+        joint: JointParameters {
+            contact_law: ContactLaw::Flores,
+            ..Parameters::default().joint
+        },
         crank_initial_angle: -77.332_090_043_934_3,
         ..Parameters::default()
     };

@@ -15,9 +15,12 @@ fn every_contact_law_handles_low_restitution() {
         for rpm in [50.0, 5000.0] {
             let speed = rpm * std::f64::consts::TAU / 60.0;
             let p = Parameters {
+                joint: JointParameters {
+                    contact_law: law,
+                    restitution: 0.3,
+                    ..Parameters::default().joint
+                },
                 rod_formulation: RodFormulation::Rigid,
-                contact_law: law,
-                restitution: 0.3,
                 crank_initial_speed: speed,
                 relative_tolerance: 1e-6,
                 ..Parameters::default()
@@ -84,7 +87,10 @@ fn vanishing_clearance_approaches_the_ideal_joint() {
     };
     let (_, ideal) = run(
         Parameters {
-            joint_model: JointModel::Ideal,
+            joint: JointParameters {
+                model: JointModel::Ideal,
+                ..base.clone().joint
+            },
             ..base.clone()
         },
         2.0 * REVOLUTION,
@@ -95,7 +101,10 @@ fn vanishing_clearance_approaches_the_ideal_joint() {
         .map(|&c| {
             acceleration_error(
                 Parameters {
-                    clearance: c,
+                    joint: JointParameters {
+                        clearance: c,
+                        ..base.clone().joint
+                    },
                     ..base.clone()
                 },
                 &ideal,
@@ -166,13 +175,16 @@ fn benchmark_a_shows_flight_impact_and_contact() {
 fn lubricated_orbit_stays_inside_the_clearance() {
     let speed = 1000.0 * std::f64::consts::TAU / 60.0;
     let p = Parameters {
+        joint: JointParameters {
+            model: JointModel::Lubricated,
+            ..Parameters::default().joint
+        },
         rod_formulation: RodFormulation::Rigid,
-        joint_model: JointModel::Lubricated,
         crank_initial_speed: speed,
         ..Parameters::default()
     };
     let period = std::f64::consts::TAU / speed;
-    let c = p.clearance;
+    let c = p.joint.clearance;
     let (_, rows) = run(p, 2.0 * period, 12_000);
     let max_ratio = rows
         .iter()

@@ -30,8 +30,11 @@ fn a_slow_loaded_mechanism_has_a_two_force_rod() {
     };
     for rod_formulation in [RodFormulation::Rigid, RodFormulation::CraigBampton] {
         let p = Parameters {
+            joint: JointParameters {
+                model: JointModel::Ideal,
+                ..Parameters::default().joint
+            },
             rod_formulation,
-            joint_model: JointModel::Ideal,
             crank_initial_speed: speed,
             crank_initial_angle: 0.3,
             ..Parameters::default()
@@ -84,8 +87,11 @@ fn a_slow_loaded_mechanism_has_a_two_force_rod() {
 fn a_rod_at_rest_bends_under_its_own_weight_as_a_pinned_beam() {
     for rod_formulation in [RodFormulation::Ancf, RodFormulation::CraigBampton] {
         let p = Parameters {
+            joint: JointParameters {
+                model: JointModel::Ideal,
+                ..Parameters::default().joint
+            },
             rod_formulation,
-            joint_model: JointModel::Ideal,
             crank_initial_speed: 0.0,
             gravity: 1000.0,
             ..Parameters::default()
@@ -124,9 +130,12 @@ fn a_rotating_rods_stress_follows_its_inertial_load() {
     let revolution = std::f64::consts::TAU / speed;
     let second_revolution = |rod_formulation, n_modes| {
         let p = Parameters {
+            joint: JointParameters {
+                model: JointModel::Ideal,
+                ..Parameters::default().joint
+            },
             rod_formulation,
             n_modes,
-            joint_model: JointModel::Ideal,
             crank_initial_speed: speed,
             rod: RodProperties {
                 stiffness_damping: 1e-5,

@@ -18,7 +18,8 @@ use flexible_slider_crank::ancf::RodProperties;
 use flexible_slider_crank::integrator::Method;
 use flexible_slider_crank::math;
 use flexible_slider_crank::params::{
-    BENCHMARK_SPEED, ContactLaw, DriveMode, InitialState, JointModel, RodFormulation,
+    BENCHMARK_SPEED, ContactLaw, DriveMode, InitialState, JointModel, JointParameters,
+    RodFormulation,
 };
 use flexible_slider_crank::{Input, Outputs, Parameters, Simulation};
 

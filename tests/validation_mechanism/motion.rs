@@ -8,8 +8,11 @@ use super::*;
 #[test]
 fn rigid_ideal_slider_follows_closed_form_kinematics() {
     let p = Parameters {
+        joint: JointParameters {
+            model: JointModel::Ideal,
+            ..Parameters::default().joint
+        },
         rod_formulation: RodFormulation::Rigid,
-        joint_model: JointModel::Ideal,
         relative_tolerance: 1e-10,
         ..Parameters::default()
     };
@@ -55,11 +58,14 @@ fn energy_balance_holds_for_every_model() {
     ] {
         for joint in [JointModel::Ideal, JointModel::Dry, JointModel::Lubricated] {
             let p = Parameters {
+                joint: JointParameters {
+                    model: joint,
+                    friction: 0.01,
+                    ..Parameters::default().joint
+                },
                 rod_formulation: rod,
-                joint_model: joint,
                 n_elements: 4,
                 n_modes: 2,
-                friction: 0.01,
                 relative_tolerance: 1e-8,
                 ..Parameters::default()
             };
@@ -110,11 +116,14 @@ fn free_spinning_elastic_mechanism_conserves_energy() {
 /// a 2-element rod (Craig–Bampton with 2 mode shapes unless changed).
 fn free_spin_parameters() -> Parameters {
     Parameters {
+        joint: JointParameters {
+            restitution: 1.0,
+            friction: 0.0,
+            ..Parameters::default().joint
+        },
         n_elements: 2,
         n_modes: 2,
         drive_mode: DriveMode::Torque,
-        restitution: 1.0,
-        friction: 0.0,
         ..Parameters::default()
     }
 }
@@ -213,8 +222,11 @@ fn a_crank_at_rest_carries_the_weights_in_any_direction() {
     ] {
         for angle_deg in [0.0, -90.0, 30.0] {
             let p = Parameters {
+                joint: JointParameters {
+                    model: JointModel::Ideal,
+                    ..Parameters::default().joint
+                },
                 rod_formulation,
-                joint_model: JointModel::Ideal,
                 gravity: 500.0,
                 gravity_angle: f64::to_radians(angle_deg),
                 crank_initial_angle: theta,
@@ -259,8 +271,11 @@ fn outputs_follow_a_ramped_drive_speed() {
     );
     let alpha = (omega1 - omega0) / ramp;
     let p = Parameters {
+        joint: JointParameters {
+            model: JointModel::Ideal,
+            ..Parameters::default().joint
+        },
         rod_formulation: RodFormulation::Rigid,
-        joint_model: JointModel::Ideal,
         ..Parameters::default()
     };
     let (r, l) = (p.crank_length, p.rod.length);

@@ -13,11 +13,14 @@ fn compressor(
 ) -> (Parameters, Inputs) {
     let speed = 1500.0 * std::f64::consts::TAU / 60.0;
     let mut p = Parameters {
+        joint: JointParameters {
+            initial_state: journal_start,
+            clearance: 1e-4,
+            journal_radius: 5e-3,
+            ..Parameters::default().joint
+        },
         rod_formulation,
-        journal_start,
         crank_length: 0.02,
-        clearance: 1e-4,
-        journal_radius: 5e-3,
         ..Parameters::default()
     };
     p.rod.length = 0.08;
@@ -76,7 +79,10 @@ fn a_settled_journal_carries_the_ideal_joints_reaction() {
     for rod_formulation in [RodFormulation::Rigid, RodFormulation::CraigBampton] {
         let (p, inputs) = compressor(rod_formulation, JournalStart::Settled);
         let ideal = Parameters {
-            joint_model: JointModel::Ideal,
+            joint: JointParameters {
+                model: JointModel::Ideal,
+                ..p.clone().joint
+            },
             ..p.clone()
         };
         let mut settled = Simulation::with_inputs(p, inputs).unwrap();
