@@ -43,8 +43,8 @@ impl Tolerances {
 }
 
 /// Per-component weights of the error norm: component i is compared with
-/// `absolute · absolute[i] + relative · relative[i] · |yᵢ|`, and each [`HeldProjection`] with
-/// `absolute · scale` on its own.
+/// `absolute · absolute[i] + relative · relative[i] · |yᵢ|`, and each held quantity with
+/// `absolute · held[k]` on its own.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ErrorScales {
     /// Scale of each component's absolute tolerance, in its units.
@@ -52,57 +52,11 @@ pub struct ErrorScales {
     /// Weight of each component's relative tolerance (1: relative to its size, 0: absolute only,
     /// for quantities whose size depends on an arbitrary origin, such as positions).
     pub relative: Vec<f64>,
-    /// Quantities held to the tolerance each on its own (max-norm), besides the RMS over all
-    /// components.
-    pub held: Vec<HeldProjection>,
-}
-
-/// A planar vector made of state components, relative to a moving origin along x:
-/// (y\[x\] − y\[x_offset\], y\[y\]) (the journal relative to the slider that carries the bearing).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct PlanarVector {
-    /// Index of the x component.
-    pub x: usize,
-    /// Index of the y component.
-    pub y: usize,
-    /// Index of a component subtracted from the x component.
-    pub x_offset: usize,
-}
-
-impl PlanarVector {
-    /// The vector's value in `y`.
-    fn of(&self, y: &[f64]) -> (f64, f64) {
-        (y[self.x] - y[self.x_offset], y[self.y])
-    }
-}
-
-/// The component of a planar rate along the direction of a planar position, whose local error is
-/// held to `absolute · scale` on its own: for a quantity that is a small part of the state but
-/// decides the motion, such as the journal's normal velocity in its bearing, which the RMS over
-/// all components would let drift. The direction is the position's at the end of the step (the
-/// error's magnitude when the position is zero).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct HeldProjection {
-    /// The position whose direction the rate is projected on.
-    pub position: PlanarVector,
-    /// The rate.
-    pub rate: PlanarVector,
-    /// Scale of its absolute tolerance, in the rate's units.
-    pub scale: f64,
-}
-
-impl HeldProjection {
-    /// |local error of the projected rate| for the error estimate `err` of a step ending at `y`.
-    fn error(&self, err: &[f64], y: &[f64]) -> f64 {
-        let (px, py) = self.position.of(y);
-        let (ex, ey) = self.rate.of(err);
-        let length = (px * px + py * py).sqrt();
-        if length > 0.0 {
-            (px * ex + py * ey).abs() / length
-        } else {
-            (ex * ex + ey * ey).sqrt()
-        }
-    }
+    /// Scales of the quantities held to the tolerance each on its own (max-norm), besides the RMS
+    /// over all components: quantities that are a small part of the state but decide the motion,
+    /// such as a journal's normal velocity in its bearing, which the RMS would let drift. The
+    /// system computes their local errors ([`super::MechanicalSystem::held_errors`]).
+    pub held: Vec<f64>,
 }
 
 impl ErrorScales {
@@ -148,11 +102,11 @@ pub struct Stats {
     pub factorizations: u64,
 }
 
-/// The error norm: RMS over i of err_i / [`ErrorScales`] weight, at least the largest
-/// [`HeldProjection`] of `held_err` in units of its tolerance, or ∞ when not finite.
+/// The error norm: RMS over i of err_i / [`ErrorScales`] weight, at least the largest of the
+/// held quantities' errors `held` in units of their tolerances, or ∞ when not finite.
 pub(super) fn scaled_norm(
     err: &[f64],
-    held_err: &[f64],
+    held: &[f64],
     y0: &[f64],
     y1: &[f64],
     scales: &ErrorScales,
@@ -163,8 +117,8 @@ pub(super) fn scaled_norm(
         sum += (e / scales.weight(i, tol, *a, *b)).powi(2);
     }
     let mut norm = (sum / err.len().max(1) as f64).sqrt();
-    for held in &scales.held {
-        norm = norm.max(held.error(held_err, y1) / (tol.absolute * held.scale));
+    for (error, scale) in held.iter().zip(&scales.held) {
+        norm = norm.max(error / (tol.absolute * scale));
     }
     if norm.is_finite() {
         norm
@@ -226,33 +180,14 @@ pub(super) fn initial_step<F: OdeSystem>(
 mod tests {
     use super::*;
 
-    /// The held quantity is the rate's error along the position's direction (offsets subtracted),
-    /// its magnitude when the position is zero; the norm is at least it in units of its tolerance.
+    /// The norm is at least the largest held quantity's error in units of its tolerance.
     #[test]
-    fn held_projection_measures_the_rate_error_along_the_position() {
-        let held = HeldProjection {
-            position: PlanarVector {
-                x: 0,
-                y: 1,
-                x_offset: 2,
-            },
-            rate: PlanarVector {
-                x: 3,
-                y: 4,
-                x_offset: 5,
-            },
-            scale: 2.0,
-        };
-        // Position (4 − 1, 4) = (3, 4): direction (0.6, 0.8); rate error (1 − 0.5, 2) = (0.5, 2).
-        let y = [4.0, 4.0, 1.0, 0.0, 0.0, 0.0];
-        let err = [0.0, 0.0, 0.0, 1.0, 2.0, 0.5];
-        assert!((held.error(&err, &y) - (0.6 * 0.5 + 0.8 * 2.0)).abs() < 1e-15);
-        let centred = [1.0, 0.0, 1.0, 0.0, 0.0, 0.0];
-        assert!((held.error(&err, &centred) - (0.25f64 + 4.0).sqrt()).abs() < 1e-15);
+    fn held_quantities_bound_the_norm() {
         let tol = Tolerances::from_relative(1e-2, 1.0);
-        let mut scales = ErrorScales::uniform(6);
-        scales.held.push(held);
-        let norm = scaled_norm(&[0.0; 6], &err, &y, &y, &scales, &tol);
+        let mut scales = ErrorScales::uniform(3);
+        scales.held = vec![2.0, 4.0];
+        let y = [1.0; 3];
+        let norm = scaled_norm(&[0.0; 3], &[1.9, 1.0], &y, &y, &scales, &tol);
         assert!((norm - 1.9 / (1e-2 * 2.0)).abs() < 1e-12, "{norm}");
     }
 }

@@ -17,8 +17,8 @@
 //! magnitude) and rᵢ says whether a relative tolerance means anything for it (not for positions,
 //! whose size depends on the origin); the mechanism provides them,
 //! [`crate::mechanism::SliderCrank::error_scales`]. The implicit methods also hold single
-//! quantities to the tolerance on their own, in max-norm ([`HeldProjection`]: the dry journal's
-//! normal velocity, which decides every impact).
+//! quantities to the tolerance on their own, in max-norm ([`MechanicalSystem::held_errors`]: the dry
+//! journal's normal velocity, which decides every impact).
 //!
 //! The default is the implicit method, chosen by measurement (BENCHMARKS.md, "Integrators"): over
 //! two revolutions of benchmark B/C at the default tolerance it is faster than the explicit method
@@ -49,7 +49,7 @@ mod generalized_alpha;
 mod implicit;
 mod system;
 
-pub use control::{ErrorScales, HeldProjection, PlanarVector, Stats, Tolerances};
+pub use control::{ErrorScales, Stats, Tolerances};
 
 pub use dormand_prince::DormandPrince;
 pub use esdirk::{ESDIRK54, Tableau};

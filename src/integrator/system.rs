@@ -35,4 +35,8 @@ impl<F: FnMut(f64, &[f64], &mut [f64])> OdeSystem for F {
 pub trait MechanicalSystem: OdeSystem {
     /// Number of coordinates n (the lengths of q and of q̇).
     fn n_coordinates(&self) -> usize;
+
+    /// The local errors of the quantities held on their own ([`super::ErrorScales::held`], one
+    /// per scale), for the error estimate `err` of a step ending at `y`, written to `out`.
+    fn held_errors(&self, _y: &[f64], _err: &[f64], _out: &mut [f64]) {}
 }

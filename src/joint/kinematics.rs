@@ -34,6 +34,18 @@ impl JointKinematics {
     }
 }
 
+/// The error of a journal's normal velocity δ̇ = n · ė for an error `rate_error` of its
+/// eccentricity rate, n the direction of the eccentricity `e` (the magnitude of the error when the
+/// journal is centred).
+pub fn normal_rate_error((px, py): (f64, f64), (ex, ey): (f64, f64)) -> f64 {
+    let length = (px * px + py * py).sqrt();
+    if length > 0.0 {
+        (px * ex + py * ey).abs() / length
+    } else {
+        (ex * ex + ey * ey).sqrt()
+    }
+}
+
 /// Force of the joint on the journal.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct JointForce {

@@ -16,7 +16,9 @@ pub mod parameters;
 
 pub use bearing::JournalBearing;
 pub use contact::{DryContact, hertz_stiffness};
-pub use kinematics::{ContactState, JointForce, JointKinematics, MIN_IMPACT_VELOCITY};
+pub use kinematics::{
+    ContactState, JointForce, JointKinematics, MIN_IMPACT_VELOCITY, normal_rate_error,
+};
 pub use parameters::{
     ContactLaw, JointField, JointModel, JointParameters, JointRole, JournalStart,
 };

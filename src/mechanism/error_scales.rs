@@ -3,8 +3,9 @@
 
 use super::layout::CRANK_ANGLE;
 use super::slider_crank::SliderCrank;
-use crate::integrator::{ErrorScales, HeldProjection, PlanarVector};
+use crate::integrator::ErrorScales;
 use crate::joint::Joint;
+use crate::joint::normal_rate_error;
 
 impl SliderCrank {
     /// Error weights of each state component ([`ErrorScales`]): the integrators compare its
@@ -56,16 +57,7 @@ impl SliderCrank {
             .collect();
         let held = match self.joint {
             Joint::Dry(_) if self.impact_error_weight > 0.0 => {
-                let journal = |at: usize, slider: usize| PlanarVector {
-                    x: at,
-                    y: at + 1,
-                    x_offset: slider,
-                };
-                vec![HeldProjection {
-                    position: journal(l.pin_b(), l.slider()),
-                    rate: journal(l.rate_of(l.pin_b()), l.slider_velocity()),
-                    scale: speed / self.impact_error_weight,
-                }]
+                vec![speed / self.impact_error_weight]
             }
             _ => Vec::new(),
         };
@@ -74,5 +66,21 @@ impl SliderCrank {
             relative,
             held,
         }
+    }
+
+    /// The local errors of the held quantities for the error estimate `err` of a step ending at
+    /// `y` ([`crate::integrator::MechanicalSystem::held_errors`]): the dry journal's normal velocity
+    /// in its bearing, δ̇ = n · ė, with n the direction of e at the step's end and the error of ė
+    /// from those of the journal's and the slider's velocities.
+    pub(super) fn journal_held_errors(&self, y: &[f64], err: &[f64], out: &mut [f64]) {
+        if out.is_empty() {
+            return;
+        }
+        let l = self.layout;
+        let (b, rate) = (l.pin_b(), l.rate_of(l.pin_b()));
+        out[0] = normal_rate_error(
+            (y[b] - y[l.slider()], y[b + 1]),
+            (err[rate] - err[l.slider_velocity()], err[rate + 1]),
+        );
     }
 }

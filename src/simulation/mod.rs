@@ -57,7 +57,7 @@ pub struct Simulation {
 
 impl Simulation {
     /// The Hertz-type contact stiffness the parameters give the joint \[N/m^1.5\]
-    /// ([`crate::joint::contact_stiffness`]), before any simulation is built.
+    /// ([`crate::joint::JointParameters::contact_stiffness`]), before any simulation is built.
     pub fn contact_stiffness(parameters: &Parameters) -> f64 {
         parameters.joint.contact_stiffness()
     }

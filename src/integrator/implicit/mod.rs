@@ -153,6 +153,8 @@ pub struct Implicit {
     err: Vec<f64>,
     /// The error estimate filtered by the Newton matrix (for the held quantities).
     filtered: Vec<f64>,
+    /// The held quantities' errors of the trial step.
+    held: Vec<f64>,
     /// Generalized-α: ā at the start of the trial step, and at its end.
     alpha_start: Vec<f64>,
     alpha_end: Vec<f64>,
@@ -175,6 +177,7 @@ impl Implicit {
                 scales.len()
             )));
         }
+        let n_held = scales.held.len();
         Ok(Self {
             tolerances,
             scales,
@@ -205,6 +208,7 @@ impl Implicit {
             y_new: vec![0.0; n],
             err: vec![0.0; n],
             filtered: vec![0.0; n],
+            held: vec![0.0; n_held],
             alpha_start: vec![0.0; n_q],
             alpha_end: vec![0.0; n_q],
         })

@@ -186,15 +186,13 @@ impl Implicit {
             self.y_new[m] = y[m] + h * sum;
             self.err[m] = h * diff;
         }
-        let held_err = if self.scales.held.is_empty() {
-            &self.err
-        } else {
+        if !self.scales.held.is_empty() {
             self.filter_error(h);
-            &self.filtered
-        };
+            f.held_errors(&self.y_new, &self.filtered, &mut self.held);
+        }
         Ok(scaled_norm(
             &self.err,
-            held_err,
+            &self.held,
             y,
             &self.y_new,
             &self.scales,
@@ -280,9 +278,10 @@ impl Implicit {
             self.y_new[m] = self.base[m] + 0.5 * h * self.rates[m];
         }
         k1[2 * n_q..].copy_from_slice(&self.rates[2 * n_q..]);
+        f.held_errors(&self.y_new, &self.err, &mut self.held);
         Ok(scaled_norm(
             &self.err[..2 * n_q],
-            &self.err[..2 * n_q],
+            &self.held,
             &y[..2 * n_q],
             &self.y_new[..2 * n_q],
             &self.scales,
