@@ -112,7 +112,7 @@ impl JournalBearing {
         let eps = (e_norm / c).min(self.switch_eccentricity);
         let eps_dot = k.e.dot(&k.e_dot) / (e_norm * c);
         let gamma_dot = (k.e.x * k.e_dot.y - k.e.y * k.e_dot.x) / (e_norm * e_norm);
-        let w = k.omega_journal - 2.0 * gamma_dot;
+        let w = k.omega_journal + k.omega_bearing - 2.0 * gamma_dot;
         let amplitude = math::hypot(eps * w, 2.0 * eps_dot);
         if amplitude == 0.0 {
             return Vector2::zeros();
@@ -184,6 +184,7 @@ mod tests {
             e: Vector2::new(eps * b.dry.clearance, 0.0),
             e_dot: Vector2::zeros(),
             omega_journal: 100.0,
+            omega_bearing: 0.0,
         };
         let f = b.film_force(&k);
         assert!(f.x < 0.0);
@@ -205,6 +206,7 @@ mod tests {
                 e: Vector2::new(0.0, eps * b.dry.clearance),
                 e_dot: Vector2::zeros(),
                 omega_journal: w,
+                omega_bearing: 0.0,
             };
             let f = b.film_force(&k);
             let s = 1.0 - eps * eps;
@@ -236,6 +238,7 @@ mod tests {
             e: Vector2::new(eps * c, 0.0),
             e_dot: Vector2::new(eps_dot * c, 0.0),
             omega_journal: 0.0,
+            omega_bearing: 0.0,
         };
         let f = b.film_force(&k);
         let m = 200_000;
@@ -266,6 +269,7 @@ mod tests {
             e: Vector2::new(0.7 * c, 0.0),
             e_dot: Vector2::new(-3e-3, 0.0),
             omega_journal: omega,
+            omega_bearing: 0.0,
         };
         let below = b.film_force(&at(-1e-9));
         let above = b.film_force(&at(1e-9));
@@ -280,6 +284,7 @@ mod tests {
             e: Vector2::new(0.0, 0.5 * b.dry.clearance),
             e_dot: Vector2::new(0.0, 0.1),
             omega_journal: 0.0,
+            omega_bearing: 0.0,
         };
         assert!(b.film_force(&k).y < 0.0);
     }
@@ -293,6 +298,7 @@ mod tests {
             e: Vector2::new(r * c, 0.0),
             e_dot: Vector2::new(0.02, 0.01),
             omega_journal: 50.0,
+            omega_bearing: 0.0,
         };
         for r in [b.switch_eccentricity, 1.0] {
             let below = b.force(&at(r * (1.0 - 1e-9)), 0.1).force;

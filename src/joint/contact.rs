@@ -9,8 +9,9 @@
 //!     = 3(1 − c_e)/(2 c_e)  Hu & Guo (2015)
 //! K   = 4 / (3(σ_i + σ_j)) · (R_i R_j / (R_i − R_j))^½,   σ_k = (1 − ν_k²)/E_k
 //! F_T = −μ c_d(|v_T|) F_N sgn(v_T),  c_d = 0 (|v_T| ≤ v₀), (|v_T| − v₀)/(v₁ − v₀), 1 (|v_T| ≥ v₁)
-//! v_T = ė · t + R_j ω_j                                  (the bearing does not rotate)
+//! v_T = ė · t + R_j ω_j − R_b ω_b                       (R_b = R_j + c: slip at the contact point)
 //! force on the journal f = −F_N n + F_T t,  moment about its centre R_j F_T
+//! on the bearing −f,  moment about its centre −R_b F_T
 //! ```
 //!
 //! # References
@@ -111,11 +112,14 @@ impl DryContact {
         let n = k.normal();
         let t = Vector2::new(-n.y, n.x);
         let f_n = self.normal_force(delta, k.e_dot.dot(&n), impact_velocity);
-        let v_t = k.e_dot.dot(&t) + self.journal_radius * k.omega_journal;
+        let bearing_radius = self.journal_radius + self.clearance;
+        let v_t = k.e_dot.dot(&t) + self.journal_radius * k.omega_journal
+            - bearing_radius * k.omega_bearing;
         let f_t = -self.friction * self.friction_factor(v_t) * f_n * v_t.signum();
         JointForce {
             force: -f_n * n + f_t * t,
             moment: self.journal_radius * f_t,
+            bearing_moment: -bearing_radius * f_t,
             potential: self.stiffness * delta * delta * delta.sqrt() / 2.5,
         }
     }
@@ -223,6 +227,7 @@ mod tests {
             e: Vector2::new(0.0, c.clearance + gap),
             e_dot: Vector2::new(0.0, rate),
             omega_journal: 0.0,
+            omega_bearing: 0.0,
         };
         assert_eq!(c.force(&at(-1e-6, 1.0), 1.0).force, Vector2::zeros());
         let tiny = c.force(&at(1e-15, 1.0), 1.0).force.norm();
@@ -261,6 +266,7 @@ mod tests {
             e: Vector2::new(c.clearance + 1e-6, 0.0),
             e_dot: Vector2::new(0.0, 0.3),
             omega_journal: 0.0,
+            omega_bearing: 0.0,
         };
         let f = c.force(&k, 1.0);
         let f_n = c.normal_force(1e-6, 0.0, 1.0);

@@ -3,6 +3,8 @@
 
 use nalgebra::Vector2;
 
+use super::parameters::JointRole;
+
 /// Smallest impact velocity used in the Lankarani–Nikravesh damping term \[m/s\] (docs/model.md §7).
 pub const MIN_IMPACT_VELOCITY: f64 = 1e-4;
 
@@ -13,8 +15,11 @@ pub struct JointKinematics {
     pub e: Vector2<f64>,
     /// Its rate ė \[m/s\].
     pub e_dot: Vector2<f64>,
-    /// Absolute angular velocity of the journal (CCW +) \[rad/s\]; the bearing does not rotate.
+    /// Absolute angular velocity of the journal (CCW +) \[rad/s\].
     pub omega_journal: f64,
+    /// Absolute angular velocity of the bearing (CCW +) \[rad/s\]: 0 for a bearing on the ground
+    /// or on the slider, the rod's end rotation for the rod's eye.
+    pub omega_bearing: f64,
 }
 
 impl JointKinematics {
@@ -31,6 +36,15 @@ impl JointKinematics {
     /// Normal relative velocity δ̇ = ė · n.
     pub fn normal_velocity(&self) -> f64 {
         self.e_dot.dot(&self.normal())
+    }
+
+    /// Power of the joint's force and moments `f` on the journal and the bearing,
+    /// F · ė + M_j ω_j + M_b ω_b: the rate at which the joint stores (contact) or dissipates
+    /// energy, with the opposite sign.
+    pub fn power(&self, f: &JointForce) -> f64 {
+        f.force.dot(&self.e_dot)
+            + f.moment * self.omega_journal
+            + f.bearing_moment * self.omega_bearing
     }
 }
 
@@ -53,6 +67,9 @@ pub struct JointForce {
     pub force: Vector2<f64>,
     /// Moment on the journal about its centre \[N m\] (friction only).
     pub moment: f64,
+    /// Moment on the bearing about its centre \[N m\] (friction only): the opposite friction
+    /// force acts at the bearing's radius R_b = R_j + c, so it is −(R_b/R_j) times `moment`.
+    pub bearing_moment: f64,
     /// Elastic energy stored in the contact, K δ^2.5 / 2.5 \[J\].
     pub potential: f64,
 }
@@ -64,4 +81,43 @@ pub struct ContactState {
     pub in_contact: bool,
     /// Normal velocity δ̇⁽⁻⁾ at the onset of the current contact event \[m/s\].
     pub impact_velocity: f64,
+}
+
+impl ContactState {
+    /// Out of contact, with the floor impact velocity.
+    pub const APART: Self = Self {
+        in_contact: false,
+        impact_velocity: MIN_IMPACT_VELOCITY,
+    };
+}
+
+/// The discrete contact states of a mechanism's joints, one per [`JointRole`] (those of ideal
+/// joints stay [`ContactState::APART`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Contacts(pub [ContactState; 3]);
+
+impl Contacts {
+    /// Whether any journal touches its bearing.
+    pub fn any(&self) -> bool {
+        self.0.iter().any(|c| c.in_contact)
+    }
+}
+
+impl Default for Contacts {
+    fn default() -> Self {
+        Self([ContactState::APART; 3])
+    }
+}
+
+impl std::ops::Index<JointRole> for Contacts {
+    type Output = ContactState;
+    fn index(&self, role: JointRole) -> &ContactState {
+        &self.0[role as usize]
+    }
+}
+
+impl std::ops::IndexMut<JointRole> for Contacts {
+    fn index_mut(&mut self, role: JointRole) -> &mut ContactState {
+        &mut self.0[role as usize]
+    }
 }

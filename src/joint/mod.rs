@@ -1,4 +1,5 @@
-//! The rod–slider joint: ideal, dry clearance, or lubricated.
+//! A revolute joint of the mechanism (the main bearing, the crank pin, the rod–slider joint):
+//! ideal, dry clearance, or lubricated.
 //!
 //! Kinematics (docs/model.md §3, Sun et al. 2015 eqs. 4–5): the eccentricity e = r_journal − r_bearing,
 //! n = e/|e|, t = ẑ × n, penetration δ = |e| − c. The joint returns the force on the journal
@@ -17,7 +18,7 @@ pub mod parameters;
 pub use bearing::JournalBearing;
 pub use contact::{DryContact, hertz_stiffness};
 pub use kinematics::{
-    ContactState, JointForce, JointKinematics, MIN_IMPACT_VELOCITY, normal_rate_error,
+    ContactState, Contacts, JointForce, JointKinematics, MIN_IMPACT_VELOCITY, normal_rate_error,
 };
 pub use parameters::{
     ContactLaw, JointField, JointModel, JointParameters, JointRole, JournalStart,
@@ -96,6 +97,7 @@ impl Joint {
                 e: eccentricity(x),
                 e_dot: Vector2::zeros(),
                 omega_journal,
+                omega_bearing: 0.0,
             };
             self.force(&kinematics, MIN_IMPACT_VELOCITY).force - force
         };
@@ -188,6 +190,7 @@ mod tests {
                         e,
                         e_dot: Vector2::zeros(),
                         omega_journal: omega,
+                        omega_bearing: 0.0,
                     };
                     let carried = joint.force(&kinematics, MIN_IMPACT_VELOCITY).force;
                     assert!(

@@ -2,8 +2,8 @@
 //! s = [θ, r_A,x, r_A,y, r_B,x, r_B,y, x_s].
 //!
 //! ```text
-//! crank pin     Φ = r_A − r_c (cos θ, sin θ)      γ = −r_c θ̇² (cos θ, sin θ)
-//! ideal joint   Φ = r_B − (x_s, 0)                γ = 0
+//! crank pin     Φ = r_A − r_c (cos θ, sin θ)      γ = −r_c θ̇² (cos θ, sin θ)   (ideal)
+//! rod–slider    Φ = r_B − (x_s, 0)                γ = 0                        (ideal)
 //! rigid rod     Φ = ½ (|r_B − r_A|² − l²)          γ = −|ṙ_B − ṙ_A|²
 //! speed drive   Φ = θ − θ_d,  θ̇_d = ω_in          γ = 0
 //! Φ_q q̈ = γ − 2α Φ̇ − β² Φ        (Baumgarte stabilisation)
@@ -29,6 +29,8 @@ pub type Vector6 = SVector<f64, 6>;
 /// Which constraints are active.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Active {
+    /// Ideal crank pin.
+    pub crank_pin: bool,
     /// Ideal rod–slider joint.
     pub ideal_joint: bool,
     /// Rigid rod length constraint.
@@ -107,19 +109,21 @@ impl Constraints {
             c.rows += 1;
             k
         };
-        let w2 = s.theta_dot * s.theta_dot;
-        push(
-            [r_c * sin, 1.0, 0.0, 0.0, 0.0, 0.0],
-            s.r_a.x - r_c * cos,
-            s.v_a.x + r_c * sin * s.theta_dot,
-            -r_c * w2 * cos,
-        );
-        push(
-            [-r_c * cos, 0.0, 1.0, 0.0, 0.0, 0.0],
-            s.r_a.y - r_c * sin,
-            s.v_a.y - r_c * cos * s.theta_dot,
-            -r_c * w2 * sin,
-        );
+        if active.crank_pin {
+            let w2 = s.theta_dot * s.theta_dot;
+            push(
+                [r_c * sin, 1.0, 0.0, 0.0, 0.0, 0.0],
+                s.r_a.x - r_c * cos,
+                s.v_a.x + r_c * sin * s.theta_dot,
+                -r_c * w2 * cos,
+            );
+            push(
+                [-r_c * cos, 0.0, 1.0, 0.0, 0.0, 0.0],
+                s.r_a.y - r_c * sin,
+                s.v_a.y - r_c * cos * s.theta_dot,
+                -r_c * w2 * sin,
+            );
+        }
         if active.ideal_joint {
             let k = push(
                 [0.0, 0.0, 0.0, 1.0, 0.0, -1.0],
@@ -171,6 +175,7 @@ mod tests {
     #[test]
     fn jacobian_matches_finite_differences() {
         let active = Active {
+            crank_pin: true,
             ideal_joint: true,
             rigid_rod: true,
             speed_drive: true,

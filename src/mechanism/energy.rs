@@ -4,7 +4,6 @@ use faer::MatRef;
 
 use super::layout::CRANK_ANGLE;
 use super::slider_crank::SliderCrank;
-use crate::joint::JointForce;
 use crate::math;
 
 /// Energies of a state.
@@ -14,7 +13,7 @@ pub struct Energies {
     pub kinetic: f64,
     /// Rod strain energy \[J\].
     pub strain: f64,
-    /// Elastic energy stored in the contact \[J\].
+    /// Elastic energy stored in the contacts \[J\].
     pub contact: f64,
     /// Gravitational potential energy (zero at y = 0) \[J\].
     pub gravity: f64,
@@ -74,17 +73,15 @@ impl SliderCrank {
             - self.slider_mass * self.gravity.x * x_s
     }
 
-    /// Energies of a state (evaluates the joint force for the stored contact energy).
+    /// Energies of a state (evaluates the joint forces for the stored contact energy).
     pub fn energies(&mut self, y: &[f64]) -> Energies {
         let l = self.layout;
-        let kin = self.joint_kinematics(y);
-        let contact: JointForce = self.joint.force(&kin, self.impact_velocity(&kin));
         let p = &y[l.rod()];
         let rod_gravity: f64 = self.rod_gravity.iter().zip(p).map(|(g, x)| g * x).sum();
         Energies {
             kinetic: self.kinetic_energy(y),
             strain: self.rod.strain_energy(p),
-            contact: contact.potential,
+            contact: self.contact_potential(y),
             gravity: self.gravity_potential(y[CRANK_ANGLE], y[l.slider()]) - rod_gravity,
             drive_work: y[l.drive_work()],
             joint_work: y[l.joint_work()],

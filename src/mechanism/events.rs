@@ -4,7 +4,7 @@
 
 use super::slider_crank::SliderCrank;
 use crate::integrator::OdeSystem;
-use crate::joint::{ContactState, JointKinematics, MIN_IMPACT_VELOCITY};
+use crate::joint::{ContactState, JointKinematics, JointRole, MIN_IMPACT_VELOCITY};
 
 /// Largest penetration accepted at the first step of a contact event \[m\]: 1e-3 of the Hertz
 /// maximum penetration of a 0.1 kg, 1 m/s impact (≈ 20 µm, docs/model.md §6), so that the impact
@@ -12,25 +12,34 @@ use crate::joint::{ContactState, JointKinematics, MIN_IMPACT_VELOCITY};
 pub const CONTACT_ONSET_PENETRATION: f64 = 2e-8;
 
 impl SliderCrank {
-    pub(super) fn impact_velocity(&self, k: &JointKinematics) -> f64 {
-        if self.contact.in_contact {
-            self.contact.impact_velocity
+    /// δ̇⁽⁻⁾ of the joint `role`: latched in a contact event, the normal velocity otherwise.
+    pub(super) fn impact_velocity(&self, role: JointRole, k: &JointKinematics) -> f64 {
+        let contact = self.contacts[role];
+        if contact.in_contact {
+            contact.impact_velocity
         } else {
             k.normal_velocity().max(MIN_IMPACT_VELOCITY)
         }
     }
 
-    /// Penetration δ = |e| − c of a state (−∞ for the ideal joint).
-    pub fn penetration(&self, y: &[f64]) -> f64 {
-        match self.joint.dry_contact() {
-            Some(dry) => dry.penetration(&self.joint_kinematics(y)),
+    /// Penetration δ = |e| − c of the joint `role` in a state (−∞ for an ideal joint).
+    pub fn penetration(&self, role: JointRole, y: &[f64]) -> f64 {
+        match self.joint(role).dry_contact() {
+            Some(dry) => dry.penetration(&self.joint_kinematics(role, y)),
             None => f64::NEG_INFINITY,
         }
     }
 
-    /// Normal velocity δ̇ of a state.
-    fn normal_velocity(&self, y: &[f64]) -> f64 {
-        self.joint_kinematics(y).normal_velocity()
+    /// Normal velocity δ̇ of the joint `role` in a state.
+    fn normal_velocity(&self, role: JointRole, y: &[f64]) -> f64 {
+        self.joint_kinematics(role, y).normal_velocity()
+    }
+
+    /// The clearance joints, from the ground to the slider.
+    fn clearance_joints(&self) -> impl Iterator<Item = JointRole> + '_ {
+        JointRole::ALL
+            .into_iter()
+            .filter(|&role| self.has_clearance(role))
     }
 }
 
@@ -43,44 +52,59 @@ impl OdeSystem for SliderCrank {
         }
     }
 
-    /// Rejects a step that starts a contact deeper than [`CONTACT_ONSET_PENETRATION`], shrinking
-    /// it towards the crossing (linear estimate of the crossing time).
+    /// Rejects a step that starts a contact deeper than [`CONTACT_ONSET_PENETRATION`] at any
+    /// joint, shrinking it towards the earliest crossing (linear estimate of the crossing time).
     fn check_step(&mut self, _t0: f64, y0: &[f64], _t1: f64, y1: &[f64]) -> Option<f64> {
-        let (d0, d1) = (self.penetration(y0), self.penetration(y1));
-        if d0 <= 0.0 && d1 > CONTACT_ONSET_PENETRATION {
-            let crossing = -d0 / (d1 - d0);
-            Some((crossing + 0.5 * CONTACT_ONSET_PENETRATION / (d1 - d0)).clamp(0.01, 0.9))
-        } else {
-            None
-        }
+        self.clearance_joints()
+            .filter_map(|role| {
+                let (d0, d1) = (self.penetration(role, y0), self.penetration(role, y1));
+                (d0 <= 0.0 && d1 > CONTACT_ONSET_PENETRATION).then(|| {
+                    let crossing = -d0 / (d1 - d0);
+                    (crossing + 0.5 * CONTACT_ONSET_PENETRATION / (d1 - d0)).clamp(0.01, 0.9)
+                })
+            })
+            .reduce(f64::min)
     }
 
-    /// Latches the impact velocity at the located onset of a contact event (linear interpolation
-    /// of δ̇ to the crossing of δ = 0), and clears the contact flag at separation.
+    /// Latches the impact velocity at the located onset of each joint's contact event (linear
+    /// interpolation of δ̇ to the crossing of δ = 0), and clears the contact flag at separation.
     ///
     /// Out of contact and approaching the wall (δ₁ < 0 < δ̇₁), the next step is limited to the
     /// linear estimate of the time at which δ reaches half the onset depth,
-    /// (−δ₁ + δ_on/2)/δ̇₁: the step that starts the contact is aimed at the window
-    /// 0 < δ ≤ δ_on that [`OdeSystem::check_step`] accepts, instead of overshooting it and being
-    /// refused (event anticipation; without it the 4-mode rod of benchmark B refused about 370
-    /// steps per two revolutions, 3.3 attempts per onset).
+    /// (−δ₁ + δ_on/2)/δ̇₁ (the smallest over the joints): the step that starts the contact is
+    /// aimed at the window 0 < δ ≤ δ_on that [`OdeSystem::check_step`] accepts, instead of
+    /// overshooting it and being refused (event anticipation; without it the 4-mode rod of
+    /// benchmark B refused about 370 steps per two revolutions, 3.3 attempts per onset).
     fn accept_step(&mut self, _t0: f64, y0: &[f64], _t1: f64, y1: &[f64]) -> Option<f64> {
-        let (d0, d1) = (self.penetration(y0), self.penetration(y1));
-        if d1 > 0.0 && !self.contact.in_contact {
-            let s = if d0 < 0.0 { -d0 / (d1 - d0) } else { 0.0 };
-            let (v0, v1) = (self.normal_velocity(y0), self.normal_velocity(y1));
-            self.contact = ContactState {
-                in_contact: true,
-                impact_velocity: (v0 + s * (v1 - v0)).max(MIN_IMPACT_VELOCITY),
-            };
-        } else if d1 <= 0.0 {
-            self.contact.in_contact = false;
+        let mut limit: Option<f64> = None;
+        for role in JointRole::ALL {
+            if !self.has_clearance(role) {
+                continue;
+            }
+            let (d0, d1) = (self.penetration(role, y0), self.penetration(role, y1));
+            if d1 > 0.0 && !self.contacts[role].in_contact {
+                let s = if d0 < 0.0 { -d0 / (d1 - d0) } else { 0.0 };
+                let (v0, v1) = (
+                    self.normal_velocity(role, y0),
+                    self.normal_velocity(role, y1),
+                );
+                self.contacts[role] = ContactState {
+                    in_contact: true,
+                    impact_velocity: (v0 + s * (v1 - v0)).max(MIN_IMPACT_VELOCITY),
+                };
+            } else if d1 <= 0.0 {
+                self.contacts[role].in_contact = false;
+            }
+            if self.contacts[role].in_contact || !(d1 < 0.0 && d1.is_finite()) {
+                continue;
+            }
+            let v1 = self.normal_velocity(role, y1);
+            if v1 > 0.0 {
+                let dt = (0.5 * CONTACT_ONSET_PENETRATION - d1) / v1;
+                limit = Some(limit.map_or(dt, |l| l.min(dt)));
+            }
         }
-        if self.contact.in_contact || !(d1 < 0.0 && d1.is_finite()) {
-            return None;
-        }
-        let v1 = self.normal_velocity(y1);
-        (v1 > 0.0).then(|| (0.5 * CONTACT_ONSET_PENETRATION - d1) / v1)
+        limit
     }
 }
 
@@ -102,18 +126,22 @@ mod tests {
         let y0 = y.clone();
         let mut approaching = y.clone();
         approaching[l.slider_velocity()] -= 0.5;
-        let (d, v) = (m.penetration(&approaching), m.normal_velocity(&approaching));
+        let rs = JointRole::RodSlider;
+        let (d, v) = (
+            m.penetration(rs, &approaching),
+            m.normal_velocity(rs, &approaching),
+        );
         assert!(d < 0.0 && d > -2e-6 && v > 0.4, "δ = {d}, δ̇ = {v}");
         let limit = m.accept_step(0.0, &y0, 1e-6, &approaching);
         assert_eq!(limit, Some((0.5 * CONTACT_ONSET_PENETRATION - d) / v));
-        assert!(!m.contact_state().in_contact);
+        assert!(!m.contact_state()[rs].in_contact);
         let mut leaving = y.clone();
         leaving[l.slider_velocity()] += 0.5;
         assert_eq!(m.accept_step(0.0, &y0, 1e-6, &leaving), None);
         let mut inside = approaching.clone();
         inside[l.slider()] -= 2e-6;
         assert_eq!(m.accept_step(0.0, &y0, 1e-6, &inside), None);
-        assert!(m.contact_state().in_contact);
+        assert!(m.contact_state()[rs].in_contact);
         let mut ideal = SliderCrank::new(&Parameters {
             joint: JointParameters {
                 model: JointModel::Ideal,

@@ -27,6 +27,7 @@ mod energy;
 mod error_scales;
 mod events;
 mod inputs;
+mod joints;
 pub mod layout;
 mod loads;
 pub mod rod_body;
@@ -34,7 +35,7 @@ mod scales;
 mod slider_crank;
 mod start;
 
-pub use crate::joint::ContactState;
+pub use crate::joint::{ContactState, Contacts};
 pub use energy::Energies;
 pub use events::CONTACT_ONSET_PENETRATION;
 pub use inputs::{Input, InputSignal, Inputs};

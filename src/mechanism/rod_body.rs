@@ -18,7 +18,7 @@ use nalgebra::Vector2;
 use crate::ancf::Rod;
 use crate::error::ModelError;
 use crate::params::{Parameters, RodFormulation};
-use crate::reduction::RodModel;
+use crate::reduction::{RodEnd, RodModel};
 
 /// The connecting rod in the mechanism's coordinates.
 #[derive(Clone, Debug)]
@@ -158,25 +158,26 @@ impl RodBody {
         }
     }
 
-    /// Direction whose rotation is the journal's: the end slope r_x of the ANCF rod, or the chord
-    /// r_B − r_A of the rigid rod. It is linear in the coordinates, so applied to ṗ it gives the rate.
-    fn end_direction(&self, v: &[f64]) -> Vector2<f64> {
+    /// Direction whose rotation is the rod's at the end `end`: the end slope r_x of the ANCF rod,
+    /// or the chord r_B − r_A of the rigid rod. It is linear in the coordinates, so applied to ṗ
+    /// it gives the rate.
+    fn end_direction(&self, end: RodEnd, v: &[f64]) -> Vector2<f64> {
         match self {
             Self::Rigid { .. } => Vector2::new(v[2] - v[0], v[3] - v[1]),
-            Self::Flexible(model) => model.end_slope(v),
+            Self::Flexible(model) => model.end_slope(end, v),
         }
     }
 
-    /// Angular velocity of the rod end B, ω = (d × ḋ)/|d|² (docs/model.md §1.1).
-    pub fn end_angular_velocity(&self, p: &[f64], p_dot: &[f64]) -> f64 {
-        let d = self.end_direction(p);
-        cross(d, self.end_direction(p_dot)) / d.norm_squared()
+    /// Angular velocity of the rod at the end `end`, ω = (d × ḋ)/|d|² (docs/model.md §1.1).
+    pub fn end_angular_velocity(&self, end: RodEnd, p: &[f64], p_dot: &[f64]) -> f64 {
+        let d = self.end_direction(end, p);
+        cross(d, self.end_direction(end, p_dot)) / d.norm_squared()
     }
 
-    /// Adds the generalised force of a moment `m` acting at B: m (∂φ/∂p)ᵀ with
+    /// Adds the generalised force of a moment `m` acting at the end `end`: m (∂φ/∂p)ᵀ with
     /// ∂φ/∂d = ẑ × d / |d|² (docs/model.md §1.6).
-    pub fn add_end_moment(&self, p: &[f64], m: f64, out: &mut [f64]) {
-        let d = self.end_direction(p);
+    pub fn add_end_moment(&self, end: RodEnd, p: &[f64], m: f64, out: &mut [f64]) {
+        let d = self.end_direction(end, p);
         let g = m / d.norm_squared() * Vector2::new(-d.y, d.x);
         match self {
             Self::Rigid { .. } => {
@@ -185,7 +186,7 @@ impl RodBody {
                 out[0] -= g.x;
                 out[1] -= g.y;
             }
-            Self::Flexible(model) => model.add_end_slope_force(g, out),
+            Self::Flexible(model) => model.add_end_slope_force(end, g, out),
         }
     }
 

@@ -11,12 +11,15 @@ use crate::params::{JointModel, Parameters, RodFormulation};
 /// rtol 1e-8, otherwise shrank its steps to 5e-10 s and stalled).
 const ROUND_OFF_FLOOR: f64 = 100.0 * f64::EPSILON;
 
-/// The length ℓ at which the joint's force law changes (the error scales' unit of length):
-/// 1 % of the crank length at most, and
+/// The length ℓ at which a joint's force law changes (the error scales' unit of length):
+/// 1 % of the crank length at most, and the smallest over the clearance joints of
 /// - dry joint: the clearance c (contact starts when the journal crosses it);
 /// - lubricated joint: the film thickness at the switch, c (1 − ε_b) (the film force grows as
 ///   (1 − ε)^−5/2 towards it);
-/// - ideal joint on a flexible rod: the rod's axial deformation under its load, F L / EA with
+///
+/// or, with every joint ideal,
+/// - the rigid rod: 1 % of the crank length;
+/// - a flexible rod: the rod's axial deformation under its load, F L / EA with
 ///   F = (m_rod + m_slider) ω₀² r_c + |F_s| + |T|/r_c + (m_crank + m_rod + m_slider) |g|
 ///   (inertia, the start's slider force and drive torque, gravity: the joint force is the rod's
 ///   axial force), per element (L/n) for the full rod, whose coordinates resolve each element's
@@ -30,13 +33,21 @@ pub(super) fn position_scale(p: &Parameters, inputs: &Inputs) -> f64 {
 
 fn joint_length(p: &Parameters, inputs: &Inputs) -> f64 {
     let base = 0.01 * p.crank_length;
-    match (p.joint.model, p.rod_formulation) {
-        (JointModel::Dry, _) => p.joint.clearance.min(base),
-        (JointModel::Lubricated, _) => {
-            p.joint.clearance.min(base) * (1.0 - p.joint.switch_eccentricity)
-        }
-        (JointModel::Ideal, RodFormulation::Rigid) => base,
-        (JointModel::Ideal, rod) => {
+    let clearance_length = p
+        .joints()
+        .into_iter()
+        .filter_map(|(_, joint)| match joint.model {
+            JointModel::Dry => Some(joint.clearance.min(base)),
+            JointModel::Lubricated => {
+                Some(joint.clearance.min(base) * (1.0 - joint.switch_eccentricity))
+            }
+            JointModel::Ideal => None,
+        })
+        .reduce(f64::min);
+    match (clearance_length, p.rod_formulation) {
+        (Some(length), _) => length,
+        (None, RodFormulation::Rigid) => base,
+        (None, rod) => {
             let speed = p.start_speed(inputs.drive_speed).abs().max(1.0);
             let masses = p.rod.mass() + p.slider_mass;
             let load = masses * speed * speed * p.crank_length

@@ -11,19 +11,21 @@ use super::scales;
 use crate::ancf::RodProperties;
 use crate::error::ModelError;
 use crate::integrator::MechanicalSystem;
-use crate::joint::{ContactState, Joint, JointKinematics, MIN_IMPACT_VELOCITY};
+use crate::joint::{Contacts, Joint, JointRole};
 use crate::linalg::small;
 use crate::math;
 use crate::params::{DriveMode, JointModel, Parameters};
+use crate::reduction::RodEnd;
 
 /// Quantities computed by the last right-hand-side evaluation.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Evaluation {
-    /// Joint force on the journal (contact/film, or the ideal joint's reaction) \[N\].
+    /// The rod–slider joint's force on the journal (contact/film, or the ideal joint's reaction)
+    /// \[N\].
     pub joint_force: Vector2<f64>,
-    /// Friction moment on the journal \[N m\].
+    /// Its friction moment on the journal \[N m\].
     pub joint_moment: f64,
-    /// Elastic energy stored in the contact \[J\].
+    /// Elastic energy stored in the contacts of every clearance joint \[J\].
     pub contact_potential: f64,
     /// Torque the drive applies to the crank \[N m\].
     pub crank_torque: f64,
@@ -37,7 +39,8 @@ pub struct Evaluation {
 #[derive(Clone, Debug)]
 pub struct SliderCrank {
     pub(super) rod: RodBody,
-    pub(super) joint: Joint,
+    /// The joints' laws, by [`JointRole`].
+    pub(super) joints: [Joint; 3],
     pub(super) drive: DriveMode,
     pub(super) active: Active,
     pub(super) crank_length: f64,
@@ -72,7 +75,7 @@ pub struct SliderCrank {
     pub(super) inputs: Inputs,
     /// dω_in/dt at that time \[rad/s²\] (speed drive).
     pub(super) drive_acceleration: f64,
-    pub(super) contact: ContactState,
+    pub(super) contacts: Contacts,
     pub(super) force: Vec<f64>,
     pub(super) evaluation: Evaluation,
 }
@@ -115,6 +118,7 @@ impl SliderCrank {
             }
         }
         let active = Active {
+            crank_pin: p.crank_pin.model == JointModel::Ideal,
             ideal_joint: p.joint.model == JointModel::Ideal,
             rigid_rod: rod.rigid_length().is_some(),
             speed_drive: p.drive_mode == DriveMode::Speed,
@@ -126,7 +130,7 @@ impl SliderCrank {
                 b,
                 rod.rigid_length().is_none() && p.rod.stiffness_damping > 0.0,
             ),
-            joint: Joint::new(&p.joint),
+            joints: p.joints().map(|(_, joint)| Joint::new(joint)),
             drive: p.drive_mode,
             active,
             crank_length: p.crank_length,
@@ -146,10 +150,7 @@ impl SliderCrank {
             signal: InputSignal::held(inputs),
             inputs,
             drive_acceleration: 0.0,
-            contact: ContactState {
-                in_contact: false,
-                impact_velocity: MIN_IMPACT_VELOCITY,
-            },
+            contacts: Contacts::default(),
             force: vec![0.0; n_rod],
             evaluation: Evaluation::default(),
             rod,
@@ -176,26 +177,26 @@ impl SliderCrank {
         &self.rod
     }
 
-    /// Discrete contact state.
-    pub fn contact_state(&self) -> ContactState {
-        self.contact
+    /// Discrete contact states of the joints.
+    pub fn contact_state(&self) -> Contacts {
+        self.contacts
     }
 
-    /// Restores the discrete contact state (snapshots).
-    pub fn set_contact_state(&mut self, contact: ContactState) {
-        self.contact = contact;
+    /// Restores the discrete contact states (snapshots).
+    pub fn set_contact_state(&mut self, contacts: Contacts) {
+        self.contacts = contacts;
     }
 
-    /// Runs `f` on the mechanism with the discrete contact state `contact` (e.g. the one a step
-    /// was integrated with, or the one at a time inside it) and restores the current one after.
+    /// Runs `f` on the mechanism with the discrete contact states `contacts` (e.g. those a step
+    /// was integrated with, or those at a time inside it) and restores the current ones after.
     pub fn with_contact_state<R>(
         &mut self,
-        contact: ContactState,
+        contacts: Contacts,
         f: impl FnOnce(&mut Self) -> R,
     ) -> R {
-        let current = std::mem::replace(&mut self.contact, contact);
+        let current = std::mem::replace(&mut self.contacts, contacts);
         let result = f(self);
-        self.contact = current;
+        self.contacts = current;
         result
     }
 
@@ -254,22 +255,9 @@ impl SliderCrank {
         )
     }
 
-    /// Journal–bearing kinematics of a state.
-    pub fn joint_kinematics(&self, y: &[f64]) -> JointKinematics {
-        let l = self.layout;
-        let (b, b_rate) = (l.pin_b(), l.rate_of(l.pin_b()));
-        let p = &y[l.rod()];
-        let p_dot = &y[l.rod_rates()];
-        JointKinematics {
-            e: Vector2::new(y[b] - y[l.slider()], y[b + 1]),
-            e_dot: Vector2::new(y[b_rate] - y[l.slider_velocity()], y[b_rate + 1]),
-            omega_journal: self.rod.end_angular_velocity(p, p_dot),
-        }
-    }
-
-    /// Joint force on the journal and slider acceleration of a state from the joint kinematics
-    /// alone, for a clearance joint (`None` for the ideal joint, whose force is a constraint
-    /// reaction).
+    /// The rod–slider joint's force on the journal and the slider acceleration of a state from
+    /// the joint kinematics alone, for a clearance joint (`None` for the ideal joint, whose force
+    /// is a constraint reaction).
     ///
     /// With a clearance joint no constraint acts on the slider, so its equation of motion is
     /// m_s ẍ_s = F_s − F_x (the slider row of [`SliderCrank::evaluate`]): both values follow from
@@ -279,8 +267,7 @@ impl SliderCrank {
         if self.active.ideal_joint {
             return None;
         }
-        let kin = self.joint_kinematics(y);
-        let force = self.joint.force(&kin, self.impact_velocity(&kin)).force;
+        let force = self.joint_force(JointRole::RodSlider, y).0.force;
         let acceleration = (self.inputs.slider_force - force.x) / self.slider_mass + self.gravity.x;
         Some((force, acceleration))
     }
@@ -351,11 +338,14 @@ impl SliderCrank {
         for (f, g) in self.force.iter_mut().zip(&self.rod_gravity) {
             *f = g - *f;
         }
-        let kin = self.joint_kinematics(y);
-        let joint = self.joint.force(&kin, self.impact_velocity(&kin));
+        let (joint, kin) = self.joint_force(JointRole::RodSlider, y);
         self.force[b] += joint.force.x;
         self.force[b + 1] += joint.force.y;
-        self.rod.add_end_moment(p, joint.moment, &mut self.force);
+        self.rod
+            .add_end_moment(RodEnd::SliderPin, p, joint.moment, &mut self.force);
+        let mut rod_force = std::mem::take(&mut self.force);
+        let crank_pin = self.apply_crank_pin(y, &mut rod_force);
+        self.force = rod_force;
         let torque_in = match self.drive {
             DriveMode::Torque => self.inputs.drive_torque,
             DriveMode::Speed => 0.0,
@@ -375,7 +365,10 @@ impl SliderCrank {
         let (dq, rest) = dy.split_at_mut(l.n_coordinates());
         let acc = &mut rest[..l.n_coordinates()];
         dq.copy_from_slice(v);
-        acc[CRANK_ANGLE] = (torque_in + gravity_torque) / self.crank_inertia;
+        acc[CRANK_ANGLE] = match crank_pin {
+            Some(pin) => (torque_in + gravity_torque + pin.torque) / self.crank_inertia,
+            None => (torque_in + gravity_torque) / self.crank_inertia,
+        };
         acc[l.rod()].copy_from_slice(&self.force);
         self.rod.solve_mass(&mut acc[l.rod()]);
         acc[l.slider()] =
@@ -390,13 +383,14 @@ impl SliderCrank {
             Some(k) => -lambda[k],
             None => torque_in,
         };
-        let (joint_force, joint_power) = match c.ideal_row {
-            Some(k) => (-Vector2::new(lambda[k], lambda[k + 1]), 0.0),
-            None => (
-                joint.force,
-                joint.force.dot(&kin.e_dot) + joint.moment * kin.omega_journal,
-            ),
+        let (joint_force, mut joint_power, mut contact_potential) = match c.ideal_row {
+            Some(k) => (-Vector2::new(lambda[k], lambda[k + 1]), 0.0, 0.0),
+            None => (joint.force, kin.power(&joint), joint.potential),
         };
+        if let Some(pin) = crank_pin {
+            joint_power += pin.power;
+            contact_potential += pin.potential;
+        }
         dy[l.drive_angle()] = if self.active.speed_drive {
             self.inputs.drive_speed
         } else {
@@ -411,7 +405,7 @@ impl SliderCrank {
         self.evaluation = Evaluation {
             joint_force,
             joint_moment: joint.moment,
-            contact_potential: joint.potential,
+            contact_potential,
             crank_torque,
             slider_acceleration: dy[l.slider_velocity()],
             drift: c.drift(),
@@ -545,13 +539,12 @@ mod tests {
                 y[l.slider()] -= p.joint.clearance + 2e-5;
                 y[l.slider_velocity()] -= 0.5;
                 let mut dy = vec![0.0; y.len()];
-                for contact in [
-                    m.contact_state(),
-                    ContactState {
-                        in_contact: true,
-                        impact_velocity: 0.8,
-                    },
-                ] {
+                let mut in_contact = m.contact_state();
+                in_contact[JointRole::RodSlider] = crate::joint::ContactState {
+                    in_contact: true,
+                    impact_velocity: 0.8,
+                };
+                for contact in [m.contact_state(), in_contact] {
                     m.set_contact_state(contact);
                     let load = m.clearance_joint_load(&y);
                     let ev = *m.evaluate(&y, &mut dy).expect("regular configuration");

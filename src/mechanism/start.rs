@@ -6,7 +6,7 @@ use nalgebra::Vector2;
 use super::layout::{CRANK_ANGLE, PIN_A, pair};
 use super::slider_crank::SliderCrank;
 use crate::error::{ModelError, Num};
-use crate::joint::{ContactState, Joint, MIN_IMPACT_VELOCITY};
+use crate::joint::{ContactState, Joint, JointRole, MIN_IMPACT_VELOCITY};
 use crate::linalg::lu::Lu;
 use crate::math;
 
@@ -76,17 +76,19 @@ impl SliderCrank {
             }
             Ok(m.evaluate(y, &mut dy)?.joint_force)
         })?;
-        let omega = self.joint_kinematics(y).omega_journal;
-        let e = self.joint.eccentricity_carrying(reaction, omega);
+        let omega = self.joint_kinematics(JointRole::RodSlider, y).omega_journal;
+        let e = self
+            .joint(JointRole::RodSlider)
+            .eccentricity_carrying(reaction, omega);
         *y = self.initial_state_with_eccentricity(angle, speed, e);
-        if let Some(dry) = self.joint.dry_contact() {
+        if let Some(dry) = self.joint(JointRole::RodSlider).dry_contact() {
             // The contact event's impact velocity: the speed of a journal crossing the clearance
             // from the centre under the load, √(2 |F₀| c / m_s). The contact is then damped as
             // after the centred start's first impact; the floor instead would make its hysteresis
             // damping some fifty times critical and the force hypersensitive to the normal velocity.
             let crossing = (2.0 * reaction.norm() * dry.clearance / self.slider_mass).sqrt();
-            self.contact = ContactState {
-                in_contact: self.penetration(y) > 0.0,
+            self.contacts[JointRole::RodSlider] = ContactState {
+                in_contact: self.penetration(JointRole::RodSlider, y) > 0.0,
                 impact_velocity: crossing.max(MIN_IMPACT_VELOCITY),
             };
         }
@@ -98,10 +100,11 @@ impl SliderCrank {
 
     /// Runs `f` on the mechanism with the rod–slider joint made ideal, and restores it after.
     fn with_ideal_joint<R>(&mut self, f: impl FnOnce(&mut Self) -> R) -> R {
-        let joint = std::mem::replace(&mut self.joint, Joint::Ideal);
+        let slot = &mut self.joints[JointRole::RodSlider as usize];
+        let joint = std::mem::replace(slot, Joint::Ideal);
         let ideal = std::mem::replace(&mut self.active.ideal_joint, true);
         let result = f(self);
-        self.joint = joint;
+        self.joints[JointRole::RodSlider as usize] = joint;
         self.active.ideal_joint = ideal;
         result
     }

@@ -107,6 +107,13 @@ impl Parameters {
         for (role, joint) in self.joints() {
             check_joint(role, joint)?;
         }
+        if self.main_bearing.model != JointModel::Ideal {
+            return Err(ModelError::invalid(
+                JointRole::MainBearing.parameter(JointField::Model),
+                f64::from(self.main_bearing.model as u8),
+                "{0 (ideal)}: the crank's pivot has no clearance model",
+            ));
+        }
         let tolerance = self.relative_tolerance;
         if self.method == Method::DormandPrince && tolerance > EXPLICIT_MAX_TOLERANCE {
             return Err(ModelError::invalid(

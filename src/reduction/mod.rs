@@ -31,13 +31,23 @@ pub struct Deformation {
     pub tangents: [Vector2<f64>; 2],
 }
 
+/// An end of the rod: its first node, at the crank pin (pin A), or its last, at the slider pin
+/// (pin B).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RodEnd {
+    /// The crank pin's end, node 0.
+    CrankPin = 0,
+    /// The slider pin's end, node n.
+    SliderPin = 1,
+}
+
 /// The rod in full ANCF coordinates or in Craig–Bampton coordinates p (e = V p), with the buffers
 /// its force evaluation needs, so that evaluating forces never allocates.
 ///
 /// In every case the first 2 coordinates are the crank-pin end r₀ and [`RodModel::end_node_offset`]
-/// locates the slider-pin end r_n: joints are written directly in these coordinates. The end slope
-/// r_n,ₓ (whose rotation is the journal's) is a coordinate of the full model and of the
-/// positions-and-slopes interface, and a linear combination of p with the pin interface
+/// locates the slider-pin end r_n: joints are written directly in these coordinates. The end slopes
+/// r₀,ₓ and r_n,ₓ (whose rotations are the pins' eyes') are coordinates of the full model and of the
+/// positions-and-slopes interface, and linear combinations of p with the pin interface
 /// ([`RodModel::end_slope`]).
 #[derive(Clone, Debug)]
 pub struct RodModel {
@@ -45,8 +55,9 @@ pub struct RodModel {
     reduction: Option<CraigBampton>,
     mass: Mat<f64>,
     mass_factor: BandCholesky,
-    /// r_n,ₓ = Σ (w · (p₂ⱼ, p₂ⱼ₊₁)) over (j, w): the end slope as a combination of coordinate pairs.
-    end_slope: Vec<(usize, f64)>,
+    /// r_ₓ at each end ([`RodEnd`]) = Σ (w · (p₂ⱼ, p₂ⱼ₊₁)) over (j, w): the end slopes as
+    /// combinations of coordinate pairs.
+    end_slopes: [Vec<(usize, f64)>; 2],
     e: Vec<f64>,
     e_dot: Vec<f64>,
     q: Vec<f64>,
@@ -122,17 +133,17 @@ impl RodModel {
         let mass_factor = BandCholesky::new(mass.as_ref())?;
         let n_full = rod.n_coordinates();
         let n = mass.nrows();
-        let slope_row = 2 * rod.n_elements() + 1;
-        let end_slope = match &reduction {
+        // The slopes r₀,ₓ and r_n,ₓ are the pairs 1 and 2n + 1 of the full model's coordinates.
+        let end_slopes = [1, 2 * rod.n_elements() + 1].map(|slope_row| match &reduction {
             Some(cb) => cb
                 .scalar_row(slope_row)
                 .enumerate()
                 .filter(|(_, w)| *w != 0.0)
                 .collect(),
             None => vec![(slope_row, 1.0)],
-        };
+        });
         Ok(Self {
-            end_slope,
+            end_slopes,
             reduction,
             mass_factor,
             mass,
@@ -169,18 +180,20 @@ impl RodModel {
         }
     }
 
-    /// End slope r_n,ₓ of the coordinates `p` (or its rate, applied to ṗ: the map is linear).
-    pub fn end_slope(&self, p: &[f64]) -> Vector2<f64> {
-        self.end_slope
+    /// Slope r_ₓ at the rod's end `end` for the coordinates `p` (or its rate, applied to ṗ: the
+    /// map is linear).
+    pub fn end_slope(&self, end: RodEnd, p: &[f64]) -> Vector2<f64> {
+        self.end_slopes[end as usize]
             .iter()
             .fold(Vector2::zeros(), |acc, &(j, w)| {
                 acc + w * Vector2::new(p[2 * j], p[2 * j + 1])
             })
     }
 
-    /// Adds the generalised force of a force `g` acting on the end slope r_n,ₓ: (∂r_n,ₓ/∂p)ᵀ g.
-    pub fn add_end_slope_force(&self, g: Vector2<f64>, out: &mut [f64]) {
-        for &(j, w) in &self.end_slope {
+    /// Adds the generalised force of a force `g` acting on the slope r_ₓ at the end `end`:
+    /// (∂r_ₓ/∂p)ᵀ g.
+    pub fn add_end_slope_force(&self, end: RodEnd, g: Vector2<f64>, out: &mut [f64]) {
+        for &(j, w) in &self.end_slopes[end as usize] {
             out[2 * j] += w * g.x;
             out[2 * j + 1] += w * g.y;
         }

@@ -4,7 +4,7 @@
 
 use super::peaks::Peaks;
 use crate::integrator::Stats;
-use crate::mechanism::{ContactState, InputSignal, Inputs};
+use crate::mechanism::{ContactState, Contacts, InputSignal, Inputs};
 
 /// Largest accepted vector length (states, Jacobian entries) in a snapshot.
 const MAX_LENGTH: usize = 1 << 20;
@@ -53,10 +53,12 @@ impl ByteWriter<'_> {
             self.f64(*x);
         }
     }
-    /// Writes a contact state.
-    pub fn contact(&mut self, c: &ContactState) {
-        self.u8(u8::from(c.in_contact));
-        self.f64(c.impact_velocity);
+    /// Writes the contact states of the joints.
+    pub fn contact(&mut self, contacts: &Contacts) {
+        for c in &contacts.0 {
+            self.u8(u8::from(c.in_contact));
+            self.f64(c.impact_velocity);
+        }
     }
     /// Writes peak values.
     pub fn peaks(&mut self, p: &Peaks) {
@@ -150,12 +152,16 @@ impl<'a> ByteReader<'a> {
         }
         (0..n).map(|_| self.f64()).collect()
     }
-    /// Reads a contact state.
-    pub fn contact(&mut self) -> Result<ContactState, CodecError> {
-        Ok(ContactState {
-            in_contact: self.flag()?,
-            impact_velocity: self.f64()?,
-        })
+    /// Reads the contact states of the joints.
+    pub fn contact(&mut self) -> Result<Contacts, CodecError> {
+        let mut contacts = Contacts::default();
+        for c in &mut contacts.0 {
+            *c = ContactState {
+                in_contact: self.flag()?,
+                impact_velocity: self.f64()?,
+            };
+        }
+        Ok(contacts)
     }
     /// Reads peak values.
     pub fn peaks(&mut self) -> Result<Peaks, CodecError> {

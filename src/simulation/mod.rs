@@ -16,7 +16,8 @@ pub use self::snapshot::Snapshot;
 use self::validity::Monitor;
 use crate::error::{ModelError, Num};
 use crate::integrator::{Integrator, Stats};
-use crate::mechanism::{ContactState, Energies, SliderCrank};
+use crate::joint::JointRole;
+use crate::mechanism::{ContactState, Contacts, Energies, SliderCrank};
 pub use crate::mechanism::{Input, InputSignal, Inputs};
 use crate::params::{DriveMode, InitialState, JournalStart, Parameters};
 
@@ -39,7 +40,7 @@ pub struct Simulation {
     step_start: f64,
     y_start: Vec<f64>,
     f_start: Vec<f64>,
-    contact_start: ContactState,
+    contact_start: Contacts,
     step_end: f64,
     y_end: Vec<f64>,
     f_end: Vec<f64>,
@@ -205,23 +206,27 @@ impl Simulation {
         self.integrator.stats()
     }
 
-    /// Contact state at the current time: the one at the step end, unless the current time lies
-    /// before the end of the step and the journal is out of contact there (or was already in
-    /// contact at the step start, with that event's impact velocity).
-    fn contact_now(&self) -> ContactState {
+    /// Contact states at the current time: those at the step end, unless the current time lies
+    /// before the end of the step; then each joint is in contact if its journal penetrates at the
+    /// current time, with its event's impact velocity (that of the step start if it was already in
+    /// contact there, else the one latched at the step end).
+    fn contact_now(&self) -> Contacts {
+        let mut contacts = self.mechanism.contact_state();
         if self.time >= self.step_end {
-            return self.mechanism.contact_state();
+            return contacts;
         }
-        let in_contact = self.mechanism.penetration(&self.state) > 0.0;
-        let latched = if self.contact_start.in_contact {
-            self.contact_start
-        } else {
-            self.mechanism.contact_state()
-        };
-        ContactState {
-            in_contact,
-            impact_velocity: latched.impact_velocity,
+        for role in JointRole::ALL {
+            let latched = if self.contact_start[role].in_contact {
+                self.contact_start[role]
+            } else {
+                contacts[role]
+            };
+            contacts[role] = ContactState {
+                in_contact: self.mechanism.penetration(role, &self.state) > 0.0,
+                impact_velocity: latched.impact_velocity,
+            };
         }
+        contacts
     }
 
     /// Restarts the step sequence at the current time from the current state.
@@ -384,7 +389,9 @@ impl Simulation {
 
     /// Evaluates the end of the step just accepted for the peak-hold outputs.
     fn record_step_end(&mut self) -> Result<(), ModelError> {
-        let onset = !self.contact_start.in_contact && self.mechanism.contact_state().in_contact;
+        let rod_slider = JointRole::RodSlider;
+        let onset = !self.contact_start[rod_slider].in_contact
+            && self.mechanism.contact_state()[rod_slider].in_contact;
         self.mechanism.set_time(self.step_end);
         let at_end = match self.mechanism.clearance_joint_load(&self.y_end) {
             Some((force, acceleration)) => {

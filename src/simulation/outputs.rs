@@ -2,6 +2,7 @@
 
 use super::peaks::PeakHold;
 use crate::error::ModelError;
+use crate::joint::JointRole;
 use crate::mechanism::SliderCrank;
 use crate::mechanism::layout::CRANK_ANGLE;
 
@@ -118,8 +119,8 @@ pub(super) fn outputs(
     let ev = *mechanism.evaluate(y, scratch)?;
     let loads = mechanism.loads(y, scratch, ev.joint_force);
     let l = mechanism.layout();
-    let kin = mechanism.joint_kinematics(y);
-    let penetration = mechanism.penetration(y);
+    let kin = mechanism.joint_kinematics(JointRole::RodSlider, y);
+    let penetration = mechanism.penetration(JointRole::RodSlider, y);
     let energies = mechanism.energies(y);
     Ok(Outputs {
         time,

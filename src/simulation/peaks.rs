@@ -4,7 +4,7 @@
 use nalgebra::Vector2;
 
 use crate::integrator::dense;
-use crate::mechanism::{ContactState, Loads, SliderCrank};
+use crate::mechanism::{Contacts, Loads, SliderCrank};
 
 /// Extremes of the solution over a stretch of time, and the contact onsets in it.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -168,7 +168,7 @@ pub(super) struct AcceptedStep<'a> {
     pub(super) f_start: &'a [f64],
     pub(super) y_end: &'a [f64],
     pub(super) f_end: &'a [f64],
-    pub(super) contact_start: ContactState,
+    pub(super) contact_start: Contacts,
 }
 
 /// The largest peak-held magnitudes inside the step just accepted, if the journal touches the
@@ -181,7 +181,7 @@ pub(super) fn within_step(
     acceleration: &mut [f64],
 ) -> Sample {
     let end_contact = mechanism.contact_state();
-    if !(step.contact_start.in_contact || end_contact.in_contact) {
+    if !(step.contact_start.any() || end_contact.any()) {
         return [0.0; SERIES];
     }
     // The contact state the step was integrated with (an onset inside it is latched at its end).

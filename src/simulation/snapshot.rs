@@ -3,7 +3,7 @@
 use super::codec::{ByteReader, ByteWriter, CodecError, signal_values};
 use super::peaks::PeakHold;
 use crate::integrator::{ImplicitState, IntegratorState};
-use crate::mechanism::{ContactState, InputSignal};
+use crate::mechanism::{Contacts, InputSignal};
 
 /// A complete, restorable state of a [`super::Simulation`] (parameters excepted).
 #[derive(Clone, Debug, PartialEq)]
@@ -13,14 +13,14 @@ pub struct Snapshot {
     /// State at `time`.
     pub state: Vec<f64>,
     /// The last accepted step: start time, state, its derivative and the contact state there.
-    pub step_start: (f64, Vec<f64>, Vec<f64>, ContactState),
+    pub step_start: (f64, Vec<f64>, Vec<f64>, Contacts),
     /// The end of the last accepted step (the integrator's point, ≥ `time`): time, state and its
     /// derivative.
     pub step_end: (f64, Vec<f64>, Vec<f64>),
     /// Integrator state (step size, f at the step end, Jacobian, statistics).
     pub integrator: IntegratorState,
-    /// Contact state at the step end.
-    pub contact: ContactState,
+    /// Contact states at the step end.
+    pub contact: Contacts,
     /// The inputs of the current step sequence.
     pub signal: InputSignal,
     /// The inputs set for the next interval.

@@ -3,8 +3,9 @@
 //! ([`super::Simulation::take_warnings`]).
 
 use crate::error::Num;
+use crate::joint::{JointField, JointRole};
 use crate::mechanism::SliderCrank;
-use crate::params::{Parameters, RodFormulation};
+use crate::params::{JointModel, Parameters, RodFormulation};
 
 /// Largest contact penetration, as a fraction of the journal radius: Hertz theory assumes a
 /// contact zone small against the radii.
@@ -45,8 +46,25 @@ impl Monitor {
     /// communication point, which the outputs show) against the limits; each cause warns once.
     pub(super) fn check(&mut self, p: &Parameters, mechanism: &mut SliderCrank, t: f64, y: &[f64]) {
         let layout = mechanism.layout();
-        let penetration = mechanism.penetration(y);
-        let (r_c, l, c) = (p.crank_length, p.rod.length, p.joint.clearance);
+        // The clearance joint deepest into its wall, relative to its journal's radius.
+        let (role, penetration) = JointRole::ALL
+            .into_iter()
+            .map(|role| (role, mechanism.penetration(role, y)))
+            .max_by(|a, b| {
+                let ratio = |(role, d): (JointRole, f64)| d / p.joint(role).journal_radius;
+                ratio(*a).total_cmp(&ratio(*b))
+            })
+            .unwrap_or((JointRole::RodSlider, f64::NEG_INFINITY));
+        let radius = p.joint(role).journal_radius;
+        let crank_pin_gap = match p.crank_pin.model {
+            JointModel::Ideal => 0.0,
+            _ => p.crank_pin.clearance,
+        };
+        let (r_c, l, c) = (
+            p.crank_length,
+            p.rod.length,
+            p.joint.clearance + crank_pin_gap,
+        );
         let x = y[layout.slider()];
         let excess = ((l - r_c - c) - x).max(x - (l + r_c + c));
         let speed = y[layout.crank_speed()];
@@ -56,7 +74,7 @@ impl Monitor {
             mechanism.midspan_deflection(y)
         };
         let left = [
-            penetration > PENETRATION_PER_RADIUS * p.joint.journal_radius,
+            penetration > PENETRATION_PER_RADIUS * radius,
             deflection.abs() > DEFLECTION_PER_LENGTH * l,
             speed.abs() > CRANK_SPEED,
             excess > STROKE_EXCESS_PER_CRANK * r_c,
@@ -68,11 +86,13 @@ impl Monitor {
             self.fired[i] = true;
             let message = match i {
                 0 => format!(
-                    "joint penetration {} m exceeds {} % of joint.journalRadius = {} m (Hertz \
-                     contact assumes a small contact zone)",
+                    "{} penetration {} m exceeds {} % of {} = {} m (Hertz contact assumes a \
+                     small contact zone)",
+                    role.prefix(),
                     Num(penetration),
                     Num(100.0 * PENETRATION_PER_RADIUS),
-                    Num(p.joint.journal_radius)
+                    role.parameter(JointField::JournalRadius),
+                    Num(radius)
                 ),
                 1 => format!(
                     "rod mid-span deflection {} m exceeds {} % of rod.length = {} m",

@@ -18,7 +18,7 @@ fn output_balance(o: &Outputs) -> f64 {
 
 /// Largest |balance(t) − balance(0)| of the outputs over a run, relative to the largest kinetic
 /// energy.
-fn output_balance_residual(rows: &[Outputs]) -> f64 {
+pub(crate) fn output_balance_residual(rows: &[Outputs]) -> f64 {
     let kinetic = rows.iter().fold(0.0f64, |m, o| m.max(o.kinetic_energy));
     let start = output_balance(&rows[0]);
     rows.iter()

@@ -7,6 +7,7 @@
 
 mod balance;
 mod contract;
+mod crank_pin;
 mod domain;
 mod impacts;
 mod joints;
@@ -18,7 +19,7 @@ use flexible_slider_crank::ancf::RodProperties;
 use flexible_slider_crank::integrator::Method;
 use flexible_slider_crank::math;
 use flexible_slider_crank::params::{
-    BENCHMARK_SPEED, ContactLaw, DriveMode, InitialState, JointModel, JointParameters,
+    BENCHMARK_SPEED, ContactLaw, DriveMode, InitialState, JointModel, JointParameters, JointRole,
     RodFormulation,
 };
 use flexible_slider_crank::{Input, Outputs, Parameters, Simulation};

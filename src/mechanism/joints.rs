@@ -1,0 +1,118 @@
+//! The mechanism's revolute joints: where each journal and bearing sit in the state, and where a
+//! clearance joint's force acts (docs/model.md §3).
+//!
+//! ```text
+//! joint        journal (ω_j)               bearing (ω_b)           e = r_journal − r_bearing
+//! main bearing crank pivot (θ̇)             ground (0)              0 (ideal only)
+//! crank pin    crank pin r_P (θ̇)           rod's eye at A (ω_A)    r_c (cos θ, sin θ) − r_A
+//! rod–slider   rod's pin at B (ω_B)         slider (0)              r_B − (x_s, 0)
+//! ```
+//! ω_A, ω_B are the rod's rotations at its ends. The force F and moment M_j act on the journal,
+//! −F and M_b on the bearing: at the crank pin the crank receives the torque r_P × F + M_j about
+//! its pivot and the rod −F at A with the moment M_b.
+
+use nalgebra::Vector2;
+
+use super::layout::{CRANK_ANGLE, PIN_A, pair};
+use super::slider_crank::SliderCrank;
+use crate::joint::{Joint, JointForce, JointKinematics, JointRole};
+use crate::math;
+use crate::reduction::RodEnd;
+
+/// The crank pin's clearance-joint load of one evaluation.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct CrankPinLoad {
+    /// Torque on the crank about its pivot, r_P × F + M_j \[N m\].
+    pub torque: f64,
+    /// Power of the joint's forces on journal and bearing ([`JointKinematics::power`]) \[W\].
+    pub power: f64,
+    /// Elastic energy stored in the contact \[J\].
+    pub potential: f64,
+}
+
+impl SliderCrank {
+    /// The law of the joint `role`.
+    pub fn joint(&self, role: JointRole) -> &Joint {
+        &self.joints[role as usize]
+    }
+
+    /// Whether the joint `role` has a clearance (dry or lubricated).
+    pub fn has_clearance(&self, role: JointRole) -> bool {
+        !matches!(self.joint(role), Joint::Ideal)
+    }
+
+    /// Journal–bearing kinematics of the joint `role` in state `y`.
+    pub fn joint_kinematics(&self, role: JointRole, y: &[f64]) -> JointKinematics {
+        let l = self.layout;
+        let (p, p_dot) = (&y[l.rod()], &y[l.rod_rates()]);
+        let (theta, omega) = (y[CRANK_ANGLE], y[l.crank_speed()]);
+        match role {
+            JointRole::MainBearing => JointKinematics {
+                e: Vector2::zeros(),
+                e_dot: Vector2::zeros(),
+                omega_journal: omega,
+                omega_bearing: 0.0,
+            },
+            JointRole::CrankPin => {
+                let (sin, cos) = math::sin_cos(theta);
+                let r_c = self.crank_length;
+                JointKinematics {
+                    e: r_c * Vector2::new(cos, sin) - pair(y, PIN_A),
+                    e_dot: r_c * omega * Vector2::new(-sin, cos) - pair(y, l.rate_of(PIN_A)),
+                    omega_journal: omega,
+                    omega_bearing: self.rod.end_angular_velocity(RodEnd::CrankPin, p, p_dot),
+                }
+            }
+            JointRole::RodSlider => {
+                let (b, b_rate) = (l.pin_b(), l.rate_of(l.pin_b()));
+                JointKinematics {
+                    e: Vector2::new(y[b] - y[l.slider()], y[b + 1]),
+                    e_dot: Vector2::new(y[b_rate] - y[l.slider_velocity()], y[b_rate + 1]),
+                    omega_journal: self.rod.end_angular_velocity(RodEnd::SliderPin, p, p_dot),
+                    omega_bearing: 0.0,
+                }
+            }
+        }
+    }
+
+    /// The force of the joint `role` in state `y`, with its kinematics.
+    pub fn joint_force(&self, role: JointRole, y: &[f64]) -> (JointForce, JointKinematics) {
+        let kin = self.joint_kinematics(role, y);
+        (
+            self.joint(role)
+                .force(&kin, self.impact_velocity(role, &kin)),
+            kin,
+        )
+    }
+
+    /// The crank pin's clearance-joint force in state `y` applied to the rod (−F at its end A and
+    /// the bearing moment M_b on its eye, added to the rod's generalised forces `rod_force`), with
+    /// the crank's share returned; `None` for the ideal crank pin (a constraint).
+    pub(super) fn apply_crank_pin(&self, y: &[f64], rod_force: &mut [f64]) -> Option<CrankPinLoad> {
+        if !self.has_clearance(JointRole::CrankPin) {
+            return None;
+        }
+        let (f, kin) = self.joint_force(JointRole::CrankPin, y);
+        rod_force[0] -= f.force.x;
+        rod_force[1] -= f.force.y;
+        let p = &y[self.layout.rod()];
+        self.rod
+            .add_end_moment(RodEnd::CrankPin, p, f.bearing_moment, rod_force);
+        let (sin, cos) = math::sin_cos(y[CRANK_ANGLE]);
+        let arm = self.crank_length * Vector2::new(cos, sin);
+        Some(CrankPinLoad {
+            torque: arm.x * f.force.y - arm.y * f.force.x + f.moment,
+            power: kin.power(&f),
+            potential: f.potential,
+        })
+    }
+
+    /// Elastic energy stored in the contacts of every clearance joint in state `y` \[J\].
+    pub fn contact_potential(&self, y: &[f64]) -> f64 {
+        JointRole::ALL
+            .into_iter()
+            .filter(|&role| self.has_clearance(role))
+            .map(|role| self.joint_force(role, y).0.potential)
+            .sum()
+    }
+}
