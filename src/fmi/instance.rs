@@ -468,6 +468,7 @@ impl Model for SliderCrankFmu {
             let v = lookup(VARIABLES, *vr, "Boolean")?;
             *value = match v.vr {
                 Vr::JointInContact => i32::from(self.outputs(log)?.in_contact),
+                Vr::CrankPinInContact => i32::from(self.outputs(log)?.crank_pin_in_contact),
                 _ => unreachable_type(v)?,
             };
         }

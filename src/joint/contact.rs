@@ -33,13 +33,25 @@
 use nalgebra::Vector2;
 
 use super::kinematics::{JointForce, JointKinematics, MIN_IMPACT_VELOCITY};
-use super::parameters::ContactLaw;
 
 /// Hertz-type stiffness K \[N/m^1.5\] of a journal of radius `r_journal` in a bearing of radius
 /// `r_bearing`, both of Young's modulus `e` and Poisson ratio `nu`.
 pub fn hertz_stiffness(r_bearing: f64, r_journal: f64, e: f64, nu: f64) -> f64 {
     let sigma = (1.0 - nu * nu) / e;
     4.0 / (3.0 * 2.0 * sigma) * (r_bearing * r_journal / (r_bearing - r_journal)).sqrt()
+}
+
+/// Hysteresis-damping law of the dry contact force F_N = K δ^1.5 (1 + χ δ̇/δ̇⁻)
+/// ([`DryContact`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ContactLaw {
+    /// Lankarani & Nikravesh (1990), χ = 3(1 − c_e²)/4: derived for restitution near 1 (the seed
+    /// paper's law).
+    LankaraniNikravesh,
+    /// Flores, Machado, Silva & Martins (2011), χ = 8(1 − c_e)/(5 c_e): any restitution.
+    Flores,
+    /// Hu & Guo (2015), χ = 3(1 − c_e)/(2 c_e): any restitution.
+    HuGuo,
 }
 
 /// Constants of the dry contact law.

@@ -3,7 +3,7 @@
 
 use nalgebra::Vector2;
 
-use super::parameters::JointRole;
+use super::role::JointRole;
 
 /// Smallest impact velocity used in the Lankarani–Nikravesh damping term \[m/s\] (docs/model.md §7).
 pub const MIN_IMPACT_VELOCITY: f64 = 1e-4;

@@ -14,15 +14,15 @@ pub mod bearing;
 pub mod contact;
 pub mod kinematics;
 pub mod parameters;
+pub mod role;
 
 pub use bearing::JournalBearing;
-pub use contact::{DryContact, hertz_stiffness};
+pub use contact::{ContactLaw, DryContact, hertz_stiffness};
 pub use kinematics::{
     ContactState, Contacts, JointForce, JointKinematics, MIN_IMPACT_VELOCITY, normal_rate_error,
 };
-pub use parameters::{
-    ContactLaw, JointField, JointModel, JointParameters, JointRole, JournalStart,
-};
+pub use parameters::{JointModel, JointParameters, JournalStart};
+pub use role::{JointField, JointRole};
 
 use nalgebra::Vector2;
 

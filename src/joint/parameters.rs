@@ -1,6 +1,8 @@
 //! The parameters of one revolute joint — the rod–slider joint, the crank pin or the main bearing —
-//! from which [`super::Joint`] is built: its model, geometry, material, friction and lubricant, and
+//! from which the joint's law (`Joint`) is built: its model, geometry, material, friction and lubricant, and
 //! where its journal starts.
+
+use super::contact::{ContactLaw, hertz_stiffness};
 
 /// Model of a revolute joint.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -11,19 +13,6 @@ pub enum JointModel {
     Dry,
     /// Lubricated journal bearing (short-bearing film), dry contact near metal contact.
     Lubricated,
-}
-
-/// Hysteresis-damping law of the dry contact force F_N = K δ^1.5 (1 + χ δ̇/δ̇⁻)
-/// ([`crate::joint::DryContact`]).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ContactLaw {
-    /// Lankarani & Nikravesh (1990), χ = 3(1 − c_e²)/4: derived for restitution near 1 (the seed
-    /// paper's law).
-    LankaraniNikravesh,
-    /// Flores, Machado, Silva & Martins (2011), χ = 8(1 − c_e)/(5 c_e): any restitution.
-    Flores,
-    /// Hu & Guo (2015), χ = 3(1 − c_e)/(2 c_e): any restitution.
-    HuGuo,
 }
 
 /// Where a clearance joint's journal starts.
@@ -108,87 +97,13 @@ impl JointParameters {
     }
 
     /// Hertz-type stiffness K \[N/m^1.5\] of the journal in its bearing
-    /// ([`super::hertz_stiffness`]).
+    /// ([`hertz_stiffness`]).
     pub fn contact_stiffness(&self) -> f64 {
-        super::hertz_stiffness(
+        hertz_stiffness(
             self.bearing_radius(),
             self.journal_radius,
             self.youngs_modulus,
             self.poisson_ratio,
         )
-    }
-}
-
-/// Which revolute joint of the mechanism.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum JointRole {
-    /// The main bearing: the crank's pivot (journal) in the ground (bearing).
-    MainBearing,
-    /// The crank pin: the crank's pin (journal) in the rod's eye (bearing), the big end.
-    CrankPin,
-    /// The rod–slider joint: the rod's pin (journal) in the slider (bearing), the small end.
-    RodSlider,
-}
-
-/// The FMU names of a joint's parameters, `<prefix>.<field>`, in the order of
-/// [`JointRole::parameter`]'s fields.
-macro_rules! names {
-    ($prefix:literal) => {
-        [
-            concat!($prefix, ".model"),
-            concat!($prefix, ".clearance"),
-            concat!($prefix, ".journalRadius"),
-            concat!($prefix, ".youngsModulus"),
-            concat!($prefix, ".poissonRatio"),
-            concat!($prefix, ".restitution"),
-            concat!($prefix, ".contactLaw"),
-            concat!($prefix, ".friction"),
-            concat!($prefix, ".frictionV0"),
-            concat!($prefix, ".frictionV1"),
-            concat!($prefix, ".viscosity"),
-            concat!($prefix, ".bearingLength"),
-            concat!($prefix, ".switchEccentricity"),
-            concat!($prefix, ".initialState"),
-        ]
-    };
-}
-
-/// The fields of [`JointParameters`], for [`JointRole::parameter`].
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[allow(missing_docs)]
-pub enum JointField {
-    Model,
-    Clearance,
-    JournalRadius,
-    YoungsModulus,
-    PoissonRatio,
-    Restitution,
-    ContactLaw,
-    Friction,
-    FrictionV0,
-    FrictionV1,
-    Viscosity,
-    BearingLength,
-    SwitchEccentricity,
-    InitialState,
-}
-
-impl JointRole {
-    /// Every joint, from the ground to the slider.
-    pub const ALL: [Self; 3] = [Self::MainBearing, Self::CrankPin, Self::RodSlider];
-
-    /// The prefix of the joint's FMU variables: `mainBearing`, `crankPin`, `joint`.
-    pub fn prefix(self) -> &'static str {
-        match self {
-            Self::MainBearing => "mainBearing",
-            Self::CrankPin => "crankPin",
-            Self::RodSlider => "joint",
-        }
-    }
-
-    /// The FMU name of one of the joint's parameters, e.g. `crankPin.clearance`.
-    pub fn parameter(self, field: JointField) -> &'static str {
-        const NAMES: [[&str; 14]; 3] = [names!("mainBearing"), names!("crankPin"), names!("joint")];
-        NAMES[self as usize][field as usize]
     }
 }

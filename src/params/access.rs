@@ -55,6 +55,17 @@ real_fields! {
     JointViscosity => joint.viscosity;
     JointBearingLength => joint.bearing_length;
     JointSwitchEccentricity => joint.switch_eccentricity;
+    CrankPinClearance => crank_pin.clearance;
+    CrankPinJournalRadius => crank_pin.journal_radius;
+    CrankPinYoungsModulus => crank_pin.youngs_modulus;
+    CrankPinPoissonRatio => crank_pin.poisson_ratio;
+    CrankPinRestitution => crank_pin.restitution;
+    CrankPinFriction => crank_pin.friction;
+    CrankPinFrictionV0 => crank_pin.friction_v0;
+    CrankPinFrictionV1 => crank_pin.friction_v1;
+    CrankPinViscosity => crank_pin.viscosity;
+    CrankPinBearingLength => crank_pin.bearing_length;
+    CrankPinSwitchEccentricity => crank_pin.switch_eccentricity;
     Gravity => gravity;
     GravityAngle => gravity_angle;
     SolverRelativeTolerance => relative_tolerance;
@@ -115,6 +126,10 @@ integer_fields! {
         JointContactLaw => joint.contact_law:
             [ContactLaw::LankaraniNikravesh, ContactLaw::Flores, ContactLaw::HuGuo];
         JointInitialState => joint.initial_state: [JournalStart::Centred, JournalStart::Settled];
+        CrankPinModel => crank_pin.model:
+            [JointModel::Ideal, JointModel::Dry, JointModel::Lubricated];
+        CrankPinContactLaw => crank_pin.contact_law:
+            [ContactLaw::LankaraniNikravesh, ContactLaw::Flores, ContactLaw::HuGuo];
     }
     counts {
         RodNElements => n_elements;

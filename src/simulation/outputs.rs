@@ -43,6 +43,15 @@ pub struct Outputs {
     pub penetration: f64,
     /// Whether journal and bearing touch.
     pub in_contact: bool,
+    /// The crank pin's eccentricity e = crank pin centre − rod eye centre, x \[m\] (0 for the
+    /// ideal crank pin).
+    pub crank_pin_eccentricity_x: f64,
+    /// The crank pin's eccentricity, y \[m\].
+    pub crank_pin_eccentricity_y: f64,
+    /// The crank pin's penetration max(|e| − c, 0) \[m\].
+    pub crank_pin_penetration: f64,
+    /// Whether the crank pin touches the rod's eye.
+    pub crank_pin_in_contact: bool,
     /// Rod mid-span deflection relative to the chord, left positive \[m\].
     pub midspan_deflection: f64,
     /// Rod strain (deformation) energy \[J\].
@@ -121,6 +130,12 @@ pub(super) fn outputs(
     let l = mechanism.layout();
     let kin = mechanism.joint_kinematics(JointRole::RodSlider, y);
     let penetration = mechanism.penetration(JointRole::RodSlider, y);
+    let crank_pin = if mechanism.has_clearance(JointRole::CrankPin) {
+        mechanism.joint_kinematics(JointRole::CrankPin, y).e
+    } else {
+        nalgebra::Vector2::zeros()
+    };
+    let crank_pin_penetration = mechanism.penetration(JointRole::CrankPin, y);
     let energies = mechanism.energies(y);
     Ok(Outputs {
         time,
@@ -140,6 +155,10 @@ pub(super) fn outputs(
         eccentricity_rate_y: kin.e_dot.y,
         penetration: penetration.max(0.0),
         in_contact: penetration > 0.0,
+        crank_pin_eccentricity_x: crank_pin.x,
+        crank_pin_eccentricity_y: crank_pin.y,
+        crank_pin_penetration: crank_pin_penetration.max(0.0),
+        crank_pin_in_contact: crank_pin_penetration > 0.0,
         midspan_deflection: mechanism.midspan_deflection(y),
         deformation_energy: energies.strain,
         kinetic_energy: energies.kinetic,

@@ -395,6 +395,8 @@ BOUND_COMPANIONS = {
     ("joint.clearance", "min"): {"joint.model": 1},
     ("joint.frictionV0", "max"): {"joint.frictionV1": 10.0},
     ("joint.frictionV1", "min"): {"joint.frictionV0": 0.0},
+    ("crankPin.frictionV0", "max"): {"crankPin.frictionV1": 10.0},
+    ("crankPin.frictionV1", "min"): {"crankPin.frictionV0": 0.0},
 }
 
 
