@@ -7,7 +7,7 @@
 //! outputs at 1 µs communication intervals (dense output: the step sequence does not change).
 
 use flexible_slider_crank::integrator::Method;
-use flexible_slider_crank::params::{BENCHMARK_SPEED, RodFormulation};
+use flexible_slider_crank::params::{BENCHMARK_SPEED, JointRole, RodFormulation};
 use flexible_slider_crank::{ModelError, Parameters, Simulation};
 
 /// Window: the first 60° of crank rotation.
@@ -51,18 +51,36 @@ pub fn converged(p: &Parameters) -> Parameters {
     }
 }
 
-/// The impacts of a run that end inside the window, and the run's internal steps.
+/// The impacts of a run at its rod–slider joint that end inside the window, and the run's internal
+/// steps.
 pub fn impacts(p: Parameters) -> Result<(Vec<Impact>, u64), ModelError> {
+    impacts_at(p, JointRole::RodSlider)
+}
+
+/// The impacts of a run at the clearance joint `role` (the rod–slider joint or the crank pin) that
+/// end inside the window, and the run's internal steps. At the crank pin an onset is a
+/// communication interval that ends in contact after one that did not.
+pub fn impacts_at(p: Parameters, role: JointRole) -> Result<(Vec<Impact>, u64), ModelError> {
     let window = WINDOW_DEGREES.to_radians() / BENCHMARK_SPEED;
     let n = (window / SAMPLE).round() as usize;
     let mut sim = Simulation::new(p)?;
     let mut events = Vec::new();
     let mut current: Option<Impact> = None;
+    let mut was_in_contact = false;
     for k in 1..=n {
         let t = k as f64 * SAMPLE;
         sim.advance_to(t)?;
         let o = sim.outputs()?;
-        if o.contact_onsets > 0 {
+        let (onsets, in_contact, peak) = match role {
+            JointRole::CrankPin => (
+                u64::from(o.crank_pin_in_contact && !was_in_contact),
+                o.crank_pin_in_contact,
+                o.crank_pin_force_peak,
+            ),
+            _ => (o.contact_onsets, o.in_contact, o.joint_force_peak),
+        };
+        was_in_contact = in_contact;
+        if onsets > 0 {
             events.extend(current.take());
             current = Some(Impact {
                 onset: t - SAMPLE,
@@ -70,8 +88,8 @@ pub fn impacts(p: Parameters) -> Result<(Vec<Impact>, u64), ModelError> {
             });
         }
         if let Some(c) = &mut current {
-            c.peak = c.peak.max(o.joint_force_peak);
-            if !o.in_contact && o.contact_onsets == 0 {
+            c.peak = c.peak.max(peak);
+            if !in_contact && onsets == 0 {
                 events.push(*c);
                 current = None;
             }

@@ -4,7 +4,8 @@
 #[path = "../support/load_spectrum.rs"]
 mod load_spectrum;
 
-use load_spectrum::{benchmarks, converged, impacts, pair};
+use flexible_slider_crank::params::{JointModel, JointParameters, JointRole};
+use load_spectrum::{benchmarks, converged, impacts, impacts_at, pair};
 
 /// At the library's defaults every significant impact's peak force is within 2 % of the converged
 /// run's and its onset within 0.1° of crank rotation, the first impact's peak within 0.5 %, for
@@ -32,6 +33,47 @@ fn every_impact_is_right_at_the_defaults() {
         for pair in &pairs {
             assert!(pair.peak_error() <= 0.02, "{name}: {pair:?}");
             assert!(pair.onset_error_degrees() <= 0.1, "{name}: {pair:?}");
+        }
+    }
+}
+
+/// The same at the crank pin: benchmark A's dry clearance moved to the crank pin (the rod–slider
+/// joint ideal): every significant crank-pin impact of the first 60° within 2 % in peak and 0.1° in
+/// onset of the converged run. Also measured and printed, not asserted, because some of their
+/// later impacts miss that bound at the defaults (BENCHMARKS.md, "Load spectrum"): benchmark B's
+/// 4-mode rod with the crank pin worn, and both benchmarks with both pins worn.
+#[test]
+fn every_crank_pin_impact_is_right_at_the_defaults() {
+    for (name, base) in benchmarks().into_iter().take(2) {
+        for slider_pin in [JointModel::Ideal, JointModel::Dry] {
+            let p = crate::Parameters {
+                joint: JointParameters {
+                    model: slider_pin,
+                    ..base.joint
+                },
+                crank_pin: JointParameters::benchmark(),
+                ..base.clone()
+            };
+            let (reference, _) = impacts_at(converged(&p), JointRole::CrankPin).unwrap();
+            let (run, steps) = impacts_at(p, JointRole::CrankPin).unwrap();
+            let pairs = pair(&reference, &run);
+            let worst = pairs.iter().fold((0.0f64, 0.0f64), |(peak, onset), pair| {
+                (
+                    peak.max(pair.peak_error()),
+                    onset.max(pair.onset_error_degrees()),
+                )
+            });
+            println!(
+                "{name}, rod-slider joint {slider_pin:?}: {} crank-pin impacts, worst peak error \
+                 {:.2} %, worst onset error {:.2}°, {steps} steps",
+                pairs.len(),
+                100.0 * worst.0,
+                worst.1
+            );
+            assert!(pairs.len() >= 3, "{name}: {} impacts", pairs.len());
+            if name.starts_with("rigid") && slider_pin == JointModel::Ideal {
+                assert!(worst.0 <= 0.02 && worst.1 <= 0.1, "{name}: {pairs:?}");
+            }
         }
     }
 }
