@@ -140,7 +140,7 @@ def run_case(unzipdir, md, values, stop_time, queue):
     vars_ = {v.name: v for v in md.modelVariables}
     outputs = [v for v in md.modelVariables if v.causality == "output" and v.type == "Real"]
     reals = ["joint.journalRadius", "rod.length", "crank.length", "joint.clearance",
-             "solver.relativeTolerance"]
+             "crankPin.journalRadius", "crankPin.clearance", "solver.relativeTolerance"]
     record = {"values": values, "outcome": "ran", "message": "", "warnings": [],
               "violations": [], "max_step_wall": 0.0, "time_reached": 0.0, "wall": 0.0}
     fmu = FMU2Slave(guid=md.guid, unzipDirectory=unzipdir,
@@ -162,6 +162,7 @@ def run_case(unzipdir, md, values, stop_time, queue):
         fmu.exitInitializationMode()
         p = dict(zip(reals, fmu.getReal([vars_[n].valueReference for n in reals])))
         formulation = fmu.getInteger([vars_["rod.formulation"].valueReference])[0]
+        p["crankPin.model"] = fmu.getInteger([vars_["crankPin.model"].valueReference])[0]
         stage = "run"
         rows = []
         t = 0.0
@@ -200,10 +201,16 @@ def check_row(row, p, formulation, warned, t, violations):
     if bad:
         violations.append(f"t = {t:.4g} s: non-finite {bad}")
         return
-    r_c, l, c = p["crank.length"], p["rod.length"], p["joint.clearance"]
+    # A worn crank pin (crankPin.model 2 or 3) lengthens the stroke by its clearance too.
+    crank_pin_worn = p.get("crankPin.model", 1) != 1
+    crank_pin_gap = p["crankPin.clearance"] if crank_pin_worn else 0.0
+    r_c, l, c = p["crank.length"], p["rod.length"], p["joint.clearance"] + crank_pin_gap
     x = row["slider.position"]
+    penetration = row["joint.penetration"] / p["joint.journalRadius"]
+    if crank_pin_worn:
+        penetration = max(penetration, row["crankPin.penetration"] / p["crankPin.journalRadius"])
     exits = {
-        "penetration": row["joint.penetration"] > MONITORS["penetration"] * p["joint.journalRadius"],
+        "penetration": penetration > MONITORS["penetration"],
         "deflection": formulation != 1
         and abs(row["rod.midspanDeflection"]) > MONITORS["deflection"] * l,
         "crank speed": abs(row["crank.speed"]) > MONITORS["crank speed"],
