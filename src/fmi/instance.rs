@@ -421,6 +421,14 @@ impl Model for SliderCrankFmu {
                     let onsets = self.outputs(log)?.contact_onsets_total;
                     i32::try_from(onsets).unwrap_or(i32::MAX)
                 }
+                Vr::CrankPinContactOnsets => {
+                    let onsets = self.outputs(log)?.crank_pin_contact_onsets;
+                    i32::try_from(onsets).unwrap_or(i32::MAX)
+                }
+                Vr::CrankPinContactOnsetsTotal => {
+                    let onsets = self.outputs(log)?.crank_pin_contact_onsets_total;
+                    i32::try_from(onsets).unwrap_or(i32::MAX)
+                }
                 Vr::SolverWarnings => {
                     let warnings = self.outputs(log)?.warnings;
                     i32::try_from(warnings).unwrap_or(i32::MAX)

@@ -375,6 +375,8 @@ pub enum Vr {
     CrankPinEccentricityY,
     CrankPinPenetration,
     CrankPinInContact,
+    CrankPinContactOnsets,
+    CrankPinContactOnsetsTotal,
 }
 
 /// 5000 rpm in rad/s (benchmark B); the same expression as `params::BENCHMARK_SPEED`.
@@ -1165,4 +1167,14 @@ pub const VARIABLES: &[Variable] = &[
         kind: Kind::Boolean,
         description: "Crank pin and rod eye in contact",
     },
+    Variable::count(
+        Vr::CrankPinContactOnsets,
+        "crankPin.contactOnsets",
+        "Contact onsets at the crank pin in the last communication interval",
+    ),
+    Variable::count(
+        Vr::CrankPinContactOnsetsTotal,
+        "crankPin.contactOnsetsTotal",
+        "Contact onsets at the crank pin since the start",
+    ),
 ];

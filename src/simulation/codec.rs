@@ -69,7 +69,9 @@ impl ByteWriter<'_> {
         self.f64(p.main_bearing_force);
         self.f64(p.guide_force);
         self.f64(p.rod_stress);
-        self.u64(p.contact_onsets);
+        for onsets in p.contact_onsets {
+            self.u64(onsets);
+        }
     }
     /// Writes an input signal ([`signal_values`]).
     pub fn signal(&mut self, s: &InputSignal) {
@@ -173,7 +175,7 @@ impl<'a> ByteReader<'a> {
             main_bearing_force: self.f64()?,
             guide_force: self.f64()?,
             rod_stress: self.f64()?,
-            contact_onsets: self.u64()?,
+            contact_onsets: [self.u64()?, self.u64()?],
         })
     }
     /// Reads an input signal.

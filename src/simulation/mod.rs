@@ -389,9 +389,9 @@ impl Simulation {
 
     /// Evaluates the end of the step just accepted for the peak-hold outputs.
     fn record_step_end(&mut self) -> Result<(), ModelError> {
-        let rod_slider = JointRole::RodSlider;
-        let onset = !self.contact_start[rod_slider].in_contact
-            && self.mechanism.contact_state()[rod_slider].in_contact;
+        let end = self.mechanism.contact_state();
+        let onsets = [JointRole::RodSlider, JointRole::CrankPin]
+            .map(|role| u64::from(!self.contact_start[role].in_contact && end[role].in_contact));
         self.mechanism.set_time(self.step_end);
         let at_end = match self.mechanism.clearance_joint_load(&self.y_end) {
             Some((force, acceleration)) => {
@@ -421,7 +421,7 @@ impl Simulation {
             &mut self.y_sample,
             &mut self.a_sample,
         );
-        self.peaks.step_end = Peaks::from_sample(peaks::larger(at_end, within), u64::from(onset));
+        self.peaks.step_end = Peaks::from_sample(peaks::larger(at_end, within), onsets);
         self.peaks.pending = true;
         self.check_validity(true);
         Ok(())

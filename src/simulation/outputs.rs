@@ -110,6 +110,10 @@ pub struct Outputs {
     pub contact_onsets: u64,
     /// Contact onsets since the start.
     pub contact_onsets_total: u64,
+    /// Contact onsets at the crank pin in the last communication interval.
+    pub crank_pin_contact_onsets: u64,
+    /// Contact onsets at the crank pin since the start.
+    pub crank_pin_contact_onsets_total: u64,
     /// Warnings raised since the start ([`super::Simulation::take_warnings`]).
     pub warnings: u64,
 }
@@ -192,8 +196,10 @@ pub(super) fn outputs(
         rod_stress_peak: peaks.interval.rod_stress.max(loads.stress),
         rod_axial_force_crank_pin: loads.axial[0],
         rod_axial_force_slider_pin: loads.axial[1],
-        contact_onsets: peaks.interval.contact_onsets,
-        contact_onsets_total: peaks.total_onsets,
+        contact_onsets: peaks.interval.contact_onsets[0],
+        contact_onsets_total: peaks.total_onsets[0],
+        crank_pin_contact_onsets: peaks.interval.contact_onsets[1],
+        crank_pin_contact_onsets_total: peaks.total_onsets[1],
         warnings,
     })
 }

@@ -23,9 +23,12 @@ pub struct Peaks {
     pub guide_force: f64,
     /// Largest rod stress \[Pa\].
     pub rod_stress: f64,
-    /// Number of contact onsets.
-    pub contact_onsets: u64,
+    /// Number of contact onsets at the rod–slider joint and at the crank pin.
+    pub contact_onsets: Onsets,
 }
+
+/// Contact onsets at the rod–slider joint and at the crank pin.
+pub type Onsets = [u64; 2];
 
 /// Number of peak-held quantities.
 const SERIES: usize = 7;
@@ -40,11 +43,13 @@ impl Peaks {
         for (s, o) in sample.iter_mut().zip(other.sample()) {
             *s = s.max(o);
         }
-        *self = Self::from_sample(sample, self.contact_onsets + other.contact_onsets);
+        let [a, b] = self.contact_onsets;
+        let [c, d] = other.contact_onsets;
+        *self = Self::from_sample(sample, [a + c, b + d]);
     }
 
     /// Peaks of one instant's magnitudes `sample` with `contact_onsets` onsets.
-    pub(super) fn from_sample(sample: Sample, contact_onsets: u64) -> Self {
+    pub(super) fn from_sample(sample: Sample, contact_onsets: Onsets) -> Self {
         let [
             joint_force,
             slider_acceleration,
@@ -132,14 +137,20 @@ pub struct PeakHold {
     /// Whether `step_end` lies beyond the current time (it belongs to a later interval).
     pub pending: bool,
     /// Contact onsets up to the current time.
-    pub total_onsets: u64,
+    pub total_onsets: Onsets,
 }
 
 impl PeakHold {
     /// Moves the last step end's extremes into the current interval.
     pub(super) fn take_step_end(&mut self) {
         self.interval.absorb(&self.step_end);
-        self.total_onsets += self.step_end.contact_onsets;
+        for (total, onsets) in self
+            .total_onsets
+            .iter_mut()
+            .zip(self.step_end.contact_onsets)
+        {
+            *total += onsets;
+        }
         self.pending = false;
     }
 }

@@ -98,7 +98,9 @@ impl Snapshot {
         w.peaks(&self.peaks.interval);
         w.peaks(&self.peaks.step_end);
         w.u8(u8::from(self.peaks.pending));
-        w.u64(self.peaks.total_onsets);
+        for total in self.peaks.total_onsets {
+            w.u64(total);
+        }
         w.u64(self.warnings);
     }
 
@@ -150,7 +152,7 @@ impl Snapshot {
                 interval: r.peaks()?,
                 step_end: r.peaks()?,
                 pending: r.flag()?,
-                total_onsets: r.u64()?,
+                total_onsets: [r.u64()?, r.u64()?],
             },
             warnings: r.u64()?,
         })

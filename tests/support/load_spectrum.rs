@@ -58,28 +58,25 @@ pub fn impacts(p: Parameters) -> Result<(Vec<Impact>, u64), ModelError> {
 }
 
 /// The impacts of a run at the clearance joint `role` (the rod–slider joint or the crank pin) that
-/// end inside the window, and the run's internal steps. At the crank pin an onset is a
-/// communication interval that ends in contact after one that did not.
+/// end inside the window, and the run's internal steps.
 pub fn impacts_at(p: Parameters, role: JointRole) -> Result<(Vec<Impact>, u64), ModelError> {
     let window = WINDOW_DEGREES.to_radians() / BENCHMARK_SPEED;
     let n = (window / SAMPLE).round() as usize;
     let mut sim = Simulation::new(p)?;
     let mut events = Vec::new();
     let mut current: Option<Impact> = None;
-    let mut was_in_contact = false;
     for k in 1..=n {
         let t = k as f64 * SAMPLE;
         sim.advance_to(t)?;
         let o = sim.outputs()?;
         let (onsets, in_contact, peak) = match role {
             JointRole::CrankPin => (
-                u64::from(o.crank_pin_in_contact && !was_in_contact),
+                o.crank_pin_contact_onsets,
                 o.crank_pin_in_contact,
                 o.crank_pin_force_peak,
             ),
             _ => (o.contact_onsets, o.in_contact, o.joint_force_peak),
         };
-        was_in_contact = in_contact;
         if onsets > 0 {
             events.extend(current.take());
             current = Some(Impact {

@@ -10,7 +10,7 @@ from fmpy import simulate_fmu
 JOINTS = {"ideal": 1, "dry": 2, "lubricated": 3}
 RODS = {"A, rigid": {"rod.formulation": 1}, "B, 4 modes": {"rod.formulation": 3}}
 OUTPUTS = ["crankPin.force", "crankPin.forcePeak", "crankPin.penetration", "crankPin.inContact",
-           "joint.force", "energy.dissipated", "solver.warnings"]
+           "crankPin.contactOnsetsTotal", "joint.force", "energy.dissipated", "solver.warnings"]
 
 
 @pytest.mark.parametrize("rod", RODS)
@@ -37,10 +37,12 @@ def test_every_combination_runs_without_warnings(fmu, capsys, rod, crank_pin, ro
     assert res["crankPin.forcePeak"].max() >= res["crankPin.force"].max()
     if crank_pin == "ideal":
         assert not res["crankPin.inContact"].any()
+        assert res["crankPin.contactOnsetsTotal"][-1] == 0
         assert np.all(res["crankPin.penetration"] == 0.0)
     else:
         # The journal starts centred in the eye, crosses the clearance and loads the pin.
         assert res["crankPin.inContact"].any() or crank_pin == "lubricated"
+        assert (res["crankPin.contactOnsetsTotal"][-1] > 0) == res["crankPin.inContact"].any()
         assert res["crankPin.force"].max() > 100.0
     if crank_pin == rod_slider == "ideal":
         assert np.all(res["energy.dissipated"] == 0.0)
