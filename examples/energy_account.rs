@@ -11,24 +11,12 @@ use std::time::Instant;
 
 use flexible_slider_crank::params::JointParameters;
 use flexible_slider_crank::params::{JointModel, RodFormulation};
-use flexible_slider_crank::{Outputs, Parameters, Simulation};
+use flexible_slider_crank::{Parameters, Simulation};
 
 /// Simulated time \[s\].
 const DURATION: f64 = 0.5;
 /// Communication step \[s\].
 const STEP: f64 = 1e-4;
-
-/// The energy account of the outputs.
-fn balance(o: &Outputs) -> f64 {
-    o.kinetic_energy
-        + o.deformation_energy
-        + o.contact_energy
-        + o.gravity_energy
-        + o.dissipated_energy
-        + o.material_damping
-        - o.drive_work
-        - o.slider_work
-}
 
 fn main() -> Result<(), Box<dyn Error>> {
     let tolerances: Vec<f64> = std::env::args()
@@ -62,14 +50,14 @@ fn main() -> Result<(), Box<dyn Error>> {
                 rod_formulation,
                 ..Parameters::default()
             })?;
-            let b0 = balance(&sim.outputs()?);
+            let b0 = sim.outputs()?.energy_balance();
             let mut residual = 0.0f64;
             let n = (DURATION / STEP).round() as usize;
             let mut o = sim.outputs()?;
             for i in 1..=n {
                 sim.advance_to(DURATION * i as f64 / n as f64)?;
                 o = sim.outputs()?;
-                residual = residual.max((balance(&o) - b0).abs());
+                residual = residual.max((o.energy_balance() - b0).abs());
             }
             println!(
                 "| {rod_formulation:?} | {joint_model:?} | {rtol:e} | {:.2} | {residual:.3} | {:.2e} | {} | {:.2} |",

@@ -110,8 +110,8 @@ impl Parameters {
         if self.main_bearing.model != JointModel::Ideal {
             return Err(ModelError::invalid(
                 JointRole::MainBearing.parameter(JointField::Model),
-                f64::from(self.main_bearing.model as u8),
-                "{0 (ideal)}: the crank's pivot has no clearance model",
+                f64::from(self.main_bearing.model as u8 + 1),
+                "{1 (ideal)}: the crank's pivot has no clearance model",
             ));
         }
         let tolerance = self.relative_tolerance;
@@ -229,6 +229,29 @@ mod tests {
         };
         assert!(short.warnings().is_empty());
         assert!(Parameters::default().warnings().is_empty());
+    }
+
+    /// The main bearing is ideal only; the crank pin takes every joint model.
+    #[test]
+    fn only_the_crank_pin_can_be_worn_besides_the_rod_slider_joint() {
+        for model in [JointModel::Dry, JointModel::Lubricated] {
+            let worn = JointParameters {
+                model,
+                ..JointParameters::benchmark()
+            };
+            let main_bearing = Parameters {
+                main_bearing: worn,
+                ..Parameters::default()
+            };
+            let message = main_bearing.validate().unwrap_err().to_string();
+            assert!(message.contains("mainBearing.model"), "{message}");
+            Parameters {
+                crank_pin: worn,
+                ..Parameters::default()
+            }
+            .validate()
+            .unwrap();
+        }
     }
 
     /// Material damping is accepted up to a critically damped first bending mode (β ω₁ = 2,

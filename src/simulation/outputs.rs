@@ -121,6 +121,23 @@ pub struct Outputs {
 /// The outputs of state `y` at `time` with the mechanism's current inputs and contact state
 /// (one right-hand-side evaluation into `scratch`, no allocation), with the peak-hold values of
 /// `peaks` and the `warnings` count.
+impl Outputs {
+    /// The energy account from the outputs alone, energy.kinetic + rod.deformationEnergy +
+    /// energy.contact + energy.gravity + energy.dissipated + energy.materialDamping −
+    /// energy.driveWork − energy.sliderWork \[J\]: constant in exact arithmetic (docs/design.md,
+    /// "Energy account").
+    pub fn energy_balance(&self) -> f64 {
+        self.kinetic_energy
+            + self.deformation_energy
+            + self.contact_energy
+            + self.gravity_energy
+            + self.dissipated_energy
+            + self.material_damping
+            - self.drive_work
+            - self.slider_work
+    }
+}
+
 pub(super) fn outputs(
     mechanism: &mut SliderCrank,
     time: f64,

@@ -2,27 +2,13 @@
 
 use super::*;
 
-/// The energy account from the outputs alone: energy.kinetic + rod.deformationEnergy +
-/// energy.contact + energy.gravity + energy.dissipated + energy.materialDamping −
-/// energy.driveWork − energy.sliderWork, constant in exact arithmetic.
-fn output_balance(o: &Outputs) -> f64 {
-    o.kinetic_energy
-        + o.deformation_energy
-        + o.contact_energy
-        + o.gravity_energy
-        + o.dissipated_energy
-        + o.material_damping
-        - o.drive_work
-        - o.slider_work
-}
-
 /// Largest |balance(t) − balance(0)| of the outputs over a run, relative to the largest kinetic
 /// energy.
 pub(crate) fn output_balance_residual(rows: &[Outputs]) -> f64 {
     let kinetic = rows.iter().fold(0.0f64, |m, o| m.max(o.kinetic_energy));
-    let start = output_balance(&rows[0]);
+    let start = rows[0].energy_balance();
     rows.iter()
-        .fold(0.0f64, |m, o| m.max((output_balance(o) - start).abs()))
+        .fold(0.0f64, |m, o| m.max((o.energy_balance() - start).abs()))
         / kinetic
 }
 
