@@ -59,18 +59,32 @@ impl SliderCrank {
             .map(|i| p_dot[i] * (0..p_dot.len()).map(|j| m[(i, j)] * p_dot[j]).sum::<f64>())
             .sum();
         let (crank, slider) = (y[l.crank_speed()], y[l.slider_velocity()]);
-        0.5 * (self.crank_inertia * crank * crank + rod + self.slider_mass * slider * slider)
+        let kinetic =
+            0.5 * (self.crank_inertia * crank * crank + rod + self.slider_mass * slider * slider);
+        match self.crank_reference(y) {
+            Some((_, v_g)) => kinetic + 0.5 * self.crank_mass * v_g.norm_squared(),
+            None => kinetic,
+        }
     }
 
-    /// Gravitational potential −m g·r of the crank (centre of mass at (r_c/2)(cos θ, sin θ)) and of
-    /// the slider (at (x_s, 0)) \[J\]; the rod's is −Q_gᵀp (its gravity load is constant).
-    fn gravity_potential(&self, theta: f64, x_s: f64) -> f64 {
+    /// Gravitational potential −m g·r of the crank (centre of mass r_G, at (r_c/2)(cos θ, sin θ) on
+    /// the fixed pivot) and of the slider (at (x_s, 0)) \[J\]; the rod's is −Q_gᵀp (its gravity
+    /// load is constant).
+    fn gravity_potential(&self, y: &[f64]) -> f64 {
         if self.gravity == nalgebra::Vector2::zeros() {
             return 0.0;
         }
-        let (sin, cos) = math::sin_cos(theta);
-        -self.crank_mass * 0.5 * self.crank_length * (self.gravity.x * cos + self.gravity.y * sin)
-            - self.slider_mass * self.gravity.x * x_s
+        let crank = match self.crank_reference(y) {
+            Some((r_g, _)) => -self.crank_mass * self.gravity.dot(&r_g),
+            None => {
+                let (sin, cos) = math::sin_cos(y[CRANK_ANGLE]);
+                -self.crank_mass
+                    * 0.5
+                    * self.crank_length
+                    * (self.gravity.x * cos + self.gravity.y * sin)
+            }
+        };
+        crank - self.slider_mass * self.gravity.x * y[self.layout.slider()]
     }
 
     /// Energies of a state (evaluates the joint forces for the stored contact energy).
@@ -82,7 +96,7 @@ impl SliderCrank {
             kinetic: self.kinetic_energy(y),
             strain: self.rod.strain_energy(p),
             contact: self.contact_potential(y),
-            gravity: self.gravity_potential(y[CRANK_ANGLE], y[l.slider()]) - rod_gravity,
+            gravity: self.gravity_potential(y) - rod_gravity,
             drive_work: y[l.drive_work()],
             joint_work: y[l.joint_work()],
             external_work: y[l.external_work()],

@@ -17,9 +17,11 @@ impl SliderCrank {
     /// ```text
     /// θ, θ_d          ℓ / r_c               θ̇            V / r_c
     /// rod coordinate  ℓ / d_j               its rate     V / d_j
-    /// x_s             ℓ                     ẋ_s          V
+    /// x_s, r_G        ℓ                     ẋ_s, ṙ_G     V
     /// works           ½ m (ω₀ r_c)² ℓ / r_c,   m = I_O/r_c² + m_rod + m_slider
     /// ```
+    /// (r_G: the centre of mass of a crank free in a clearance main bearing; I_O the crank's
+    /// inertia about its pivot.)
     /// with d_j the largest displacement along the rod per unit of coordinate j (1 for positions,
     /// ≈ (4/27) l_e for ANCF slopes, the mode shape's largest value for modal amplitudes). A
     /// coordinate whose unit moves the rod little gets a proportionally larger scale, so the
@@ -36,8 +38,14 @@ impl SliderCrank {
         let length = self.position_scale;
         let speed = self.reference_speed * length;
         let pin_speed = self.reference_speed * self.crank_length;
-        let mass =
-            self.crank_inertia / self.crank_length.powi(2) + self.rod_mass + self.slider_mass;
+        let free_crank_inertia = if self.active.free_crank {
+            self.crank_mass * self.crank_centre * self.crank_centre
+        } else {
+            0.0
+        };
+        let mass = (self.crank_inertia + free_crank_inertia) / self.crank_length.powi(2)
+            + self.rod_mass
+            + self.slider_mass;
         let mut scales = vec![0.0; l.n_states()];
         scales[CRANK_ANGLE] = length / self.crank_length;
         scales[l.crank_speed()] = speed / self.crank_length;
@@ -47,6 +55,11 @@ impl SliderCrank {
         }
         scales[l.slider()] = length;
         scales[l.slider_velocity()] = speed;
+        if let Some(g) = l.crank_centre() {
+            let rate = l.rate_of(g);
+            scales[g..g + 2].fill(length);
+            scales[rate..rate + 2].fill(speed);
+        }
         scales[l.drive_angle()] = scales[CRANK_ANGLE];
         for s in &mut scales[l.integrals()] {
             *s = 0.5 * mass * pin_speed * pin_speed * length / self.crank_length;
@@ -76,8 +89,10 @@ impl SliderCrank {
     /// The local errors of the held quantities for the error estimate `err` of a step ending at
     /// `y` ([`crate::integrator::MechanicalSystem::held_errors`]): each dry journal's normal
     /// velocity in its bearing, δ̇ = n · ė, with n the direction of e at the step's end and the
-    /// error of ė from those of the velocities it is made of (at the crank pin, ė = ṙ_P − ṙ_A with
-    /// ṙ_P = r_c θ̇ (−sin θ, cos θ), whose error is r_c (−sin θ, cos θ) δθ̇ − r_c θ̇ (cos θ, sin θ) δθ).
+    /// error of ė from those of the velocities it is made of: at the crank pin ė = ṙ_P − ṙ_A with
+    /// ṙ_P = ṙ_O + d θ̇ (−sin θ, cos θ), whose error is δṙ_O + d (−sin θ, cos θ) δθ̇
+    /// − d θ̇ (cos θ, sin θ) δθ; at the main bearing ė = ṙ_G + a θ̇ (sin θ, −cos θ), whose error is
+    /// δṙ_G + a (sin θ, −cos θ) δθ̇ + a θ̇ (cos θ, sin θ) δθ.
     pub(super) fn journal_held_errors(&self, y: &[f64], err: &[f64], out: &mut [f64]) {
         let l = self.layout;
         for (role, out) in self.held_joints().zip(out) {
@@ -89,22 +104,29 @@ impl SliderCrank {
                         (err[rate] - err[l.slider_velocity()], err[rate + 1]),
                     )
                 }
-                JointRole::CrankPin => {
+                JointRole::CrankPin | JointRole::MainBearing => {
                     let e = self.joint_kinematics(role, y).e;
                     let (sin, cos) = crate::math::sin_cos(y[CRANK_ANGLE]);
-                    let r_c = self.crank_length;
                     let (d_angle, d_speed) = (err[CRANK_ANGLE], err[l.crank_speed()]);
                     let omega = y[l.crank_speed()];
-                    let rate = l.rate_of(PIN_A);
-                    normal_rate_error(
-                        (e.x, e.y),
+                    let centre = l
+                        .crank_centre()
+                        .map_or((0.0, 0.0), |g| (err[l.rate_of(g)], err[l.rate_of(g) + 1]));
+                    let (x, y) = if role == JointRole::CrankPin {
+                        let (d, rate) = (self.crank_arm, l.rate_of(PIN_A));
                         (
-                            -r_c * sin * d_speed - r_c * omega * cos * d_angle - err[rate],
-                            r_c * cos * d_speed - r_c * omega * sin * d_angle - err[rate + 1],
-                        ),
-                    )
+                            -d * sin * d_speed - d * omega * cos * d_angle - err[rate],
+                            d * cos * d_speed - d * omega * sin * d_angle - err[rate + 1],
+                        )
+                    } else {
+                        let a = self.crank_centre;
+                        (
+                            a * sin * d_speed + a * omega * cos * d_angle,
+                            -a * cos * d_speed + a * omega * sin * d_angle,
+                        )
+                    };
+                    normal_rate_error((e.x, e.y), (x + centre.0, y + centre.1))
                 }
-                JointRole::MainBearing => 0.0,
             };
         }
     }

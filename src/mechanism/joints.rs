@@ -3,13 +3,15 @@
 //!
 //! ```text
 //! joint        journal (ω_j)               bearing (ω_b)           e = r_journal − r_bearing
-//! main bearing crank pivot (θ̇)             ground (0)              0 (ideal only)
-//! crank pin    crank pin r_P (θ̇)           rod's eye at A (ω_A)    r_c (cos θ, sin θ) − r_A
+//! main bearing crank's pivot (θ̇)           ground (0)              r_G − a (cos θ, sin θ)
+//! crank pin    crank pin r_P (θ̇)           rod's eye at A (ω_A)    r_O + d (cos θ, sin θ) − r_A
 //! rod–slider   rod's pin at B (ω_B)         slider (0)              r_B − (x_s, 0)
 //! ```
-//! ω_A, ω_B are the rod's rotations at its ends. The force F and moment M_j act on the journal,
-//! −F and M_b on the bearing: at the crank pin the crank receives the torque r_P × F + M_j about
-//! its pivot and the rod −F at A with the moment M_b.
+//! ω_A, ω_B are the rod's rotations at its ends, r_O and d the crank's reference point and the
+//! pin's distance from it (the fixed pivot, 0 and r_c; or the free crank's centre of mass r_G and
+//! r_c − a, with a = r_c/2 from the pivot). The force F and moment M_j act on the journal, −F and
+//! M_b on the bearing: the crank receives F at its pin (crank pin) or at its pivot (main bearing)
+//! and the moment M_j, and the rod −F at A with the moment M_b.
 
 use nalgebra::Vector2;
 
@@ -19,10 +21,14 @@ use crate::joint::{Joint, JointForce, JointKinematics, JointRole};
 use crate::math;
 use crate::reduction::RodEnd;
 
-/// The crank pin's clearance-joint load of one evaluation.
+/// The load of a clearance joint on the crank (the crank pin or the main bearing) in one
+/// evaluation.
 #[derive(Clone, Copy, Debug)]
-pub(super) struct CrankPinLoad {
-    /// Torque on the crank about its pivot, r_P × F + M_j \[N m\].
+pub(super) struct CrankLoad {
+    /// Force on the crank, F \[N\].
+    pub force: Vector2<f64>,
+    /// Torque on the crank about its reference point r_O, (r − r_O) × F + M_j with r the
+    /// journal's centre \[N m\].
     pub torque: f64,
     /// Power of the joint's forces on journal and bearing ([`JointKinematics::power`]) \[W\].
     pub power: f64,
@@ -41,24 +47,50 @@ impl SliderCrank {
         !matches!(self.joint(role), Joint::Ideal)
     }
 
+    /// The crank's reference point r_O and its velocity: the fixed pivot (at rest at the origin)
+    /// or the free crank's centre of mass.
+    pub(super) fn crank_reference(&self, y: &[f64]) -> Option<(Vector2<f64>, Vector2<f64>)> {
+        let l = self.layout;
+        l.crank_centre().map(|g| (pair(y, g), pair(y, l.rate_of(g))))
+    }
+
     /// Journal–bearing kinematics of the joint `role` in state `y`.
     pub fn joint_kinematics(&self, role: JointRole, y: &[f64]) -> JointKinematics {
         let l = self.layout;
         let (p, p_dot) = (&y[l.rod()], &y[l.rod_rates()]);
         let (theta, omega) = (y[CRANK_ANGLE], y[l.crank_speed()]);
         match role {
-            JointRole::MainBearing => JointKinematics {
-                e: Vector2::zeros(),
-                e_dot: Vector2::zeros(),
-                omega_journal: omega,
-                omega_bearing: 0.0,
-            },
+            JointRole::MainBearing => {
+                let (e, e_dot) = match self.crank_reference(y) {
+                    Some((r_g, v_g)) => {
+                        let (sin, cos) = math::sin_cos(theta);
+                        let a = self.crank_centre;
+                        (
+                            r_g - a * Vector2::new(cos, sin),
+                            v_g + a * omega * Vector2::new(sin, -cos),
+                        )
+                    }
+                    None => (Vector2::zeros(), Vector2::zeros()),
+                };
+                JointKinematics {
+                    e,
+                    e_dot,
+                    omega_journal: omega,
+                    omega_bearing: 0.0,
+                }
+            }
             JointRole::CrankPin => {
                 let (sin, cos) = math::sin_cos(theta);
-                let r_c = self.crank_length;
+                let d = self.crank_arm;
+                let mut e = d * Vector2::new(cos, sin) - pair(y, PIN_A);
+                let mut e_dot = d * omega * Vector2::new(-sin, cos) - pair(y, l.rate_of(PIN_A));
+                if let Some((r_o, v_o)) = self.crank_reference(y) {
+                    e += r_o;
+                    e_dot += v_o;
+                }
                 JointKinematics {
-                    e: r_c * Vector2::new(cos, sin) - pair(y, PIN_A),
-                    e_dot: r_c * omega * Vector2::new(-sin, cos) - pair(y, l.rate_of(PIN_A)),
+                    e,
+                    e_dot,
                     omega_journal: omega,
                     omega_bearing: self.rod.end_angular_velocity(RodEnd::CrankPin, p, p_dot),
                 }
@@ -88,7 +120,7 @@ impl SliderCrank {
     /// The crank pin's clearance-joint force in state `y` applied to the rod (−F at its end A and
     /// the bearing moment M_b on its eye, added to the rod's generalised forces `rod_force`), with
     /// the crank's share returned; `None` for the ideal crank pin (a constraint).
-    pub(super) fn apply_crank_pin(&self, y: &[f64], rod_force: &mut [f64]) -> Option<CrankPinLoad> {
+    pub(super) fn apply_crank_pin(&self, y: &[f64], rod_force: &mut [f64]) -> Option<CrankLoad> {
         if !self.has_clearance(JointRole::CrankPin) {
             return None;
         }
@@ -98,13 +130,30 @@ impl SliderCrank {
         let p = &y[self.layout.rod()];
         self.rod
             .add_end_moment(RodEnd::CrankPin, p, f.bearing_moment, rod_force);
+        Some(self.crank_load(y, self.crank_arm, &f, &kin))
+    }
+
+    /// The main bearing's clearance-joint load on the free crank in state `y`; `None` for the ideal
+    /// main bearing (the fixed pivot).
+    pub(super) fn main_bearing_load(&self, y: &[f64]) -> Option<CrankLoad> {
+        if !self.active.free_crank {
+            return None;
+        }
+        let (f, kin) = self.joint_force(JointRole::MainBearing, y);
+        Some(self.crank_load(y, -self.crank_centre, &f, &kin))
+    }
+
+    /// The load on the crank of the joint force `f` whose journal lies at `arm` from the crank's
+    /// reference point along the crank, with the joint's power from its kinematics `kin`.
+    fn crank_load(&self, y: &[f64], arm: f64, f: &JointForce, kin: &JointKinematics) -> CrankLoad {
         let (sin, cos) = math::sin_cos(y[CRANK_ANGLE]);
-        let arm = self.crank_length * Vector2::new(cos, sin);
-        Some(CrankPinLoad {
+        let arm = arm * Vector2::new(cos, sin);
+        CrankLoad {
+            force: f.force,
             torque: arm.x * f.force.y - arm.y * f.force.x + f.moment,
-            power: kin.power(&f),
+            power: kin.power(f),
             potential: f.potential,
-        })
+        }
     }
 
     /// Elastic energy stored in the contacts of every clearance joint in state `y` \[J\].

@@ -1,10 +1,12 @@
 //! Where each quantity sits in the mechanism's state vector,
 //! ```text
-//! y = [θ, p, x_s,  θ̇, ṗ, ẋ_s,  θ_d, W_drive, W_joint, W_external, (D_material)]
-//!      └ n coordinates ┘ └ n velocities ┘
+//! y = [θ, p, x_s, (r_G),  θ̇, ṗ, ẋ_s, (ṙ_G),  θ_d, W_drive, W_joint, W_external, (D_material)]
+//!      └─ n coordinates ─┘ └── n velocities ──┘
 //! ```
-//! with p the rod's n − 2 coordinates, whose pin A position comes first and pin B position at the
-//! rod's end offset. Every index into a state goes through [`StateLayout`].
+//! with p the rod's coordinates, whose pin A position comes first and pin B position at the rod's
+//! end offset, and r_G = (x_G, y_G) the crank's centre of mass, a coordinate only when the crank
+//! is free in a clearance main bearing (a fixed pivot otherwise). Every index into a state goes
+//! through [`StateLayout`].
 
 use std::ops::{Range, RangeFrom};
 
@@ -13,12 +15,16 @@ use nalgebra::Vector2;
 /// The positions of the mechanism's quantities in its state vector.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct StateLayout {
-    /// Number of coordinates n = 1 + n_rod + 1.
+    /// Number of coordinates n = 1 + n_rod + 1 (+ 2 for a free crank).
     n: usize,
+    /// Number of the rod's coordinates.
+    n_rod: usize,
     /// Position of pin B's x among the rod's coordinates.
     pin_b: usize,
     /// Whether the state ends with the energy dissipated by material damping.
     material_damping: bool,
+    /// Whether the crank's centre of mass is a coordinate (a clearance main bearing).
+    free_crank: bool,
 }
 
 /// Position of the crank angle θ.
@@ -32,12 +38,15 @@ pub fn pair(y: &[f64], at: usize) -> Vector2<f64> {
 }
 
 impl StateLayout {
-    /// The layout of a rod with `n_rod` coordinates whose pin B x is the rod coordinate `pin_b`.
-    pub fn new(n_rod: usize, pin_b: usize, material_damping: bool) -> Self {
+    /// The layout of a rod with `n_rod` coordinates whose pin B x is the rod coordinate `pin_b`,
+    /// and of a crank on a fixed pivot or, with `free_crank`, free in the main bearing.
+    pub fn new(n_rod: usize, pin_b: usize, material_damping: bool, free_crank: bool) -> Self {
         Self {
-            n: n_rod + 2,
+            n: n_rod + 2 + 2 * usize::from(free_crank),
+            n_rod,
             pin_b,
             material_damping,
+            free_crank,
         }
     }
 
@@ -63,7 +72,7 @@ impl StateLayout {
 
     /// The rod's coordinates p.
     pub fn rod(self) -> Range<usize> {
-        1..self.n - 1
+        1..1 + self.n_rod
     }
 
     /// The rod's coordinate j.
@@ -73,7 +82,7 @@ impl StateLayout {
 
     /// The rod's rates ṗ.
     pub fn rod_rates(self) -> Range<usize> {
-        self.n + 1..2 * self.n - 1
+        self.n + 1..self.n + 1 + self.n_rod
     }
 
     /// The rate of the rod's coordinate j.
@@ -88,7 +97,12 @@ impl StateLayout {
 
     /// The slider abscissa x_s.
     pub fn slider(self) -> usize {
-        self.n - 1
+        1 + self.n_rod
+    }
+
+    /// The crank's centre of mass x_G (y_G follows), if the crank is free in the main bearing.
+    pub fn crank_centre(self) -> Option<usize> {
+        self.free_crank.then_some(2 + self.n_rod)
     }
 
     /// The velocity of the coordinate at `position` (< n).
@@ -144,8 +158,13 @@ mod tests {
     /// Every state has exactly one place: the named positions and ranges tile 0..len.
     #[test]
     fn positions_tile_the_state() {
-        for (n_rod, pin_b, damping) in [(4, 2, false), (20, 10, true), (36, 32, false)] {
-            let l = StateLayout::new(n_rod, pin_b, damping);
+        for (n_rod, pin_b, damping, free) in [
+            (4, 2, false, false),
+            (20, 10, true, false),
+            (36, 32, false, true),
+            (12, 8, true, true),
+        ] {
+            let l = StateLayout::new(n_rod, pin_b, damping, free);
             let mut seen = vec![0; l.n_states()];
             let mut mark = |i: usize| seen[i] += 1;
             mark(CRANK_ANGLE);
@@ -154,6 +173,11 @@ mod tests {
             mark(l.crank_speed());
             l.rod_rates().for_each(&mut mark);
             mark(l.slider_velocity());
+            if let Some(g) = l.crank_centre() {
+                [g, g + 1, l.rate_of(g), l.rate_of(g) + 1]
+                    .into_iter()
+                    .for_each(&mut mark);
+            }
             mark(l.drive_angle());
             (l.drive_work()..l.n_states()).for_each(&mut mark);
             assert!(seen.iter().all(|&k| k == 1), "{seen:?}");

@@ -3,7 +3,8 @@
 //!
 //! ```text
 //! crank pin     F_A = m_rod a_G,rod − F_B − m_rod g          (the rod's linear momentum)
-//! main bearing  F_O = m_c a_G,crank + F_A − m_c g             (the crank's)
+//! main bearing  F_O = m_c a_G,crank + F_A − m_c g             (the crank's; its clearance
+//!                                                               joint's force on a free crank)
 //! guide         N   = F_B,y − m_s g_y                         (the slider's y equation)
 //! axial force   N_A = −F_A · t_A,   N_B = F_B · t_B           (tension positive)
 //! ```
@@ -63,11 +64,16 @@ impl SliderCrank {
                 .sum(),
         );
         let crank_pin = momentum_rate - joint_force - self.rod_mass * self.gravity;
-        let (theta, omega, alpha) = (y[CRANK_ANGLE], y[l.crank_speed()], dy[l.crank_speed()]);
-        let (sin, cos) = math::sin_cos(theta);
-        let crank_centre_acceleration = 0.5
-            * self.crank_length
-            * (alpha * Vector2::new(-sin, cos) - omega * omega * Vector2::new(cos, sin));
+        let crank_centre_acceleration = match l.crank_centre() {
+            Some(g) => pair(dy, l.rate_of(g)),
+            None => {
+                let (theta, omega) = (y[CRANK_ANGLE], y[l.crank_speed()]);
+                let alpha = dy[l.crank_speed()];
+                let (sin, cos) = math::sin_cos(theta);
+                self.crank_centre
+                    * (alpha * Vector2::new(-sin, cos) - omega * omega * Vector2::new(cos, sin))
+            }
+        };
         let main_bearing = self.crank_mass * crank_centre_acceleration + crank_pin
             - self.crank_mass * self.gravity;
         let deformation = match &mut self.rod {

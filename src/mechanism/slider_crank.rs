@@ -3,7 +3,7 @@
 
 use nalgebra::{SMatrix, Vector2};
 
-use super::constraints::{Active, ConstraintState, Constraints, Vector6};
+use super::constraints::{Active, ConstraintState, Constraints, S_MAX, Vector6, VectorS};
 use super::inputs::{InputSignal, Inputs};
 use super::layout::{CRANK_ANGLE, PIN_A, StateLayout, pair};
 use super::rod_body::RodBody;
@@ -44,7 +44,14 @@ pub struct SliderCrank {
     pub(super) drive: DriveMode,
     pub(super) active: Active,
     pub(super) crank_length: f64,
+    /// Distance a from the crank's pivot to its pin-side centre of mass, r_c/2 \[m\].
+    pub(super) crank_centre: f64,
+    /// The crank pin's distance d from the crank's reference point: r_c from the fixed pivot,
+    /// r_c − a from the free crank's centre of mass \[m\].
+    pub(super) crank_arm: f64,
     pub(super) crank_mass: f64,
+    /// The crank's inertia in its rotation θ: about the fixed pivot, or about the free crank's
+    /// centre of mass \[kg m²\].
     pub(super) crank_inertia: f64,
     pub(super) slider_mass: f64,
     /// Gravitational acceleration \[m/s²\].
@@ -65,7 +72,7 @@ pub struct SliderCrank {
     /// M_rod⁻¹ e_j for j ∈ {A_x, A_y, B_x, B_y}, column-major (n_rod × 4).
     pub(super) rod_compliance: Vec<f64>,
     /// W = E_sᵀ M⁻¹ E_s.
-    pub(super) w: SMatrix<f64, 6, 6>,
+    pub(super) w: SMatrix<f64, S_MAX, S_MAX>,
     pub(super) rod_gravity: Vec<f64>,
     /// Where each quantity sits in the state vector.
     pub(super) layout: StateLayout,
@@ -108,10 +115,20 @@ impl SliderCrank {
                 .map(|i| (0..t.len()).map(|j| m[(i, j)] * t[j]).sum())
                 .collect()
         });
-        let crank_inertia = p.crank_inertia_about_pivot();
-        let mut w = SMatrix::<f64, 6, 6>::zeros();
+        let free_crank = p.main_bearing.model != JointModel::Ideal;
+        let crank_centre = 0.5 * p.crank_length;
+        let (crank_inertia, crank_arm) = if free_crank {
+            (p.crank_inertia, p.crank_length - crank_centre)
+        } else {
+            (p.crank_inertia_about_pivot(), p.crank_length)
+        };
+        let mut w = SMatrix::<f64, S_MAX, S_MAX>::zeros();
         w[(0, 0)] = 1.0 / crank_inertia;
         w[(5, 5)] = 1.0 / p.slider_mass;
+        if free_crank {
+            w[(6, 6)] = 1.0 / p.crank_mass;
+            w[(7, 7)] = 1.0 / p.crank_mass;
+        }
         for i in 0..4 {
             for j in 0..4 {
                 w[(1 + i, 1 + j)] = rod_compliance[j * n_rod + pins[i]];
@@ -122,6 +139,7 @@ impl SliderCrank {
             ideal_joint: p.joint.model == JointModel::Ideal,
             rigid_rod: rod.rigid_length().is_some(),
             speed_drive: p.drive_mode == DriveMode::Speed,
+            free_crank,
         };
         Ok(Self {
             rod_gravity: rod.gravity_force(p.gravity_vector()),
@@ -129,11 +147,14 @@ impl SliderCrank {
                 n_rod,
                 b,
                 rod.rigid_length().is_none() && p.rod.stiffness_damping > 0.0,
+                free_crank,
             ),
             joints: p.joints().map(|(_, joint)| Joint::new(joint)),
             drive: p.drive_mode,
             active,
             crank_length: p.crank_length,
+            crank_centre,
+            crank_arm,
             crank_mass: p.crank_mass,
             crank_inertia,
             slider_mass: p.slider_mass,
@@ -157,7 +178,7 @@ impl SliderCrank {
         })
     }
 
-    /// Number of mechanical coordinates n = 1 + n_rod + 1.
+    /// Number of mechanical coordinates n = 1 + n_rod + 1 (+ 2 for a free crank).
     pub fn n_coordinates(&self) -> usize {
         self.layout.n_coordinates()
     }
@@ -243,13 +264,17 @@ impl SliderCrank {
             v_b: pair(y, l.rate_of(l.pin_b())),
             x_s: y[l.slider()],
             v_s: y[l.slider_velocity()],
+            r_o: l.crank_centre().map_or(Vector2::zeros(), |g| pair(y, g)),
+            v_o: l
+                .crank_centre()
+                .map_or(Vector2::zeros(), |g| pair(y, l.rate_of(g))),
         }
     }
 
     pub(super) fn constraints(&self, y: &[f64]) -> Constraints {
         Constraints::evaluate(
             self.active,
-            self.crank_length,
+            self.crank_arm,
             self.rod_length,
             &self.constraint_state(y),
         )
@@ -274,17 +299,17 @@ impl SliderCrank {
 
     /// Solves (C W Cᵀ) x = r on the k active rows (rows of C beyond k are zero; x is zero there).
     pub(super) fn solve_schur(&self, c: &Constraints, r: Vector6) -> Result<Vector6, ModelError> {
-        let k = c.rows;
-        let mut cw = [[0.0; 6]; 6];
+        let (k, n) = (c.rows, self.active.s_len());
+        let mut cw = [[0.0; S_MAX]; 6];
         for (i, row) in cw.iter_mut().enumerate().take(k) {
-            for (j, v) in row.iter_mut().enumerate() {
-                *v = (0..6).map(|m| c.jacobian[(i, m)] * self.w[(m, j)]).sum();
+            for (j, v) in row.iter_mut().enumerate().take(n) {
+                *v = (0..n).map(|m| c.jacobian[(i, m)] * self.w[(m, j)]).sum();
             }
         }
         let mut s = [[0.0; 6]; 6];
         for (i, row) in s.iter_mut().enumerate().take(k) {
             for (j, v) in row.iter_mut().enumerate().take(i + 1) {
-                *v = (0..6).map(|m| cw[i][m] * c.jacobian[(j, m)]).sum();
+                *v = (0..n).map(|m| cw[i][m] * c.jacobian[(j, m)]).sum();
             }
         }
         let mut x = [0.0; 6];
@@ -299,11 +324,15 @@ impl SliderCrank {
     }
 
     /// Adds −G μ to the accelerations (or velocities) `out` for μ on s: M⁻¹ Cᵀλ applied.
-    pub(super) fn subtract_compliance(&self, mu: &Vector6, out: &mut [f64]) {
+    pub(super) fn subtract_compliance(&self, mu: &VectorS, out: &mut [f64]) {
         let l = self.layout;
         let n_rod = l.rod().len();
         out[CRANK_ANGLE] -= mu[0] / self.crank_inertia;
         out[l.slider()] -= mu[5] / self.slider_mass;
+        if let Some(g) = l.crank_centre() {
+            out[g] -= mu[6] / self.crank_mass;
+            out[g + 1] -= mu[7] / self.crank_mass;
+        }
         for j in 0..4 {
             let column = &self.rod_compliance[j * n_rod..(j + 1) * n_rod];
             for (o, g) in out[l.rod()].iter_mut().zip(column) {
@@ -313,18 +342,20 @@ impl SliderCrank {
     }
 
     /// Values of `v` (length n) on s.
-    pub(super) fn on_s(&self, v: &[f64]) -> Vector6 {
+    pub(super) fn on_s(&self, v: &[f64]) -> VectorS {
         let l = self.layout;
         let b = l.pin_b();
-        let slider = v[l.slider()];
-        Vector6::new(
+        let centre = l.crank_centre().map_or([0.0; 2], |g| [v[g], v[g + 1]]);
+        VectorS::from([
             v[CRANK_ANGLE],
             v[PIN_A],
             v[PIN_A + 1],
             v[b],
             v[b + 1],
-            slider,
-        )
+            v[l.slider()],
+            centre[0],
+            centre[1],
+        ])
     }
 
     /// Right-hand side; fills [`SliderCrank::evaluation`].
@@ -346,12 +377,15 @@ impl SliderCrank {
         let mut rod_force = std::mem::take(&mut self.force);
         let crank_pin = self.apply_crank_pin(y, &mut rod_force);
         self.force = rod_force;
+        let main_bearing = self.main_bearing_load(y);
+        let crank_loads = [crank_pin, main_bearing];
         let torque_in = match self.drive {
             DriveMode::Torque => self.inputs.drive_torque,
             DriveMode::Speed => 0.0,
         };
-        // No sine or cosine per evaluation without gravity (the common case).
-        let gravity_torque = if self.gravity == Vector2::zeros() {
+        // No sine or cosine per evaluation without gravity (the common case); gravity acts at the
+        // free crank's reference point, its centre of mass.
+        let gravity_torque = if self.gravity == Vector2::zeros() || self.active.free_crank {
             0.0
         } else {
             // r_G × m_c g with r_G = (r_c/2)(cos θ, sin θ).
@@ -365,10 +399,16 @@ impl SliderCrank {
         let (dq, rest) = dy.split_at_mut(l.n_coordinates());
         let acc = &mut rest[..l.n_coordinates()];
         dq.copy_from_slice(v);
-        acc[CRANK_ANGLE] = match crank_pin {
-            Some(pin) => (torque_in + gravity_torque + pin.torque) / self.crank_inertia,
-            None => (torque_in + gravity_torque) / self.crank_inertia,
-        };
+        let crank_torque_sum = crank_loads
+            .iter()
+            .flatten()
+            .fold(torque_in + gravity_torque, |sum, load| sum + load.torque);
+        acc[CRANK_ANGLE] = crank_torque_sum / self.crank_inertia;
+        if let Some(g) = l.crank_centre() {
+            let force: Vector2<f64> = crank_loads.iter().flatten().map(|load| load.force).sum();
+            acc[g] = force.x / self.crank_mass + self.gravity.x;
+            acc[g + 1] = force.y / self.crank_mass + self.gravity.y;
+        }
         acc[l.rod()].copy_from_slice(&self.force);
         self.rod.solve_mass(&mut acc[l.rod()]);
         acc[l.slider()] =
@@ -387,9 +427,9 @@ impl SliderCrank {
             Some(k) => (-Vector2::new(lambda[k], lambda[k + 1]), 0.0, 0.0),
             None => (joint.force, kin.power(&joint), joint.potential),
         };
-        if let Some(pin) = crank_pin {
-            joint_power += pin.power;
-            contact_potential += pin.potential;
+        for load in crank_loads.iter().flatten() {
+            joint_power += load.power;
+            contact_potential += load.potential;
         }
         dy[l.drive_angle()] = if self.active.speed_drive {
             self.inputs.drive_speed

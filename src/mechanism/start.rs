@@ -43,6 +43,14 @@ impl SliderCrank {
         y[l.crank_speed()] = speed;
         y[l.rod_rates()].copy_from_slice(&p_dot);
         y[l.slider_velocity()] = v_b.x;
+        if let Some(g) = l.crank_centre() {
+            // A free crank starts centred in the main bearing, turning about its centre.
+            let a = self.crank_centre;
+            y[g] = a * cos;
+            y[g + 1] = a * sin;
+            y[l.rate_of(g)] = -a * speed * sin;
+            y[l.rate_of(g) + 1] = a * speed * cos;
+        }
         y[l.drive_angle()] = angle;
         y
     }

@@ -107,13 +107,6 @@ impl Parameters {
         for (role, joint) in self.joints() {
             check_joint(role, joint)?;
         }
-        if self.main_bearing.model != JointModel::Ideal {
-            return Err(ModelError::invalid(
-                JointRole::MainBearing.parameter(JointField::Model),
-                f64::from(self.main_bearing.model as u8 + 1),
-                "{1 (ideal)}: the crank's pivot has no clearance model",
-            ));
-        }
         let tolerance = self.relative_tolerance;
         if self.method == Method::DormandPrince && tolerance > EXPLICIT_MAX_TOLERANCE {
             return Err(ModelError::invalid(
@@ -231,26 +224,26 @@ mod tests {
         assert!(Parameters::default().warnings().is_empty());
     }
 
-    /// The main bearing is ideal only; the crank pin takes every joint model.
+    /// Every joint takes every joint model.
     #[test]
-    fn only_the_crank_pin_can_be_worn_besides_the_rod_slider_joint() {
+    fn every_joint_can_be_worn() {
         for model in [JointModel::Dry, JointModel::Lubricated] {
             let worn = JointParameters {
                 model,
                 ..JointParameters::benchmark()
             };
-            let main_bearing = Parameters {
-                main_bearing: worn,
-                ..Parameters::default()
-            };
-            let message = main_bearing.validate().unwrap_err().to_string();
-            assert!(message.contains("mainBearing.model"), "{message}");
-            Parameters {
-                crank_pin: worn,
-                ..Parameters::default()
+            for p in [
+                Parameters {
+                    main_bearing: worn,
+                    ..Parameters::default()
+                },
+                Parameters {
+                    crank_pin: worn,
+                    ..Parameters::default()
+                },
+            ] {
+                p.validate().unwrap();
             }
-            .validate()
-            .unwrap();
         }
     }
 
