@@ -51,7 +51,8 @@ impl SliderCrank {
     /// or the free crank's centre of mass.
     pub(super) fn crank_reference(&self, y: &[f64]) -> Option<(Vector2<f64>, Vector2<f64>)> {
         let l = self.layout;
-        l.crank_centre().map(|g| (pair(y, g), pair(y, l.rate_of(g))))
+        l.crank_centre()
+            .map(|g| (pair(y, g), pair(y, l.rate_of(g))))
     }
 
     /// Journal–bearing kinematics of the joint `role` in state `y`.

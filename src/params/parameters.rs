@@ -249,6 +249,15 @@ impl Parameters {
         }
     }
 
+    /// The parameters of one joint, to change.
+    pub fn joint_mut(&mut self, role: JointRole) -> &mut JointParameters {
+        match role {
+            JointRole::MainBearing => &mut self.main_bearing,
+            JointRole::CrankPin => &mut self.crank_pin,
+            JointRole::RodSlider => &mut self.joint,
+        }
+    }
+
     /// Crank moment of inertia about the pivot, I_c + m_c (r_c/2)² \[kg m²\].
     pub fn crank_inertia_about_pivot(&self) -> f64 {
         self.crank_inertia + self.crank_mass * (0.5 * self.crank_length).powi(2)

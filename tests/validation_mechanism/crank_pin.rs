@@ -1,29 +1,36 @@
-//! A clearance at the crank pin (the big end): its limits, its energy account, and an independent
-//! formulation of the rigid mechanism.
+//! Clearances at the crank pin (the big end) and at the main bearing (the crank's pivot): their
+//! limits, their energy account, and an independent formulation of the rigid mechanism with a
+//! worn crank pin.
 
 use super::*;
 
-/// The crank pin worn, every other joint ideal.
-fn crank_pin_worn(base: Parameters, model: JointModel, clearance: f64) -> Parameters {
-    Parameters {
+/// The joint `role` worn (benchmark joint with `model` and `clearance`), every other joint ideal.
+fn worn_at(role: JointRole, base: Parameters, model: JointModel, clearance: f64) -> Parameters {
+    let mut p = Parameters {
         joint: JointParameters {
             model: JointModel::Ideal,
             ..base.joint
         },
-        crank_pin: JointParameters {
-            model,
-            clearance,
-            ..JointParameters::benchmark()
-        },
         ..base
-    }
+    };
+    *p.joint_mut(role) = JointParameters {
+        model,
+        clearance,
+        ..JointParameters::benchmark()
+    };
+    p
 }
 
-/// Clearance → 0 at the crank pin alone (rigid rod, dry, 5000 rpm): the slider acceleration
-/// approaches the ideal mechanism's, the RMS error over the second revolution falling at least
-/// 100× from c = 1e-4 to 1e-6 m.
+/// The crank pin worn, every other joint ideal.
+fn crank_pin_worn(base: Parameters, model: JointModel, clearance: f64) -> Parameters {
+    worn_at(JointRole::CrankPin, base, model, clearance)
+}
+
+/// Clearance → 0 at the crank pin alone and at the main bearing alone (rigid rod, dry, 5000 rpm):
+/// the slider acceleration approaches the ideal mechanism's, the RMS error over the second
+/// revolution falling at least 100× from c = 1e-4 to 1e-6 m.
 #[test]
-fn vanishing_crank_pin_clearance_approaches_the_ideal_joint() {
+fn vanishing_crank_pin_and_main_bearing_clearances_approach_the_ideal_joint() {
     let base = Parameters {
         rod_formulation: RodFormulation::Rigid,
         ..Parameters::default()
@@ -33,11 +40,17 @@ fn vanishing_crank_pin_clearance_approaches_the_ideal_joint() {
         2.0 * REVOLUTION,
         400,
     );
+    for role in [JointRole::CrankPin, JointRole::MainBearing] {
+        vanishing_clearance_approaches(role, &base, &ideal);
+    }
+}
+
+fn vanishing_clearance_approaches(role: JointRole, base: &Parameters, ideal: &[Outputs]) {
     let errors: Vec<f64> = [1e-4, 1e-5, 1e-6]
         .iter()
         .map(|&c| {
             let (_, rows) = run(
-                crank_pin_worn(base.clone(), JointModel::Dry, c),
+                worn_at(role, base.clone(), JointModel::Dry, c),
                 2.0 * REVOLUTION,
                 400,
             );
@@ -50,39 +63,39 @@ fn vanishing_crank_pin_clearance_approaches_the_ideal_joint() {
         })
         .collect();
     println!(
-        "crank pin: RMS slider-acceleration error vs ideal for c = 1e-4, 1e-5, 1e-6 m: \
-         {errors:.3?} m/s²"
+        "{}: RMS slider-acceleration error vs ideal for c = 1e-4, 1e-5, 1e-6 m: \
+         {errors:.3?} m/s²",
+        role.prefix()
     );
     assert!(errors[0] > errors[1] && errors[1] > errors[2], "{errors:?}");
     assert!(errors[0] > 100.0 * errors[2], "{errors:?}");
 }
 
-/// The energy account from the outputs closes with the crank pin worn, and its residual over one
-/// revolution falls at least 100× from rtol 1e-4 to 1e-8: the crank pin alone dry (without and with
-/// friction, whose moments act on the crank and on the turning rod eye) and lubricated, and both
-/// pins dry and both lubricated (rigid rod and 4 modes).
+/// The energy account from the outputs closes with the crank pin or the main bearing worn, and
+/// its residual over one revolution falls at least 100× from rtol 1e-4 to 1e-8: each alone dry
+/// (without and with friction, whose moments act on the crank and on the turning rod eye) and
+/// lubricated, both pins dry and both lubricated, and all three joints dry and all three
+/// lubricated (rigid rod and 4 modes).
 #[test]
-fn energy_balance_converges_with_a_worn_crank_pin() {
+fn energy_balance_converges_with_a_worn_crank_pin_and_main_bearing() {
+    use JointModel::{Dry, Ideal, Lubricated};
     for rod_formulation in [RodFormulation::Rigid, RodFormulation::CraigBampton] {
-        for (name, model, slider_pin, friction) in [
-            ("crank pin dry", JointModel::Dry, JointModel::Ideal, 0.0),
+        // (name, main bearing, crank pin, rod–slider joint, friction at the worn crank joint)
+        for (name, main_bearing, crank_pin, slider_pin, friction) in [
+            ("crank pin dry", Ideal, Dry, Ideal, 0.0),
+            ("crank pin dry, μ = 0.2", Ideal, Dry, Ideal, 0.2),
+            ("crank pin lubricated", Ideal, Lubricated, Ideal, 0.0),
+            ("both pins dry", Ideal, Dry, Dry, 0.0),
+            ("both pins lubricated", Ideal, Lubricated, Lubricated, 0.0),
+            ("main bearing dry", Dry, Ideal, Ideal, 0.0),
+            ("main bearing dry, μ = 0.2", Dry, Ideal, Ideal, 0.2),
+            ("main bearing lubricated", Lubricated, Ideal, Ideal, 0.0),
+            ("all three dry", Dry, Dry, Dry, 0.0),
             (
-                "crank pin dry, μ = 0.2",
-                JointModel::Dry,
-                JointModel::Ideal,
-                0.2,
-            ),
-            (
-                "crank pin lubricated",
-                JointModel::Lubricated,
-                JointModel::Ideal,
-                0.0,
-            ),
-            ("both pins dry", JointModel::Dry, JointModel::Dry, 0.0),
-            (
-                "both pins lubricated",
-                JointModel::Lubricated,
-                JointModel::Lubricated,
+                "all three lubricated",
+                Lubricated,
+                Lubricated,
+                Lubricated,
                 0.0,
             ),
         ] {
@@ -93,11 +106,16 @@ fn energy_balance_converges_with_a_worn_crank_pin() {
                         relative_tolerance,
                         ..Parameters::default()
                     },
-                    model,
+                    crank_pin,
                     0.5e-3,
                 );
                 p.joint.model = slider_pin;
                 p.crank_pin.friction = friction;
+                p.main_bearing = JointParameters {
+                    model: main_bearing,
+                    friction,
+                    ..JointParameters::benchmark()
+                };
                 let (_, rows) = run(p, REVOLUTION, 100);
                 super::balance::output_balance_residual(&rows)
             };
