@@ -152,7 +152,7 @@ impl Model for SliderCrankFmu {
     const GUID: &'static str = super::model_description::GUID;
     const LOG_CATEGORIES: &'static [(&'static str, &'static str)] = LOG_CATEGORIES;
     const STATE_MAGIC: [u8; 4] = *b"FSCS";
-    const STATE_VERSION: u32 = 11;
+    const STATE_VERSION: u32 = 12;
 
     fn new() -> Self {
         Self {
@@ -429,6 +429,14 @@ impl Model for SliderCrankFmu {
                     let onsets = self.outputs(log)?.crank_pin_contact_onsets_total;
                     i32::try_from(onsets).unwrap_or(i32::MAX)
                 }
+                Vr::MainBearingContactOnsets => {
+                    let onsets = self.outputs(log)?.main_bearing_contact_onsets;
+                    i32::try_from(onsets).unwrap_or(i32::MAX)
+                }
+                Vr::MainBearingContactOnsetsTotal => {
+                    let onsets = self.outputs(log)?.main_bearing_contact_onsets_total;
+                    i32::try_from(onsets).unwrap_or(i32::MAX)
+                }
                 Vr::SolverWarnings => {
                     let warnings = self.outputs(log)?.warnings;
                     i32::try_from(warnings).unwrap_or(i32::MAX)
@@ -477,6 +485,7 @@ impl Model for SliderCrankFmu {
             *value = match v.vr {
                 Vr::JointInContact => i32::from(self.outputs(log)?.in_contact),
                 Vr::CrankPinInContact => i32::from(self.outputs(log)?.crank_pin_in_contact),
+                Vr::MainBearingInContact => i32::from(self.outputs(log)?.main_bearing_in_contact),
                 _ => unreachable_type(v)?,
             };
         }

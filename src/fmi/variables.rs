@@ -69,6 +69,11 @@ pub const DESCRIPTION: Description<Vr> = Description {
         (Vr::CrankPinEccentricityX, "mm"),
         (Vr::CrankPinEccentricityY, "mm"),
         (Vr::CrankPinPenetration, "mm"),
+        (Vr::MainBearingClearance, "mm"),
+        (Vr::MainBearingJournalRadius, "mm"),
+        (Vr::MainBearingEccentricityX, "mm"),
+        (Vr::MainBearingEccentricityY, "mm"),
+        (Vr::MainBearingPenetration, "mm"),
     ],
     enumerations: ENUMERATIONS,
     log_categories: LOG_CATEGORIES,
@@ -377,17 +382,271 @@ pub enum Vr {
     CrankPinInContact,
     CrankPinContactOnsets,
     CrankPinContactOnsetsTotal,
+    MainBearingModel,
+    MainBearingClearance,
+    MainBearingJournalRadius,
+    MainBearingYoungsModulus,
+    MainBearingPoissonRatio,
+    MainBearingRestitution,
+    MainBearingContactLaw,
+    MainBearingFriction,
+    MainBearingFrictionV0,
+    MainBearingFrictionV1,
+    MainBearingViscosity,
+    MainBearingBearingLength,
+    MainBearingSwitchEccentricity,
+    MainBearingEccentricityX,
+    MainBearingEccentricityY,
+    MainBearingPenetration,
+    MainBearingInContact,
+    MainBearingContactOnsets,
+    MainBearingContactOnsetsTotal,
 }
 
 /// 5000 rpm in rad/s (benchmark B); the same expression as `params::BENCHMARK_SPEED`.
 const SPEED: f64 = 5000.0 * core::f64::consts::TAU / 60.0;
+
+/// The parameters and outputs of a revolute joint that can be worn besides the rod–slider joint
+/// (ideal by default, the benchmark joint's values otherwise): its variable-name prefix, its name
+/// starting a description and inside one, what it joins, what its eccentricity is, its journal,
+/// the parts in contact, and its 19 value references in the order of the rows.
+macro_rules! joint_rows {
+    (
+        $prefix:literal,
+        $label:literal,
+        $name:literal,
+        $joins:literal,
+        $eccentricity:literal,
+        $journal:literal,
+        $parts:literal,
+        [
+            $model:ident,
+            $clearance:ident,
+            $radius:ident,
+            $youngs:ident,
+            $poisson:ident,
+            $restitution:ident,
+            $law:ident,
+            $friction:ident,
+            $v0:ident,
+            $v1:ident,
+            $viscosity:ident,
+            $length:ident,
+            $switch:ident,
+            $ex:ident,
+            $ey:ident,
+            $penetration:ident,
+            $contact:ident,
+            $onsets:ident,
+            $total:ident $(,)?
+        ]
+    ) => {
+        [
+            Variable::enumeration(
+                Vr::$model,
+                concat!($prefix, ".model"),
+                1,
+                1,
+                concat!($label, " joint model (", $joins, ")"),
+            ),
+            Variable::parameter(
+                Vr::$clearance,
+                concat!($prefix, ".clearance"),
+                5e-4,
+                0.0,
+                0.1,
+                "m",
+                concat!(
+                    $label,
+                    ": radial clearance (bearing radius - journal radius)"
+                ),
+            ),
+            Variable::parameter(
+                Vr::$radius,
+                concat!($prefix, ".journalRadius"),
+                9.5e-3,
+                1e-5,
+                1.0,
+                "m",
+                concat!($label, ": ", $journal, " radius"),
+            ),
+            Variable::parameter(
+                Vr::$youngs,
+                concat!($prefix, ".youngsModulus"),
+                207e9,
+                1e6,
+                1e13,
+                "Pa",
+                concat!($label, ": Young's modulus of ", $parts),
+            ),
+            Variable::parameter(
+                Vr::$poisson,
+                concat!($prefix, ".poissonRatio"),
+                0.3,
+                -0.99,
+                0.499,
+                "1",
+                concat!($label, ": Poisson ratio of ", $parts),
+            ),
+            Variable::parameter(
+                Vr::$restitution,
+                concat!($prefix, ".restitution"),
+                0.9,
+                1e-3,
+                1.0,
+                "1",
+                concat!(
+                    $label,
+                    ": coefficient of restitution of the dry contact (see ",
+                    $prefix,
+                    ".contactLaw)"
+                ),
+            ),
+            Variable::enumeration(
+                Vr::$law,
+                concat!($prefix, ".contactLaw"),
+                1,
+                6,
+                concat!($label, ": hysteresis-damping law of the dry contact force"),
+            ),
+            Variable::parameter(
+                Vr::$friction,
+                concat!($prefix, ".friction"),
+                0.0,
+                0.0,
+                2.0,
+                "1",
+                concat!($label, ": Coulomb friction coefficient"),
+            ),
+            Variable::parameter(
+                Vr::$v0,
+                concat!($prefix, ".frictionV0"),
+                1e-4,
+                0.0,
+                1.0,
+                "m/s",
+                concat!($label, ": slip speed below which friction vanishes"),
+            ),
+            Variable::parameter(
+                Vr::$v1,
+                concat!($prefix, ".frictionV1"),
+                1e-3,
+                1e-9,
+                10.0,
+                "m/s",
+                concat!(
+                    $label,
+                    ": slip speed above which friction is fully developed"
+                ),
+            ),
+            Variable::parameter(
+                Vr::$viscosity,
+                concat!($prefix, ".viscosity"),
+                0.4,
+                1e-6,
+                100.0,
+                "Pa.s",
+                concat!($label, ": lubricant dynamic viscosity"),
+            ),
+            Variable::parameter(
+                Vr::$length,
+                concat!($prefix, ".bearingLength"),
+                0.04,
+                1e-5,
+                10.0,
+                "m",
+                concat!($label, ": bearing length"),
+            ),
+            Variable::parameter(
+                Vr::$switch,
+                concat!($prefix, ".switchEccentricity"),
+                0.95,
+                0.01,
+                0.99,
+                "1",
+                concat!(
+                    $label,
+                    ": eccentricity ratio above which dry contact takes over"
+                ),
+            ),
+            Variable::output(
+                Vr::$ex,
+                concat!($prefix, ".eccentricityX"),
+                "m",
+                concat!($eccentricity, ", x (0 for the ideal ", $name, ")"),
+            ),
+            Variable::output(
+                Vr::$ey,
+                concat!($prefix, ".eccentricityY"),
+                "m",
+                concat!($eccentricity, ", y"),
+            ),
+            Variable::output(
+                Vr::$penetration,
+                concat!($prefix, ".penetration"),
+                "m",
+                concat!($label, " contact penetration max(|e| - c, 0)"),
+            ),
+            Variable {
+                vr: Vr::$contact,
+                name: concat!($prefix, ".inContact"),
+                causality: Causality::Output,
+                variability: Variability::Discrete,
+                kind: Kind::Boolean,
+                description: concat!($label, ": ", $parts, " in contact"),
+            },
+            Variable::count(
+                Vr::$onsets,
+                concat!($prefix, ".contactOnsets"),
+                concat!(
+                    "Contact onsets at the ",
+                    $name,
+                    " in the last communication interval"
+                ),
+            ),
+            Variable::count(
+                Vr::$total,
+                concat!($prefix, ".contactOnsetsTotal"),
+                concat!("Contact onsets at the ", $name, " since the start"),
+            ),
+        ]
+    };
+}
 
 /// Every variable, in value-reference order. Defaults are benchmark B (docs/model.md §5(b)).
 ///
 /// There is no `time` variable: FMI 2.0 makes the independent variable optional, and FMIL (used by
 /// the FMU Compliance Checker and libcosim) reports an independent variable without `start` as a
 /// parse error although the standard forbids `start` there.
-pub const VARIABLES: &[Variable] = &[
+pub const VARIABLES: &[Variable] = &concat::<N_VARIABLES>(
+    BASE_VARIABLES,
+    [&CRANK_PIN_VARIABLES, &MAIN_BEARING_VARIABLES],
+);
+
+/// Number of variables.
+const N_VARIABLES: usize = BASE_VARIABLES.len() + 2 * JOINT_ROWS;
+
+/// `base` followed by the rows of each joint in `joints`, as one array of `N` rows.
+const fn concat<const N: usize>(
+    base: &[Variable],
+    joints: [&[Variable; JOINT_ROWS]; 2],
+) -> [Variable; N] {
+    let mut out = [base[0]; N];
+    let mut i = 0;
+    while i < base.len() {
+        out[i] = base[i];
+        i += 1;
+    }
+    let mut j = 0;
+    while j < JOINT_ROWS * joints.len() {
+        out[i + j] = joints[j / JOINT_ROWS][j % JOINT_ROWS];
+        j += 1;
+    }
+    out
+}
+
+/// The variables of the mechanism and of its rod–slider joint, in value-reference order.
+const BASE_VARIABLES: &[Variable] = &[
     Variable::enumeration(
         Vr::RodFormulation,
         "rod.formulation",
@@ -1028,153 +1287,71 @@ pub const VARIABLES: &[Variable] = &[
         7,
         "Where the journal of a clearance joint starts",
     ),
-    Variable::enumeration(
-        Vr::CrankPinModel,
-        "crankPin.model",
-        1,
-        1,
-        "Crank-pin joint model (the crank's pin in the rod's eye, the big end)",
-    ),
-    Variable::parameter(
-        Vr::CrankPinClearance,
-        "crankPin.clearance",
-        5e-4,
-        0.0,
-        0.1,
-        "m",
-        "Crank pin: radial clearance (eye radius - pin radius)",
-    ),
-    Variable::parameter(
-        Vr::CrankPinJournalRadius,
-        "crankPin.journalRadius",
-        9.5e-3,
-        1e-5,
-        1.0,
-        "m",
-        "Crank pin: pin radius",
-    ),
-    Variable::parameter(
-        Vr::CrankPinYoungsModulus,
-        "crankPin.youngsModulus",
-        207e9,
-        1e6,
-        1e13,
-        "Pa",
-        "Crank pin: Young's modulus of pin and eye",
-    ),
-    Variable::parameter(
-        Vr::CrankPinPoissonRatio,
-        "crankPin.poissonRatio",
-        0.3,
-        -0.99,
-        0.499,
-        "1",
-        "Crank pin: Poisson ratio of pin and eye",
-    ),
-    Variable::parameter(
-        Vr::CrankPinRestitution,
-        "crankPin.restitution",
-        0.9,
-        1e-3,
-        1.0,
-        "1",
-        "Crank pin: coefficient of restitution of the dry contact (see crankPin.contactLaw)",
-    ),
-    Variable::enumeration(
-        Vr::CrankPinContactLaw,
-        "crankPin.contactLaw",
-        1,
-        6,
-        "Crank pin: hysteresis-damping law of the dry contact force",
-    ),
-    Variable::parameter(
-        Vr::CrankPinFriction,
-        "crankPin.friction",
-        0.0,
-        0.0,
-        2.0,
-        "1",
-        "Crank pin: Coulomb friction coefficient",
-    ),
-    Variable::parameter(
-        Vr::CrankPinFrictionV0,
-        "crankPin.frictionV0",
-        1e-4,
-        0.0,
-        1.0,
-        "m/s",
-        "Crank pin: slip speed below which friction vanishes",
-    ),
-    Variable::parameter(
-        Vr::CrankPinFrictionV1,
-        "crankPin.frictionV1",
-        1e-3,
-        1e-9,
-        10.0,
-        "m/s",
-        "Crank pin: slip speed above which friction is fully developed",
-    ),
-    Variable::parameter(
-        Vr::CrankPinViscosity,
-        "crankPin.viscosity",
-        0.4,
-        1e-6,
-        100.0,
-        "Pa.s",
-        "Crank pin: lubricant dynamic viscosity",
-    ),
-    Variable::parameter(
-        Vr::CrankPinBearingLength,
-        "crankPin.bearingLength",
-        0.04,
-        1e-5,
-        10.0,
-        "m",
-        "Crank pin: bearing length",
-    ),
-    Variable::parameter(
-        Vr::CrankPinSwitchEccentricity,
-        "crankPin.switchEccentricity",
-        0.95,
-        0.01,
-        0.99,
-        "1",
-        "Crank pin: eccentricity ratio above which dry contact takes over",
-    ),
-    Variable::output(
-        Vr::CrankPinEccentricityX,
-        "crankPin.eccentricityX",
-        "m",
-        "Crank pin centre - rod eye centre, x (0 for the ideal crank pin)",
-    ),
-    Variable::output(
-        Vr::CrankPinEccentricityY,
-        "crankPin.eccentricityY",
-        "m",
-        "Crank pin centre - rod eye centre, y",
-    ),
-    Variable::output(
-        Vr::CrankPinPenetration,
-        "crankPin.penetration",
-        "m",
-        "Crank pin contact penetration max(|e| - c, 0)",
-    ),
-    Variable {
-        vr: Vr::CrankPinInContact,
-        name: "crankPin.inContact",
-        causality: Causality::Output,
-        variability: Variability::Discrete,
-        kind: Kind::Boolean,
-        description: "Crank pin and rod eye in contact",
-    },
-    Variable::count(
-        Vr::CrankPinContactOnsets,
-        "crankPin.contactOnsets",
-        "Contact onsets at the crank pin in the last communication interval",
-    ),
-    Variable::count(
-        Vr::CrankPinContactOnsetsTotal,
-        "crankPin.contactOnsetsTotal",
-        "Contact onsets at the crank pin since the start",
-    ),
 ];
+
+/// Number of rows of a revolute clearance joint besides the rod–slider joint ([`joint_rows`]).
+const JOINT_ROWS: usize = 19;
+
+/// The crank pin's parameters and outputs.
+const CRANK_PIN_VARIABLES: [Variable; JOINT_ROWS] = joint_rows!(
+    "crankPin",
+    "Crank pin",
+    "crank pin",
+    "the crank's pin in the rod's eye, the big end",
+    "Crank pin centre - rod eye centre",
+    "pin",
+    "pin and eye",
+    [
+        CrankPinModel,
+        CrankPinClearance,
+        CrankPinJournalRadius,
+        CrankPinYoungsModulus,
+        CrankPinPoissonRatio,
+        CrankPinRestitution,
+        CrankPinContactLaw,
+        CrankPinFriction,
+        CrankPinFrictionV0,
+        CrankPinFrictionV1,
+        CrankPinViscosity,
+        CrankPinBearingLength,
+        CrankPinSwitchEccentricity,
+        CrankPinEccentricityX,
+        CrankPinEccentricityY,
+        CrankPinPenetration,
+        CrankPinInContact,
+        CrankPinContactOnsets,
+        CrankPinContactOnsetsTotal,
+    ]
+);
+
+/// The main bearing's parameters and outputs.
+const MAIN_BEARING_VARIABLES: [Variable; JOINT_ROWS] = joint_rows!(
+    "mainBearing",
+    "Main bearing",
+    "main bearing",
+    "the crank's pivot in the ground",
+    "Crank pivot centre - main bearing centre",
+    "crank journal",
+    "journal and bearing",
+    [
+        MainBearingModel,
+        MainBearingClearance,
+        MainBearingJournalRadius,
+        MainBearingYoungsModulus,
+        MainBearingPoissonRatio,
+        MainBearingRestitution,
+        MainBearingContactLaw,
+        MainBearingFriction,
+        MainBearingFrictionV0,
+        MainBearingFrictionV1,
+        MainBearingViscosity,
+        MainBearingBearingLength,
+        MainBearingSwitchEccentricity,
+        MainBearingEccentricityX,
+        MainBearingEccentricityY,
+        MainBearingPenetration,
+        MainBearingInContact,
+        MainBearingContactOnsets,
+        MainBearingContactOnsetsTotal,
+    ]
+);

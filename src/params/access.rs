@@ -66,6 +66,17 @@ real_fields! {
     CrankPinViscosity => crank_pin.viscosity;
     CrankPinBearingLength => crank_pin.bearing_length;
     CrankPinSwitchEccentricity => crank_pin.switch_eccentricity;
+    MainBearingClearance => main_bearing.clearance;
+    MainBearingJournalRadius => main_bearing.journal_radius;
+    MainBearingYoungsModulus => main_bearing.youngs_modulus;
+    MainBearingPoissonRatio => main_bearing.poisson_ratio;
+    MainBearingRestitution => main_bearing.restitution;
+    MainBearingFriction => main_bearing.friction;
+    MainBearingFrictionV0 => main_bearing.friction_v0;
+    MainBearingFrictionV1 => main_bearing.friction_v1;
+    MainBearingViscosity => main_bearing.viscosity;
+    MainBearingBearingLength => main_bearing.bearing_length;
+    MainBearingSwitchEccentricity => main_bearing.switch_eccentricity;
     Gravity => gravity;
     GravityAngle => gravity_angle;
     SolverRelativeTolerance => relative_tolerance;
@@ -129,6 +140,10 @@ integer_fields! {
         CrankPinModel => crank_pin.model:
             [JointModel::Ideal, JointModel::Dry, JointModel::Lubricated];
         CrankPinContactLaw => crank_pin.contact_law:
+            [ContactLaw::LankaraniNikravesh, ContactLaw::Flores, ContactLaw::HuGuo];
+        MainBearingModel => main_bearing.model:
+            [JointModel::Ideal, JointModel::Dry, JointModel::Lubricated];
+        MainBearingContactLaw => main_bearing.contact_law:
             [ContactLaw::LankaraniNikravesh, ContactLaw::Flores, ContactLaw::HuGuo];
     }
     counts {

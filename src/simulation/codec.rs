@@ -175,7 +175,7 @@ impl<'a> ByteReader<'a> {
             main_bearing_force: self.f64()?,
             guide_force: self.f64()?,
             rod_stress: self.f64()?,
-            contact_onsets: [self.u64()?, self.u64()?],
+            contact_onsets: [self.u64()?, self.u64()?, self.u64()?],
         })
     }
     /// Reads an input signal.

@@ -390,7 +390,7 @@ impl Simulation {
     /// Evaluates the end of the step just accepted for the peak-hold outputs.
     fn record_step_end(&mut self) -> Result<(), ModelError> {
         let end = self.mechanism.contact_state();
-        let onsets = [JointRole::RodSlider, JointRole::CrankPin]
+        let onsets = JointRole::ALL
             .map(|role| u64::from(!self.contact_start[role].in_contact && end[role].in_contact));
         self.mechanism.set_time(self.step_end);
         let at_end = match self.mechanism.clearance_joint_load(&self.y_end) {

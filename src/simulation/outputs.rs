@@ -52,6 +52,15 @@ pub struct Outputs {
     pub crank_pin_penetration: f64,
     /// Whether the crank pin touches the rod's eye.
     pub crank_pin_in_contact: bool,
+    /// The main bearing's eccentricity e = crank pivot centre − bearing centre, x \[m\] (0 for
+    /// the ideal main bearing).
+    pub main_bearing_eccentricity_x: f64,
+    /// The main bearing's eccentricity, y \[m\].
+    pub main_bearing_eccentricity_y: f64,
+    /// The main bearing's penetration max(|e| − c, 0) \[m\].
+    pub main_bearing_penetration: f64,
+    /// Whether the crank's pivot touches the main bearing.
+    pub main_bearing_in_contact: bool,
     /// Rod mid-span deflection relative to the chord, left positive \[m\].
     pub midspan_deflection: f64,
     /// Rod strain (deformation) energy \[J\].
@@ -114,6 +123,10 @@ pub struct Outputs {
     pub crank_pin_contact_onsets: u64,
     /// Contact onsets at the crank pin since the start.
     pub crank_pin_contact_onsets_total: u64,
+    /// Contact onsets at the main bearing in the last communication interval.
+    pub main_bearing_contact_onsets: u64,
+    /// Contact onsets at the main bearing since the start.
+    pub main_bearing_contact_onsets_total: u64,
     /// Warnings raised since the start ([`super::Simulation::take_warnings`]).
     pub warnings: u64,
 }
@@ -151,12 +164,16 @@ pub(super) fn outputs(
     let l = mechanism.layout();
     let kin = mechanism.joint_kinematics(JointRole::RodSlider, y);
     let penetration = mechanism.penetration(JointRole::RodSlider, y);
-    let crank_pin = if mechanism.has_clearance(JointRole::CrankPin) {
-        mechanism.joint_kinematics(JointRole::CrankPin, y).e
-    } else {
-        nalgebra::Vector2::zeros()
+    let clearance = |role| {
+        let e = if mechanism.has_clearance(role) {
+            mechanism.joint_kinematics(role, y).e
+        } else {
+            nalgebra::Vector2::zeros()
+        };
+        (e, mechanism.penetration(role, y))
     };
-    let crank_pin_penetration = mechanism.penetration(JointRole::CrankPin, y);
+    let (crank_pin, crank_pin_penetration) = clearance(JointRole::CrankPin);
+    let (main_bearing, main_bearing_penetration) = clearance(JointRole::MainBearing);
     let energies = mechanism.energies(y);
     Ok(Outputs {
         time,
@@ -180,6 +197,10 @@ pub(super) fn outputs(
         crank_pin_eccentricity_y: crank_pin.y,
         crank_pin_penetration: crank_pin_penetration.max(0.0),
         crank_pin_in_contact: crank_pin_penetration > 0.0,
+        main_bearing_eccentricity_x: main_bearing.x,
+        main_bearing_eccentricity_y: main_bearing.y,
+        main_bearing_penetration: main_bearing_penetration.max(0.0),
+        main_bearing_in_contact: main_bearing_penetration > 0.0,
         midspan_deflection: mechanism.midspan_deflection(y),
         deformation_energy: energies.strain,
         kinetic_energy: energies.kinetic,
@@ -213,10 +234,12 @@ pub(super) fn outputs(
         rod_stress_peak: peaks.interval.rod_stress.max(loads.stress),
         rod_axial_force_crank_pin: loads.axial[0],
         rod_axial_force_slider_pin: loads.axial[1],
-        contact_onsets: peaks.interval.contact_onsets[0],
-        contact_onsets_total: peaks.total_onsets[0],
-        crank_pin_contact_onsets: peaks.interval.contact_onsets[1],
-        crank_pin_contact_onsets_total: peaks.total_onsets[1],
+        contact_onsets: peaks.interval.contact_onsets[JointRole::RodSlider as usize],
+        contact_onsets_total: peaks.total_onsets[JointRole::RodSlider as usize],
+        crank_pin_contact_onsets: peaks.interval.contact_onsets[JointRole::CrankPin as usize],
+        crank_pin_contact_onsets_total: peaks.total_onsets[JointRole::CrankPin as usize],
+        main_bearing_contact_onsets: peaks.interval.contact_onsets[JointRole::MainBearing as usize],
+        main_bearing_contact_onsets_total: peaks.total_onsets[JointRole::MainBearing as usize],
         warnings,
     })
 }

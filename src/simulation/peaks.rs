@@ -23,12 +23,12 @@ pub struct Peaks {
     pub guide_force: f64,
     /// Largest rod stress \[Pa\].
     pub rod_stress: f64,
-    /// Number of contact onsets at the rod–slider joint and at the crank pin.
+    /// Number of contact onsets at each joint.
     pub contact_onsets: Onsets,
 }
 
-/// Contact onsets at the rod–slider joint and at the crank pin.
-pub type Onsets = [u64; 2];
+/// Contact onsets at each joint, indexed by [`crate::joint::JointRole`].
+pub type Onsets = [u64; 3];
 
 /// Number of peak-held quantities.
 const SERIES: usize = 7;
@@ -43,9 +43,8 @@ impl Peaks {
         for (s, o) in sample.iter_mut().zip(other.sample()) {
             *s = s.max(o);
         }
-        let [a, b] = self.contact_onsets;
-        let [c, d] = other.contact_onsets;
-        *self = Self::from_sample(sample, [a + c, b + d]);
+        let onsets = std::array::from_fn(|i| self.contact_onsets[i] + other.contact_onsets[i]);
+        *self = Self::from_sample(sample, onsets);
     }
 
     /// Peaks of one instant's magnitudes `sample` with `contact_onsets` onsets.

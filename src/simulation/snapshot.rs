@@ -152,7 +152,7 @@ impl Snapshot {
                 interval: r.peaks()?,
                 step_end: r.peaks()?,
                 pending: r.flag()?,
-                total_onsets: [r.u64()?, r.u64()?],
+                total_onsets: [r.u64()?, r.u64()?, r.u64()?],
             },
             warnings: r.u64()?,
         })

@@ -56,15 +56,15 @@ impl Monitor {
             })
             .unwrap_or((JointRole::RodSlider, f64::NEG_INFINITY));
         let radius = p.joint(role).journal_radius;
-        let crank_pin_gap = match p.crank_pin.model {
-            JointModel::Ideal => 0.0,
-            _ => p.crank_pin.clearance,
-        };
-        let (r_c, l, c) = (
-            p.crank_length,
-            p.rod.length,
-            p.joint.clearance + crank_pin_gap,
-        );
+        // The crank's joints widen the stroke by their clearances.
+        let crank_gaps: f64 = [JointRole::MainBearing, JointRole::CrankPin]
+            .map(|role| match p.joint(role).model {
+                JointModel::Ideal => 0.0,
+                _ => p.joint(role).clearance,
+            })
+            .iter()
+            .sum();
+        let (r_c, l, c) = (p.crank_length, p.rod.length, p.joint.clearance + crank_gaps);
         let x = y[layout.slider()];
         let excess = ((l - r_c - c) - x).max(x - (l + r_c + c));
         let speed = y[layout.crank_speed()];
