@@ -75,7 +75,12 @@ pub fn impacts_at(p: Parameters, role: JointRole) -> Result<(Vec<Impact>, u64), 
                 o.crank_pin_in_contact,
                 o.crank_pin_force_peak,
             ),
-            _ => (o.contact_onsets, o.in_contact, o.joint_force_peak),
+            JointRole::MainBearing => (
+                o.main_bearing_contact_onsets,
+                o.main_bearing_in_contact,
+                o.main_bearing_force_peak,
+            ),
+            JointRole::RodSlider => (o.contact_onsets, o.in_contact, o.joint_force_peak),
         };
         if onsets > 0 {
             events.extend(current.take());

@@ -37,42 +37,67 @@ fn every_impact_is_right_at_the_defaults() {
     }
 }
 
-/// The same at the crank pin: benchmark A's dry clearance moved to the crank pin (the rod–slider
-/// joint ideal): every significant crank-pin impact of the first 60° within 2 % in peak and 0.1° in
-/// onset of the converged run. Also measured and printed, not asserted, because some of their
-/// later impacts miss that bound at the defaults (BENCHMARKS.md, "Load spectrum"): benchmark B's
-/// 4-mode rod with the crank pin worn, and both benchmarks with both pins worn.
+/// The same at the crank's joints: benchmark A's and B's dry clearance moved to the crank pin, to
+/// the main bearing, and worn at all three joints: every significant impact of the first 60° at
+/// each worn crank joint within 2 % in peak and 0.1° in onset of the converged run. Asserted where
+/// the defaults hold it (`ASSERTED`); measured and printed for the others, some of whose later
+/// impacts miss that bound (BENCHMARKS.md, "Load spectrum").
 #[test]
-fn every_crank_pin_impact_is_right_at_the_defaults() {
+fn every_crank_joint_impact_is_right_at_the_defaults() {
+    use JointModel::{Dry, Ideal};
+    use JointRole::{CrankPin, MainBearing};
+    // (case, main bearing, crank pin, rod–slider joint, the joints measured)
+    let cases: [(&str, JointModel, JointModel, JointModel, &[JointRole]); 4] = [
+        ("crank pin", Ideal, Dry, Ideal, &[CrankPin]),
+        ("both pins", Ideal, Dry, Dry, &[CrankPin]),
+        ("main bearing", Dry, Ideal, Ideal, &[MainBearing]),
+        ("all three", Dry, Dry, Dry, &[MainBearing, CrankPin]),
+    ];
+    const ASSERTED: &[(&str, &str, JointRole)] = &[
+        ("rigid (A)", "crank pin", CrankPin),
+        ("rigid (A)", "main bearing", MainBearing),
+        ("rigid (A)", "all three", MainBearing),
+        ("4 modes (B)", "main bearing", MainBearing),
+        ("4 modes (B)", "all three", MainBearing),
+        ("4 modes (B)", "all three", CrankPin),
+    ];
     for (name, base) in benchmarks().into_iter().take(2) {
-        for slider_pin in [JointModel::Ideal, JointModel::Dry] {
+        for (case, main_bearing, crank_pin, slider_pin, measured) in cases {
+            let worn = |model| JointParameters {
+                model,
+                ..JointParameters::benchmark()
+            };
             let p = crate::Parameters {
                 joint: JointParameters {
                     model: slider_pin,
                     ..base.joint
                 },
-                crank_pin: JointParameters::benchmark(),
+                crank_pin: worn(crank_pin),
+                main_bearing: worn(main_bearing),
                 ..base.clone()
             };
-            let (reference, _) = impacts_at(converged(&p), JointRole::CrankPin).unwrap();
-            let (run, steps) = impacts_at(p, JointRole::CrankPin).unwrap();
-            let pairs = pair(&reference, &run);
-            let worst = pairs.iter().fold((0.0f64, 0.0f64), |(peak, onset), pair| {
-                (
-                    peak.max(pair.peak_error()),
-                    onset.max(pair.onset_error_degrees()),
-                )
-            });
-            println!(
-                "{name}, rod-slider joint {slider_pin:?}: {} crank-pin impacts, worst peak error \
-                 {:.2} %, worst onset error {:.2}°, {steps} steps",
-                pairs.len(),
-                100.0 * worst.0,
-                worst.1
-            );
-            assert!(pairs.len() >= 3, "{name}: {} impacts", pairs.len());
-            if name.starts_with("rigid") && slider_pin == JointModel::Ideal {
-                assert!(worst.0 <= 0.02 && worst.1 <= 0.1, "{name}: {pairs:?}");
+            for &role in measured {
+                let (reference, _) = impacts_at(converged(&p), role).unwrap();
+                let (run, steps) = impacts_at(p.clone(), role).unwrap();
+                let pairs = pair(&reference, &run);
+                let worst = pairs.iter().fold((0.0f64, 0.0f64), |(peak, onset), pair| {
+                    (
+                        peak.max(pair.peak_error()),
+                        onset.max(pair.onset_error_degrees()),
+                    )
+                });
+                println!(
+                    "{name}, {case} worn: {} {} impacts, worst peak error {:.2} %, worst onset \
+                     error {:.2}°, {steps} steps",
+                    pairs.len(),
+                    role.prefix(),
+                    100.0 * worst.0,
+                    worst.1
+                );
+                assert!(pairs.len() >= 2, "{name}, {case}: {} impacts", pairs.len());
+                if ASSERTED.contains(&(name, case, role)) {
+                    assert!(worst.0 <= 0.02 && worst.1 <= 0.1, "{name}: {pairs:?}");
+                }
             }
         }
     }
