@@ -382,6 +382,7 @@ pub enum Vr {
     CrankPinInContact,
     CrankPinContactOnsets,
     CrankPinContactOnsetsTotal,
+    CrankPinInitialState,
     MainBearingModel,
     MainBearingClearance,
     MainBearingJournalRadius,
@@ -401,6 +402,7 @@ pub enum Vr {
     MainBearingInContact,
     MainBearingContactOnsets,
     MainBearingContactOnsetsTotal,
+    MainBearingInitialState,
 }
 
 /// 5000 rpm in rad/s (benchmark B); the same expression as `params::BENCHMARK_SPEED`.
@@ -409,7 +411,7 @@ const SPEED: f64 = 5000.0 * core::f64::consts::TAU / 60.0;
 /// The parameters and outputs of a revolute joint that can be worn besides the rod–slider joint
 /// (ideal by default, the benchmark joint's values otherwise): its variable-name prefix, its name
 /// starting a description and inside one, what it joins, what its eccentricity is, its journal,
-/// the parts in contact, and its 19 value references in the order of the rows.
+/// the parts in contact, and its 20 value references in the order of the rows.
 macro_rules! joint_rows {
     (
         $prefix:literal,
@@ -438,7 +440,8 @@ macro_rules! joint_rows {
             $penetration:ident,
             $contact:ident,
             $onsets:ident,
-            $total:ident $(,)?
+            $total:ident,
+            $start:ident $(,)?
         ]
     ) => {
         [
@@ -608,6 +611,13 @@ macro_rules! joint_rows {
                 Vr::$total,
                 concat!($prefix, ".contactOnsetsTotal"),
                 concat!("Contact onsets at the ", $name, " since the start"),
+            ),
+            Variable::enumeration(
+                Vr::$start,
+                concat!($prefix, ".initialState"),
+                1,
+                7,
+                concat!("Where the journal of a clearance ", $name, " starts"),
             ),
         ]
     };
@@ -1290,7 +1300,7 @@ const BASE_VARIABLES: &[Variable] = &[
 ];
 
 /// Number of rows of a revolute clearance joint besides the rod–slider joint ([`joint_rows`]).
-const JOINT_ROWS: usize = 19;
+const JOINT_ROWS: usize = 20;
 
 /// The crank pin's parameters and outputs.
 const CRANK_PIN_VARIABLES: [Variable; JOINT_ROWS] = joint_rows!(
@@ -1321,6 +1331,7 @@ const CRANK_PIN_VARIABLES: [Variable; JOINT_ROWS] = joint_rows!(
         CrankPinInContact,
         CrankPinContactOnsets,
         CrankPinContactOnsetsTotal,
+        CrankPinInitialState,
     ]
 );
 
@@ -1353,5 +1364,6 @@ const MAIN_BEARING_VARIABLES: [Variable; JOINT_ROWS] = joint_rows!(
         MainBearingInContact,
         MainBearingContactOnsets,
         MainBearingContactOnsetsTotal,
+        MainBearingInitialState,
     ]
 );

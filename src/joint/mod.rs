@@ -71,8 +71,8 @@ impl Joint {
         }
     }
 
-    /// The eccentricity at which the journal, at rest in the bearing (ė = 0) and turning at
-    /// `omega_journal`, receives the force `force` from the joint: its quasi-static equilibrium
+    /// The eccentricity at which the journal, at rest in the bearing (ė = 0), journal and bearing
+    /// turning at `omega_journal` and `omega_bearing`, receives the force `force` from the joint: its quasi-static equilibrium
     /// against a steady load (the settled start, docs/model.md §8).
     ///
     /// Dry and frictionless in closed form, e = −(c + δ) F/|F| with K δ^1.5 = |F|; with friction
@@ -80,7 +80,12 @@ impl Joint {
     /// point (friction and film turn the force against e, so the angle is the natural unknown),
     /// with a difference Jacobian and steps halved until the residual falls. The ideal joint and
     /// a zero force give the centre.
-    pub fn eccentricity_carrying(&self, force: Vector2<f64>, omega_journal: f64) -> Vector2<f64> {
+    pub fn eccentricity_carrying(
+        &self,
+        force: Vector2<f64>,
+        omega_journal: f64,
+        omega_bearing: f64,
+    ) -> Vector2<f64> {
         let Some(dry) = self.dry_contact() else {
             return Vector2::zeros();
         };
@@ -97,7 +102,7 @@ impl Joint {
                 e: eccentricity(x),
                 e_dot: Vector2::zeros(),
                 omega_journal,
-                omega_bearing: 0.0,
+                omega_bearing,
             };
             self.force(&kinematics, MIN_IMPACT_VELOCITY).force - force
         };
@@ -185,7 +190,7 @@ mod tests {
                 for angle in [0.0, 2.0, 4.5] {
                     let (sin, cos) = crate::math::sin_cos(angle);
                     let force = magnitude * Vector2::new(cos, sin);
-                    let e = joint.eccentricity_carrying(force, omega);
+                    let e = joint.eccentricity_carrying(force, omega, 0.0);
                     let kinematics = JointKinematics {
                         e,
                         e_dot: Vector2::zeros(),
@@ -206,11 +211,11 @@ mod tests {
         }
         let joint = Joint::new(&p);
         assert_eq!(
-            joint.eccentricity_carrying(Vector2::zeros(), omega),
+            joint.eccentricity_carrying(Vector2::zeros(), omega, 0.0),
             Vector2::zeros()
         );
         assert_eq!(
-            Joint::Ideal.eccentricity_carrying(Vector2::new(5.0, 1.0), omega),
+            Joint::Ideal.eccentricity_carrying(Vector2::new(5.0, 1.0), omega, 0.0),
             Vector2::zeros()
         );
     }

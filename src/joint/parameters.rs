@@ -21,7 +21,7 @@ pub enum JournalStart {
     /// Centred in the bearing (the benchmarks' start): it crosses the clearance and impacts.
     Centred,
     /// In quasi-static equilibrium with the ideal joint's initial reaction, at rest relative to
-    /// the bearing ([`crate::mechanism::SliderCrank::settle_journal`]): no start-up impact.
+    /// the bearing ([`crate::mechanism::SliderCrank::settle_journals`]): no start-up impact.
     Settled,
 }
 

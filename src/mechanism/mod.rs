@@ -42,3 +42,4 @@ pub use inputs::{Input, InputSignal, Inputs};
 pub use layout::StateLayout;
 pub use loads::{Loads, rigid_rod_stress};
 pub use slider_crank::{Evaluation, SliderCrank};
+pub use start::Reaction;

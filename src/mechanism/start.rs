@@ -6,29 +6,44 @@ use nalgebra::Vector2;
 use super::layout::{CRANK_ANGLE, PIN_A, pair};
 use super::slider_crank::SliderCrank;
 use crate::error::{ModelError, Num};
-use crate::joint::{ContactState, Joint, JointRole, MIN_IMPACT_VELOCITY};
+use crate::joint::{ContactState, JointRole, MIN_IMPACT_VELOCITY};
 use crate::linalg::lu::Lu;
 use crate::math;
 
+/// A joint's reaction in the ideal mechanism's start, and the rotation speeds of its journal and
+/// bearing ([`SliderCrank::start_reactions`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Reaction {
+    /// Force on the journal \[N\].
+    pub force: Vector2<f64>,
+    /// The journal's rotation speed \[rad/s\].
+    pub omega_journal: f64,
+    /// The bearing's rotation speed \[rad/s\].
+    pub omega_bearing: f64,
+}
+
 impl SliderCrank {
-    /// Initial state: crank at `angle` turning at `speed`, rod straight and unstressed, journal
+    /// Initial state: crank at `angle` turning at `speed`, rod straight and unstressed, journals
     /// centred, every velocity that of the ideal mechanism (docs/model.md §7).
     pub fn initial_state(&self, angle: f64, speed: f64) -> Vec<f64> {
-        self.initial_state_with_eccentricity(angle, speed, Vector2::zeros())
+        self.initial_state_with_eccentricities(angle, speed, [Vector2::zeros(); 3])
     }
 
-    /// As [`SliderCrank::initial_state`] with the journal at eccentricity `e` in the bearing and
-    /// at rest in it: the rod's slider end at height e_y, moving along the guide with the slider.
-    pub fn initial_state_with_eccentricity(
+    /// As [`SliderCrank::initial_state`] with each joint's journal at its eccentricity in `e`
+    /// (indexed by [`JointRole`]) and at rest in its bearing: the crank's pivot at e_O from the
+    /// main bearing's centre, the rod's eye A at e_P from the crank pin, the rod's slider end at
+    /// height e_y,B, moving along the guide with the slider.
+    pub fn initial_state_with_eccentricities(
         &self,
         angle: f64,
         speed: f64,
-        e: Vector2<f64>,
+        e: [Vector2<f64>; 3],
     ) -> Vec<f64> {
+        let [pivot, crank_pin, rod_slider] = e;
         let (r_c, l) = (self.crank_length, self.rod_length);
         let (sin, cos) = math::sin_cos(angle);
-        let a = r_c * Vector2::new(cos, sin);
-        let sin_beta = (e.y - r_c * sin) / l;
+        let a = r_c * Vector2::new(cos, sin) + (pivot - crank_pin);
+        let sin_beta = (rod_slider.y - a.y) / l;
         let cos_beta = (1.0 - sin_beta * sin_beta).sqrt();
         let b = a + l * Vector2::new(cos_beta, sin_beta);
         let v_a = r_c * speed * Vector2::new(-sin, cos);
@@ -39,15 +54,15 @@ impl SliderCrank {
         let mut y = vec![0.0; l.n_states()];
         y[CRANK_ANGLE] = angle;
         y[l.rod()].copy_from_slice(&p);
-        y[l.slider()] = b.x - e.x;
+        y[l.slider()] = b.x - rod_slider.x;
         y[l.crank_speed()] = speed;
         y[l.rod_rates()].copy_from_slice(&p_dot);
         y[l.slider_velocity()] = v_b.x;
         if let Some(g) = l.crank_centre() {
-            // A free crank starts centred in the main bearing, turning about its centre.
+            // A free crank turning about its pivot, at rest in the main bearing.
             let a = self.crank_centre;
-            y[g] = a * cos;
-            y[g + 1] = a * sin;
+            y[g] = pivot.x + a * cos;
+            y[g + 1] = pivot.y + a * sin;
             y[l.rate_of(g)] = -a * speed * sin;
             y[l.rate_of(g) + 1] = a * speed * cos;
         }
@@ -55,66 +70,83 @@ impl SliderCrank {
         y
     }
 
-    /// Settled start: moves the journal of a clearance joint, in a state from
-    /// [`SliderCrank::initial_state`], to its quasi-static equilibrium against the ideal joint's
-    /// reaction there ([`Joint::eccentricity_carrying`]), at rest relative to the bearing, and
-    /// equilibrates a flexible rod with it (with the ideal joint's reaction first, then with the
-    /// joint's own force): the mechanism then starts carrying its load, without the start-up
-    /// impact of a centred journal. With `equilibrate` false the rod stays straight. A journal in
-    /// contact starts a contact event whose impact velocity is that of a journal crossing the
-    /// clearance from the centre under the load (docs/model.md §8).
-    pub fn settle_journal(
+    /// The start reactions of this mechanism, with every joint ideal: its state at `angle` and
+    /// `speed` (equilibrated with `equilibrate`), and there the force on each journal, indexed by
+    /// [`JointRole`] (the main bearing's and the crank pin's from the loads, the rod–slider joint's
+    /// its reaction), with the journal's and the bearing's rotation speeds.
+    pub fn start_reactions(
         &mut self,
-        y: &mut Vec<f64>,
         angle: f64,
         speed: f64,
         equilibrate: bool,
-    ) -> Result<(), ModelError> {
-        if self.active.ideal_joint {
-            return if equilibrate {
-                self.equilibrate(y)
-            } else {
-                Ok(())
-            };
+    ) -> Result<[Reaction; 3], ModelError> {
+        let mut y = self.initial_state(angle, speed);
+        if equilibrate {
+            self.equilibrate(&mut y)?;
         }
         let mut dy = vec![0.0; y.len()];
-        let reaction = self.with_ideal_joint(|m| -> Result<Vector2<f64>, ModelError> {
-            if equilibrate {
-                m.equilibrate(y)?;
+        let force = self.evaluate(&y, &mut dy)?.joint_force;
+        let loads = self.loads(&y, &dy, force);
+        let forces = [loads.main_bearing, -loads.crank_pin, force];
+        Ok(JointRole::ALL.map(|role| {
+            let kin = self.joint_kinematics(role, &y);
+            Reaction {
+                force: forces[role as usize],
+                omega_journal: kin.omega_journal,
+                omega_bearing: kin.omega_bearing,
             }
-            Ok(m.evaluate(y, &mut dy)?.joint_force)
-        })?;
-        let omega = self.joint_kinematics(JointRole::RodSlider, y).omega_journal;
-        let e = self
-            .joint(JointRole::RodSlider)
-            .eccentricity_carrying(reaction, omega);
-        *y = self.initial_state_with_eccentricity(angle, speed, e);
-        if let Some(dry) = self.joint(JointRole::RodSlider).dry_contact() {
+        }))
+    }
+
+    /// Settled start: places the journal of each clearance joint whose reaction is given in
+    /// `reactions` (from [`SliderCrank::start_reactions`] of the ideal mechanism) at its
+    /// quasi-static equilibrium against it ([`crate::joint::Joint::eccentricity_carrying`]), at rest relative to
+    /// the bearing, the others centred, and equilibrates a flexible rod with the joints' own
+    /// forces (with `equilibrate`; the rod stays straight otherwise): the mechanism then starts
+    /// carrying its load, without the start-up impact of a centred journal. A journal in contact
+    /// starts a contact event whose impact velocity is that of a journal crossing the clearance
+    /// from the centre under the load (docs/model.md §8).
+    pub fn settle_journals(
+        &mut self,
+        angle: f64,
+        speed: f64,
+        reactions: [Option<Reaction>; 3],
+        equilibrate: bool,
+    ) -> Result<Vec<f64>, ModelError> {
+        let e = JointRole::ALL.map(|role| match reactions[role as usize] {
+            Some(r) => {
+                self.joint(role)
+                    .eccentricity_carrying(r.force, r.omega_journal, r.omega_bearing)
+            }
+            None => Vector2::zeros(),
+        });
+        let mut y = self.initial_state_with_eccentricities(angle, speed, e);
+        for role in JointRole::ALL {
+            let (Some(reaction), Some(dry)) =
+                (reactions[role as usize], self.joint(role).dry_contact())
+            else {
+                continue;
+            };
             // The contact event's impact velocity: the speed of a journal crossing the clearance
-            // from the centre under the load, √(2 |F₀| c / m_s). The contact is then damped as
-            // after the centred start's first impact; the floor instead would make its hysteresis
-            // damping some fifty times critical and the force hypersensitive to the normal velocity.
-            let crossing = (2.0 * reaction.norm() * dry.clearance / self.slider_mass).sqrt();
-            self.contacts[JointRole::RodSlider] = ContactState {
-                in_contact: self.penetration(JointRole::RodSlider, y) > 0.0,
+            // from the centre under the load, √(2 |F₀| c / m), m the mass the joint's load moves
+            // (the slider, the rod, the crank). The contact is then damped as after the centred
+            // start's first impact; the floor instead would make its hysteresis damping some
+            // fifty times critical and the force hypersensitive to the normal velocity.
+            let mass = match role {
+                JointRole::RodSlider => self.slider_mass,
+                JointRole::CrankPin => self.rod_mass,
+                JointRole::MainBearing => self.crank_mass,
+            };
+            let crossing = (2.0 * reaction.force.norm() * dry.clearance / mass).sqrt();
+            self.contacts[role] = ContactState {
+                in_contact: self.penetration(role, &y) > 0.0,
                 impact_velocity: crossing.max(MIN_IMPACT_VELOCITY),
             };
         }
         if equilibrate {
-            self.equilibrate(y)?;
+            self.equilibrate(&mut y)?;
         }
-        Ok(())
-    }
-
-    /// Runs `f` on the mechanism with the rod–slider joint made ideal, and restores it after.
-    fn with_ideal_joint<R>(&mut self, f: impl FnOnce(&mut Self) -> R) -> R {
-        let slot = &mut self.joints[JointRole::RodSlider as usize];
-        let joint = std::mem::replace(slot, Joint::Ideal);
-        let ideal = std::mem::replace(&mut self.active.ideal_joint, true);
-        let result = f(self);
-        self.joints[JointRole::RodSlider as usize] = joint;
-        self.active.ideal_joint = ideal;
-        result
+        Ok(y)
     }
 
     /// Quasi-static start: changes the rod's deformation in a state from

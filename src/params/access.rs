@@ -145,6 +145,10 @@ integer_fields! {
             [JointModel::Ideal, JointModel::Dry, JointModel::Lubricated];
         MainBearingContactLaw => main_bearing.contact_law:
             [ContactLaw::LankaraniNikravesh, ContactLaw::Flores, ContactLaw::HuGuo];
+        CrankPinInitialState => crank_pin.initial_state:
+            [JournalStart::Centred, JournalStart::Settled];
+        MainBearingInitialState => main_bearing.initial_state:
+            [JournalStart::Centred, JournalStart::Settled];
     }
     counts {
         RodNElements => n_elements;

@@ -249,6 +249,15 @@ impl Parameters {
         }
     }
 
+    /// The same parameters with every joint ideal.
+    pub fn with_ideal_joints(&self) -> Self {
+        let mut p = self.clone();
+        for role in JointRole::ALL {
+            p.joint_mut(role).model = JointModel::Ideal;
+        }
+        p
+    }
+
     /// The parameters of one joint, to change.
     pub fn joint_mut(&mut self, role: JointRole) -> &mut JointParameters {
         match role {

@@ -19,7 +19,7 @@ use crate::integrator::{Integrator, Stats};
 use crate::joint::JointRole;
 use crate::mechanism::{ContactState, Contacts, Energies, SliderCrank};
 pub use crate::mechanism::{Input, InputSignal, Inputs};
-use crate::params::{DriveMode, InitialState, JournalStart, Parameters};
+use crate::params::{DriveMode, InitialState, JointModel, JournalStart, Parameters};
 
 pub use fmi2_slave::clock::{CLOCK_RESOLUTION, on_clock_grid};
 
@@ -84,14 +84,24 @@ impl Simulation {
             ..inputs
         };
         let mut mechanism = SliderCrank::with_inputs(&parameters, start)?;
-        let mut state = mechanism.initial_state(angle, speed);
         let equilibrate = parameters.initial_state == InitialState::Equilibrated;
-        match parameters.joint.initial_state {
-            JournalStart::Settled => {
-                mechanism.settle_journal(&mut state, angle, speed, equilibrate)
+        let settled = parameters.joints().map(|(_, joint)| {
+            joint.model != JointModel::Ideal && joint.initial_state == JournalStart::Settled
+        });
+        let state = if settled.contains(&true) {
+            SliderCrank::with_inputs(&parameters.with_ideal_joints(), start)
+                .and_then(|mut ideal| ideal.start_reactions(angle, speed, equilibrate))
+                .and_then(|reactions| {
+                    let settled = std::array::from_fn(|i| settled[i].then_some(reactions[i]));
+                    mechanism.settle_journals(angle, speed, settled, equilibrate)
+                })
+        } else {
+            let mut state = mechanism.initial_state(angle, speed);
+            if equilibrate {
+                mechanism.equilibrate(&mut state).map(|()| state)
+            } else {
+                Ok(state)
             }
-            JournalStart::Centred if equilibrate => mechanism.equilibrate(&mut state),
-            JournalStart::Centred => Ok(()),
         }
         .map_err(|e| failure::unequilibrated(&parameters, &e))?;
         let integrator = Integrator::new(
