@@ -5,7 +5,7 @@
 use fmi2_slave::model::{check_real, check_settable, check_step, lookup};
 use fmi2_slave::{FmuError, Logger, Model, State};
 
-use super::outputs::real_output;
+use super::outputs::{count_output, real_output};
 use super::snapshot::FmuSnapshot;
 use super::variables::{Causality, ENUMERATIONS, Kind, LOG_CATEGORIES, VARIABLES, Variable, Vr};
 use crate::error::{ModelError, Num};
@@ -413,35 +413,10 @@ impl Model for SliderCrankFmu {
                     let evaluations = self.simulation(log)?.stats().evaluations;
                     i32::try_from(evaluations).unwrap_or(i32::MAX)
                 }
-                Vr::JointContactOnsets => {
-                    let onsets = self.outputs(log)?.contact_onsets;
-                    i32::try_from(onsets).unwrap_or(i32::MAX)
-                }
-                Vr::JointContactOnsetsTotal => {
-                    let onsets = self.outputs(log)?.contact_onsets_total;
-                    i32::try_from(onsets).unwrap_or(i32::MAX)
-                }
-                Vr::CrankPinContactOnsets => {
-                    let onsets = self.outputs(log)?.crank_pin_contact_onsets;
-                    i32::try_from(onsets).unwrap_or(i32::MAX)
-                }
-                Vr::CrankPinContactOnsetsTotal => {
-                    let onsets = self.outputs(log)?.crank_pin_contact_onsets_total;
-                    i32::try_from(onsets).unwrap_or(i32::MAX)
-                }
-                Vr::MainBearingContactOnsets => {
-                    let onsets = self.outputs(log)?.main_bearing_contact_onsets;
-                    i32::try_from(onsets).unwrap_or(i32::MAX)
-                }
-                Vr::MainBearingContactOnsetsTotal => {
-                    let onsets = self.outputs(log)?.main_bearing_contact_onsets_total;
-                    i32::try_from(onsets).unwrap_or(i32::MAX)
-                }
-                Vr::SolverWarnings => {
-                    let warnings = self.outputs(log)?.warnings;
-                    i32::try_from(warnings).unwrap_or(i32::MAX)
-                }
-                _ => unreachable_type(v)?,
+                vr => match count_output(&self.outputs(log)?, vr) {
+                    Some(count) => i32::try_from(count).unwrap_or(i32::MAX),
+                    None => unreachable_type(v)?,
+                },
             };
         }
         Ok(())

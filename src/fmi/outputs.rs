@@ -1,5 +1,5 @@
-//! The Real outputs of the FMU by value reference: the one list that maps each output row of the
-//! variable table to its field of [`Outputs`].
+//! The Real and the count outputs of the FMU by value reference: the lists that map each output
+//! row of the variable table to its field of [`Outputs`].
 
 use super::variables::Vr;
 use crate::simulation::Outputs;
@@ -55,6 +55,20 @@ pub fn real_output(o: &Outputs, vr: Vr) -> Option<f64> {
     })
 }
 
+/// The value of a count output (an Integer computed from the outputs), None for other variables.
+pub fn count_output(o: &Outputs, vr: Vr) -> Option<u64> {
+    Some(match vr {
+        Vr::JointContactOnsets => o.contact_onsets,
+        Vr::JointContactOnsetsTotal => o.contact_onsets_total,
+        Vr::CrankPinContactOnsets => o.crank_pin_contact_onsets,
+        Vr::CrankPinContactOnsetsTotal => o.crank_pin_contact_onsets_total,
+        Vr::MainBearingContactOnsets => o.main_bearing_contact_onsets,
+        Vr::MainBearingContactOnsetsTotal => o.main_bearing_contact_onsets_total,
+        Vr::SolverWarnings => o.warnings,
+        _ => return None,
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -70,6 +84,23 @@ mod tests {
             assert_eq!(
                 real_output(&o, v.vr).is_some(),
                 real_output_row,
+                "{}",
+                v.name
+            );
+        }
+    }
+
+    /// Exactly the Integer outputs of the table have a count.
+    #[test]
+    fn every_count_output_and_nothing_else_has_a_value() {
+        let o = Outputs::default();
+        for v in VARIABLES {
+            let count_row =
+                v.causality == Causality::Output && matches!(v.kind, Kind::Integer { .. });
+            let computed = matches!(v.vr, Vr::SolverSteps | Vr::SolverEvaluations);
+            assert_eq!(
+                count_output(&o, v.vr).is_some(),
+                count_row && !computed,
                 "{}",
                 v.name
             );

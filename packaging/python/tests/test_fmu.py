@@ -397,6 +397,8 @@ BOUND_COMPANIONS = {
     ("joint.frictionV1", "min"): {"joint.frictionV0": 0.0},
     ("crankPin.frictionV0", "max"): {"crankPin.frictionV1": 10.0},
     ("crankPin.frictionV1", "min"): {"crankPin.frictionV0": 0.0},
+    ("mainBearing.frictionV0", "max"): {"mainBearing.frictionV1": 10.0},
+    ("mainBearing.frictionV1", "min"): {"mainBearing.frictionV0": 0.0},
 }
 
 
