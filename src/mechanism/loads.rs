@@ -3,8 +3,7 @@
 //!
 //! ```text
 //! crank pin     F_A = m_rod a_G,rod − F_B − m_rod g          (the rod's linear momentum)
-//! main bearing  F_O = m_c a_G,crank + F_A − m_c g             (the crank's; its clearance
-//!                                                               joint's force on a free crank)
+//! main bearing  F_O = m_c a_G,crank + F_A − m_c g             (the crank's)
 //! guide         N   = F_B,y − m_s g_y                         (the slider's y equation)
 //! axial force   N_A = −F_A · t_A,   N_B = F_B · t_B           (tension positive)
 //! ```
@@ -13,7 +12,9 @@
 //! Σ_j (M t)_j p̈_j for the rigid translations t of the rod's coordinates: the rod's internal forces
 //! cancel in its momentum (they are invariant under translation), so the pin force follows from
 //! the accelerations alone, without the constraint solve, and the same formula serves the
-//! accelerations of an evaluation and those of the dense output inside a step.
+//! accelerations of an evaluation and those of the dense output inside a step. A worn crank pin or
+//! main bearing gives its force by its joint law instead (F_A = −F, F_O = F, with F the force on
+//! the journal), exact in every state, as the rod–slider joint's is.
 //!
 //! The stress: for a flexible rod from its strains ([`crate::ancf::Rod::largest_normal_stress`]);
 //! for the rigid rod from the equilibrium of its parts under the pin force and the distributed
@@ -25,6 +26,7 @@ use super::layout::{CRANK_ANGLE, PIN_A, pair};
 use super::rod_body::RodBody;
 use super::slider_crank::SliderCrank;
 use crate::ancf::RodProperties;
+use crate::joint::JointRole;
 use crate::math;
 use crate::reduction::Deformation;
 
@@ -63,7 +65,11 @@ impl SliderCrank {
                 .map(|(u, a)| u * a)
                 .sum(),
         );
-        let crank_pin = momentum_rate - joint_force - self.rod_mass * self.gravity;
+        let crank_pin = if self.has_clearance(JointRole::CrankPin) {
+            -self.joint_force(JointRole::CrankPin, y).0.force
+        } else {
+            momentum_rate - joint_force - self.rod_mass * self.gravity
+        };
         let crank_centre_acceleration = match l.crank_centre() {
             Some(g) => pair(dy, l.rate_of(g)),
             None => {
@@ -74,8 +80,11 @@ impl SliderCrank {
                     * (alpha * Vector2::new(-sin, cos) - omega * omega * Vector2::new(cos, sin))
             }
         };
-        let main_bearing = self.crank_mass * crank_centre_acceleration + crank_pin
-            - self.crank_mass * self.gravity;
+        let main_bearing = if self.has_clearance(JointRole::MainBearing) {
+            self.joint_force(JointRole::MainBearing, y).0.force
+        } else {
+            self.crank_mass * crank_centre_acceleration + crank_pin - self.crank_mass * self.gravity
+        };
         let deformation = match &mut self.rod {
             RodBody::Rigid { .. } => {
                 let (r_a, r_b) = (pair(y, PIN_A), pair(y, l.pin_b()));

@@ -4,6 +4,7 @@
 use nalgebra::Vector2;
 
 use crate::integrator::dense;
+use crate::joint::JointRole;
 use crate::mechanism::{Contacts, Loads, SliderCrank};
 
 /// Extremes of the solution over a stretch of time, and the contact onsets in it.
@@ -32,6 +33,13 @@ pub type Onsets = [u64; 3];
 
 /// Number of peak-held quantities.
 const SERIES: usize = 7;
+
+/// Positions in a [`Sample`] of the quantities whose peaks inside a step are refined always (the
+/// joint force, the slider acceleration, the deformation energy), and of the crank pin's and the
+/// main bearing's forces, refined when that joint is worn.
+const ALWAYS_REFINED: usize = 3;
+const CRANK_PIN_FORCE: usize = 3;
+const MAIN_BEARING_FORCE: usize = 4;
 
 /// The peak-held magnitudes of one instant, in the order of [`Peaks::from_sample`].
 pub(super) type Sample = [f64; SERIES];
@@ -195,22 +203,25 @@ pub(super) fn within_step(
         return [0.0; SERIES];
     }
     // The contact state the step was integrated with (an onset inside it is latched at its end).
+    // The worn crank joints' forces are refined as the rod–slider joint's is.
+    let refined = std::array::from_fn(|i| match i {
+        CRANK_PIN_FORCE => mechanism.has_clearance(JointRole::CrankPin),
+        MAIN_BEARING_FORCE => mechanism.has_clearance(JointRole::MainBearing),
+        _ => i < ALWAYS_REFINED,
+    });
     mechanism.with_contact_state(step.contact_start, |mechanism| {
         let mut at = |k: f64| load_within(mechanism, step, sample, acceleration, k);
-        largest_loads(&mut at)
+        largest_loads(&mut at, refined)
     })
 }
 
-/// Number of quantities whose parabola vertex is evaluated: the joint force, the slider acceleration
-/// and the deformation energy. The joint loads and the stress peak with the joint force at an impact:
+/// The largest of each quantity among the samples k = 0 … [`PEAK_SAMPLES`] + 1 of a step and at
+/// the vertex of the parabola through each `refined` quantity's largest sample and its neighbours:
+/// the joint force, the slider acceleration, the deformation energy and the force of a worn crank
+/// pin or main bearing. The other loads and the stress peak with the joint forces at an impact:
 /// they take the largest of every evaluation made, those vertices included, without evaluations of
 /// their own.
-const REFINED: usize = 3;
-
-/// The largest of each quantity among the samples k = 0 … [`PEAK_SAMPLES`] + 1 of a step and at
-/// the vertex of the parabola through each refined quantity's largest sample and its neighbours
-/// (see [`REFINED`]).
-fn largest_loads(at: &mut impl FnMut(f64) -> Sample) -> Sample {
+fn largest_loads(at: &mut impl FnMut(f64) -> Sample, refined: [bool; SERIES]) -> Sample {
     let mut series = [[0.0; PEAK_SAMPLES + 2]; SERIES];
     for k in 0..PEAK_SAMPLES + 2 {
         for (values, value) in series.iter_mut().zip(at(k as f64)) {
@@ -220,7 +231,10 @@ fn largest_loads(at: &mut impl FnMut(f64) -> Sample) -> Sample {
     let mut largest: Sample =
         std::array::from_fn(|i| series[i].iter().copied().fold(0.0, f64::max));
     let mut vertices: Sample = [0.0; SERIES];
-    for (i, values) in series.iter().enumerate().take(REFINED) {
+    for (i, values) in series.iter().enumerate() {
+        if !refined[i] {
+            continue;
+        }
         if let Some(k) = parabola_vertex(values) {
             let sample = at(k);
             largest[i] = largest[i].max(sample[i]);
@@ -229,7 +243,7 @@ fn largest_loads(at: &mut impl FnMut(f64) -> Sample) -> Sample {
             }
         }
     }
-    for i in REFINED..SERIES {
+    for i in (0..SERIES).filter(|&i| !refined[i]) {
         largest[i] = largest[i].max(vertices[i]);
     }
     largest

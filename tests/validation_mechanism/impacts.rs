@@ -57,6 +57,7 @@ fn every_crank_joint_impact_is_right_at_the_defaults() {
         ("rigid (A)", "crank pin", CrankPin),
         ("rigid (A)", "main bearing", MainBearing),
         ("rigid (A)", "all three", MainBearing),
+        ("4 modes (B)", "crank pin", CrankPin),
         ("4 modes (B)", "main bearing", MainBearing),
         ("4 modes (B)", "all three", MainBearing),
         ("4 modes (B)", "all three", CrankPin),
