@@ -74,36 +74,56 @@ fn vanishing_clearance_approaches(role: JointRole, base: &Parameters, ideal: &[O
 /// The energy account from the outputs closes with the crank pin or the main bearing worn, and
 /// its residual over one revolution falls at least 100× from rtol 1e-4 to 1e-8: each alone dry
 /// (without and with friction, whose moments act on the crank and on the turning rod eye) and
-/// lubricated, both pins dry and both lubricated, and all three joints dry and all three
-/// lubricated (rigid rod and 4 modes).
+/// lubricated, both pins dry and both lubricated, and all three joints dry (also under oblique
+/// gravity, which loads the free crank's centre) and all three lubricated (rigid rod and 4 modes).
 #[test]
 fn energy_balance_converges_with_a_worn_crank_pin_and_main_bearing() {
     use JointModel::{Dry, Ideal, Lubricated};
     for rod_formulation in [RodFormulation::Rigid, RodFormulation::CraigBampton] {
-        // (name, main bearing, crank pin, rod–slider joint, friction at the worn crank joint)
-        for (name, main_bearing, crank_pin, slider_pin, friction) in [
-            ("crank pin dry", Ideal, Dry, Ideal, 0.0),
-            ("crank pin dry, μ = 0.2", Ideal, Dry, Ideal, 0.2),
-            ("crank pin lubricated", Ideal, Lubricated, Ideal, 0.0),
-            ("both pins dry", Ideal, Dry, Dry, 0.0),
-            ("both pins lubricated", Ideal, Lubricated, Lubricated, 0.0),
-            ("main bearing dry", Dry, Ideal, Ideal, 0.0),
-            ("main bearing dry, μ = 0.2", Dry, Ideal, Ideal, 0.2),
-            ("main bearing lubricated", Lubricated, Ideal, Ideal, 0.0),
-            ("all three dry", Dry, Dry, Dry, 0.0),
+        // (name, main bearing, crank pin, rod–slider joint, friction at the worn crank joint,
+        // gravity)
+        let cases = [
+            ("crank pin dry", Ideal, Dry, Ideal, 0.0, 0.0),
+            ("crank pin dry, μ = 0.2", Ideal, Dry, Ideal, 0.2, 0.0),
+            ("crank pin lubricated", Ideal, Lubricated, Ideal, 0.0, 0.0),
+            ("both pins dry", Ideal, Dry, Dry, 0.0, 0.0),
+            (
+                "both pins lubricated",
+                Ideal,
+                Lubricated,
+                Lubricated,
+                0.0,
+                0.0,
+            ),
+            ("main bearing dry", Dry, Ideal, Ideal, 0.0, 0.0),
+            ("main bearing dry, μ = 0.2", Dry, Ideal, Ideal, 0.2, 0.0),
+            (
+                "main bearing lubricated",
+                Lubricated,
+                Ideal,
+                Ideal,
+                0.0,
+                0.0,
+            ),
+            ("all three dry", Dry, Dry, Dry, 0.0, 0.0),
+            ("all three dry, gravity", Dry, Dry, Dry, 0.0, 9.81),
             (
                 "all three lubricated",
                 Lubricated,
                 Lubricated,
                 Lubricated,
                 0.0,
+                0.0,
             ),
-        ] {
+        ];
+        for (name, main_bearing, crank_pin, slider_pin, friction, gravity) in cases {
             let residual = |relative_tolerance| {
                 let mut p = crank_pin_worn(
                     Parameters {
                         rod_formulation,
                         relative_tolerance,
+                        gravity,
+                        gravity_angle: f64::to_radians(40.0),
                         ..Parameters::default()
                     },
                     crank_pin,
