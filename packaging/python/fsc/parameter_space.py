@@ -52,6 +52,8 @@ BALANCE = {"energy.kinetic": 1, "rod.deformationEnergy": 1, "energy.contact": 1,
            "energy.gravity": 1, "energy.dissipated": 1, "energy.materialDamping": 1,
            "energy.driveWork": -1, "energy.sliderWork": -1}
 #: Validity-monitor bounds (src/simulation/validity.rs), with the word their warning contains.
+#: The clearance joints of the crank besides the rod-slider joint.
+CRANK_JOINTS = ["crankPin", "mainBearing"]
 MONITORS = {"penetration": 0.01, "deflection": 0.05, "crank speed": 1.01e4, "slider position": 0.01}
 
 #: The documented edge cases, each with the variables it changes (and a longer run where whole
@@ -140,7 +142,8 @@ def run_case(unzipdir, md, values, stop_time, queue):
     vars_ = {v.name: v for v in md.modelVariables}
     outputs = [v for v in md.modelVariables if v.causality == "output" and v.type == "Real"]
     reals = ["joint.journalRadius", "rod.length", "crank.length", "joint.clearance",
-             "crankPin.journalRadius", "crankPin.clearance", "solver.relativeTolerance"]
+             "solver.relativeTolerance"]
+    reals += [f"{joint}.{name}" for joint in CRANK_JOINTS for name in ("journalRadius", "clearance")]
     record = {"values": values, "outcome": "ran", "message": "", "warnings": [],
               "violations": [], "max_step_wall": 0.0, "time_reached": 0.0, "wall": 0.0}
     fmu = FMU2Slave(guid=md.guid, unzipDirectory=unzipdir,
@@ -162,7 +165,8 @@ def run_case(unzipdir, md, values, stop_time, queue):
         fmu.exitInitializationMode()
         p = dict(zip(reals, fmu.getReal([vars_[n].valueReference for n in reals])))
         formulation = fmu.getInteger([vars_["rod.formulation"].valueReference])[0]
-        p["crankPin.model"] = fmu.getInteger([vars_["crankPin.model"].valueReference])[0]
+        for joint in CRANK_JOINTS:
+            p[f"{joint}.model"] = fmu.getInteger([vars_[f"{joint}.model"].valueReference])[0]
         stage = "run"
         rows = []
         t = 0.0
@@ -201,14 +205,13 @@ def check_row(row, p, formulation, warned, t, violations):
     if bad:
         violations.append(f"t = {t:.4g} s: non-finite {bad}")
         return
-    # A worn crank pin (crankPin.model 2 or 3) lengthens the stroke by its clearance too.
-    crank_pin_worn = p.get("crankPin.model", 1) != 1
-    crank_pin_gap = p["crankPin.clearance"] if crank_pin_worn else 0.0
-    r_c, l, c = p["crank.length"], p["rod.length"], p["joint.clearance"] + crank_pin_gap
+    # A worn crank pin or main bearing (model 2 or 3) lengthens the stroke by its clearance too.
+    worn = [joint for joint in CRANK_JOINTS if p.get(f"{joint}.model", 1) != 1]
+    r_c, l = p["crank.length"], p["rod.length"]
+    c = p["joint.clearance"] + sum(p[f"{joint}.clearance"] for joint in worn)
     x = row["slider.position"]
-    penetration = row["joint.penetration"] / p["joint.journalRadius"]
-    if crank_pin_worn:
-        penetration = max(penetration, row["crankPin.penetration"] / p["crankPin.journalRadius"])
+    penetration = max([row["joint.penetration"] / p["joint.journalRadius"]]
+                      + [row[f"{joint}.penetration"] / p[f"{joint}.journalRadius"] for joint in worn])
     exits = {
         "penetration": penetration > MONITORS["penetration"],
         "deflection": formulation != 1
