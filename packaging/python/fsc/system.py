@@ -31,6 +31,7 @@ ROOT = Path(__file__).resolve().parents[3]
 CRANK_FMU = ROOT / "target" / "fmu" / "FlexibleSliderCrank.fmu"
 MOTOR_FMU = ROOT / "target" / "fmu" / "DcMotor.fmu"
 SSP = ROOT / "target" / "fmu" / "MotorCrank.ssp"
+SSD = ROOT / "systems" / "motor-crank" / "SystemStructure.ssd"
 OSP = ROOT / "target" / "fmu" / "motor-crank" / "OspSystemStructure.xml"
 # The crank's parameters in the system (as bound in the SSP and the OSP file).
 CRANK_PARAMETERS = {"drive.mode": 2, "crank.inertia": 0.02}

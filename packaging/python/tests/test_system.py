@@ -46,7 +46,7 @@ def libcosim_run(execution):
     rows = []
     for k in range(1, round(STOP / STEP) + 1):
         assert execution.simulate_until(target_time=k * NS)
-        rows.append(observer.last_real_values(index["crank"],
+        rows.append(observer.last_real_values(index["sliderCrank"],
                                               [vr["crank.speed"], vr["joint.forcePeak"]]))
     return np.array(rows)
 
@@ -97,8 +97,34 @@ def test_fmpy_ssp_simulation_runs_the_system_with_connections_starting_at_zero()
     # (fmpy accumulates time in floating point: its loop takes one step past the stop time)
     n = len(expected)
     assert len(result) >= n
-    assert np.array_equal(result["crank.crank.speed"][:n], expected[:, 0])
-    assert np.array_equal(result["crank.joint.forcePeak"][:n], expected[:, 1])
+    assert np.array_equal(result["sliderCrank.crank.speed"][:n], expected[:, 0])
+    assert np.array_equal(result["sliderCrank.joint.forcePeak"][:n], expected[:, 1])
+
+
+def test_the_ssp_carries_what_omsimulator_needs():
+    """The SSD passes the SSP 1.0 schema (fmpy's read_ssd validates it) and carries OMSimulator's
+    annotation with its fixed-step master at the system's 1e-4 s step; no component name followed by
+    a dot starts one of its parameter bindings' or connectors' names (OMSimulator strips such a
+    prefix from binding names), and the OSP file names its simulators alike."""
+    from lxml import etree
+
+    read_ssd(str(system.SSP))
+    ns = {"ssd": "http://ssp-standard.org/SSP1/SystemStructureDescription",
+          "ssc": "http://ssp-standard.org/SSP1/SystemStructureCommon",
+          "ssv": "http://ssp-standard.org/SSP1/SystemStructureParameterValues",
+          "oms": "https://raw.githubusercontent.com/OpenModelica/OMSimulator/master/schema/oms.xsd"}
+    root = etree.parse(str(system.SSD)).getroot()
+    masters = root.findall("ssd:System/ssd:Annotations/ssc:Annotation[@type='org.openmodelica']"
+                           "/oms:Annotations/oms:SimulationInformation/oms:FixedStepMaster", ns)
+    assert [float(m.get("stepSize")) for m in masters] == [STEP]
+    components = root.findall("ssd:System/ssd:Elements/ssd:Component", ns)
+    assert {c.get("name") for c in components} == {"dcMotor", "sliderCrank"}
+    for c in components:
+        names = [p.get("name") for p in c.findall(".//ssv:Parameter", ns)]
+        names += [k.get("name") for k in c.findall("ssd:Connectors/ssd:Connector", ns)]
+        assert names and not [n for n in names if n.startswith(c.get("name") + ".")], names
+    osp = etree.parse(str(system.OSP)).getroot()
+    assert {s.get("name") for s in osp.iter("{*}Simulator")} == {"dcMotor", "sliderCrank"}
 
 
 def test_first_order_input_derivatives_cut_the_coupling_error():
