@@ -1,8 +1,61 @@
 //! Error control shared by every method: tolerances, per-component error scales, the error norm,
-//! the initial step, and the statistics of a run.
+//! the step-size controller, the initial step, and the statistics of a run.
 
 use super::system::OdeSystem;
 use crate::error::{ModelError, require_positive};
+
+/// The step-size controller of every method, for an error estimate of order q (the power of h of
+/// the embedded error, 5 for Dormand–Prince and ESDIRK5(4), 2 for generalized-α):
+/// ```text
+/// accepted:  h_new = h · clamp(SAFETY · err^(−1/q), MIN_FACTOR, MAX_FACTOR)   (≤ h after a rejection)
+/// rejected:  h_new = h · clamp(SAFETY · err^(−1/q), MIN_FACTOR, 1)           (MIN_FACTOR if err is not finite)
+/// vetoed:    h_new = h · clamp(factor, VETO_MIN, VETO_MAX)                    (an event's own factor)
+/// ```
+/// (Hairer, Nørsett & Wanner 1993, §II.4.)
+pub(super) mod step_size {
+    use crate::math;
+
+    /// Safety factor on the optimal step.
+    pub const SAFETY: f64 = 0.9;
+    /// Largest shrinking per step.
+    pub const MIN_FACTOR: f64 = 0.2;
+    /// Largest growth per step.
+    pub const MAX_FACTOR: f64 = 5.0;
+    /// Range of the factor of a step vetoed by the system (a contact onset too deep).
+    pub const VETO_MIN: f64 = 1e-3;
+    /// See [`VETO_MIN`].
+    pub const VETO_MAX: f64 = 0.99;
+    /// Smallest error estimate the accepted step's factor is computed from (a zero estimate
+    /// would ask for an infinite step).
+    const ERROR_FLOOR: f64 = 1e-10;
+
+    /// The factor of the next step after a step accepted with error `err` (≤ 1) of order
+    /// `order`; no growth right after a rejection.
+    pub fn accepted(err: f64, order: i32, rejected_last: bool) -> f64 {
+        let factor = (SAFETY * math::powf(err.max(ERROR_FLOOR), -1.0 / f64::from(order)))
+            .clamp(MIN_FACTOR, MAX_FACTOR);
+        if rejected_last {
+            factor.min(1.0)
+        } else {
+            factor
+        }
+    }
+
+    /// The factor of the retried step after a step rejected with error `err` (> 1, or not
+    /// finite) of order `order`.
+    pub fn rejected(err: f64, order: i32) -> f64 {
+        if err.is_finite() {
+            (SAFETY * math::powf(err, -1.0 / f64::from(order))).clamp(MIN_FACTOR, 1.0)
+        } else {
+            MIN_FACTOR
+        }
+    }
+
+    /// The factor of a step the system vetoed with its own `factor`.
+    pub fn vetoed(factor: f64) -> f64 {
+        factor.clamp(VETO_MIN, VETO_MAX)
+    }
+}
 
 /// Error tolerances: a step is accepted when the RMS over i of
 /// err_i / (absolute · sᵢ + relative · rᵢ · max(|y_i|, |y_new,i|)) is at most 1, with sᵢ and rᵢ the
@@ -179,6 +232,24 @@ pub(super) fn initial_step<F: OdeSystem>(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The controller's factors: the optimal step with the safety factor inside the bounds, no
+    /// growth right after a rejection, the shortest retry for a non-finite error, and a veto
+    /// kept inside its range.
+    #[test]
+    fn the_step_size_controller_stays_in_its_bounds() {
+        use step_size::*;
+        // err = 2⁻⁵: the optimal factor 2, times the safety factor.
+        assert_eq!(accepted(1.0 / 32.0, 5, false), 0.9 * 2.0);
+        assert_eq!(accepted(1.0 / 32.0, 5, true), 1.0);
+        assert_eq!(accepted(0.0, 5, false), MAX_FACTOR);
+        assert_eq!(rejected(32.0, 5), 0.9 * 0.5);
+        assert_eq!(rejected(1e12, 5), MIN_FACTOR);
+        assert_eq!(rejected(f64::INFINITY, 5), MIN_FACTOR);
+        assert_eq!(rejected(f64::NAN, 2), MIN_FACTOR);
+        assert_eq!(vetoed(0.5), 0.5);
+        assert_eq!([vetoed(0.0), vetoed(2.0)], [VETO_MIN, VETO_MAX]);
+    }
 
     /// The norm is at least the largest held quantity's error in units of its tolerance.
     #[test]

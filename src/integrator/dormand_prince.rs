@@ -2,18 +2,20 @@
 //!
 //! ```text
 //! kᵢ = f(t + cᵢh, y + h Σⱼ aᵢⱼ kⱼ),  y₁ = y + h Σ bᵢ kᵢ (= stage 7, FSAL),  err = h Σ eᵢ kᵢ
-//! h_new = h · min(5, max(0.2, 0.9 · err^(−1/5)))    (no growth right after a rejection)
+//! h_new = h · min(5, max(0.2, 0.9 · err^(−1/5)))    (no growth right after a rejection;
+//!                                                     the controller of `super::control::step_size`)
 //! ```
 //!
 //! # References
 //! - Dormand & Prince (1980); Hairer, Nørsett & Wanner (1993), Table II.5.2 and code DOPRI5.
 
-use super::control::{ErrorScales, Stats, Tolerances, initial_step};
+use super::control::{ErrorScales, Stats, Tolerances, initial_step, step_size};
 use super::system::OdeSystem;
 use crate::error::ModelError;
 use crate::error::Num;
-use crate::math;
 
+/// Order q of the error estimate: err = O(h⁵).
+const ORDER: i32 = 5;
 const C: [f64; 7] = [0.0, 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0, 1.0, 1.0];
 const A: [[f64; 6]; 7] = [
     [0.0; 6],
@@ -204,7 +206,7 @@ impl DormandPrince {
                 limit.unwrap_or(*t + max_step),
                 &self.tolerances,
                 &self.scales,
-                5,
+                ORDER,
                 &mut self.y_stage,
                 &mut rest[0],
             );
@@ -232,17 +234,14 @@ impl DormandPrince {
             if let Some(factor) = veto {
                 self.stats.rejected += 1;
                 rejected_last = true;
-                self.h = h * factor.clamp(1e-3, 0.99);
+                self.h = h * step_size::vetoed(factor);
             } else if err <= 1.0 {
                 self.stats.steps += 1;
                 let next_limit = f.accept_step(*t, y, t_new, &self.y_stage);
                 *t = t_new;
                 y.copy_from_slice(&self.y_stage);
                 self.k.swap(0, 6);
-                let mut factor = (0.9 * math::powf(err.max(1e-10), -0.2)).clamp(0.2, 5.0);
-                if rejected_last {
-                    factor = factor.min(1.0);
-                }
+                let factor = step_size::accepted(err, ORDER, rejected_last);
                 // Keep the unclamped proposal when the step was shortened to hit the limit.
                 if !last || h >= self.h {
                     self.h = h * factor;
@@ -254,12 +253,7 @@ impl DormandPrince {
             } else {
                 self.stats.rejected += 1;
                 rejected_last = true;
-                let factor = if err.is_finite() {
-                    (0.9 * math::powf(err, -0.2)).max(0.2)
-                } else {
-                    0.2
-                };
-                self.h = h * factor;
+                self.h = h * step_size::rejected(err, ORDER);
             }
             if self.h < min_step {
                 return Err(ModelError::Numerical(format!(
@@ -331,8 +325,8 @@ mod tests {
                     .unwrap();
                 assert_eq!(t, piece.min(t_end));
             }
-            let err = ((y[0] - math::cos(omega * t)).powi(2)
-                + (y[1] / omega + math::sin(omega * t)).powi(2))
+            let err = ((y[0] - crate::math::cos(omega * t)).powi(2)
+                + (y[1] / omega + crate::math::sin(omega * t)).powi(2))
             .sqrt();
             errors.push(err);
             let stats = dp.stats();

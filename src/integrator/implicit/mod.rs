@@ -35,14 +35,13 @@
 //! - E. Hairer, G. Wanner (1996), Solving Ordinary Differential Equations II, 2nd ed., §IV.8
 //!   (simplified Newton, convergence rate, Jacobian reuse, error-estimate filtering).
 
-use super::control::{ErrorScales, Stats, Tolerances, initial_step};
+use super::control::{ErrorScales, Stats, Tolerances, initial_step, step_size};
 use super::esdirk::Tableau;
 use super::generalized_alpha::GeneralizedAlpha;
 use super::system::MechanicalSystem;
 use crate::error::ModelError;
 use crate::error::Num;
 use crate::linalg::lu::Lu;
-use crate::math;
 
 mod stages;
 
@@ -52,6 +51,8 @@ const MAX_ITERATIONS: usize = 7;
 const NEWTON_TOLERANCE: f64 = 0.3;
 /// A step whose slowest Newton convergence rate exceeds this asks for a new Jacobian.
 const REUSE_RATE: f64 = 0.1;
+/// Step-size ratios for which the step (and the factorisation) is kept, as RADAU5 does.
+const KEPT_STEP_RATIOS: std::ops::RangeInclusive<f64> = 1.0..=1.2;
 /// Marks the start of the last accepted step among the predictor's known points.
 const HISTORY: usize = usize::MAX;
 
@@ -356,15 +357,13 @@ impl Implicit {
                 Ok(err) if err > 1.0 => {
                     self.state.stats.rejected += 1;
                     rejected_last = true;
-                    self.state.h = h
-                        * (0.9 * math::powf(err, -1.0 / f64::from(self.scheme.error_order())))
-                            .clamp(0.2, 1.0);
+                    self.state.h = h * step_size::rejected(err, self.scheme.error_order());
                 }
                 Ok(err) => {
                     if let Some(factor) = f.check_step(*t, y, t_new, &self.y_new) {
                         self.state.stats.rejected += 1;
                         rejected_last = true;
-                        self.state.h = h * factor.clamp(1e-3, 0.99);
+                        self.state.h = h * step_size::vetoed(factor);
                     } else {
                         self.accept(f, t, y, t_new, h, err, last, rejected_last);
                         return Ok(true);
@@ -476,14 +475,9 @@ impl Implicit {
         if self.step_rate > REUSE_RATE {
             self.state.jacobian_stale = true;
         }
-        let mut factor = (0.9
-            * math::powf(err.max(1e-10), -1.0 / f64::from(self.scheme.error_order())))
-        .clamp(0.2, 5.0);
-        if rejected_last {
-            factor = factor.min(1.0);
-        }
+        let mut factor = step_size::accepted(err, self.scheme.error_order(), rejected_last);
         // Keep h (and the factorisation) for small increases, as RADAU5 does.
-        if (1.0..=1.2).contains(&factor) && !self.state.jacobian_stale {
+        if KEPT_STEP_RATIOS.contains(&factor) && !self.state.jacobian_stale {
             factor = 1.0;
         }
         // Keep the unclamped proposal when the last step was shortened to hit t_end.
@@ -542,8 +536,8 @@ mod tests {
                 .step(&mut f, &mut t, &mut y, Some(t_end), u64::MAX)
                 .unwrap();
         }
-        let error = ((y[0] - math::cos(omega * t)).powi(2)
-            + (y[1] / omega + math::sin(omega * t)).powi(2))
+        let error = ((y[0] - crate::math::cos(omega * t)).powi(2)
+            + (y[1] / omega + crate::math::sin(omega * t)).powi(2))
         .sqrt();
         let energy = y[0] * y[0] + (y[1] / omega).powi(2);
         (error, (1.0 - energy).abs())
