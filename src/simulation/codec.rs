@@ -3,6 +3,7 @@
 //! [`super::Snapshot`] and by the FMU state that wraps it.
 
 use super::peaks::Peaks;
+use super::step::StepPoint;
 use crate::integrator::Stats;
 use crate::mechanism::{ContactState, Contacts, InputSignal, Inputs};
 
@@ -59,6 +60,12 @@ impl ByteWriter<'_> {
             self.u8(u8::from(c.in_contact));
             self.f64(c.impact_velocity);
         }
+    }
+    /// Writes a step point: its time, state and derivative.
+    pub fn step_point(&mut self, p: &StepPoint) {
+        self.f64(p.time);
+        self.f64s(&p.y);
+        self.f64s(&p.f);
     }
     /// Writes peak values.
     pub fn peaks(&mut self, p: &Peaks) {
@@ -164,6 +171,14 @@ impl<'a> ByteReader<'a> {
             };
         }
         Ok(contacts)
+    }
+    /// Reads a step point.
+    pub fn step_point(&mut self) -> Result<StepPoint, CodecError> {
+        Ok(StepPoint {
+            time: self.f64()?,
+            y: self.f64s()?,
+            f: self.f64s()?,
+        })
     }
     /// Reads peak values.
     pub fn peaks(&mut self) -> Result<Peaks, CodecError> {

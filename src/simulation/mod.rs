@@ -7,12 +7,14 @@ mod outputs;
 mod peaks;
 mod restore;
 mod snapshot;
+mod step;
 pub mod validity;
 
 pub use self::outputs::Outputs;
 use self::peaks::AcceptedStep;
 pub use self::peaks::{PeakHold, Peaks};
 pub use self::snapshot::Snapshot;
+pub use self::step::StepPoint;
 use self::validity::Monitor;
 use crate::error::{ModelError, Num};
 use crate::integrator::{Integrator, Stats};
@@ -37,13 +39,10 @@ pub struct Simulation {
     integrator: Integrator,
     time: f64,
     state: Vec<f64>,
-    step_start: f64,
-    y_start: Vec<f64>,
-    f_start: Vec<f64>,
+    /// The last accepted step's start, the contact state there, and its end (≥ `time`).
+    start: StepPoint,
     contact_start: Contacts,
-    step_end: f64,
-    y_end: Vec<f64>,
-    f_end: Vec<f64>,
+    end: StepPoint,
     scratch: Vec<f64>,
     y_sample: Vec<f64>,
     /// Accelerations of the dense output at a peak-hold sample (velocity rows).
@@ -126,13 +125,9 @@ impl Simulation {
             mechanism,
             integrator,
             time: 0.0,
-            y_start: state.clone(),
-            f_start: vec![0.0; state.len()],
-            y_end: state.clone(),
-            f_end: vec![0.0; state.len()],
+            start: StepPoint::at_rest(0.0, &state),
+            end: StepPoint::at_rest(0.0, &state),
             state,
-            step_start: 0.0,
-            step_end: 0.0,
             next,
             inputs_set: false,
             peaks: PeakHold::default(),
@@ -155,9 +150,9 @@ impl Simulation {
     /// moves with it.
     pub fn set_time(&mut self, time: f64) {
         let time = on_clock_grid(time);
-        if self.step_end == self.time {
-            self.step_start = time;
-            self.step_end = time;
+        if self.end.time == self.time {
+            self.start.time = time;
+            self.end.time = time;
         }
         self.time = time;
     }
@@ -222,7 +217,7 @@ impl Simulation {
     /// contact there, else the one latched at the step end).
     fn contact_now(&self) -> Contacts {
         let mut contacts = self.mechanism.contact_state();
-        if self.time >= self.step_end {
+        if self.time >= self.end.time {
             return contacts;
         }
         for role in JointRole::ALL {
@@ -241,15 +236,15 @@ impl Simulation {
 
     /// Restarts the step sequence at the current time from the current state.
     fn restart_here(&mut self) {
-        if self.step_end > self.time {
+        if self.end.time > self.time {
             let contact = self.contact_now();
             self.mechanism.set_contact_state(contact);
-            self.y_end.copy_from_slice(&self.state);
-            self.step_end = self.time;
+            self.end.y.copy_from_slice(&self.state);
+            self.end.time = self.time;
             self.peaks.pending = false;
         }
-        self.step_start = self.step_end;
-        self.y_start.copy_from_slice(&self.y_end);
+        self.start.time = self.end.time;
+        self.start.y.copy_from_slice(&self.end.y);
         self.contact_start = self.mechanism.contact_state();
         self.integrator.restart();
     }
@@ -266,6 +261,15 @@ impl Simulation {
             )));
         }
         let t_start = self.time;
+        let limit = self.apply_next_inputs(t_start, t_end)?;
+        self.step_through(t_start, t_end, limit)?;
+        self.finish_interval(t_end)
+    }
+
+    /// Makes the inputs set for the interval [`t_start`, `t_end`] the mechanism's: a change that
+    /// acts restarts the step sequence here (the steps then end exactly at `t_end`, the returned
+    /// limit), a changed prescribed speed jumps the velocities through the constraints.
+    fn apply_next_inputs(&mut self, t_start: f64, t_end: f64) -> Result<Option<f64>, ModelError> {
         self.next.start = t_start;
         let next = self.next;
         let drive = self.parameters.drive_mode;
@@ -298,26 +302,37 @@ impl Simulation {
                     Num(next.value.drive_speed)
                 ));
             }
-            let work = self.mechanism.project_velocities(&mut self.y_end)?;
-            self.y_end[self.mechanism.layout().drive_work()] += work;
-            self.state.copy_from_slice(&self.y_end);
-            self.y_start.copy_from_slice(&self.y_end);
+            let work = self.mechanism.project_velocities(&mut self.end.y)?;
+            self.end.y[self.mechanism.layout().drive_work()] += work;
+            self.state.copy_from_slice(&self.end.y);
+            self.start.y.copy_from_slice(&self.end.y);
         }
+        Ok(limit)
+    }
+
+    /// Steps until the integrator's point reaches `t_end` (at most at `limit`), recording each
+    /// accepted step's peaks; on failure the simulation stops at the last accepted step.
+    fn step_through(
+        &mut self,
+        t_start: f64,
+        t_end: f64,
+        limit: Option<f64>,
+    ) -> Result<(), ModelError> {
         self.peaks.interval = Peaks::default();
-        if self.peaks.pending && self.step_end <= t_end {
+        if self.peaks.pending && self.end.time <= t_end {
             self.peaks.take_step_end();
         }
         let work_start = self.work();
-        while self.step_end < t_end {
+        while self.end.time < t_end {
             let used = self.work() - work_start;
             let budget = (self.parameters.max_steps_per_interval as u64).saturating_sub(used);
-            self.step_start = self.step_end;
-            self.y_start.copy_from_slice(&self.y_end);
+            self.start.time = self.end.time;
+            self.start.y.copy_from_slice(&self.end.y);
             self.contact_start = self.mechanism.contact_state();
             match self.integrator.step(
                 &mut self.mechanism,
-                &mut self.step_end,
-                &mut self.y_end,
+                &mut self.end.time,
+                &mut self.end.y,
                 limit,
                 budget,
             ) {
@@ -326,7 +341,7 @@ impl Simulation {
                     let error = failure::work_limit(
                         &self.parameters,
                         (t_start, t_end),
-                        self.step_end,
+                        self.end.time,
                         self.integrator.step_size(),
                     );
                     return Err(self.stop_at_step_end(error));
@@ -337,31 +352,37 @@ impl Simulation {
                 }
             }
             let (f0, f1) = self.integrator.derivatives();
-            self.f_start.copy_from_slice(f0);
-            self.f_end.copy_from_slice(f1);
+            self.start.f.copy_from_slice(f0);
+            self.end.f.copy_from_slice(f1);
             self.record_step_end()?;
-            if self.step_end <= t_end {
+            if self.end.time <= t_end {
                 self.peaks.take_step_end();
             }
         }
+        Ok(())
+    }
+
+    /// Ends the interval at `t_end`: the state there (the dense output of the last step when it
+    /// ends beyond), the inputs held from there.
+    fn finish_interval(&mut self, t_end: f64) -> Result<(), ModelError> {
         self.time = t_end;
         self.hold_inputs();
         self.inputs_set = false;
-        if t_end == self.step_end {
-            self.state.copy_from_slice(&self.y_end);
+        if t_end == self.end.time {
+            self.state.copy_from_slice(&self.end.y);
         } else {
-            let h = self.step_end - self.step_start;
+            let h = self.end.time - self.start.time;
             self.mechanism
                 .with_contact_state(self.contact_start, |mechanism| {
                     self.integrator.state_within(
                         mechanism,
-                        self.step_start,
+                        self.start.time,
                         h,
-                        &self.y_start,
-                        &self.f_start,
-                        &self.y_end,
-                        &self.f_end,
-                        (t_end - self.step_start) / h,
+                        &self.start.y,
+                        &self.start.f,
+                        &self.end.y,
+                        &self.end.f,
+                        (t_end - self.start.time) / h,
                         &mut self.state,
                     )
                 })?;
@@ -384,10 +405,10 @@ impl Simulation {
     /// Ends a failed interval at the last accepted step (where the simulation stays usable) and
     /// passes the error on.
     fn stop_at_step_end(&mut self, error: ModelError) -> ModelError {
-        self.time = self.step_end;
+        self.time = self.end.time;
         self.hold_inputs();
         self.inputs_set = false;
-        self.state.copy_from_slice(&self.y_end);
+        self.state.copy_from_slice(&self.end.y);
         error
     }
 
@@ -402,27 +423,23 @@ impl Simulation {
         let end = self.mechanism.contact_state();
         let onsets = JointRole::ALL
             .map(|role| u64::from(!self.contact_start[role].in_contact && end[role].in_contact));
-        self.mechanism.set_time(self.step_end);
-        let at_end = match self.mechanism.clearance_joint_load(&self.y_end) {
+        self.mechanism.set_time(self.end.time);
+        let at_end = match self.mechanism.clearance_joint_load(&self.end.y) {
             Some((force, acceleration)) => {
-                let loads = self.mechanism.loads(&self.y_end, &self.f_end, force);
+                let loads = self.mechanism.loads(&self.end.y, &self.end.f, force);
                 peaks::sample(force, acceleration, &loads)
             }
             None => {
-                let ev = *self.mechanism.evaluate(&self.y_end, &mut self.scratch)?;
+                let ev = *self.mechanism.evaluate(&self.end.y, &mut self.scratch)?;
                 let loads = self
                     .mechanism
-                    .loads(&self.y_end, &self.scratch, ev.joint_force);
+                    .loads(&self.end.y, &self.scratch, ev.joint_force);
                 peaks::sample(ev.joint_force, ev.slider_acceleration, &loads)
             }
         };
         let step = AcceptedStep {
-            start: self.step_start,
-            end: self.step_end,
-            y_start: &self.y_start,
-            f_start: &self.f_start,
-            y_end: &self.y_end,
-            f_end: &self.f_end,
+            start: &self.start,
+            end: &self.end,
             contact_start: self.contact_start,
         };
         let within = peaks::within_step(
@@ -441,7 +458,7 @@ impl Simulation {
     /// outputs show) against the [`validity`] limits; each cause warns once.
     fn check_validity(&mut self, at_step_end: bool) {
         let (t, y) = if at_step_end {
-            (self.step_end, &self.y_end)
+            (self.end.time, &self.end.y)
         } else {
             (self.time, &self.state)
         };

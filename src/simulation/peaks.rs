@@ -3,6 +3,7 @@
 
 use nalgebra::Vector2;
 
+use super::step::StepPoint;
 use crate::integrator::dense;
 use crate::joint::JointRole;
 use crate::mechanism::{Contacts, Loads, SliderCrank};
@@ -180,12 +181,8 @@ fn parabola_vertex(f: &[f64]) -> Option<f64> {
 /// The step just accepted, whose dense output the peaks are sampled from: its start and end times,
 /// states and derivatives, and the contact state it was integrated with.
 pub(super) struct AcceptedStep<'a> {
-    pub(super) start: f64,
-    pub(super) end: f64,
-    pub(super) y_start: &'a [f64],
-    pub(super) f_start: &'a [f64],
-    pub(super) y_end: &'a [f64],
-    pub(super) f_end: &'a [f64],
+    pub(super) start: &'a StepPoint,
+    pub(super) end: &'a StepPoint,
     pub(super) contact_start: Contacts,
 }
 
@@ -258,11 +255,12 @@ fn load_within(
     acceleration: &mut [f64],
     k: f64,
 ) -> Sample {
-    let h = step.end - step.start;
+    let (start, end) = (step.start, step.end);
+    let h = end.time - start.time;
     let theta = k / (PEAK_SAMPLES + 1) as f64;
-    mechanism.set_time(step.start + theta * h);
+    mechanism.set_time(start.time + theta * h);
     let n_q = mechanism.n_coordinates();
-    let (y0, f0, y1, f1) = (step.y_start, step.f_start, step.y_end, step.f_end);
+    let (y0, f0, y1, f1) = (&start.y, &start.f, &end.y, &end.f);
     dense::interpolate(n_q, h, y0, f0, y1, f1, theta, sample);
     dense::acceleration(n_q, h, y0, f0, y1, f1, theta, acceleration);
     let (force, slider_acceleration) = mechanism

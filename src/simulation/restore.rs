@@ -10,13 +10,9 @@ impl Simulation {
         Snapshot {
             time: self.time,
             state: self.state.clone(),
-            step_start: (
-                self.step_start,
-                self.y_start.clone(),
-                self.f_start.clone(),
-                self.contact_start,
-            ),
-            step_end: (self.step_end, self.y_end.clone(), self.f_end.clone()),
+            step_start: self.start.clone(),
+            contact_start: self.contact_start,
+            step_end: self.end.clone(),
             integrator: self.integrator.state(),
             contact: self.mechanism.contact_state(),
             signal: *self.mechanism.input_signal(),
@@ -32,10 +28,10 @@ impl Simulation {
         let n = self.state.len();
         let lengths = [
             snapshot.state.len(),
-            snapshot.step_start.1.len(),
-            snapshot.step_start.2.len(),
-            snapshot.step_end.1.len(),
-            snapshot.step_end.2.len(),
+            snapshot.step_start.y.len(),
+            snapshot.step_start.f.len(),
+            snapshot.step_end.y.len(),
+            snapshot.step_end.f.len(),
         ];
         if lengths.iter().any(|&l| l != n) {
             return Err(ModelError::Numerical(format!(
@@ -45,13 +41,9 @@ impl Simulation {
         self.integrator.set_state(&snapshot.integrator)?;
         self.time = snapshot.time;
         self.state.copy_from_slice(&snapshot.state);
-        self.step_start = snapshot.step_start.0;
-        self.y_start.copy_from_slice(&snapshot.step_start.1);
-        self.f_start.copy_from_slice(&snapshot.step_start.2);
-        self.contact_start = snapshot.step_start.3;
-        self.step_end = snapshot.step_end.0;
-        self.y_end.copy_from_slice(&snapshot.step_end.1);
-        self.f_end.copy_from_slice(&snapshot.step_end.2);
+        self.start.copy_from(&snapshot.step_start);
+        self.contact_start = snapshot.contact_start;
+        self.end.copy_from(&snapshot.step_end);
         self.mechanism.set_contact_state(snapshot.contact);
         self.mechanism
             .set_input_signal(snapshot.signal, snapshot.time);

@@ -2,6 +2,7 @@
 
 use super::codec::{ByteReader, ByteWriter, CodecError, signal_values};
 use super::peaks::PeakHold;
+use super::step::StepPoint;
 use crate::integrator::{ImplicitState, IntegratorState};
 use crate::mechanism::{Contacts, InputSignal};
 
@@ -12,11 +13,12 @@ pub struct Snapshot {
     pub time: f64,
     /// State at `time`.
     pub state: Vec<f64>,
-    /// The last accepted step: start time, state, its derivative and the contact state there.
-    pub step_start: (f64, Vec<f64>, Vec<f64>, Contacts),
-    /// The end of the last accepted step (the integrator's point, ≥ `time`): time, state and its
-    /// derivative.
-    pub step_end: (f64, Vec<f64>, Vec<f64>),
+    /// The start of the last accepted step.
+    pub step_start: StepPoint,
+    /// The contact state at the step's start.
+    pub contact_start: Contacts,
+    /// The end of the last accepted step (the integrator's point, ≥ `time`).
+    pub step_end: StepPoint,
     /// Integrator state (step size, f at the step end, Jacobian, statistics).
     pub integrator: IntegratorState,
     /// Contact states at the step end.
@@ -37,17 +39,10 @@ impl Snapshot {
     /// Whether every time, state and input (with its derivatives) is a finite number.
     pub fn is_finite(&self) -> bool {
         let finite = |v: &[f64]| v.iter().all(|x| x.is_finite());
-        let vectors = [
-            &self.state,
-            &self.step_start.1,
-            &self.step_start.2,
-            &self.step_end.1,
-            &self.step_end.2,
-        ];
         self.time.is_finite()
-            && self.step_start.0.is_finite()
-            && self.step_end.0.is_finite()
-            && vectors.iter().all(|v| finite(v))
+            && finite(&self.state)
+            && self.step_start.is_finite()
+            && self.step_end.is_finite()
             && [&self.signal, &self.next]
                 .iter()
                 .all(|s| finite(&signal_values(s)))
@@ -57,13 +52,9 @@ impl Snapshot {
     pub fn write(&self, w: &mut ByteWriter<'_>) {
         w.f64(self.time);
         w.f64s(&self.state);
-        w.f64(self.step_start.0);
-        w.f64s(&self.step_start.1);
-        w.f64s(&self.step_start.2);
-        w.contact(&self.step_start.3);
-        w.f64(self.step_end.0);
-        w.f64s(&self.step_end.1);
-        w.f64s(&self.step_end.2);
+        w.step_point(&self.step_start);
+        w.contact(&self.contact_start);
+        w.step_point(&self.step_end);
         match &self.integrator {
             IntegratorState::DormandPrince {
                 h,
@@ -109,8 +100,9 @@ impl Snapshot {
     pub fn read(r: &mut ByteReader<'_>) -> Result<Self, CodecError> {
         let sim_time = r.f64()?;
         let state_vector = r.f64s()?;
-        let step_start = (r.f64()?, r.f64s()?, r.f64s()?, r.contact()?);
-        let step_end = (r.f64()?, r.f64s()?, r.f64s()?);
+        let step_start = r.step_point()?;
+        let contact_start = r.contact()?;
+        let step_end = r.step_point()?;
         let integrator = match r.u8()? {
             0 => IntegratorState::DormandPrince {
                 h: r.f64()?,
@@ -142,6 +134,7 @@ impl Snapshot {
             time: sim_time,
             state: state_vector,
             step_start,
+            contact_start,
             step_end,
             integrator,
             contact,

@@ -1,0 +1,37 @@
+//! The points of the integrator's step sequence the simulation keeps: the start and the end of
+//! the last accepted step.
+
+/// A point of the integrator's step sequence: its time, the state there and the state's
+/// derivative (what the dense output between two points is made of).
+#[derive(Clone, Debug, PartialEq)]
+pub struct StepPoint {
+    /// Time \[s\].
+    pub time: f64,
+    /// State.
+    pub y: Vec<f64>,
+    /// Its time derivative.
+    pub f: Vec<f64>,
+}
+
+impl StepPoint {
+    /// The point at `time` with state `y` and a zero derivative.
+    pub fn at_rest(time: f64, y: &[f64]) -> Self {
+        Self {
+            time,
+            y: y.to_vec(),
+            f: vec![0.0; y.len()],
+        }
+    }
+
+    /// Whether time, state and derivative are finite numbers.
+    pub fn is_finite(&self) -> bool {
+        self.time.is_finite() && self.y.iter().chain(&self.f).all(|x| x.is_finite())
+    }
+
+    /// Copies `other` into this point (of the same length).
+    pub fn copy_from(&mut self, other: &StepPoint) {
+        self.time = other.time;
+        self.y.copy_from_slice(&other.y);
+        self.f.copy_from_slice(&other.f);
+    }
+}
