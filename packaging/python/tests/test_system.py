@@ -127,6 +127,14 @@ def test_the_ssp_carries_what_omsimulator_needs():
     assert {s.get("name") for s in osp.iter("{*}Simulator")} == {"dcMotor", "sliderCrank"}
 
 
+def test_the_documented_stable_steps_hold():
+    """Over 0.2 s with held inputs the system stays stable at the largest documented communication
+    steps (Jacobi 3e-4 s, Gauss-Seidel 1e-3 s) and diverges just beyond them (5e-4 s, 3e-3 s)."""
+    table = system.stability(steps=(3e-4, 5e-4, 1e-3, 3e-3))
+    assert [table["jacobi"][h][2] for h in (3e-4, 5e-4)] == [True, False]
+    assert [table["gauss-seidel"][h][2] for h in (1e-3, 3e-3)] == [True, False]
+
+
 def test_first_order_input_derivatives_cut_the_coupling_error():
     """Crank speed at 1 ms against a 2.5e-6 s run with second-order inputs, the crank at
     solver.relativeTolerance 1e-6: first-order input derivatives give at least 2x less error than
