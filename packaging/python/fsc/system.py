@@ -77,8 +77,6 @@ def run(step, stop, scheme="held", outputs=("crank.speed",), zero_start=False, c
     connection to 0 before the first step instead of exchanging the initial outputs (the scheme of
     fmpy's simulate_ssp); `crank_parameters` are set on top of the system's; `coupling` is
     "jacobi" or "gauss-seidel" (held inputs only: the motor steps first)."""
-    if coupling == "gauss-seidel":
-        return run_gauss_seidel(step, stop, outputs, crank_parameters)
     motor, crank = Slave(MOTOR_FMU, "motor"), Slave(CRANK_FMU, "crank")
     crank.set({**CRANK_PARAMETERS, **(crank_parameters or {})})
     for s in (motor, crank):
@@ -88,6 +86,13 @@ def run(step, stop, scheme="held", outputs=("crank.speed",), zero_start=False, c
     rows, n = [], round(stop / step)
     for k in range(n):
         t = k * step
+        if coupling == "gauss-seidel":
+            motor.set({"shaft.speed": crank.get("crank.speed")})
+            motor.fmu.doStep(t, step)
+            crank.set({"drive.torque": motor.get("shaft.torque")})
+            crank.fmu.doStep(t, step)
+            rows.append(((k + 1) * step, read(outputs, crank, motor)))
+            continue
         if zero_start and k == 0:
             torque = speed = 0.0
         else:
@@ -108,33 +113,15 @@ def run(step, stop, scheme="held", outputs=("crank.speed",), zero_start=False, c
                     slave.fmu.setRealInputDerivatives([slave.vr[name]], [order], [value])
         crank.fmu.doStep(t, step)
         motor.fmu.doStep(t, step)
-        values = {name: (crank if name in crank.vr else motor).get(name) for name in outputs}
-        rows.append(((k + 1) * step, values))
+        rows.append(((k + 1) * step, read(outputs, crank, motor)))
     motor.free()
     crank.free()
     return rows
 
 
-def run_gauss_seidel(step, stop, outputs, crank_parameters):
-    """`run` as a Gauss-Seidel loop with held inputs: the motor steps with the crank's last speed,
-    then the crank with the motor's new shaft torque."""
-    motor, crank = Slave(MOTOR_FMU, "motor"), Slave(CRANK_FMU, "crank")
-    crank.set({**CRANK_PARAMETERS, **(crank_parameters or {})})
-    for s in (motor, crank):
-        s.fmu.enterInitializationMode()
-        s.fmu.exitInitializationMode()
-    rows = []
-    for k in range(round(stop / step)):
-        t = k * step
-        motor.set({"shaft.speed": crank.get("crank.speed")})
-        motor.fmu.doStep(t, step)
-        crank.set({"drive.torque": motor.get("shaft.torque")})
-        crank.fmu.doStep(t, step)
-        values = {name: (crank if name in crank.vr else motor).get(name) for name in outputs}
-        rows.append(((k + 1) * step, values))
-    motor.free()
-    crank.free()
-    return rows
+def read(outputs, crank, motor):
+    """{name: value} of `outputs`, each from the FMU that has it (the crank's first)."""
+    return {name: (crank if name in crank.vr else motor).get(name) for name in outputs}
 
 
 #: Communication steps of the stability table [s], and the bounds of a stable run over 0.2 s: the
