@@ -552,6 +552,54 @@ mod tests {
         );
     }
 
+    /// The crank joints' held errors are the errors of their journals' normal velocities: for a
+    /// small error δ in θ, θ̇, ṙ_A and ṙ_G they equal |n · (ė(y + δ) − ė(y))| (the free crank,
+    /// both crank joints dry and off centre).
+    #[test]
+    fn the_crank_joints_held_errors_are_their_normal_velocity_errors() {
+        let worn = JointParameters {
+            model: JointModel::Dry,
+            ..JointParameters::benchmark()
+        };
+        let p = Parameters {
+            crank_pin: worn,
+            main_bearing: worn,
+            ..Parameters::default()
+        };
+        let m = SliderCrank::new(&p).expect("worn crank joints build");
+        let l = m.layout();
+        let g = l.crank_centre().expect("a free crank");
+        let mut y = m.initial_state(0.3, 400.0);
+        y[g] += 3e-6;
+        y[g + 1] -= 4e-6;
+        y[PIN_A] += 2e-6;
+        let mut err = vec![0.0; y.len()];
+        err[CRANK_ANGLE] = 1e-7;
+        err[l.crank_speed()] = 2e-3;
+        for (at, e) in [
+            (l.rate_of(PIN_A), [1e-4, -2e-4]),
+            (l.rate_of(g), [3e-4, 1e-4]),
+        ] {
+            err[at..at + 2].copy_from_slice(&e);
+        }
+        let mut out = [0.0; 3];
+        m.held_errors(&y, &err, &mut out);
+        let shifted: Vec<f64> = y.iter().zip(&err).map(|(a, b)| a + b).collect();
+        for (held, role) in out
+            .iter()
+            .zip([JointRole::MainBearing, JointRole::CrankPin])
+        {
+            let kin = m.joint_kinematics(role, &y);
+            let change = m.joint_kinematics(role, &shifted).e_dot - kin.e_dot;
+            let expected = kin.normal().dot(&change).abs();
+            assert!(expected > 1e-6, "{role:?}: {expected}");
+            assert!(
+                (held - expected).abs() < 1e-6 * expected,
+                "{role:?}: {held} vs {expected}"
+            );
+        }
+    }
+
     /// The joint load from the kinematics alone equals the full right-hand side's, for every
     /// clearance joint and rod, in contact (inside and at the start of an event) and with a
     /// slider force; the ideal joint has none.
