@@ -8,7 +8,7 @@ use faer::Mat;
 use flexible_slider_crank::ancf::element::ElementVector;
 use flexible_slider_crank::ancf::{Rod, RodProperties};
 use flexible_slider_crank::math;
-use flexible_slider_crank::reduction::{Boundary, RodModel};
+use flexible_slider_crank::reduction::{Boundary, Quadrature, RodModel};
 use nalgebra::Vector2;
 
 /// A deformed (bent and stretched) configuration: straight rod plus a smooth transverse bow.
@@ -67,7 +67,7 @@ fn reduced(c: &mut Criterion) {
     for m in [2, 4, 8] {
         models.push((
             format!("nModes={m}"),
-            RodModel::craig_bampton(rod(8), m, Boundary::PositionsAndSlopes),
+            RodModel::craig_bampton(rod(8), m, Boundary::PositionsAndSlopes, Quadrature::Full),
         ));
     }
     for (name, model) in models {

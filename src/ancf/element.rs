@@ -83,6 +83,33 @@ struct Bending {
     g_e: ElementVector,
 }
 
+/// The curvature κ = f/g (f = r' × r'', g = r'·r') at a point and its variation
+/// κ_e = f_e/g − f g_e/g² written as κ_e = s' ⊗ a + s'' ⊗ b for the point's shape derivatives
+/// s', s'' (of an element, or rows of a reduced basis), with a = (r''_y, −r''_x)/g − 2f r'/g² and
+/// b = (−r'_y, r'_x)/g.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Curvature {
+    pub a: Vector2<f64>,
+    pub b: Vector2<f64>,
+    pub f: f64,
+    pub g: f64,
+}
+
+impl Curvature {
+    /// The curvature terms of the slope `r_x` = r' and its derivative `r_xx` = r''.
+    #[inline]
+    pub fn at(r_x: Vector2<f64>, r_xx: Vector2<f64>) -> Self {
+        let f = cross(r_x, r_xx);
+        let g = r_x.norm_squared();
+        Self {
+            a: Vector2::new(r_xx.y, -r_xx.x) / g - (2.0 * f / (g * g)) * r_x,
+            b: Vector2::new(-r_x.y, r_x.x) / g,
+            f,
+            g,
+        }
+    }
+}
+
 /// [sₖ v_d] for k = 0..4, d = 0..2, in element coordinate order.
 fn kron(s: &Vector4<f64>, v: Vector2<f64>) -> ElementVector {
     ElementVector::from_fn(|i, _| s[i / 2] * v[i % 2])
@@ -119,6 +146,18 @@ impl Element {
             bending: std::array::from_fn(|i| point(GAUSS_3.unit_node(i, l))),
             barlow: std::array::from_fn(|i| point(GAUSS_2.unit_node(i, l))),
         }
+    }
+
+    /// The axial quadrature points: s'(ξ) and the weight scaled to the element's length.
+    pub(crate) fn axial_points(&self) -> impl Iterator<Item = (Vector4<f64>, f64)> + '_ {
+        self.axial.iter().map(|p| (p.s_x, p.weight))
+    }
+
+    /// The bending quadrature points: s'(ξ), s''(ξ) and the weight scaled to the element's length.
+    pub(crate) fn bending_points(
+        &self,
+    ) -> impl Iterator<Item = (Vector4<f64>, Vector4<f64>, f64)> + '_ {
+        self.bending.iter().map(|p| (p.s_x, p.s_xx, p.weight))
     }
 
     /// Reference length l \[m\].
@@ -275,13 +314,8 @@ impl Element {
         }
         let curvature: [_; 3] = std::array::from_fn(|i| {
             let p = &self.bending[i];
-            let r_x = field(&p.s_x, e);
-            let r_xx = field(&p.s_xx, e);
-            let f = cross(r_x, r_xx);
-            let g = r_x.norm_squared();
-            let a = Vector2::new(r_xx.y, -r_xx.x) / g - (2.0 * f / (g * g)) * r_x;
-            let b = Vector2::new(-r_x.y, r_x.x) / g;
-            (a, b, ei * f / g)
+            let c = Curvature::at(field(&p.s_x, e), field(&p.s_xx, e));
+            (c.a, c.b, ei * c.f / c.g)
         });
         for (p, (a, b, mut m)) in self.bending.iter().zip(curvature) {
             if let Some(e_dot) = e_dot {

@@ -189,6 +189,19 @@ pub const ENUMERATIONS: &[Enumeration] = &[
             ),
         ],
     },
+    Enumeration {
+        name: "RodQuadrature",
+        items: &[
+            (
+                "full",
+                "every quadrature point of the mesh the rod was reduced from",
+            ),
+            (
+                "sampled",
+                "a few weighted points fitted at initialization (energy-conserving sampling and weighting): cost independent of rod.nElements",
+            ),
+        ],
+    },
 ];
 
 /// Units: name and SI base-unit exponents (kg, m, s, A, rad), or None where FMI 2's integer
@@ -403,6 +416,7 @@ pub enum Vr {
     MainBearingContactOnsets,
     MainBearingContactOnsetsTotal,
     MainBearingInitialState,
+    RodQuadrature,
 }
 
 /// 5000 rpm in rad/s (benchmark B); the same expression as `params::BENCHMARK_SPEED`.
@@ -631,15 +645,17 @@ macro_rules! joint_rows {
 pub const VARIABLES: &[Variable] = &concat::<N_VARIABLES>(
     BASE_VARIABLES,
     [&CRANK_PIN_VARIABLES, &MAIN_BEARING_VARIABLES],
+    LATER_VARIABLES,
 );
 
 /// Number of variables.
-const N_VARIABLES: usize = BASE_VARIABLES.len() + 2 * JOINT_ROWS;
+const N_VARIABLES: usize = BASE_VARIABLES.len() + 2 * JOINT_ROWS + LATER_VARIABLES.len();
 
-/// `base` followed by the rows of each joint in `joints`, as one array of `N` rows.
+/// `base`, the rows of each joint in `joints`, then `later`, as one array of `N` rows.
 const fn concat<const N: usize>(
     base: &[Variable],
     joints: [&[Variable; JOINT_ROWS]; 2],
+    later: &[Variable],
 ) -> [Variable; N] {
     let mut out = [base[0]; N];
     let mut i = 0;
@@ -651,6 +667,12 @@ const fn concat<const N: usize>(
     while j < JOINT_ROWS * joints.len() {
         out[i + j] = joints[j / JOINT_ROWS][j % JOINT_ROWS];
         j += 1;
+    }
+    i += j;
+    let mut k = 0;
+    while k < later.len() {
+        out[i + k] = later[k];
+        k += 1;
     }
     out
 }
@@ -1298,6 +1320,15 @@ const BASE_VARIABLES: &[Variable] = &[
         "Where the journal of a clearance joint starts",
     ),
 ];
+
+/// The variables after both joints' rows, in value-reference order.
+const LATER_VARIABLES: &[Variable] = &[Variable::enumeration(
+    Vr::RodQuadrature,
+    "rod.quadrature",
+    1,
+    8,
+    "How the Craig-Bampton rod integrates its internal forces and strain energy",
+)];
 
 /// Number of rows of a revolute clearance joint besides the rod–slider joint ([`joint_rows`]).
 const JOINT_ROWS: usize = 20;

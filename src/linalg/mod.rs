@@ -7,4 +7,5 @@
 
 pub mod band_cholesky;
 pub mod lu;
+pub mod nnls;
 pub mod small;

@@ -69,6 +69,7 @@ impl RodBody {
                 Rod::new(p.rod, p.n_elements)?,
                 p.n_modes,
                 p.boundary,
+                p.quadrature,
             )?))),
         }
     }

@@ -5,7 +5,7 @@ use super::parameters::{DriveMode, InitialState, Parameters, RodFormulation};
 use crate::fmi::variables::Vr;
 use crate::integrator::Method;
 use crate::joint::{ContactLaw, JointModel, JournalStart};
-use crate::reduction::Boundary;
+use crate::reduction::{Boundary, Quadrature};
 
 /// `real_parameter` and `set_real_parameter` over one list of (value reference, field).
 macro_rules! real_fields {
@@ -132,6 +132,7 @@ integer_fields! {
         JointModel => joint.model: [JointModel::Ideal, JointModel::Dry, JointModel::Lubricated];
         DriveMode => drive_mode: [DriveMode::Speed, DriveMode::Torque];
         RodBoundary => boundary: [Boundary::Pins, Boundary::PositionsAndSlopes];
+        RodQuadrature => quadrature: [Quadrature::Full, Quadrature::Sampled];
         SolverMethod => method: [Method::Esdirk, Method::DormandPrince, Method::GeneralizedAlpha];
         RodInitialState => initial_state: [InitialState::Equilibrated, InitialState::Straight];
         JointContactLaw => joint.contact_law:

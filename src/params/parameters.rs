@@ -4,7 +4,7 @@
 use crate::ancf::RodProperties;
 use crate::integrator::{Method, Tolerances};
 use crate::joint::{JointField, JointModel, JointParameters, JointRole};
-use crate::reduction::Boundary;
+use crate::reduction::{Boundary, Quadrature};
 
 /// How the connecting rod is modelled.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -47,6 +47,8 @@ pub struct Parameters {
     pub n_modes: usize,
     /// Craig–Bampton interface (the rod coordinates kept physical).
     pub boundary: Boundary,
+    /// How the Craig–Bampton rod integrates its internal forces.
+    pub quadrature: Quadrature,
     /// How the rod starts.
     pub initial_state: InitialState,
     /// Rod material and section.
@@ -141,6 +143,7 @@ impl Default for Parameters {
             n_elements: 8,
             n_modes: 4,
             boundary: Boundary::Pins,
+            quadrature: Quadrature::Full,
             initial_state: InitialState::Equilibrated,
             rod: RodProperties::benchmark_b(),
             crank_length: 0.05,

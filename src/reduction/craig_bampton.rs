@@ -177,6 +177,18 @@ impl CraigBampton {
         (0..self.scalar_basis.ncols()).map(move |j| self.scalar_basis[(i, j)])
     }
 
+    /// The reduced coordinates of the straight, unstressed rod of length `length` from the origin
+    /// along x: the interface of its end nodes (positions, and unit slopes), no modal amplitude.
+    pub fn straight_coordinates(&self, length: f64) -> Vec<f64> {
+        let ends: &[f64] = match self.boundary {
+            Boundary::Pins => &[0.0, 0.0, length, 0.0],
+            Boundary::PositionsAndSlopes => &[0.0, 0.0, 1.0, 0.0, length, 0.0, 1.0, 0.0],
+        };
+        let mut p = ends.to_vec();
+        p.resize(self.n_coordinates(), 0.0);
+        p
+    }
+
     /// Number of kept mode shapes m.
     pub fn n_modes(&self) -> usize {
         self.n_modes

@@ -7,6 +7,7 @@
 
 pub mod craig_bampton;
 pub mod modes;
+pub mod sampling;
 
 use faer::{Mat, MatMut, MatRef};
 
@@ -14,11 +15,21 @@ use crate::linalg::band_cholesky::BandCholesky;
 
 pub use craig_bampton::{Boundary, CraigBampton, check_mode_count, max_modes};
 pub use modes::{Modes, generalized_eigen};
+pub use sampling::SampledForces;
 
 use nalgebra::Vector2;
 
 use crate::ancf::Rod;
 use crate::error::ModelError;
+
+/// How the reduced rod integrates its internal forces and strain energy.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Quadrature {
+    /// Every quadrature point of the mesh the rod was reduced from.
+    Full,
+    /// The few weighted points of energy-conserving sampling ([`sampling`]).
+    Sampled,
+}
 
 /// What the rod's deformation gives a designer at one instant.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -53,6 +64,8 @@ pub enum RodEnd {
 pub struct RodModel {
     rod: Rod,
     reduction: Option<CraigBampton>,
+    /// The sampled internal forces, when the reduced rod uses [`Quadrature::Sampled`].
+    sampled: Option<SampledForces>,
     mass: Mat<f64>,
     mass_factor: BandCholesky,
     /// r_ₓ at each end ([`RodEnd`]) = Σ (w · (p₂ⱼ, p₂ⱼ₊₁)) over (j, w): the end slopes as
@@ -118,11 +131,23 @@ impl RodModel {
         Self::build(rod, None, mass)
     }
 
-    /// The rod reduced by Craig–Bampton with `n_modes` mode shapes and the given interface.
-    pub fn craig_bampton(rod: Rod, n_modes: usize, boundary: Boundary) -> Result<Self, ModelError> {
+    /// The rod reduced by Craig–Bampton with `n_modes` mode shapes and the given interface, its
+    /// internal forces integrated by `quadrature`.
+    pub fn craig_bampton(
+        rod: Rod,
+        n_modes: usize,
+        boundary: Boundary,
+        quadrature: Quadrature,
+    ) -> Result<Self, ModelError> {
         let cb = CraigBampton::new(&rod, n_modes, boundary)?;
         let mass = cb.mass_matrix().to_owned();
-        Self::build(rod, Some(cb), mass)
+        let sampled = match quadrature {
+            Quadrature::Full => None,
+            Quadrature::Sampled => Some(SampledForces::new(&rod, &cb)?),
+        };
+        let mut model = Self::build(rod, Some(cb), mass)?;
+        model.sampled = sampled;
+        Ok(model)
     }
 
     fn build(
@@ -145,6 +170,7 @@ impl RodModel {
         Ok(Self {
             end_slopes,
             reduction,
+            sampled: None,
             mass_factor,
             mass,
             e: vec![0.0; n_full],
@@ -165,6 +191,11 @@ impl RodModel {
     /// The Craig–Bampton reduction, if any.
     pub fn reduction(&self) -> Option<&CraigBampton> {
         self.reduction.as_ref()
+    }
+
+    /// The sampled internal forces, if the reduced rod uses them.
+    pub fn sampled(&self) -> Option<&SampledForces> {
+        self.sampled.as_ref()
     }
 
     /// Number of coordinates of the model.
@@ -227,8 +258,9 @@ impl RodModel {
             return power;
         }
         let damped = self.rod.element().section().damping != 0.0;
-        let power = match &self.reduction {
-            Some(cb) => {
+        let power = match (&self.reduction, &self.sampled) {
+            (_, Some(sampled)) => sampled.internal_force(p, p_dot, out),
+            (Some(cb), None) => {
                 cb.expand(p, &mut self.e);
                 let power = if damped {
                     cb.expand(p_dot, &mut self.e_dot);
@@ -240,13 +272,14 @@ impl RodModel {
                 cb.project(&self.q, out);
                 power
             }
-            None => self.rod.internal_force(p, p_dot, out),
+            (None, None) => self.rod.internal_force(p, p_dot, out),
         };
         self.memo.store(p, damped.then_some(p_dot), out, power);
         power
     }
 
-    /// Tangent stiffness ∂Q_e/∂p in model coordinates, written to `out`.
+    /// Tangent stiffness ∂Q_e/∂p in model coordinates of the mesh's full quadrature, written to
+    /// `out`.
     pub fn tangent_stiffness(&mut self, p: &[f64], out: MatMut<'_, f64>) {
         match &self.reduction {
             Some(cb) => {
@@ -258,8 +291,11 @@ impl RodModel {
         }
     }
 
-    /// Strain energy U(V p) \[J\].
+    /// Strain energy U(V p) \[J\] (the sampled Ũ(p) of a sampled rod).
     pub fn strain_energy(&mut self, p: &[f64]) -> f64 {
+        if let Some(sampled) = &self.sampled {
+            return sampled.strain_energy(p);
+        }
         match &self.reduction {
             Some(cb) => {
                 cb.expand(p, &mut self.e);
@@ -282,7 +318,10 @@ impl RodModel {
         let last = self.rod.last_node_offset();
         let unit = |at: usize| Vector2::new(e[at], e[at + 1]).normalize();
         Deformation {
-            energy: self.rod.strain_energy(e),
+            energy: match &self.sampled {
+                Some(sampled) => sampled.strain_energy(p),
+                None => self.rod.strain_energy(e),
+            },
             stress: self.rod.largest_normal_stress(e),
             tangents: [unit(2), unit(last + 2)],
         }

@@ -13,6 +13,7 @@ mod impacts;
 mod joints;
 mod loads;
 mod motion;
+mod sampled_rod;
 mod start;
 
 use flexible_slider_crank::ancf::RodProperties;
@@ -22,6 +23,7 @@ use flexible_slider_crank::params::{
     BENCHMARK_SPEED, ContactLaw, DriveMode, InitialState, JointModel, JointParameters, JointRole,
     RodFormulation,
 };
+use flexible_slider_crank::reduction::Quadrature;
 use flexible_slider_crank::{Input, Outputs, Parameters, Simulation};
 
 pub(crate) const REVOLUTION: f64 = std::f64::consts::TAU / BENCHMARK_SPEED;

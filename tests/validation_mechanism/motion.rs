@@ -51,10 +51,11 @@ fn rigid_ideal_slider_follows_closed_form_kinematics() {
 /// largest kinetic energy; with rtol = 1e-8 it must stay below 1e-5.
 #[test]
 fn energy_balance_holds_for_every_model() {
-    for rod in [
-        RodFormulation::Rigid,
-        RodFormulation::CraigBampton,
-        RodFormulation::Ancf,
+    for (rod, quadrature) in [
+        (RodFormulation::Rigid, Quadrature::Full),
+        (RodFormulation::CraigBampton, Quadrature::Full),
+        (RodFormulation::CraigBampton, Quadrature::Sampled),
+        (RodFormulation::Ancf, Quadrature::Full),
     ] {
         for joint in [JointModel::Ideal, JointModel::Dry, JointModel::Lubricated] {
             let p = Parameters {
@@ -64,6 +65,7 @@ fn energy_balance_holds_for_every_model() {
                     ..Parameters::default().joint
                 },
                 rod_formulation: rod,
+                quadrature,
                 n_elements: 4,
                 n_modes: 2,
                 relative_tolerance: 1e-8,
@@ -80,9 +82,13 @@ fn energy_balance_holds_for_every_model() {
             }
             let rel = residual / kinetic;
             println!(
-                "{rod:?} rod, {joint:?} joint: energy-balance residual {rel:.2e} of max kinetic energy"
+                "{rod:?} rod ({quadrature:?}), {joint:?} joint: energy-balance residual {rel:.2e} \
+                 of max kinetic energy"
             );
-            assert!(rel < 1e-5, "{rod:?}/{joint:?}: residual {rel:e}");
+            assert!(
+                rel < 1e-5,
+                "{rod:?}/{quadrature:?}/{joint:?}: residual {rel:e}"
+            );
         }
     }
 }

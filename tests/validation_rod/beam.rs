@@ -4,7 +4,7 @@
 use faer::Mat;
 use flexible_slider_crank::ancf::element::{ElementVector, Section};
 use flexible_slider_crank::ancf::{Element, Rod, RodProperties};
-use flexible_slider_crank::reduction::{Boundary, RodModel};
+use flexible_slider_crank::reduction::{Boundary, Quadrature, RodModel};
 use nalgebra::{Rotation2, Vector2};
 
 use crate::common::{Lcg, assert_close, frequencies, slender_rod, solve_static};
@@ -111,7 +111,9 @@ fn assembled_and_reduced_tangents_equal_central_differences() {
         }
         let mut model = match n_modes {
             None => RodModel::full(rod).unwrap(),
-            Some((boundary, m)) => RodModel::craig_bampton(rod, m, boundary).unwrap(),
+            Some((boundary, m)) => {
+                RodModel::craig_bampton(rod, m, boundary, Quadrature::Full).unwrap()
+            }
         };
         let p = model.model_coordinates(&straight);
         let n = p.len();

@@ -4,7 +4,7 @@
 use faer::{Mat, Side};
 use flexible_slider_crank::ancf::{Rod, RodProperties};
 use flexible_slider_crank::math;
-use flexible_slider_crank::reduction::{Boundary, RodModel, max_modes};
+use flexible_slider_crank::reduction::{Boundary, Quadrature, RodModel, max_modes};
 use nalgebra::{Rotation2, Vector2};
 
 use crate::common::{HeldRod, Lcg, assert_close, frequencies};
@@ -20,7 +20,9 @@ const BOUNDARIES: [Boundary; 2] = [Boundary::PositionsAndSlopes, Boundary::Pins]
 fn model(n: usize, spec: Option<(Boundary, usize)>) -> RodModel {
     match spec {
         None => RodModel::full(rod(n)).unwrap(),
-        Some((boundary, m)) => RodModel::craig_bampton(rod(n), m, boundary).unwrap(),
+        Some((boundary, m)) => {
+            RodModel::craig_bampton(rod(n), m, boundary, Quadrature::Full).unwrap()
+        }
     }
 }
 
@@ -102,7 +104,9 @@ fn all_modes_reproduce_the_full_model() {
 fn all_modes_reproduce_the_full_model_with(boundary: Boundary) {
     let n = 4;
     let mut full = RodModel::full(rod(n)).unwrap();
-    let mut reduced = RodModel::craig_bampton(rod(n), max_modes(n, boundary), boundary).unwrap();
+    let mut reduced =
+        RodModel::craig_bampton(rod(n), max_modes(n, boundary), boundary, Quadrature::Full)
+            .unwrap();
     let e0 = full
         .rod()
         .straight_configuration(Vector2::new(0.01, 0.02), 0.3);
@@ -171,7 +175,7 @@ fn reduced_frequencies_approach_the_full_ones_from_above_with(boundary: Boundary
         .collect();
     let w_full = frequencies(k.as_ref(), full.mass_matrix(), &keep);
     for m in 0..=max_modes(n, boundary) {
-        let mut reduced = RodModel::craig_bampton(rod(n), m, boundary).unwrap();
+        let mut reduced = RodModel::craig_bampton(rod(n), m, boundary, Quadrature::Full).unwrap();
         let p0 = reduced.model_coordinates(&e0);
         let k = tangent(&mut reduced, &p0);
         let end = reduced.end_node_offset();
