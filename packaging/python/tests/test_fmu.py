@@ -296,7 +296,7 @@ def test_declared_output_dependencies_are_the_measured_ones(fmu):
     assert declared == feedthrough_measured(fmu)
 
 
-SWITCHES = {"rod.formulation": 2, "rod.boundary": 2, "rod.initialState": 2, "joint.model": 3,
+SWITCHES = {"rod.formulation": 2, "rod.boundary": 2, "rod.quadrature": 2, "rod.initialState": 2, "joint.model": 3,
             "joint.contactLaw": 2, "drive.mode": 2, "solver.method": 3}
 
 
