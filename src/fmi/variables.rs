@@ -1327,7 +1327,7 @@ const LATER_VARIABLES: &[Variable] = &[Variable::enumeration(
     "rod.quadrature",
     1,
     8,
-    "How the Craig-Bampton rod integrates its internal forces and strain energy",
+    "How the Craig-Bampton rod integrates its internal forces and strain energy (sampled: rod.nModes at most 8)",
 )];
 
 /// Number of rows of a revolute clearance joint besides the rod–slider joint ([`joint_rows`]).

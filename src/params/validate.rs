@@ -11,7 +11,10 @@ use crate::error::{ModelError, Num};
 use crate::fmi::variables::{Causality, Kind, VARIABLES};
 use crate::integrator::Method;
 use crate::joint::{JointField, JointModel, JointParameters, JointRole};
-use crate::reduction::check_mode_count;
+use crate::reduction::{Quadrature, check_mode_count};
+
+/// Largest mode count of a sampled rod (`rod.quadrature = sampled`).
+pub const MAX_SAMPLED_MODES: usize = 8;
 
 impl Parameters {
     /// Smallest slenderness L/r (r = √(I/A), the radius of gyration) of a flexible rod.
@@ -89,6 +92,17 @@ impl Parameters {
         self.check_declared_ranges()?;
         if self.rod_formulation == RodFormulation::CraigBampton {
             check_mode_count(self.n_elements, self.n_modes, self.boundary)?;
+            if self.quadrature == Quadrature::Sampled && self.n_modes > MAX_SAMPLED_MODES {
+                return Err(ModelError::invalid(
+                    "rod.nModes",
+                    self.n_modes as f64,
+                    format!(
+                        "[0, {MAX_SAMPLED_MODES}] with rod.quadrature = sampled: its points are \
+                         fitted at initialization, in a time that grows with the fourth power of \
+                         the mode count (0.1 s at {MAX_SAMPLED_MODES} modes and 64 elements)"
+                    ),
+                ));
+            }
         }
         if self.rod.length <= self.crank_length {
             return Err(ModelError::invalid(
@@ -484,6 +498,14 @@ mod tests {
                 "rod.nModes",
                 Parameters {
                     n_modes: 17,
+                    ..base.clone()
+                },
+            ),
+            (
+                "rod.nModes",
+                Parameters {
+                    n_modes: MAX_SAMPLED_MODES + 1,
+                    quadrature: Quadrature::Sampled,
                     ..base.clone()
                 },
             ),
