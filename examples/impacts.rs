@@ -5,12 +5,14 @@
 //! `cargo run --release --example impacts [rtol [weight]]` (defaults: the library's
 //! `solver.relativeTolerance` and `solver.impactErrorWeight`) prints per model the worst peak and
 //! onset errors, the first impact's, and the run's internal steps; `IMPACTS_VERBOSE=1` also every
-//! impact.
+//! impact; `IMPACTS_QUADRATURE=sampled` runs the Craig–Bampton rods with `rod.quadrature = sampled`
+//! (against their own converged runs).
 
 use std::error::Error;
 
 use flexible_slider_crank::Parameters;
 use flexible_slider_crank::params::BENCHMARK_SPEED;
+use flexible_slider_crank::reduction::Quadrature;
 
 #[path = "../tests/support/load_spectrum.rs"]
 mod load_spectrum;
@@ -25,7 +27,12 @@ fn main() -> Result<(), Box<dyn Error>> {
         "| rod | impacts | worst peak error | worst onset error [deg] | first peak error | steps |"
     );
     println!("|---|---|---|---|---|---|");
+    let quadrature = match std::env::var("IMPACTS_QUADRATURE").as_deref() {
+        Ok("sampled") => Quadrature::Sampled,
+        _ => Quadrature::Full,
+    };
     for (name, p) in benchmarks() {
+        let p = Parameters { quadrature, ..p };
         let (reference, _) = impacts(converged(&p))?;
         let run = Parameters {
             relative_tolerance: rtol.unwrap_or(p.relative_tolerance),

@@ -26,7 +26,8 @@ for s in "${sections[@]}"; do
     native) cargo run --release --quiet --example fmu_loop ;;
     impacts)
       cargo run --release --quiet --example impacts
-      cargo run --release --quiet --example impacts 3e-3 ;;
+      cargo run --release --quiet --example impacts 3e-3
+      IMPACTS_QUADRATURE=sampled cargo run --release --quiet --example impacts ;;
     weight)
       for w in 0 1 2 4; do
         cargo run --release --quiet --example impacts 1e-2 "$w"
