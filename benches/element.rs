@@ -1,5 +1,6 @@
 //! Criterion benchmarks of the rod kernels: element force and tangent, rod assembly for 4–64
-//! elements, and the Craig–Bampton reduced force for nModes = 2, 4, 8 (8 elements).
+//! elements, the Craig–Bampton reduced force for nModes = 2, 4, 8 (8 elements), and the default
+//! 4-mode rod's force with the full and the sampled quadrature (8 and 32 elements).
 
 use std::hint::black_box;
 
@@ -60,9 +61,6 @@ fn assembly(c: &mut Criterion) {
 }
 
 fn reduced(c: &mut Criterion) {
-    let mut group = c.benchmark_group("model_force_8_elements");
-    let full = rod(8);
-    let e = deformed(&full);
     let mut models = vec![("full".to_string(), RodModel::full(rod(8)))];
     for m in [2, 4, 8] {
         models.push((
@@ -70,6 +68,29 @@ fn reduced(c: &mut Criterion) {
             RodModel::craig_bampton(rod(8), m, Boundary::PositionsAndSlopes, Quadrature::Full),
         ));
     }
+    model_forces(c, "model_force_8_elements", 8, models);
+}
+
+/// The 4-mode pin-interface rod (the default) with the full and the sampled quadrature, reduced
+/// from 8 and from 32 elements.
+fn sampled(c: &mut Criterion) {
+    for n in [8, 32] {
+        let models = [("full", Quadrature::Full), ("sampled", Quadrature::Sampled)]
+            .map(|(name, q)| {
+                let model = RodModel::craig_bampton(rod(n), 4, Boundary::Pins, q);
+                (format!("pins, nModes=4, {name}"), model)
+            })
+            .into();
+        model_forces(c, &format!("model_force_{n}_elements"), n, models);
+    }
+}
+
+type Models = Vec<(String, Result<RodModel, flexible_slider_crank::ModelError>)>;
+
+/// The internal force of each model in the deformed configuration of an `n`-element rod.
+fn model_forces(c: &mut Criterion, group: &str, n: usize, models: Models) {
+    let mut group = c.benchmark_group(group);
+    let e = deformed(&rod(n));
     for (name, model) in models {
         let mut model = match model {
             Ok(model) => model,
@@ -93,5 +114,5 @@ fn reduced(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, element, assembly, reduced);
+criterion_group!(benches, element, assembly, reduced, sampled);
 criterion_main!(benches);

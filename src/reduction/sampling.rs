@@ -48,6 +48,8 @@ pub const TRAINING_STRAIN: f64 = 2e-3;
 /// × sampling weight) and its rows a (and b for bending) of `columns` entries.
 #[derive(Clone, Debug, Default)]
 struct Points {
+    /// Entries per row (the reduced basis' columns).
+    columns: usize,
     weights: Vec<f64>,
     slope: Vec<f64>,
     curvature: Vec<f64>,
@@ -79,7 +81,7 @@ impl Points {
     }
 
     fn rows(&self, k: usize) -> (&[f64], &[f64]) {
-        let c = self.slope.len() / self.len().max(1);
+        let c = self.columns;
         let curvature = if self.curvature.is_empty() {
             &[][..]
         } else {
@@ -144,7 +146,10 @@ impl Points {
 
     /// The points whose sampling weight ξ is positive, with their weights multiplied by ξ.
     fn sampled(&self, xi: &[f64]) -> Self {
-        let mut out = Self::default();
+        let mut out = Self {
+            columns: self.columns,
+            ..Self::default()
+        };
         for (k, &x) in xi.iter().enumerate().filter(|(_, x)| **x > 0.0) {
             let (a, b) = self.rows(k);
             out.weights.push(x * self.weights[k]);
@@ -168,7 +173,11 @@ fn mesh_points(rod: &Rod, cb: &CraigBampton) -> (Points, Points) {
             .map(|j| (0..4).map(|k| s[k] * rows[2 * e + k][j]).sum())
             .collect()
     };
-    let (mut axial, mut bending) = (Points::default(), Points::default());
+    let empty = Points {
+        columns,
+        ..Points::default()
+    };
+    let (mut axial, mut bending) = (empty.clone(), empty);
     for e in 0..rod.n_elements() {
         for (s_x, w) in element.axial_points() {
             axial.weights.push(section.ea * w);
