@@ -7,7 +7,7 @@
 use std::error::Error;
 use std::time::Instant;
 
-use flexible_slider_crank::fmi::variables::VARIABLES;
+use flexible_slider_crank::variables::VARIABLES;
 use fmi::fmi2::import::Fmi2Import;
 use fmi::fmi2::instance::{CoSimulation, Common};
 

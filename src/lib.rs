@@ -2,7 +2,9 @@
 //! Craig–Bampton component mode synthesis.
 //!
 //! Modules follow the physics: [`quadrature`] → [`ancf`] (element and rod) → [`reduction`]
-//! (Craig–Bampton) → [`integrator`] (error-controlled time stepping).
+//! (Craig–Bampton) → [`integrator`] (error-controlled time stepping). The variable table
+//! ([`variables`]) lies below both the physics (whose parameters it names and bounds) and the FMI
+//! adapter ([`fmi`]), which no other module imports.
 //!
 //! # References
 //! - D. Sun, G. Chen, Y. Shi, T. Wang, R. Sun (2015), Model reduction of a flexible multibody system
@@ -21,6 +23,7 @@ pub mod params;
 pub mod quadrature;
 pub mod reduction;
 pub mod simulation;
+pub mod variables;
 
 pub use params::Parameters;
 pub use simulation::{Input, InputSignal, Inputs, Outputs, Simulation, Snapshot};

@@ -7,7 +7,7 @@
 
 use std::path::PathBuf;
 
-use flexible_slider_crank::fmi::variables::VARIABLES;
+use flexible_slider_crank::variables::VARIABLES;
 use flexible_slider_crank::{Parameters, Simulation};
 use fmi::fmi2::import::Fmi2Import;
 use fmi::fmi2::instance::{CoSimulation, Common};

@@ -4,8 +4,8 @@
 // Test code: a failed unwrap is a failed test, with its message.
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
-use flexible_slider_crank::fmi::variables::VARIABLES;
 use flexible_slider_crank::fmi::{GUID, MODEL_DESCRIPTION};
+use flexible_slider_crank::variables::VARIABLES;
 
 #[test]
 fn committed_snapshot_is_current() {

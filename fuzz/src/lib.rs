@@ -9,7 +9,7 @@
 use std::ffi::{CString, c_char};
 use std::ptr;
 
-use flexible_slider_crank::fmi::variables::{ENUMERATIONS, Kind, VARIABLES};
+use flexible_slider_crank::variables::{ENUMERATIONS, Kind, VARIABLES};
 use flexible_slider_crank::fmi::{self, GUID};
 use fmi_sys::fmi2::*;
 

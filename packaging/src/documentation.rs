@@ -10,7 +10,7 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 use flexible_slider_crank::fmi::GUID;
-use flexible_slider_crank::fmi::variables::{Causality, DESCRIPTION, ENUMERATIONS, Kind};
+use flexible_slider_crank::variables::{Causality, DESCRIPTION, ENUMERATIONS, Kind};
 use fmi2_slave::description::Description;
 use fmi2_slave::number::Num;
 use fmi2_slave::table::{Enumeration, ValueReference, Variable};

@@ -7,12 +7,12 @@ use fmi2_slave::{FmuError, Logger, Model, State};
 
 use super::outputs::{count_output, real_output};
 use super::snapshot::FmuSnapshot;
-use super::variables::{Causality, ENUMERATIONS, Kind, LOG_CATEGORIES, VARIABLES, Variable, Vr};
 use crate::error::{ModelError, Num};
 use crate::params::{
     Parameters, integer_parameter, real_parameter, set_integer_parameter, set_real_parameter,
 };
 use crate::simulation::{Input, InputSignal, Inputs, Outputs, Simulation};
+use crate::variables::{Causality, ENUMERATIONS, Kind, LOG_CATEGORIES, VARIABLES, Variable, Vr};
 
 impl From<ModelError> for FmuError {
     fn from(e: ModelError) -> Self {

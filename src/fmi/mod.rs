@@ -2,7 +2,8 @@
 //! [`fmi2_slave::Model`] of the model-independent FMI layer around [`crate::Simulation`], which
 //! supplies the exported functions, the state machine and the checks at the boundary.
 //!
-//! `fmi/` sees only `Simulation`, `Parameters`, `Outputs` and the variable table; there is no
+//! `fmi/` sees only `Simulation`, `Parameters`, `Outputs` and the variable table
+//! ([`crate::variables`]), and no other module sees `fmi/`; there is no
 //! global mutable state, so any number of instances may live in one process, on any thread.
 //!
 //! # References
@@ -12,7 +13,6 @@ pub mod instance;
 pub mod model_description;
 pub mod outputs;
 pub mod snapshot;
-pub mod variables;
 
 pub use model_description::{GUID, MODEL_DESCRIPTION, MODEL_IDENTIFIER};
 

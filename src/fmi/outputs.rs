@@ -1,8 +1,8 @@
 //! The Real and the count outputs of the FMU by value reference: the lists that map each output
 //! row of the variable table to its field of [`Outputs`].
 
-use super::variables::Vr;
 use crate::simulation::Outputs;
+use crate::variables::Vr;
 
 /// The value of a Real output, None for other variables.
 pub fn real_output(o: &Outputs, vr: Vr) -> Option<f64> {
@@ -72,7 +72,7 @@ pub fn count_output(o: &Outputs, vr: Vr) -> Option<u64> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::fmi::variables::{Causality, Kind, VARIABLES};
+    use crate::variables::{Causality, Kind, VARIABLES};
 
     /// Exactly the Real outputs of the table have a value, and exactly the Integer outputs other
     /// than the integrator's statistics (read from the simulation) a count.

@@ -7,12 +7,12 @@
 use fmi2_slave::FmuError;
 use fmi2_slave::model::check_real;
 
-use super::variables::{Causality, Kind, VARIABLES, Vr};
 use crate::params::{
     Parameters, integer_parameter, real_parameter, set_integer_parameter, set_real_parameter,
 };
 use crate::simulation::codec::{ByteReader, ByteWriter, CodecError};
 use crate::simulation::{InputSignal, Snapshot};
+use crate::variables::{Causality, Kind, VARIABLES, Vr};
 
 /// Everything needed to resume an instance exactly.
 #[derive(Clone, Debug, PartialEq)]

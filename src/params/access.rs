@@ -2,10 +2,10 @@
 //! table to its field, from which both the getter and the setter are generated.
 
 use super::parameters::{DriveMode, InitialState, Parameters, RodFormulation};
-use crate::fmi::variables::Vr;
 use crate::integrator::Method;
 use crate::joint::{ContactLaw, JointModel, JournalStart};
 use crate::reduction::{Boundary, Quadrature};
+use crate::variables::Vr;
 
 /// `real_parameter` and `set_real_parameter` over one list of (value reference, field).
 macro_rules! real_fields {

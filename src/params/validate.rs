@@ -8,10 +8,10 @@ use super::parameters::{
     EXPLICIT_MAX_TOLERANCE, GENERALIZED_ALPHA_MAX_TOLERANCE, Parameters, RodFormulation,
 };
 use crate::error::{ModelError, Num};
-use crate::fmi::variables::{Causality, Kind, VARIABLES};
 use crate::integrator::Method;
 use crate::joint::{JointField, JointModel, JointParameters, JointRole};
 use crate::reduction::{Quadrature, check_mode_count};
+use crate::variables::{Causality, Kind, VARIABLES};
 
 /// Largest mode count of a sampled rod (`rod.quadrature = sampled`).
 pub const MAX_SAMPLED_MODES: usize = 8;
@@ -343,7 +343,7 @@ mod tests {
     #[test]
     fn declared_ranges_are_the_library_ranges() {
         use crate::params::{set_integer_parameter, set_real_parameter};
-        let beyond = |v: &crate::fmi::variables::Variable, value: f64| {
+        let beyond = |v: &crate::variables::Variable, value: f64| {
             let mut p = Parameters::default();
             let set = match v.kind {
                 Kind::Real { .. } => set_real_parameter(&mut p, v.vr, value),

@@ -273,7 +273,7 @@ impl Instance {
 
 /// Value reference of a variable by name.
 pub fn vr(name: &str) -> u32 {
-    flexible_slider_crank::fmi::variables::VARIABLES
+    flexible_slider_crank::variables::VARIABLES
         .iter()
         .find(|v| v.name == name)
         .map(|v| v.vr as u32)
