@@ -26,7 +26,7 @@
 //! - C. Farhat, T. Chapman, P. Avery (2015), Structure-preserving, stability, and accuracy
 //!   properties of the energy-conserving sampling and weighting method for the hyper reduction of
 //!   nonlinear finite element dynamic models, Int. J. Numer. Meth. Eng. 102, 1077–1110.
-//! - docs/model.md §2.
+//! - docs/model.md §1.7.
 
 use faer::Mat;
 use nalgebra::Vector2;
@@ -40,7 +40,7 @@ use crate::linalg::nnls::nnls;
 /// Relative residual of the training forces that the sampled points reproduce.
 pub const TOLERANCE: f64 = 1e-5;
 
-/// Axial strain, and outer-fibre bending strain κ c, of the training deformations: twice the
+/// Axial strain, and outer-fibre bending strain κ c, of the training deformations: about twice the
 /// yield strain of a structural steel, beyond what an elastic rod reaches.
 pub const TRAINING_STRAIN: f64 = 2e-3;
 
