@@ -9,8 +9,8 @@
 use std::ffi::{CString, c_char};
 use std::ptr;
 
-use flexible_slider_crank::variables::{ENUMERATIONS, Kind, VARIABLES};
 use flexible_slider_crank::fmi::{self, GUID};
+use flexible_slider_crank::variables::{ENUMERATIONS, Kind, VARIABLES};
 use fmi_sys::fmi2::*;
 
 /// Callbacks with fmi-sys's logger (forwarding to the `log` crate, which drops everything here).
