@@ -209,12 +209,7 @@ impl Uniform {
 /// coordinate that strains the rod, its x component scaled to an axial strain and its y component
 /// to an outer-fibre bending strain of [`TRAINING_STRAIN`] at the most strained point of a rod
 /// lying along x.
-fn training_directions(
-    columns: usize,
-    axial: &Points,
-    bending: &Points,
-    outer_fibre: f64,
-) -> Vec<(usize, f64)> {
+fn training_directions(axial: &Points, bending: &Points, outer_fibre: f64) -> Vec<(usize, f64)> {
     let largest = |points: &Points, curvature: bool, j: usize| {
         (0..points.len())
             .map(|k| {
@@ -230,7 +225,7 @@ fn training_directions(
         (0, axial, TRAINING_STRAIN),
         (1, bending, TRAINING_STRAIN / outer_fibre),
     ] {
-        let sensitivities: Vec<f64> = (0..columns)
+        let sensitivities: Vec<f64> = (0..points.columns)
             .map(|j| largest(points, component == 1, j))
             .collect();
         let threshold = 1e-6 * sensitivities.iter().copied().fold(0.0, f64::max);
@@ -329,14 +324,9 @@ impl SampledForces {
     pub fn new(rod: &Rod, cb: &CraigBampton) -> Result<Self, ModelError> {
         let (axial, bending) = mesh_points(rod, cb);
         let reference = cb.straight_coordinates(rod.properties().length);
-        let reference = &reference;
-        let directions = training_directions(
-            reference.len() / 2,
-            &axial,
-            &bending,
-            rod.properties().outer_fibre_distance,
-        );
-        let configurations = training_configurations(reference, &directions);
+        let outer_fibre = rod.properties().outer_fibre_distance;
+        let directions = training_directions(&axial, &bending, outer_fibre);
+        let configurations = training_configurations(&reference, &directions);
         let xi_axial = sampling_weights(&axial, &configurations, |s, k, p, out| {
             s.add_axial(k, p, None, out);
         })?;
@@ -407,7 +397,7 @@ mod tests {
         let reference = model.model_coordinates(&turned);
         let (axial, bending) = mesh_points(model.rod(), model.reduction().unwrap());
         let outer_fibre = model.rod().properties().outer_fibre_distance;
-        let directions = training_directions(reference.len() / 2, &axial, &bending, outer_fibre);
+        let directions = training_directions(&axial, &bending, outer_fibre);
         let rotation = nalgebra::Rotation2::new(angle);
         let mut uniform = Uniform(0x0123_4567_89ab_cdef);
         (0..20)
