@@ -80,6 +80,7 @@ pub const DESCRIPTION: Description<Vr> = Description {
     default_experiment: DEFAULT_EXPERIMENT,
     variables: VARIABLES,
     feedthrough: FEEDTHROUGH,
+    initial_dependency,
 };
 
 impl ValueReference for Vr {
@@ -268,6 +269,62 @@ pub const FEEDTHROUGH: &[(Vr, &[Vr])] = &[
 /// acceleration). With a clearance joint the joint force depends on the motion only; the ideal
 /// joint's reaction depends on the inputs, hence the union.
 const ALL_INPUTS: &[Vr] = &[Vr::DriveSpeed, Vr::DriveTorque, Vr::SliderForce];
+
+/// Whether an output (or `joint.contactStiffness`) depends, in initialization mode, on an input
+/// or a parameter: the `dependencies` of ModelStructure/InitialUnknowns.
+///
+/// The start is a coupled equilibrium: the rod is equilibrated under the start's inertial and
+/// applied loads and each journal rests where its contact carries its load, so the start's
+/// positions, forces and energies depend on every physical parameter and every input (the
+/// speed drive's input through the drive constraint). The exceptions are the crank's prescribed
+/// start, the contact stiffness (a formula of four parameters), the model warnings (the
+/// short-bearing range of a lubricated joint) and the step counters and work integrals, which
+/// start at zero. The solver settings shape no start. The lists are the union over every drive,
+/// joint and rod model; `packaging/python/tests/test_fmu.py` checks them against perturbations
+/// in initialization mode.
+fn initial_dependency(unknown: Vr, known: Vr) -> bool {
+    use Vr::*;
+    match unknown {
+        CrankAngle => known == CrankInitialAngle,
+        CrankSpeed => matches!(known, CrankInitialSpeed | DriveMode | DriveSpeed),
+        JointContactStiffness => matches!(
+            known,
+            JointClearance | JointJournalRadius | JointYoungsModulus | JointPoissonRatio
+        ),
+        SolverWarnings => matches!(
+            known,
+            JointModel
+                | JointJournalRadius
+                | JointBearingLength
+                | CrankPinModel
+                | CrankPinJournalRadius
+                | CrankPinBearingLength
+                | MainBearingModel
+                | MainBearingJournalRadius
+                | MainBearingBearingLength
+        ),
+        SolverSteps
+        | SolverEvaluations
+        | EnergyDriveWork
+        | EnergySliderWork
+        | EnergyMaterialDamping
+        | JointContactOnsets
+        | JointContactOnsetsTotal
+        | CrankPinContactOnsets
+        | CrankPinContactOnsetsTotal
+        | MainBearingContactOnsets
+        | MainBearingContactOnsetsTotal => false,
+        _ => !matches!(
+            known,
+            SolverRelativeTolerance
+                | SolverMaxStepSize
+                | SolverMethod
+                | SolverMaxStepsPerInterval
+                | SolverSpectralRadius
+                | SolverImpactErrorWeight
+        ),
+    }
+}
 
 /// Log categories: name and description.
 pub const LOG_CATEGORIES: &[(&str, &str)] = &[

@@ -230,6 +230,10 @@ impl Model for DcMotorFmu {
                 Some(k) => {
                     self.inputs.value[k] = value;
                     self.inputs.start = self.time;
+                    // Until initialization ends the steady start follows the set-point.
+                    if matches!(state, State::Instantiated | State::InitializationMode) {
+                        self.state = None;
+                    }
                 }
                 None => {
                     self.parameters[v.vr as usize] = value;

@@ -33,6 +33,7 @@ pub const DESCRIPTION: Description<Vr> = Description {
     default_experiment: (0.0, 0.024, 1e-6, 1e-4),
     variables: VARIABLES,
     feedthrough: FEEDTHROUGH,
+    initial_dependency,
 };
 
 /// Units: name and SI base-unit exponents (kg, m, s, A, rad).
@@ -102,6 +103,38 @@ pub const FEEDTHROUGH: &[(Vr, &[Vr])] = &[
     (Vr::ShaftTorque, &[Vr::ShaftSpeed]),
     (Vr::MotorVoltage, &[Vr::SpeedSetPoint]),
 ];
+
+/// Whether an output depends, in initialization mode, on an input or a parameter: the
+/// `dependencies` of ModelStructure/InitialUnknowns. The motor starts in steady state at the
+/// set-point ω = ω_set with the shaft torque τ₀ = `shaft.initialTorque` (`motor::steady_state`):
+/// i = (τ₀ + b ω)/k_t, u = clamp(R i + k_t ω) held by the integrator (zero without integral
+/// action), φ = τ₀/c; the shaft torque c φ + d (ω − ω_L) = τ₀ + d (ω_set − ω_L).
+fn initial_dependency(unknown: Vr, known: Vr) -> bool {
+    use Vr::*;
+    match unknown {
+        ShaftTorque => matches!(
+            known,
+            ShaftDamping | ShaftInitialTorque | ShaftSpeed | SpeedSetPoint
+        ),
+        MotorSpeed => known == SpeedSetPoint,
+        MotorCurrent => matches!(
+            known,
+            MotorFriction | MotorTorqueConstant | ShaftInitialTorque | SpeedSetPoint
+        ),
+        MotorVoltage => matches!(
+            known,
+            MotorFriction
+                | MotorResistance
+                | MotorTorqueConstant
+                | ShaftInitialTorque
+                | SpeedSetPoint
+                | ControllerIntegralGain
+                | SupplyVoltageLimit
+        ),
+        ShaftTwist => matches!(known, ShaftInitialTorque | ShaftStiffness),
+        _ => false,
+    }
+}
 
 /// 5000 rpm in rad/s.
 const SPEED: f64 = 5000.0 * core::f64::consts::TAU / 60.0;

@@ -48,6 +48,11 @@ pub struct Description<V: 'static> {
     /// Direct feedthrough: each output with the inputs it depends on without a step (outputs
     /// not listed depend on none).
     pub feedthrough: &'static [(V, &'static [V])],
+    /// Whether an initial unknown (an output or a calculated parameter) depends, in
+    /// initialization mode, on a known (an input or a parameter: FMI 2.0 makes every variable
+    /// with initial = "exact" a known), listed as the `dependencies` of
+    /// ModelStructure/InitialUnknowns.
+    pub initial_dependency: fn(unknown: V, known: V) -> bool,
 }
 
 /// The rendered XML and its GUID.
@@ -380,7 +385,19 @@ fn render<V: ValueReference>(d: &Description<V>) -> String {
             Causality::Output | Causality::CalculatedParameter
         )
     }) {
-        let _ = writeln!(x, r#"      <Unknown index="{i}"/>"#);
+        let unknown = d.variables[i - 1].vr;
+        let dependencies: Vec<String> = index(&|v| {
+            matches!(v.causality, Causality::Input | Causality::Parameter)
+                && (d.initial_dependency)(unknown, v.vr)
+        })
+        .iter()
+        .map(ToString::to_string)
+        .collect();
+        let _ = writeln!(
+            x,
+            r#"      <Unknown index="{i}" dependencies="{}"/>"#,
+            dependencies.join(" ")
+        );
     }
     x.push_str("    </InitialUnknowns>\n  </ModelStructure>\n</fmiModelDescription>\n");
     x

@@ -12,6 +12,8 @@ from fmpy.fmi2 import FMU2Slave, fmi2LastSuccessfulTime
 from fmpy import extract
 from fmpy.validation import validate_fmu
 
+from fsc import dependencies
+
 ROOT = Path(__file__).resolve().parents[3]
 FORMULATIONS = {"rigid": 1, "ancf": 2, "craigBampton": 3}
 JOINTS = {"ideal": 1, "dry": 2, "lubricated": 3}
@@ -294,6 +296,72 @@ def test_declared_output_dependencies_are_the_measured_ones(fmu):
     declared = {(u.variable.name, d.name) for u in md.outputs for d in (u.dependencies or [])}
     assert all(u.dependencies is not None for u in md.outputs)
     assert declared == feedthrough_measured(fmu)
+
+
+def start_configurations(n=160, seed=7):
+    """Start values covering every drive, joint, rod and start model (each joint's switches drawn
+    independently), with gravity, friction, material damping and the inputs switched on at
+    random; half keep crank.initialSpeed at its start value, so that the speed drive starts the
+    crank at drive.speed. Six more put each lubricated joint at either edge of the short-bearing
+    range."""
+    rng = np.random.default_rng(seed)
+
+    def pick(values):
+        return values[rng.integers(len(values))]
+
+    configurations = []
+    for i in range(n):
+        c = {"drive.mode": pick([1, 2]), "rod.formulation": pick([1, 2, 3]),
+             "rod.boundary": pick([1, 2]), "rod.initialState": pick([1, 2]),
+             "rod.nElements": pick([2, 4, 8]), "rod.nModes": pick([0, 1, 2, 4]),
+             "rod.quadrature": pick([1, 2]), "crank.initialAngle": rng.uniform(0.0, 6.28),
+             "drive.speed": rng.uniform(200.0, 600.0), "drive.torque": pick([0.0, 5.0]),
+             "slider.force": pick([0.0, -100.0])}
+        if i % 2:
+            c["crank.initialSpeed"] = rng.uniform(200.0, 600.0)
+        for joint in ("joint", "crankPin", "mainBearing"):
+            c |= {f"{joint}.model": pick([1, 2, 3]), f"{joint}.initialState": pick([1, 2]),
+                  f"{joint}.contactLaw": pick([1, 2, 3]), f"{joint}.friction": pick([0.0, 0.1])}
+        if rng.uniform() < 0.7:
+            c |= {"gravity": 9.81, "gravityAngle": rng.uniform(0.0, 6.0)}
+        if rng.uniform() < 0.5:
+            c["rod.stiffnessDamping"] = 1e-6
+        configurations.append({k: v.item() if hasattr(v, "item") else v for k, v in c.items()})
+    radius = 0.0095  # journalRadius: L/D = 0.5 at a bearing length of 2 · 0.5 · radius
+    for joint in ("joint", "crankPin", "mainBearing"):
+        for length in (0.995 * radius, 1.005 * radius):
+            configurations.append({f"{joint}.model": 3, f"{joint}.bearingLength": length})
+    return configurations
+
+
+def test_declared_initial_dependencies_are_the_measured_ones(fmu):
+    """ModelStructure/InitialUnknowns declares what each output depends on in initialization mode.
+    Perturbing each input and parameter there, over every model: the inputs each output reacts to
+    are exactly the declared ones; no output reacts to an undeclared parameter; and the outputs
+    with a short list (the crank's prescribed start, the contact stiffness, the warnings, the
+    counters and work integrals, which start at zero) react to every declared parameter."""
+    measured, n = dependencies.measure(fmu, start_configurations())
+    declared = dependencies.declared(fmu)
+    assert n >= 150
+    assert measured <= declared, sorted(measured - declared)
+    md = read_model_description(fmu)
+    inputs = {v.name for v in md.modelVariables if v.causality == "input"}
+    # A contact flag flips only where a perturbation crosses the contact's threshold: its
+    # declared dependencies are those of the penetration it is read from.
+    flags = {v.name for v in md.modelVariables if v.type == "Boolean"}
+    assert ({p for p in measured if p[1] in inputs} ==
+            {p for p in declared if p[1] in inputs and p[0] not in flags})
+    parameters = {v.name for v in md.modelVariables if v.causality == "parameter"}
+    short = {u for u in {u.variable.name for u in md.initialUnknowns}
+             if len({k for w, k in declared if w == u}) < 10}
+    assert {"crank.angle", "crank.speed", "joint.contactStiffness", "solver.warnings",
+            "solver.steps"} <= short
+    assert {p for p in measured if p[0] in short} == {p for p in declared if p[0] in short}
+    # Every other output depends on the physical parameters and never on the solver's.
+    for u in {u.variable.name for u in md.initialUnknowns} - short - flags:
+        reacted = {k for w, k in measured if w == u and k in parameters}
+        assert len(reacted) >= 20, (u, sorted(reacted))
+        assert not any(k.startswith("solver.") for w, k in declared if w == u)
 
 
 SWITCHES = {"rod.formulation": 2, "rod.boundary": 2, "rod.quadrature": 2, "rod.initialState": 2, "joint.model": 3,

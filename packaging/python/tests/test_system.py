@@ -8,7 +8,7 @@ from fmpy.ssp.simulation import simulate_ssp
 from fmpy.ssp.ssd import Parameter, ParameterSet, find_components, read_ssd
 from fmpy.validation import validate_fmu
 
-from fsc import system
+from fsc import dependencies, system
 
 STOP, STEP = 0.024, 1e-4
 NS = 100_000  # STEP in libcosim's nanoseconds
@@ -32,6 +32,32 @@ def test_motor_starts_in_steady_state_at_its_set_point():
     for n in range(10):
         motor.fmu.doStep(n * STEP, STEP)
     assert abs(motor.get("motor.speed") - speed) < 1e-9 * speed
+    motor.free()
+
+
+def test_motor_declared_initial_dependencies_are_the_measured_ones():
+    """ModelStructure/InitialUnknowns of the motor: perturbing each input and parameter in
+    initialization mode changes exactly the declared outputs, with a shaft torque at the start, a
+    controller without integral action, a supply at its voltage limit and a load off the
+    set-point."""
+    configurations = [{}, {"shaft.initialTorque": 5.0},
+                      {"shaft.initialTorque": 5.0, "controller.integralGain": 0.0},
+                      {"shaft.initialTorque": 5.0, "supply.voltageLimit": 10.0},
+                      {"shaft.initialTorque": -3.0, "shaft.speed": 300.0}]
+    measured, n = dependencies.measure(str(system.MOTOR_FMU), configurations)
+    assert n == len(configurations)
+    assert measured == dependencies.declared(str(system.MOTOR_FMU))
+
+
+def test_motor_start_follows_the_set_point_until_initialization_ends():
+    motor = system.Slave(system.MOTOR_FMU, "motor")
+    motor.fmu.enterInitializationMode()
+    assert motor.get("motor.speed") == motor.get("speed.setPoint")
+    motor.set({"speed.setPoint": 300.0})
+    assert motor.get("motor.speed") == 300.0
+    motor.fmu.exitInitializationMode()
+    motor.set({"speed.setPoint": 400.0})
+    assert motor.get("motor.speed") == 300.0
     motor.free()
 
 

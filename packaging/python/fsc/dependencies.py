@@ -1,0 +1,110 @@
+"""Dependencies of an FMU's initial unknowns, measured: in initialization mode, each known (input or
+parameter) is perturbed in turn and the outputs and calculated parameters that change are noted.
+
+    python -m fsc.dependencies target/fmu/DcMotor.fmu
+
+prints, for each initial unknown, the knowns it reacted to at the FMU's start values. The tests
+run the same measurement over many configurations and compare it with the `dependencies` that
+modelDescription.xml declares under ModelStructure/InitialUnknowns.
+"""
+import sys
+
+from fmpy import extract, read_model_description
+from fmpy.fmi2 import FMU2Slave, defaultCallbacks, fmi2CallbackFunctions, fmi2CallbackLoggerTYPE
+
+# A change smaller than this (relative) is round-off, not a dependency.
+ROUND_OFF = 1e-9
+
+# The measurement tries values that some configurations reject: their errors are expected.
+QUIET = fmi2CallbackFunctions()
+QUIET.logger = fmi2CallbackLoggerTYPE(lambda *_: None)
+QUIET.allocateMemory = defaultCallbacks.allocateMemory
+QUIET.freeMemory = defaultCallbacks.freeMemory
+
+GETTERS = {"Real": "getReal", "Integer": "getInteger", "Boolean": "getBoolean"}
+SETTERS = {"Real": "setReal", "Integer": "setInteger", "Boolean": "setBoolean"}
+
+
+def perturbations(variable, value):
+    """The values a known is moved to: every other item of a switch, one step of an integer, 1 %
+    of a real (into its range), or a millionth of its largest value if it is zero."""
+    t = variable.declaredType
+    if t is not None and t.max is not None:
+        return [k for k in range(int(t.min), int(t.max) + 1) if k != value]
+    if variable.type == "Integer":
+        high = int(variable.max) if variable.max is not None else value + 1
+        return [value + 1 if value < high else value - 1]
+    if variable.type == "Boolean":
+        return [1 - value]
+    high = float(variable.max) if variable.max is not None else 1.0
+    y = 1.01 * value if value != 0 else 1e-6 * high
+    if y > high:
+        y = 0.99 * value
+    if variable.min is not None and y < float(variable.min):
+        y = 0.5 * (value + float(variable.min))
+    return [y]
+
+
+def changed(a, b):
+    return abs(a - b) > ROUND_OFF * (abs(a) + abs(b))
+
+
+def measure(fmu, configurations):
+    """(unknown, known) name pairs where perturbing the known in initialization mode changes the
+    unknown, over `configurations` (dicts of start values; one that the FMU rejects is skipped).
+    Returns the pairs and the number of configurations measured."""
+    md = read_model_description(fmu)
+    unzipdir = extract(fmu)
+    by_name = {v.name: v for v in md.modelVariables}
+    knowns = [v for v in md.modelVariables if v.causality in ("input", "parameter")]
+    unknowns = [u.variable for u in md.initialUnknowns]
+
+    def instance(configuration):
+        s = FMU2Slave(guid=md.guid, unzipDirectory=unzipdir,
+                      modelIdentifier=md.coSimulation.modelIdentifier, instanceName="dependencies")
+        s.instantiate(callbacks=QUIET)
+        s.setupExperiment(startTime=0.0)
+        for name, value in configuration.items():
+            v = by_name[name]
+            getattr(s, SETTERS[v.type])([v.valueReference], [value])
+        s.enterInitializationMode()
+        return s
+
+    def read(s):
+        return {u.name: getattr(s, GETTERS[u.type])([u.valueReference])[0] for u in unknowns}
+
+    pairs, measured = set(), 0
+    for configuration in configurations:
+        s = instance(configuration)
+        try:
+            before = read(s)
+        except Exception:  # a configuration the FMU rejects (e.g. an explicit run's tolerance)
+            s.freeInstance()
+            continue
+        measured += 1
+        for k in knowns:
+            x = getattr(s, GETTERS[k.type])([k.valueReference])[0]
+            for y in perturbations(k, x):
+                try:
+                    getattr(s, SETTERS[k.type])([k.valueReference], [y])
+                    after = read(s)
+                except Exception:  # a value this configuration rejects: start afresh
+                    s.freeInstance()
+                    s = instance(configuration)
+                    continue
+                pairs |= {(u, k.name) for u in after if changed(after[u], before[u])}
+                getattr(s, SETTERS[k.type])([k.valueReference], [x])
+        s.freeInstance()
+    return pairs, measured
+
+
+def declared(fmu):
+    """(unknown, known) name pairs that modelDescription.xml declares for the initial unknowns."""
+    md = read_model_description(fmu)
+    return {(u.variable.name, d.name) for u in md.initialUnknowns for d in (u.dependencies or [])}
+
+
+if __name__ == "__main__":
+    pairs, _ = measure(sys.argv[1], [{}])
+    for unknown in sorted({u for u, _ in pairs}):
+        print(unknown, ":", " ".join(sorted(k for u, k in pairs if u == unknown)))
