@@ -81,6 +81,7 @@ pub const DESCRIPTION: Description<Vr> = Description {
     variables: VARIABLES,
     feedthrough: FEEDTHROUGH,
     initial_dependency,
+    provides_directional_derivative: true,
 };
 
 impl ValueReference for Vr {

@@ -6,8 +6,8 @@ use fmi2_slave::model::{check_real, check_settable, check_step, lookup};
 use fmi2_slave::number::Num;
 use fmi2_slave::{FmuError, Logger, Model, State};
 
-use crate::motor::{MotorInputs, MotorParameters, MotorState};
-use crate::variables::{Causality, Kind, LOG_CATEGORIES, VARIABLES, Vr};
+use crate::motor::{MotorInputs, MotorOutputs, MotorParameters, MotorState};
+use crate::variables::{Causality, Kind, LOG_CATEGORIES, VARIABLES, Variable, Vr};
 
 /// Number of parameters (value references 0 … N − 1).
 const N_PARAMETERS: usize = Vr::ShaftSpeed as usize;
@@ -105,8 +105,22 @@ impl DcMotorFmu {
     }
 }
 
+/// The output `vr` among the motor's outputs (0 for any other variable).
+fn output(o: &MotorOutputs, vr: Vr) -> f64 {
+    match vr {
+        Vr::ShaftTorque => o.shaft_torque,
+        Vr::MotorSpeed => o.speed,
+        Vr::MotorCurrent => o.current,
+        Vr::MotorVoltage => o.voltage,
+        Vr::ShaftTwist => o.twist,
+        _ => 0.0,
+    }
+}
+
 impl Model for DcMotorFmu {
     const GUID: &'static str = crate::GUID;
+    type Vr = Vr;
+    const VARIABLES: &'static [Variable] = VARIABLES;
     const LOG_CATEGORIES: &'static [(&'static str, &'static str)] = LOG_CATEGORIES;
     const STATE_MAGIC: [u8; 4] = *b"DCMS";
     const STATE_VERSION: u32 = 1;
@@ -206,15 +220,10 @@ impl Model for DcMotorFmu {
                 Causality::Input => self.inputs.value[Self::input_index(v.vr).unwrap_or(0)],
                 _ => {
                     let x = self.state();
-                    let o = self.motor().outputs(&x, &self.inputs.inputs(self.time));
-                    match v.vr {
-                        Vr::ShaftTorque => o.shaft_torque,
-                        Vr::MotorSpeed => o.speed,
-                        Vr::MotorCurrent => o.current,
-                        Vr::MotorVoltage => o.voltage,
-                        Vr::ShaftTwist => o.twist,
-                        _ => 0.0,
-                    }
+                    output(
+                        &self.motor().outputs(&x, &self.inputs.inputs(self.time)),
+                        v.vr,
+                    )
                 }
             };
         }
@@ -313,6 +322,25 @@ impl Model for DcMotorFmu {
                     )));
                 }
             };
+        }
+        Ok(())
+    }
+
+    /// ∂y/∂u from the motor's equations (`MotorParameters::output_derivatives`).
+    fn output_sensitivity(
+        &mut self,
+        _log: &Logger,
+        known: u32,
+        unknowns: &[u32],
+        column: &mut [f64],
+    ) -> Result<(), FmuError> {
+        let set_point = known == Vr::SpeedSetPoint as u32;
+        let x = self.state();
+        let d = self
+            .motor()
+            .output_derivatives(&x, &self.inputs.inputs(self.time), set_point);
+        for (vr, c) in unknowns.iter().zip(column.iter_mut()) {
+            *c = output(&d, lookup(VARIABLES, *vr, "Real")?.vr);
         }
         Ok(())
     }

@@ -120,6 +120,28 @@ impl MotorParameters {
         }
     }
 
+    /// ∂y/∂u: the outputs' partial derivatives at state `x` with respect to the set-point
+    /// (`set_point` true) or the load speed. The shaft torque c φ + d (ω − ω_L) reacts to the
+    /// load speed with −d; the voltage u = clamp(K_p (ω_set − ω) + K_i z) to the set-point with
+    /// K_p while the controller output is inside the voltage limit, else not at all; speed,
+    /// current and twist are states.
+    pub fn output_derivatives(
+        &self,
+        x: &MotorState,
+        inputs: &MotorInputs,
+        set_point: bool,
+    ) -> MotorOutputs {
+        let (v, _) = self.voltage(x, inputs.set_point);
+        let inside = v.abs() < self.voltage_limit;
+        MotorOutputs {
+            shaft_torque: if set_point { 0.0 } else { -self.shaft_damping },
+            speed: 0.0,
+            current: 0.0,
+            voltage: if set_point && inside { self.gain } else { 0.0 },
+            twist: 0.0,
+        }
+    }
+
     /// Advances `x` over `h` in `n` classical Runge–Kutta steps, with the inputs of `inputs(τ)` at
     /// τ ∈ [0, h] after the start.
     pub fn advance(&self, x: &mut MotorState, h: f64, n: u32, inputs: impl Fn(f64) -> MotorInputs) {

@@ -34,6 +34,7 @@ pub const DESCRIPTION: Description<Vr> = Description {
     variables: VARIABLES,
     feedthrough: FEEDTHROUGH,
     initial_dependency,
+    provides_directional_derivative: true,
 };
 
 /// Units: name and SI base-unit exponents (kg, m, s, A, rad).

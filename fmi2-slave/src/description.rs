@@ -53,6 +53,9 @@ pub struct Description<V: 'static> {
     /// with initial = "exact" a known), listed as the `dependencies` of
     /// ModelStructure/InitialUnknowns.
     pub initial_dependency: fn(unknown: V, known: V) -> bool,
+    /// providesDirectionalDerivative: whether the model gives ∂y/∂u
+    /// ([`crate::Model::output_sensitivity`]).
+    pub provides_directional_derivative: bool,
 }
 
 /// The rendered XML and its GUID.
@@ -205,10 +208,11 @@ fn render<V: ValueReference>(d: &Description<V>) -> String {
     );
     let _ = writeln!(
         x,
-        r#"  <CoSimulation modelIdentifier="{}" needsExecutionTool="false" canHandleVariableCommunicationStepSize="true" canInterpolateInputs="{}" maxOutputDerivativeOrder="{}" canRunAsynchronuously="false" canBeInstantiatedOnlyOncePerProcess="false" canNotUseMemoryManagementFunctions="true" canGetAndSetFMUstate="true" canSerializeFMUstate="true" providesDirectionalDerivative="false"/>"#,
+        r#"  <CoSimulation modelIdentifier="{}" needsExecutionTool="false" canHandleVariableCommunicationStepSize="true" canInterpolateInputs="{}" maxOutputDerivativeOrder="{}" canRunAsynchronuously="false" canBeInstantiatedOnlyOncePerProcess="false" canNotUseMemoryManagementFunctions="true" canGetAndSetFMUstate="true" canSerializeFMUstate="true" providesDirectionalDerivative="{}"/>"#,
         d.model_identifier,
         d.max_input_derivative_order > 0,
-        d.max_output_derivative_order
+        d.max_output_derivative_order,
+        d.provides_directional_derivative
     );
     x.push_str("  <UnitDefinitions>\n");
     for (name, base) in d.units {

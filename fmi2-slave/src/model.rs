@@ -19,6 +19,10 @@ pub trait Model: Sized + 'static {
     const STATE_MAGIC: [u8; 4];
     /// Version of the state format; a state of another version is rejected.
     const STATE_VERSION: u32;
+    /// The model's value references.
+    type Vr: ValueReference;
+    /// The model's variable table, in value-reference order (the generic checks read it).
+    const VARIABLES: &'static [Variable<Self::Vr>];
 
     /// A model with every start value (fmi2Instantiate, fmi2Reset).
     fn new() -> Self;
@@ -83,6 +87,23 @@ pub trait Model: Sized + 'static {
     ) -> Result<(), FmuError> {
         Err(FmuError::Invalid(
             "output derivatives are not provided (maxOutputDerivativeOrder = 0)".into(),
+        ))
+    }
+
+    /// ∂y/∂u: the partial derivatives of the Real outputs `unknowns` with respect to the Real
+    /// input `known` at the current point (one column of the Jacobian that
+    /// fmi2GetDirectionalDerivative multiplies); both are already checked to be an output and
+    /// an input. By default none are provided.
+    fn output_sensitivity(
+        &mut self,
+        _log: &Logger,
+        _known: u32,
+        _unknowns: &[u32],
+        _column: &mut [f64],
+    ) -> Result<(), FmuError> {
+        Err(FmuError::Invalid(
+            "directional derivatives are not provided (providesDirectionalDerivative = false)"
+                .into(),
         ))
     }
 

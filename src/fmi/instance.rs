@@ -5,7 +5,7 @@
 use fmi2_slave::model::{check_real, check_settable, check_step, lookup};
 use fmi2_slave::{FmuError, Logger, Model, State};
 
-use super::outputs::{count_output, real_output};
+use super::outputs::{count_output, real_output, sensitivity};
 use super::snapshot::FmuSnapshot;
 use crate::error::{ModelError, Num};
 use crate::params::{
@@ -153,6 +153,8 @@ impl Model for SliderCrankFmu {
     const LOG_CATEGORIES: &'static [(&'static str, &'static str)] = LOG_CATEGORIES;
     const STATE_MAGIC: [u8; 4] = *b"FSCS";
     const STATE_VERSION: u32 = 13;
+    type Vr = Vr;
+    const VARIABLES: &'static [Variable] = VARIABLES;
 
     fn new() -> Self {
         Self {
@@ -169,6 +171,20 @@ impl Model for SliderCrankFmu {
 
     fn last_successful_time(&self) -> f64 {
         self.last_successful_time
+    }
+
+    /// ∂y/∂u at the current state ([`super::outputs::sensitivity`]).
+    fn output_sensitivity(
+        &mut self,
+        log: &Logger,
+        known: u32,
+        unknowns: &[u32],
+        column: &mut [f64],
+    ) -> Result<(), FmuError> {
+        let v = lookup(VARIABLES, known, "Real")?;
+        let i = input(v.vr).ok_or_else(|| FmuError::Invalid(format!("{} is no input", v.name)))?;
+        let u = self.inputs.value.get(i);
+        sensitivity(self.simulation(log)?, i, u, unknowns, column)
     }
 
     fn save(&self, out: &mut Vec<u8>) {

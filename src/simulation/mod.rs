@@ -5,6 +5,7 @@ pub mod codec;
 mod failure;
 mod outputs;
 mod peaks;
+mod reading;
 mod restore;
 mod snapshot;
 mod step;
@@ -483,38 +484,6 @@ impl Simulation {
         let (contact, state) = (self.contact_now(), &self.state);
         self.mechanism
             .with_contact_state(contact, |mechanism| mechanism.energies(state))
-    }
-
-    /// Outputs at the current time (one right-hand-side evaluation, no allocation).
-    ///
-    /// The inputs they see: at a communication point those of the interval that just ended, as
-    /// it ended (values and derivatives there, so the accelerations of a ramped drive speed include
-    /// its rate), until an input or derivative is set; from then on the inputs as set (an output
-    /// with direct feedthrough shows a value just set).
-    pub fn outputs(&mut self) -> Result<Outputs, ModelError> {
-        let contact = self.contact_now();
-        let current = *self.mechanism.input_signal();
-        let inputs = if self.inputs_set {
-            InputSignal {
-                start: self.time,
-                ..self.next
-            }
-        } else {
-            current
-        };
-        self.mechanism.set_input_signal(inputs, self.time);
-        let outputs = self.mechanism.with_contact_state(contact, |mechanism| {
-            outputs::outputs(
-                mechanism,
-                self.time,
-                &self.state,
-                &mut self.scratch,
-                &self.peaks,
-                self.monitor.total,
-            )
-        });
-        self.mechanism.set_input_signal(current, self.time);
-        outputs
     }
 }
 

@@ -6,8 +6,7 @@ use flexible_slider_crank::fmi::GUID;
 use fmi_sys::fmi2::*;
 
 use crate::harness::{
-    Instance, callbacks, dangling, fmu, instantiate_raw, instantiate_with_logging, library_path,
-    messages, vr,
+    Instance, callbacks, fmu, instantiate_raw, instantiate_with_logging, library_path, messages, vr,
 };
 
 const OK: fmi2Status = fmi2Status_fmi2OK;
@@ -163,22 +162,44 @@ fn arguments_are_checked() {
         let m = inst.last_message();
         assert!(m.contains("value reference"), "{name}: {m}");
     }
+    // fmi2GetDirectionalDerivative: outputs with respect to inputs, arrays checked.
     let inst = Instance::new("args-dd");
     inst.initialize();
-    // SAFETY: unsupported functions must reject without touching the (dangling) pointers.
-    unsafe {
-        let p = dangling();
-        assert_eq!(
-            fmu().fmi2GetDirectionalDerivative(
-                inst.c,
-                p.cast(),
-                1,
-                p.cast(),
-                1,
-                p.cast(),
-                p.cast()
-            ),
-            ERROR
+    let derivative = |unknown: u32, known: u32, seed: *const f64| {
+        let mut value = f64::NAN;
+        // SAFETY: one value reference each, `seed` NULL or one value, `value` one value.
+        let status = unsafe {
+            fmu().fmi2GetDirectionalDerivative(inst.c, &unknown, 1, &known, 1, seed, &mut value)
+        };
+        (status, value)
+    };
+    let (acceleration, force) = (vr("slider.acceleration"), vr("slider.force"));
+    let (status, value) = derivative(acceleration, force, &1.0);
+    assert_eq!(status, OK);
+    assert!(value.is_finite() && value != 0.0, "{value}");
+    for (unknown, known, seed, expected) in [
+        (
+            vr("rod.length"),
+            force,
+            &1.0 as *const f64,
+            "is not a Real output",
+        ),
+        (acceleration, vr("crank.speed"), &1.0, "is not a Real input"),
+        (acceleration, force, std::ptr::null(), "must not be NULL"),
+        (acceleration, force, &f64::NAN, "is not finite"),
+    ] {
+        let inst = Instance::new("args-dd-wrong");
+        inst.initialize();
+        let mut value = 0.0;
+        // SAFETY: as above.
+        let status = unsafe {
+            fmu().fmi2GetDirectionalDerivative(inst.c, &unknown, 1, &known, 1, seed, &mut value)
+        };
+        assert_eq!(status, ERROR, "{expected}");
+        assert!(
+            inst.last_message().contains(expected),
+            "{:?}",
+            inst.messages()
         );
     }
 }

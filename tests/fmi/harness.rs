@@ -2,7 +2,7 @@
 //! raw calls in small safe methods.
 
 use std::collections::HashMap;
-use std::ffi::{CString, c_void};
+use std::ffi::CString;
 use std::path::PathBuf;
 use std::sync::{Mutex, OnceLock};
 
@@ -278,9 +278,4 @@ pub fn vr(name: &str) -> u32 {
         .find(|v| v.name == name)
         .map(|v| v.vr as u32)
         .unwrap_or_else(|| panic!("no variable {name}"))
-}
-
-/// An opaque non-NULL pointer for arguments that must not be dereferenced.
-pub fn dangling() -> *mut c_void {
-    std::ptr::NonNull::<u8>::dangling().as_ptr().cast()
 }

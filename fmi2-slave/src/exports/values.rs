@@ -6,8 +6,10 @@ use fmi_sys::fmi2::*;
 use super::codes::{OK, ok};
 use crate::error::FmuError;
 use crate::ffi::{slice, slice_mut, with_instance};
-use crate::model::Model;
+use crate::model::{Model, lookup};
+use crate::number::Num;
 use crate::state::Call;
+use crate::table::{Causality, ValueReference, Variable};
 
 /// Reads Real variables.
 pub unsafe fn fmi2GetReal<M: Model>(
@@ -131,22 +133,77 @@ pub unsafe fn fmi2SetString<M: Model>(
     })
 }
 
-/// Not provided: error.
+/// The directional derivative Δy = (∂y/∂u) Δu of Real outputs y with respect to Real inputs
+/// u at the current point, from the model's columns ∂y/∂uⱼ ([`Model::output_sensitivity`]).
 pub unsafe fn fmi2GetDirectionalDerivative<M: Model>(
     c: fmi2Component,
-    _vUnknown_ref: *const fmi2ValueReference,
-    _nUnknown: usize,
-    _vKnown_ref: *const fmi2ValueReference,
-    _nKnown: usize,
-    _dvKnown: *const fmi2Real,
-    _dvUnknown: *mut fmi2Real,
+    vUnknown_ref: *const fmi2ValueReference,
+    nUnknown: usize,
+    vKnown_ref: *const fmi2ValueReference,
+    nKnown: usize,
+    dvKnown: *const fmi2Real,
+    dvUnknown: *mut fmi2Real,
 ) -> fmi2Status {
-    with_instance::<M>(c, Call::GetDirectionalDerivative, |_| {
-        Err(FmuError::Invalid(
-            "directional derivatives are not provided (providesDirectionalDerivative = false)"
-                .into(),
-        ))
+    with_instance::<M>(c, Call::GetDirectionalDerivative, |inst| {
+        // SAFETY: nUnknown and nKnown elements (FMI 2.0.4 §2.1.9).
+        let (unknowns, knowns, dv_known, dv_unknown) = unsafe {
+            (
+                slice(vUnknown_ref, nUnknown, "vUnknown_ref")?,
+                slice(vKnown_ref, nKnown, "vKnown_ref")?,
+                slice(dvKnown, nKnown, "dvKnown")?,
+                slice_mut(dvUnknown, nUnknown, "dvUnknown")?,
+            )
+        };
+        for &vr in unknowns {
+            check_causality(
+                M::VARIABLES,
+                vr,
+                Causality::Output,
+                "vUnknown_ref",
+                "output",
+            )?;
+        }
+        for (&vr, dv) in knowns.iter().zip(dv_known) {
+            check_causality(M::VARIABLES, vr, Causality::Input, "vKnown_ref", "input")?;
+            if !dv.is_finite() {
+                return Err(FmuError::Invalid(format!(
+                    "dvKnown = {} for value reference {vr} is not finite",
+                    Num(*dv)
+                )));
+            }
+        }
+        let mut column = vec![0.0; unknowns.len()];
+        let mut sum = vec![0.0; unknowns.len()];
+        for (&vr, &dv) in knowns.iter().zip(dv_known) {
+            inst.model
+                .output_sensitivity(&inst.logger, vr, unknowns, &mut column)?;
+            for (s, c) in sum.iter_mut().zip(&column) {
+                *s += c * dv;
+            }
+        }
+        dv_unknown.copy_from_slice(&sum);
+        Ok(OK)
     })
+}
+
+/// Checks that `vr` is a Real variable of `causality` (`what`), naming the argument `arg`.
+fn check_causality<V: ValueReference>(
+    table: &'static [Variable<V>],
+    vr: u32,
+    causality: Causality,
+    arg: &str,
+    what: &str,
+) -> Result<(), FmuError> {
+    let v = lookup(table, vr, "Real")?;
+    if v.causality == causality {
+        Ok(())
+    } else {
+        Err(FmuError::Invalid(format!(
+            "{arg}: value reference {vr} ({}) is not a Real {what}: directional derivatives are \
+             of the outputs with respect to the inputs",
+            v.name
+        )))
+    }
 }
 
 /// Sets first or second time derivatives of inputs at the current communication point; the

@@ -49,6 +49,36 @@ def test_motor_declared_initial_dependencies_are_the_measured_ones():
     assert measured == dependencies.declared(str(system.MOTOR_FMU))
 
 
+def test_motor_directional_derivatives_are_its_gains():
+    """fmi2GetDirectionalDerivative of the motor: ∂shaft.torque/∂shaft.speed = −shaft.damping,
+    ∂motor.voltage/∂speed.setPoint = controller.gain inside the voltage limit and 0 at it, every
+    other entry 0; equal to central differences (the outputs are affine in the inputs)."""
+    for limit in (200.0, 10.0):
+        motor = system.Slave(system.MOTOR_FMU, "motor")
+        motor.set({"supply.voltageLimit": limit})
+        motor.fmu.enterInitializationMode()
+        motor.fmu.exitInitializationMode()
+        for n in range(5):
+            motor.set({"shaft.speed": 500.0})
+            motor.fmu.doStep(n * STEP, STEP)
+        outputs = ["shaft.torque", "motor.speed", "motor.current", "motor.voltage", "shaft.twist"]
+        ov = [motor.vr[o] for o in outputs]
+        for u in ("shaft.speed", "speed.setPoint"):
+            d = motor.fmu.getDirectionalDerivative(ov, [motor.vr[u]], [1.0])
+            x, h = motor.get(u), 1e-3
+            motor.set({u: x + h})
+            plus = np.array(motor.fmu.getReal(ov))
+            motor.set({u: x - h})
+            minus = np.array(motor.fmu.getReal(ov))
+            motor.set({u: x})
+            assert np.allclose(d, (plus - minus) / (2 * h), rtol=1e-8, atol=1e-9), (limit, u, d)
+            expected = {("shaft.torque", "shaft.speed"): -motor.get("shaft.damping"),
+                        ("motor.voltage", "speed.setPoint"):
+                            motor.get("controller.gain") if limit > 100.0 else 0.0}
+            assert list(d) == [expected.get((o, u), 0.0) for o in outputs]
+        motor.free()
+
+
 def test_motor_start_follows_the_set_point_until_initialization_ends():
     motor = system.Slave(system.MOTOR_FMU, "motor")
     motor.fmu.enterInitializationMode()
