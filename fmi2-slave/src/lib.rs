@@ -28,6 +28,8 @@ pub mod logger;
 #[cfg(feature = "slave")]
 pub mod model;
 #[cfg(feature = "slave")]
+pub mod reference;
+#[cfg(feature = "slave")]
 pub mod state;
 
 #[cfg(feature = "slave")]

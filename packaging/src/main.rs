@@ -5,7 +5,9 @@
 //!   `target/fmu/FlexibleSliderCrank.fmu` and `target/fmu/DcMotor.fmu` with their one binary
 //!   (`binaries/linux64` on Linux), the motor-crank system as an SSP, `target/fmu/MotorCrank.ssp`
 //!   (`systems/motor-crank/SystemStructure.ssd` with both FMUs as resources), and as an OSP system
-//!   structure, `target/fmu/motor-crank/` (`OspSystemStructure.xml` beside both FMUs).
+//!   structure, `target/fmu/motor-crank/` (`OspSystemStructure.xml` beside both FMUs). Each FMU
+//!   carries the reference results of its DefaultExperiment (FMI-LS-REF), which are also written
+//!   in the FMI cross-check layout under `target/fmu/compatibility/` ([`compatibility`]).
 //! - `cargo run --release -p packaging -- --binaries DIR`: takes the libraries the release build
 //!   (`packaging/release.sh`) made, `DIR/<platform>/<FlexibleSliderCrank|DcMotor>.<so|dll|dylib>`
 //!   for every FMI platform folder present (linux64, win64, darwin64), and writes the same files
@@ -13,6 +15,7 @@
 //!
 //! The archive is reproducible: its entries come in a fixed order with a fixed time stamp.
 
+mod compatibility;
 mod documentation;
 
 use std::error::Error;
@@ -151,13 +154,15 @@ fn stamped(xml: &str, time: &str) -> Result<String, Box<dyn Error>> {
 }
 
 /// Writes the FMU `path`: modelDescription.xml, the binaries, documentation/index.html and the
-/// images of `images` (files of `image_dir`) it shows.
+/// images of `images` (files of `image_dir`) it shows, and the `extras` (name in the archive,
+/// contents).
 fn write_fmu(
     path: &Path,
     (identifier, xml): (&str, &str),
     binaries: &[(&str, PathBuf)],
     documentation: &str,
     images: &[PathBuf],
+    extras: &[(String, Vec<u8>)],
 ) -> Result<(), Box<dyn Error>> {
     let mut zip = zip::ZipWriter::new(std::fs::File::create(path)?);
     let options = zip_options();
@@ -185,6 +190,10 @@ fn write_fmu(
             .unwrap_or("image");
         zip.start_file(format!("documentation/{name}"), options)?;
         zip.write_all(&std::fs::read(image)?)?;
+    }
+    for (name, contents) in extras {
+        zip.start_file(name.as_str(), options)?;
+        zip.write_all(contents)?;
     }
     zip.finish()?;
     Ok(())
@@ -219,6 +228,7 @@ fn package(
 ) -> Result<Vec<PathBuf>, Box<dyn Error>> {
     std::fs::create_dir_all(out_dir)?;
     let (guide, images) = documentation::slider_crank(root);
+    let crank_references = compatibility::slider_crank()?;
     let crank_fmu = out_dir.join(format!("{MODEL_IDENTIFIER}.fmu"));
     write_fmu(
         &crank_fmu,
@@ -226,8 +236,10 @@ fn package(
         crank_binaries,
         &guide,
         &images,
+        &crank_references.fmu_entries(),
     )?;
     let motor = (dc_motor::MODEL_IDENTIFIER, dc_motor::MODEL_DESCRIPTION);
+    let motor_references = compatibility::motor()?;
     let motor_fmu = out_dir.join(format!("{}.fmu", motor.0));
     write_fmu(
         &motor_fmu,
@@ -235,7 +247,10 @@ fn package(
         motor_binaries,
         &documentation::motor(),
         &[],
+        &motor_references.fmu_entries(),
     )?;
+    crank_references.write_cross_check(out_dir, &crank_fmu, crank_binaries)?;
+    motor_references.write_cross_check(out_dir, &motor_fmu, motor_binaries)?;
     let system = root.join("systems/motor-crank");
     let ssp = out_dir.join("MotorCrank.ssp");
     let fmus = [&motor_fmu, &crank_fmu];
@@ -262,7 +277,13 @@ fn package(
             std::fs::copy(fmu, osp.join(name))?;
         }
     }
-    Ok(vec![crank_fmu, motor_fmu, ssp, osp])
+    Ok(vec![
+        crank_fmu,
+        motor_fmu,
+        ssp,
+        osp,
+        out_dir.join("compatibility"),
+    ])
 }
 
 fn main() -> Result<(), Box<dyn Error>> {

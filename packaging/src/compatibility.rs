@@ -1,0 +1,185 @@
+//! Compatibility information: each FMU's DefaultExperiment run through its FMI model interface
+//! ([`fmi2_slave::reference`]), shipped inside the FMU under `extra/org.fmi-standard.fmi-ls-ref/`
+//! with an FMI-LS-REF manifest, and beside it in the FMI cross-check layout
+//! `compatibility/2.0/cs/<platform>/<tool>/<version>/<model>/` (the FMU, `<model>_ref.csv`,
+//! `<model>_ref.opt`, `<model>_in.csv` if it has inputs, `README.md`), which
+//! `fmpy.cross_check.validate_vendor_repo` validates.
+
+use std::error::Error;
+use std::path::{Path, PathBuf};
+
+use fmi2_slave::Model;
+use fmi2_slave::reference::{Experiment, run};
+
+/// The exporting tool and its version in the cross-check layout.
+pub const TOOL: (&str, &str) = ("flexible-slider-crank", env!("CARGO_PKG_VERSION"));
+
+/// Where FMI-LS-REF keeps its files inside an FMU.
+const EXTRA: &str = "extra/org.fmi-standard.fmi-ls-ref";
+
+/// One FMU's reference files: (file name, contents).
+pub struct References {
+    /// The model identifier, the stem of every file name.
+    pub model: &'static str,
+    /// `<model>_ref.csv`, `<model>_ref.opt` and, with inputs, `<model>_in.csv`.
+    pub files: Vec<(String, String)>,
+}
+
+/// The slider-crank's DefaultExperiment: benchmark B, two revolutions at 5000 rpm, inputs at
+/// their start values.
+pub fn slider_crank() -> Result<References, Box<dyn Error>> {
+    let (start, stop, tolerance, step) = flexible_slider_crank::variables::DEFAULT_EXPERIMENT;
+    references::<flexible_slider_crank::fmi::instance::SliderCrankFmu>(
+        flexible_slider_crank::fmi::MODEL_IDENTIFIER,
+        &Experiment {
+            start,
+            stop,
+            step,
+            tolerance,
+            inputs: Vec::new(),
+        },
+    )
+}
+
+/// The motor's DefaultExperiment with its load turning at 500 rad/s, below the 5000 rpm
+/// set-point (at its start value): the shaft winds up and the controller answers.
+pub fn motor() -> Result<References, Box<dyn Error>> {
+    let description = dc_motor::variables::DESCRIPTION;
+    let (start, stop, tolerance, step) = description.default_experiment;
+    let set_point = description
+        .variables
+        .iter()
+        .find(|v| v.name == "speed.setPoint")
+        .and_then(|v| match v.kind {
+            fmi2_slave::table::Kind::Real { start, .. } => start,
+            _ => None,
+        })
+        .ok_or("speed.setPoint has no start value")?;
+    references::<dc_motor::fmu::DcMotorFmu>(
+        dc_motor::MODEL_IDENTIFIER,
+        &Experiment {
+            start,
+            stop,
+            step,
+            tolerance,
+            inputs: vec![("shaft.speed", 500.0), ("speed.setPoint", set_point)],
+        },
+    )
+}
+
+fn references<M: Model>(
+    model: &'static str,
+    experiment: &Experiment,
+) -> Result<References, Box<dyn Error>> {
+    let results = run::<M>(experiment).map_err(|e| format!("{model} reference run: {e}"))?;
+    let mut files = vec![
+        (format!("{model}_ref.csv"), results.csv()),
+        (format!("{model}_ref.opt"), experiment.options()),
+    ];
+    if let Some(inputs) = experiment.input_csv() {
+        files.push((format!("{model}_in.csv"), inputs));
+    }
+    Ok(References { model, files })
+}
+
+impl References {
+    /// The entries to add to the FMU: the reference files and their manifest under
+    /// `extra/org.fmi-standard.fmi-ls-ref/`, and `documentation/fmi-ls-ref.txt`.
+    pub fn fmu_entries(&self) -> Vec<(String, Vec<u8>)> {
+        let mut entries: Vec<(String, Vec<u8>)> = self
+            .files
+            .iter()
+            .map(|(name, text)| (format!("{EXTRA}/{name}"), text.clone().into_bytes()))
+            .collect();
+        entries.push((
+            format!("{EXTRA}/fmi-ls-manifest.xml"),
+            self.manifest().into_bytes(),
+        ));
+        entries.push((
+            "documentation/fmi-ls-ref.txt".to_string(),
+            self.readme().into_bytes(),
+        ));
+        entries
+    }
+
+    /// The FMI-LS-REF manifest naming each reference file's role.
+    fn manifest(&self) -> String {
+        let mut related = String::new();
+        for (name, _) in &self.files {
+            let (kind, role, description) = if name.ends_with("_ref.csv") {
+                (
+                    "text/csv",
+                    "result",
+                    "Every Real output at every communication point of the experiment",
+                )
+            } else if name.ends_with("_in.csv") {
+                ("text/csv", "experiment", "Inputs of the experiment")
+            } else {
+                (
+                    "text/plain",
+                    "experiment",
+                    "Start time, stop time, communication step and relative tolerance",
+                )
+            };
+            related.push_str(&format!(
+                "    <Related type=\"{kind}\" source=\"{name}\" role=\"{role}\" \
+                 description=\"{description}\"/>\n"
+            ));
+        }
+        format!(
+            "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<fmiReferences\n    \
+             xmlns:fmi-ls=\"http://fmi-standard.org/fmi-ls-manifest\"\n    \
+             fmi-ls:fmi-ls-name=\"org.fmi-standard.fmi-ls-ref\"\n    \
+             fmi-ls:fmi-ls-version=\"1.0.0-alpha.1\"\n    \
+             fmi-ls:fmi-ls-description=\"Layered Standard providing information on related \
+             files included in an FMU.\">\n{related}</fmiReferences>\n"
+        )
+    }
+
+    /// What the reference files are and how to check an import against them.
+    fn readme(&self) -> String {
+        let model = self.model;
+        let inputs = if self.files.iter().any(|(n, _)| n.ends_with("_in.csv")) {
+            format!(", with the inputs of {model}_in.csv held over the run")
+        } else {
+            ", with every input at its start value".to_string()
+        };
+        format!(
+            "{model}: reference results\n\n\
+             {model}_ref.csv holds every Real output of {model} at every communication point of \
+             the experiment in {model}_ref.opt (start and stop time, communication step, relative \
+             tolerance passed to fmi2SetupExperiment){inputs}. They come from the FMU's own code, \
+             run the way fmpy's simulate_fmu runs it: fmi2SetupExperiment, the inputs set in \
+             initialization mode and before each step, communication points at start + n step. \
+             A master that runs the same experiment on the same processor gets the same bits; on \
+             another processor the results agree to about 1e-12 relative.\n\n\
+             The files are in extra/org.fmi-standard.fmi-ls-ref/ (FMI-LS-REF), listed in its \
+             fmi-ls-manifest.xml, and in the FMI cross-check layout beside the FMU.\n"
+        )
+    }
+
+    /// Writes the cross-check folder of `fmu` for the platform of each of its `binaries`: the
+    /// FMU, the reference files and README.md.
+    pub fn write_cross_check(
+        &self,
+        out_dir: &Path,
+        fmu: &Path,
+        binaries: &[(&str, PathBuf)],
+    ) -> Result<(), Box<dyn Error>> {
+        for (platform, _) in binaries {
+            let dir = out_dir
+                .join("compatibility/2.0/cs")
+                .join(platform)
+                .join(TOOL.0)
+                .join(TOOL.1)
+                .join(self.model);
+            std::fs::create_dir_all(&dir)?;
+            std::fs::copy(fmu, dir.join(format!("{}.fmu", self.model)))?;
+            for (name, text) in &self.files {
+                std::fs::write(dir.join(name), text)?;
+            }
+            std::fs::write(dir.join("README.md"), self.readme())?;
+        }
+        Ok(())
+    }
+}
