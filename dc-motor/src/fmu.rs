@@ -6,7 +6,8 @@ use fmi2_slave::model::{check_real, check_settable, check_step, lookup};
 use fmi2_slave::number::Num;
 use fmi2_slave::{FmuError, Logger, Model, State};
 
-use crate::motor::{MotorInputs, MotorOutputs, MotorParameters, MotorState};
+use crate::coupling::{self, Exchange};
+use crate::motor::{MotorInputs, MotorOutputs, MotorParameters, MotorState, substeps};
 use crate::variables::{Causality, Kind, LOG_CATEGORIES, VARIABLES, Variable, Vr};
 
 /// Number of parameters (value references 0 … N − 1).
@@ -55,6 +56,10 @@ pub struct DcMotorFmu {
     time: f64,
     stop_time: Option<f64>,
     last_successful_time: f64,
+    /// Warnings since the start (unstable communication steps).
+    warnings: u32,
+    /// The communication step whose coupling stability was checked last.
+    checked_step: Option<f64>,
 }
 
 fn start(vr: usize) -> f64 {
@@ -96,6 +101,40 @@ impl DcMotorFmu {
         }
     }
 
+    /// With `shaft.loadInertia` set, checks a communication step (as `given` by the master, `h`
+    /// on the clock grid, in `n` internal steps) other than the one checked last for the stability of the shaft's coupling to its load ([`coupling`]),
+    /// and warns of an unstable one.
+    fn check_coupling(&mut self, log: &Logger, (given, h): (f64, f64), n: u32) {
+        let load_inertia = self.parameters[Vr::ShaftLoadInertia as usize];
+        // The same step a master represents differently (on the clock grid, to a few ps).
+        let same = |c: f64| (c - h).abs() <= 1e-9 * h;
+        if load_inertia <= 0.0 || self.checked_step.is_some_and(same) {
+            return;
+        }
+        self.checked_step = Some(h);
+        let motor = self.motor();
+        let jacobi = coupling::growth(&motor, load_inertia, h, n, Exchange::Jacobi);
+        let motor_first = coupling::growth(&motor, load_inertia, h, n, Exchange::MotorFirst);
+        if jacobi <= 1.0 && motor_first <= 1.0 {
+            return;
+        }
+        self.warnings += 1;
+        let solver_step = self.parameters[Vr::SolverStepSize as usize];
+        let limit = |e| coupling::largest_stable_step(&motor, load_inertia, solver_step, e);
+        log.warning(&format!(
+            "communication step {} s: the shaft's coupling to its load (shaft.loadInertia = {} \
+             kg.m2) with inputs held over the step grows by {} per step when both FMUs step \
+             from the same point (Jacobi, stable up to {} s) and by {} when the motor steps \
+             first (Gauss-Seidel, stable up to {} s); above 1 it diverges",
+            Num(given),
+            Num(load_inertia),
+            Num(jacobi),
+            Num(limit(Exchange::Jacobi)),
+            Num(motor_first),
+            Num(limit(Exchange::MotorFirst))
+        ));
+    }
+
     fn input_index(vr: Vr) -> Option<usize> {
         match vr {
             Vr::ShaftSpeed => Some(0),
@@ -123,7 +162,7 @@ impl Model for DcMotorFmu {
     const VARIABLES: &'static [Variable] = VARIABLES;
     const LOG_CATEGORIES: &'static [(&'static str, &'static str)] = LOG_CATEGORIES;
     const STATE_MAGIC: [u8; 4] = *b"DCMS";
-    const STATE_VERSION: u32 = 1;
+    const STATE_VERSION: u32 = 2;
 
     fn new() -> Self {
         Self {
@@ -139,6 +178,8 @@ impl Model for DcMotorFmu {
             time: 0.0,
             stop_time: None,
             last_successful_time: 0.0,
+            warnings: 0,
+            checked_step: None,
         }
     }
 
@@ -173,7 +214,7 @@ impl Model for DcMotorFmu {
         Ok(())
     }
 
-    fn do_step(&mut self, _log: &Logger, t: f64, h: f64) -> Result<(), FmuError> {
+    fn do_step(&mut self, log: &Logger, t: f64, h: f64) -> Result<(), FmuError> {
         check_step(self.time, t, h, self.stop_time)?;
         // On the clock grid, every master's representation of the same points gives the same
         // step; the relative margin keeps n·solver.stepSize = h from rounding up to n + 1 steps.
@@ -187,12 +228,13 @@ impl Model for DcMotorFmu {
                 Num(MAX_STEPS)
             )));
         }
+        let n = substeps(end - t, self.parameters[Vr::SolverStepSize as usize]);
+        self.check_coupling(log, (h, end - t), n);
         let mut x = self.state();
         let signal = Signal {
             start: t,
             ..self.inputs
         };
-        let n = steps.max(1.0) as u32;
         self.motor()
             .advance(&mut x, end - t, n, |tau| signal.inputs(t + tau));
         self.state = Some(x);
@@ -253,9 +295,17 @@ impl Model for DcMotorFmu {
         Ok(())
     }
 
-    fn get_integer(&mut self, _log: &Logger, vr: &[u32], _: &mut [i32]) -> Result<(), FmuError> {
-        vr.first()
-            .map_or(Ok(()), |&r| lookup(VARIABLES, r, "Integer").map(|_| ()))
+    fn get_integer(
+        &mut self,
+        _log: &Logger,
+        vrs: &[u32],
+        values: &mut [i32],
+    ) -> Result<(), FmuError> {
+        for (vr, value) in vrs.iter().zip(values.iter_mut()) {
+            lookup(VARIABLES, *vr, "Integer")?;
+            *value = i32::try_from(self.warnings).unwrap_or(i32::MAX);
+        }
+        Ok(())
     }
 
     fn set_integer(&mut self, _state: State, vr: &[u32], _: &[i32]) -> Result<(), FmuError> {
@@ -357,11 +407,13 @@ impl Model for DcMotorFmu {
         put(self.time);
         put(self.stop_time.unwrap_or(f64::NAN));
         put(self.last_successful_time);
+        put(f64::from(self.warnings));
+        put(self.checked_step.unwrap_or(f64::NAN));
     }
 
     fn load(&mut self, _log: &Logger, bytes: &[u8], apply: bool) -> Result<(), FmuError> {
         let bad = |what: &str| Err(FmuError::Invalid(format!("FMU state rejected: {what}")));
-        const LENGTH: usize = N_PARAMETERS + 7 + 4 + 3;
+        const LENGTH: usize = N_PARAMETERS + 7 + 4 + 3 + 2;
         if bytes.len() != 8 * LENGTH {
             return bad(&format!("{} bytes, expected {}", bytes.len(), 8 * LENGTH));
         }
@@ -378,6 +430,12 @@ impl Model for DcMotorFmu {
         let state = [rest[7], rest[8], rest[9], rest[10]];
         let initialised = state.iter().all(|v| v.is_finite());
         let [time, stop, last] = [rest[11], rest[12], rest[13]];
+        let (warnings, checked) = (rest[14], rest[15]);
+        if !(warnings >= 0.0 && warnings <= f64::from(u32::MAX) && warnings.fract() == 0.0)
+            || checked.is_infinite()
+        {
+            return bad("a warnings count or checked step out of range");
+        }
         if !(rest[..7].iter().all(|v| v.is_finite())
             && (initialised || state.iter().all(|v| v.is_nan()))
             && time.is_finite()
@@ -396,6 +454,8 @@ impl Model for DcMotorFmu {
             self.time = time;
             self.stop_time = (!stop.is_nan()).then_some(stop);
             self.last_successful_time = last;
+            self.warnings = warnings as u32;
+            self.checked_step = (!checked.is_nan()).then_some(checked);
         }
         Ok(())
     }

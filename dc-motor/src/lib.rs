@@ -3,8 +3,10 @@
 //! slider-crank FMU it makes a motor–mechanism system (shipped as an SSP and an OSP system
 //! structure). Built on the same FMI layer, `fmi2-slave`, as the slider-crank.
 //!
-//! [`motor`] holds the equations, [`fmu`] the FMI model, [`variables`] the variable table.
+//! [`motor`] holds the equations, [`coupling`] the stability of the shaft's coupling to its load,
+//! [`fmu`] the FMI model, [`variables`] the variable table.
 
+pub mod coupling;
 pub mod fmu;
 pub mod motor;
 pub mod variables;

@@ -167,11 +167,18 @@ impl MotorParameters {
     }
 }
 
+/// The number of equal Runge–Kutta steps no longer than `solver_step` over a communication
+/// step `h` (the margin keeps n · solver_step = h from rounding up to n + 1 steps).
+pub fn substeps(h: f64, solver_step: f64) -> u32 {
+    (h / solver_step * (1.0 - 1e-9)).ceil().max(1.0) as u32
+}
+
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
 
-    fn motor() -> MotorParameters {
+    /// The motor of the motor–crank system (the FMU's start values).
+    pub(crate) fn motor() -> MotorParameters {
         MotorParameters {
             resistance: 0.2,
             inductance: 5e-4,

@@ -83,6 +83,7 @@ pub enum Vr {
     SupplyVoltageLimit,
     ShaftInitialTorque,
     SolverStepSize,
+    ShaftLoadInertia,
     ShaftSpeed,
     SpeedSetPoint,
     ShaftTorque,
@@ -90,6 +91,7 @@ pub enum Vr {
     MotorCurrent,
     MotorVoltage,
     ShaftTwist,
+    SolverWarnings,
 }
 
 impl ValueReference for Vr {
@@ -133,6 +135,7 @@ fn initial_dependency(unknown: Vr, known: Vr) -> bool {
                 | SupplyVoltageLimit
         ),
         ShaftTwist => matches!(known, ShaftInitialTorque | ShaftStiffness),
+        // The warnings count starts at zero.
         _ => false,
     }
 }
@@ -259,6 +262,15 @@ pub const VARIABLES: &[Variable] = &[
         "s",
         "Largest internal step (classical Runge-Kutta, steps of equal length per communication step)",
     ),
+    Variable::parameter(
+        Vr::ShaftLoadInertia,
+        "shaft.loadInertia",
+        0.0,
+        0.0,
+        1e6,
+        "kg.m2",
+        "Inertia of the load at the driven end of the shaft (0: unknown). When set, each new communication step is checked for the stability of the shaft's coupling to that load with inputs held over the step, and an unstable one is warned of (solver.warnings)",
+    ),
     Variable::input(
         Vr::ShaftSpeed,
         "shaft.speed",
@@ -296,5 +308,10 @@ pub const VARIABLES: &[Variable] = &[
         "shaft.twist",
         "rad",
         "Twist of the shaft (rotor angle minus load angle)",
+    ),
+    Variable::count(
+        Vr::SolverWarnings,
+        "solver.warnings",
+        "Warnings since the start: communication steps at which the shaft's coupling to its load (shaft.loadInertia) is unstable",
     ),
 ];

@@ -288,7 +288,14 @@ v       = Kp e + Ki z, e = w_ref - w,  u = clamp(v, -U, U),  dz/dt = e + (u - v)
 </pre>
 <p>Starts in steady state at speed.setPoint holding shaft.initialTorque (controller at its set-point).
 Classical Runge-Kutta in equal steps of at most solver.stepSize per communication step; inputs can be
-interpolated (first and second derivatives, for one communication step). GUID <code>{}</code>.</p>
+interpolated (first and second derivatives, for one communication step). With shaft.loadInertia set
+(the inertia J_L of the load at the shaft's driven end), every new communication step h is checked: the
+motor and a load J_L dw_L/dt = tau, exchanging w_L and tau held over h, form a linear map per step, and if
+its spectral radius exceeds 1 for either exchange order (both FMUs from the same point, or the motor first)
+the FMU logs a warning with both largest stable steps and counts it in solver.warnings. Directional
+derivatives: d shaft.torque/d shaft.speed = -d_s, d motor.voltage/d speed.setPoint = Kp inside the voltage
+limit. Reference results of the DefaultExperiment (load at 500 rad/s) are in
+extra/org.fmi-standard.fmi-ls-ref/. GUID <code>{}</code>.</p>
 <h2>Parameters</h2>{}
 <h2>Inputs</h2>{}
 <h2>Outputs</h2>{}

@@ -38,8 +38,9 @@ MOTOR_FMU = ROOT / "target" / "fmu" / "DcMotor.fmu"
 SSP = ROOT / "target" / "fmu" / "MotorCrank.ssp"
 SSD = ROOT / "systems" / "motor-crank" / "SystemStructure.ssd"
 OSP = ROOT / "target" / "fmu" / "motor-crank" / "OspSystemStructure.xml"
-# The crank's parameters in the system (as bound in the SSP and the OSP file).
+# The crank's and the motor's parameters in the system (as bound in the SSP and the OSP file).
 CRANK_PARAMETERS = {"drive.mode": 2, "crank.inertia": 0.02}
+MOTOR_PARAMETERS = {"shaft.loadInertia": 0.0205}
 SCHEMES = ("held", "order 1", "order 2", "extrapolated")
 
 
@@ -63,6 +64,8 @@ class Slave:
                 self.fmu.setInteger([self.vr[name]], [int(value)])
 
     def get(self, name):
+        if self.types[name] == "Integer":
+            return self.fmu.getInteger([self.vr[name]])[0]
         return self.fmu.getReal([self.vr[name]])[0]
 
     def free(self):
@@ -79,6 +82,7 @@ def run(step, stop, scheme="held", outputs=("crank.speed",), zero_start=False, c
     "jacobi" or "gauss-seidel" (held inputs only: the motor steps first)."""
     motor, crank = Slave(MOTOR_FMU, "motor"), Slave(CRANK_FMU, "crank")
     crank.set({**CRANK_PARAMETERS, **(crank_parameters or {})})
+    motor.set(MOTOR_PARAMETERS)
     for s in (motor, crank):
         s.fmu.enterInitializationMode()
         s.fmu.exitInitializationMode()
@@ -120,8 +124,16 @@ def run(step, stop, scheme="held", outputs=("crank.speed",), zero_start=False, c
 
 
 def read(outputs, crank, motor):
-    """{name: value} of `outputs`, each from the FMU that has it (the crank's first)."""
-    return {name: (crank if name in crank.vr else motor).get(name) for name in outputs}
+    """{name: value} of `outputs`, each from the FMU that has it (the crank's first), or from the
+    component a name such as "dcMotor/solver.warnings" names (the system's component names)."""
+    components = {"sliderCrank": crank, "dcMotor": motor}
+
+    def value(name):
+        component, _, variable = name.rpartition("/")
+        if component:
+            return components[component].get(variable)
+        return (crank if name in crank.vr else motor).get(name)
+    return {name: value(name) for name in outputs}
 
 
 #: Communication steps of the stability table [s], and the bounds of a stable run over 0.2 s: the

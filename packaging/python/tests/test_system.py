@@ -191,6 +191,17 @@ def test_the_documented_stable_steps_hold():
     assert [table["gauss-seidel"][h][2] for h in (1e-3, 3e-3)] == [True, False]
 
 
+def test_the_motor_warns_beyond_the_stable_step():
+    """The motor, knowing its load's inertia (shaft.loadInertia, bound in the SSP and the OSP
+    file), checks each new communication step for the stability of the shaft's coupling: no
+    warning at 1e-4 and 3e-4 s, one (solver.warnings) at the first step of 4e-4 s, and at 1e-3 s,
+    where only the motor-first exchange is stable."""
+    for h, warnings in ((1e-4, 0), (3e-4, 0), (4e-4, 1), (1e-3, 1)):
+        for coupling in ("jacobi", "gauss-seidel"):
+            rows = system.run(h, 3 * h, outputs=("dcMotor/solver.warnings",), coupling=coupling)
+            assert [v["dcMotor/solver.warnings"] for _, v in rows] == [warnings] * 3, (h, coupling)
+
+
 def test_first_order_input_derivatives_cut_the_coupling_error():
     """Crank speed at 1 ms against a 2.5e-6 s run with second-order inputs, the crank at
     solver.relativeTolerance 1e-6: first-order input derivatives give at least 2x less error than
