@@ -41,3 +41,5 @@ impl fmt::Display for FmuError {
         }
     }
 }
+
+impl std::error::Error for FmuError {}

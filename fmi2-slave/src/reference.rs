@@ -35,62 +35,147 @@ pub struct Experiment {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Results {
     /// Names of the recorded outputs.
-    pub names: Vec<&'static str>,
+    pub names: Vec<String>,
     /// Time and values at each communication point.
     pub rows: Vec<(f64, Vec<f64>)>,
 }
 
+/// One model driven by variable names, the way a master drives an FMU.
+pub struct Slave<M: Model> {
+    model: M,
+    log: Logger,
+    state: State,
+}
+
+impl<M: Model> Slave<M> {
+    /// A new instance with every start value.
+    pub fn new() -> Self {
+        Self {
+            model: M::new(),
+            log: Logger::new(
+                None,
+                std::ptr::null_mut(),
+                "reference",
+                false,
+                M::LOG_CATEGORIES,
+            ),
+            state: State::Instantiated,
+        }
+    }
+
+    /// The names of the model's Real outputs, in table order.
+    pub fn real_outputs() -> Vec<&'static str> {
+        M::VARIABLES
+            .iter()
+            .filter(|v| v.causality == Causality::Output && matches!(v.kind, Kind::Real { .. }))
+            .map(|v| v.name)
+            .collect()
+    }
+
+    fn value_reference(name: &str) -> Result<(u32, &'static Kind), FmuError> {
+        M::VARIABLES
+            .iter()
+            .find(|v| v.name == name)
+            .map(|v| (v.vr.index(), &v.kind))
+            .ok_or_else(|| FmuError::Invalid(format!("no variable {name}")))
+    }
+
+    /// fmi2SetupExperiment.
+    pub fn setup(
+        &mut self,
+        tolerance: Option<f64>,
+        start: f64,
+        stop: Option<f64>,
+    ) -> Result<(), FmuError> {
+        self.model
+            .setup_experiment(&self.log, tolerance, start, stop)
+    }
+
+    /// fmi2EnterInitializationMode.
+    pub fn enter_initialization(&mut self) {
+        self.state = State::InitializationMode;
+    }
+
+    /// Sets a Real variable, or an Integer one to `value` (a whole number).
+    pub fn set(&mut self, name: &str, value: f64) -> Result<(), FmuError> {
+        let (vr, kind) = Self::value_reference(name)?;
+        match kind {
+            Kind::Real { .. } => self.model.set_real(self.state, &[vr], &[value]),
+            _ => {
+                let n = value as i32;
+                if f64::from(n) != value {
+                    return Err(FmuError::Invalid(format!(
+                        "{name} = {value} is not a whole number"
+                    )));
+                }
+                self.model.set_integer(self.state, &[vr], &[n])
+            }
+        }
+    }
+
+    /// The values of the Real variables `vrs`.
+    fn get_reals(&mut self, vrs: &[u32]) -> Result<Vec<f64>, FmuError> {
+        let mut values = vec![0.0; vrs.len()];
+        self.model.get_real(&self.log, vrs, &mut values)?;
+        Ok(values)
+    }
+
+    /// The values of the Real variables `names`.
+    pub fn get(&mut self, names: &[&str]) -> Result<Vec<f64>, FmuError> {
+        let vrs = names
+            .iter()
+            .map(|n| Self::value_reference(n).map(|(vr, _)| vr))
+            .collect::<Result<Vec<_>, _>>()?;
+        self.get_reals(&vrs)
+    }
+
+    /// fmi2ExitInitializationMode.
+    pub fn exit_initialization(&mut self) -> Result<(), FmuError> {
+        self.model.exit_initialization(&self.log)?;
+        self.state = State::StepComplete;
+        Ok(())
+    }
+
+    /// fmi2DoStep from `t` over `h`.
+    pub fn step(&mut self, t: f64, h: f64) -> Result<(), FmuError> {
+        self.model.do_step(&self.log, t, h)
+    }
+}
+
+impl<M: Model> Default for Slave<M> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
 /// Runs `experiment` on a new instance of `M`.
 pub fn run<M: Model>(experiment: &Experiment) -> Result<Results, FmuError> {
-    let log = Logger::new(
-        None,
-        std::ptr::null_mut(),
-        "reference",
-        false,
-        M::LOG_CATEGORIES,
-    );
-    let mut model = M::new();
-    let outputs: Vec<_> = M::VARIABLES
-        .iter()
-        .filter(|v| v.causality == Causality::Output && matches!(v.kind, Kind::Real { .. }))
-        .collect();
-    let output_vrs: Vec<u32> = outputs.iter().map(|v| v.vr.index()).collect();
-    let mut inputs = Vec::with_capacity(experiment.inputs.len());
-    for (name, value) in &experiment.inputs {
-        let v = M::VARIABLES
-            .iter()
-            .find(|v| v.name == *name && v.causality == Causality::Input)
-            .ok_or_else(|| FmuError::Invalid(format!("{name} is not an input")))?;
-        inputs.push((v.vr.index(), *value));
-    }
-    let (vrs, values): (Vec<u32>, Vec<f64>) = inputs.into_iter().unzip();
-    model.setup_experiment(
-        &log,
+    let mut slave = Slave::<M>::new();
+    let outputs = Slave::<M>::real_outputs();
+    slave.setup(
         Some(experiment.tolerance),
         experiment.start,
         Some(experiment.stop),
     )?;
-    model.set_real(State::InitializationMode, &vrs, &values)?;
-    model.exit_initialization(&log)?;
-    let mut results = Results {
-        names: outputs.iter().map(|v| v.name).collect(),
-        rows: Vec::new(),
-    };
-    let mut record = |model: &mut M, t: f64| -> Result<(), FmuError> {
-        let mut row = vec![0.0; output_vrs.len()];
-        model.get_real(&log, &output_vrs, &mut row)?;
-        results.rows.push((t, row));
+    slave.enter_initialization();
+    let set_inputs = |slave: &mut Slave<M>| -> Result<(), FmuError> {
+        for (name, value) in &experiment.inputs {
+            slave.set(name, *value)?;
+        }
         Ok(())
     };
+    set_inputs(&mut slave)?;
+    slave.exit_initialization()?;
     let points = experiment.points();
-    record(&mut model, points[0])?;
+    let mut rows = vec![(points[0], slave.get(&outputs)?)];
     for pair in points.windows(2) {
         let (t, next) = (pair[0], pair[1]);
-        model.set_real(State::StepComplete, &vrs, &values)?;
-        model.do_step(&log, t, next - t)?;
-        record(&mut model, next)?;
+        set_inputs(&mut slave)?;
+        slave.step(t, next - t)?;
+        rows.push((next, slave.get(&outputs)?));
     }
-    Ok(results)
+    let names = outputs.iter().map(ToString::to_string).collect();
+    Ok(Results { names, rows })
 }
 
 /// Python's `math.isclose` with its default relative tolerance 1e-9, as fmpy ends its loop.

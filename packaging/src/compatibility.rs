@@ -3,13 +3,16 @@
 //! with an FMI-LS-REF manifest, and beside it in the FMI cross-check layout
 //! `compatibility/2.0/cs/<platform>/<tool>/<version>/<model>/` (the FMU, `<model>_ref.csv`,
 //! `<model>_ref.opt`, `<model>_in.csv` if it has inputs, `README.md`), which
-//! `fmpy.cross_check.validate_vendor_repo` validates.
+//! `fmpy.cross_check.validate_vendor_repo` validates; and the motor–crank system's run beside
+//! its SSP, `compatibility/ssp/MotorCrank/`, in the same files.
 
 use std::error::Error;
 use std::path::{Path, PathBuf};
 
-use fmi2_slave::Model;
-use fmi2_slave::reference::{Experiment, run};
+use dc_motor::fmu::DcMotorFmu;
+use flexible_slider_crank::fmi::instance::SliderCrankFmu;
+use fmi2_slave::reference::{Experiment, Results, Slave, run};
+use fmi2_slave::{FmuError, Model};
 
 /// The exporting tool and its version in the cross-check layout.
 pub const TOOL: (&str, &str) = ("flexible-slider-crank", env!("CARGO_PKG_VERSION"));
@@ -23,13 +26,15 @@ pub struct References {
     pub model: &'static str,
     /// `<model>_ref.csv`, `<model>_ref.opt` and, with inputs, `<model>_in.csv`.
     pub files: Vec<(String, String)>,
+    /// What the files are and how to check an import against them.
+    pub readme: String,
 }
 
 /// The slider-crank's DefaultExperiment: benchmark B, two revolutions at 5000 rpm, inputs at
 /// their start values.
 pub fn slider_crank() -> Result<References, Box<dyn Error>> {
     let (start, stop, tolerance, step) = flexible_slider_crank::variables::DEFAULT_EXPERIMENT;
-    references::<flexible_slider_crank::fmi::instance::SliderCrankFmu>(
+    references::<SliderCrankFmu>(
         flexible_slider_crank::fmi::MODEL_IDENTIFIER,
         &Experiment {
             start,
@@ -55,7 +60,7 @@ pub fn motor() -> Result<References, Box<dyn Error>> {
             _ => None,
         })
         .ok_or("speed.setPoint has no start value")?;
-    references::<dc_motor::fmu::DcMotorFmu>(
+    references::<DcMotorFmu>(
         dc_motor::MODEL_IDENTIFIER,
         &Experiment {
             start,
@@ -71,7 +76,7 @@ fn references<M: Model>(
     model: &'static str,
     experiment: &Experiment,
 ) -> Result<References, Box<dyn Error>> {
-    let results = run::<M>(experiment).map_err(|e| format!("{model} reference run: {e}"))?;
+    let results = run::<M>(experiment)?;
     let mut files = vec![
         (format!("{model}_ref.csv"), results.csv()),
         (format!("{model}_ref.opt"), experiment.options()),
@@ -79,7 +84,129 @@ fn references<M: Model>(
     if let Some(inputs) = experiment.input_csv() {
         files.push((format!("{model}_in.csv"), inputs));
     }
-    Ok(References { model, files })
+    let inputs = if experiment.inputs.is_empty() {
+        ", with every input at its start value".to_string()
+    } else {
+        format!(", with the inputs of {model}_in.csv held over the run")
+    };
+    let readme = format!(
+        "{model}: reference results\n\n\
+         {model}_ref.csv holds every Real output of {model} at every communication point of the \
+         experiment in {model}_ref.opt (start and stop time, communication step, relative \
+         tolerance passed to fmi2SetupExperiment){inputs}. They come from the FMU's own code, run \
+         the way fmpy's simulate_fmu runs it: fmi2SetupExperiment, the inputs set in \
+         initialization mode and before each step, communication points at start + n step. A \
+         master that runs the same experiment on the same processor gets the same bits; on \
+         another processor the results agree to about 1e-12 relative.\n\n\
+         The files are in extra/org.fmi-standard.fmi-ls-ref/ (FMI-LS-REF), listed in its \
+         fmi-ls-manifest.xml, and in the FMI cross-check layout beside the FMU.\n"
+    );
+    Ok(References {
+        model,
+        files,
+        readme,
+    })
+}
+
+/// The motor–crank system of `MotorCrank.ssp` over its 24 ms DefaultExperiment: the parameters
+/// the SSP binds (the crank torque-driven with a 0.02 kg m² flywheel, the motor knowing that
+/// load), and every 1e-4 s the motor's shaft torque to the crank's drive torque and the crank's
+/// speed to the motor's shaft speed, both FMUs then stepping from the same point (Jacobi, as
+/// libcosim's fixed-step algorithm and the fmpy loop `fsc.system.run` do). Every Real output of
+/// both, named `<component>.<variable>`.
+pub fn system() -> Result<References, Box<dyn Error>> {
+    let (stop, step) = (0.024, 1e-4);
+    let mut crank = Slave::<SliderCrankFmu>::new();
+    let mut motor = Slave::<DcMotorFmu>::new();
+    for (slave, parameters) in [
+        (
+            &mut crank as &mut dyn Unit,
+            &[("drive.mode", 2.0), ("crank.inertia", 0.02)][..],
+        ),
+        (&mut motor, &[("shaft.loadInertia", 0.0205)]),
+    ] {
+        slave.setup()?;
+        for (name, value) in parameters {
+            slave.set(name, *value)?;
+        }
+        slave.initialize()?;
+    }
+    let crank_outputs = Slave::<SliderCrankFmu>::real_outputs();
+    let motor_outputs = Slave::<DcMotorFmu>::real_outputs();
+    let record = |crank: &mut Slave<SliderCrankFmu>,
+                  motor: &mut Slave<DcMotorFmu>,
+                  t: f64|
+     -> Result<(f64, Vec<f64>), Box<dyn Error>> {
+        let mut row = crank.get(&crank_outputs)?;
+        row.extend(motor.get(&motor_outputs)?);
+        Ok((t, row))
+    };
+    let mut rows = vec![record(&mut crank, &mut motor, 0.0)?];
+    for k in 0..240u32 {
+        let t = f64::from(k) * step;
+        let torque = motor.get(&["shaft.torque"])?[0];
+        let speed = crank.get(&["crank.speed"])?[0];
+        crank.set("drive.torque", torque)?;
+        motor.set("shaft.speed", speed)?;
+        crank.step(t, step)?;
+        motor.step(t, step)?;
+        rows.push(record(&mut crank, &mut motor, f64::from(k + 1) * step)?);
+    }
+    let names = crank_outputs
+        .iter()
+        .map(|n| format!("sliderCrank.{n}"))
+        .chain(motor_outputs.iter().map(|n| format!("dcMotor.{n}")))
+        .collect();
+    let experiment = Experiment {
+        start: 0.0,
+        stop,
+        step,
+        tolerance: flexible_slider_crank::variables::DEFAULT_EXPERIMENT.2,
+        inputs: Vec::new(),
+    };
+    let model = "MotorCrank";
+    let readme = format!(
+        "{model}: reference results\n\n\
+         {model}_ref.csv holds every Real output of both components of {model}.ssp \
+         (sliderCrank.*, dcMotor.*) at every communication point of its 24 ms DefaultExperiment, \
+         with the parameters the SSP binds: every {step} s the motor's shaft.torque is set as the \
+         crank's drive.torque and the crank's crank.speed as the motor's shaft.speed, and both \
+         FMUs step from the same point (Jacobi: libcosim's fixed-step algorithm), inputs held. \
+         No tolerance is passed to fmi2SetupExperiment ({model}_ref.opt gives the crank's \
+         default). libcosim, from the SSP or the OSP system structure, gets the same bits on the \
+         same processor.\n"
+    );
+    Ok(References {
+        model,
+        files: vec![
+            (format!("{model}_ref.csv"), Results { names, rows }.csv()),
+            (format!("{model}_ref.opt"), experiment.options()),
+        ],
+        readme,
+    })
+}
+
+/// What the system run needs of a slave, whatever its model.
+trait Unit {
+    fn setup(&mut self) -> Result<(), FmuError>;
+    fn set(&mut self, name: &str, value: f64) -> Result<(), FmuError>;
+    fn initialize(&mut self) -> Result<(), FmuError>;
+}
+
+impl<M: Model> Unit for Slave<M> {
+    /// fmi2SetupExperiment from 0 without tolerance or stop time, as `fsc.system` does.
+    fn setup(&mut self) -> Result<(), FmuError> {
+        Slave::setup(self, None, 0.0, None)
+    }
+
+    fn set(&mut self, name: &str, value: f64) -> Result<(), FmuError> {
+        Slave::set(self, name, value)
+    }
+
+    fn initialize(&mut self) -> Result<(), FmuError> {
+        self.enter_initialization();
+        self.exit_initialization()
+    }
 }
 
 impl References {
@@ -97,7 +224,7 @@ impl References {
         ));
         entries.push((
             "documentation/fmi-ls-ref.txt".to_string(),
-            self.readme().into_bytes(),
+            self.readme.clone().into_bytes(),
         ));
         entries
     }
@@ -136,28 +263,6 @@ impl References {
         )
     }
 
-    /// What the reference files are and how to check an import against them.
-    fn readme(&self) -> String {
-        let model = self.model;
-        let inputs = if self.files.iter().any(|(n, _)| n.ends_with("_in.csv")) {
-            format!(", with the inputs of {model}_in.csv held over the run")
-        } else {
-            ", with every input at its start value".to_string()
-        };
-        format!(
-            "{model}: reference results\n\n\
-             {model}_ref.csv holds every Real output of {model} at every communication point of \
-             the experiment in {model}_ref.opt (start and stop time, communication step, relative \
-             tolerance passed to fmi2SetupExperiment){inputs}. They come from the FMU's own code, \
-             run the way fmpy's simulate_fmu runs it: fmi2SetupExperiment, the inputs set in \
-             initialization mode and before each step, communication points at start + n step. \
-             A master that runs the same experiment on the same processor gets the same bits; on \
-             another processor the results agree to about 1e-12 relative.\n\n\
-             The files are in extra/org.fmi-standard.fmi-ls-ref/ (FMI-LS-REF), listed in its \
-             fmi-ls-manifest.xml, and in the FMI cross-check layout beside the FMU.\n"
-        )
-    }
-
     /// Writes the cross-check folder of `fmu` for the platform of each of its `binaries`: the
     /// FMU, the reference files and README.md.
     pub fn write_cross_check(
@@ -178,8 +283,20 @@ impl References {
             for (name, text) in &self.files {
                 std::fs::write(dir.join(name), text)?;
             }
-            std::fs::write(dir.join("README.md"), self.readme())?;
+            std::fs::write(dir.join("README.md"), &self.readme)?;
         }
+        Ok(())
+    }
+
+    /// Writes `compatibility/ssp/<model>/`: the system `ssp`, the reference files and README.md.
+    pub fn write_system(&self, out_dir: &Path, ssp: &Path) -> Result<(), Box<dyn Error>> {
+        let dir = out_dir.join("compatibility/ssp").join(self.model);
+        std::fs::create_dir_all(&dir)?;
+        std::fs::copy(ssp, dir.join(format!("{}.ssp", self.model)))?;
+        for (name, text) in &self.files {
+            std::fs::write(dir.join(name), text)?;
+        }
+        std::fs::write(dir.join("README.md"), &self.readme)?;
         Ok(())
     }
 }

@@ -266,6 +266,7 @@ fn package(
         entries.push((format!("resources/{name}"), fmu.clone()));
     }
     write_zip(&ssp, &entries)?;
+    compatibility::system()?.write_system(out_dir, &ssp)?;
     let osp = out_dir.join("motor-crank");
     std::fs::create_dir_all(&osp)?;
     std::fs::copy(

@@ -74,3 +74,26 @@ def test_the_fmu_carries_its_references_with_an_fmi_ls_ref_manifest(model):
             assert fmu.read(f"{EXTRA}/{source}") == (folder / source).read_bytes()
         assert all(r.get("type") and r.get("description") for r in related)
         assert "documentation/fmi-ls-ref.txt" in names
+
+
+def test_the_system_reference_is_the_plain_fmpy_masters_run():
+    """target/fmu/compatibility/ssp/MotorCrank/: the SSP, its reference results and options; the
+    fmpy Jacobi loop of fsc.system (which libcosim matches bit for bit, test_system.py) gives every
+    output of both components at every communication point, to the bit."""
+    from fsc import system
+
+    folder = FMUS / "compatibility" / "ssp" / "MotorCrank"
+    assert (folder / "MotorCrank.ssp").read_bytes() == (FMUS / "MotorCrank.ssp").read_bytes()
+    options = read_ref_opt_file(str(folder / "MotorCrank_ref.opt"))
+    reference = read_csv(str(folder / "MotorCrank_ref.csv"))
+    names = list(reference.dtype.names[1:])
+    assert len(reference) == 241 and options["StepSize"] == 1e-4 and options["StopTime"] == 0.024
+    assert {n.split(".")[0] for n in names} == {"sliderCrank", "dcMotor"}
+    rows = system.run(options["StepSize"], options["StopTime"],
+                      outputs=[n.replace(".", "/", 1) for n in names])
+    assert len(rows) == 240
+    for k, (t, values) in enumerate(rows, start=1):
+        assert t == reference["time"][k]
+        for n in names:
+            assert values[n.replace(".", "/", 1)] == reference[n][k], (t, n)
+    assert "Jacobi" in (folder / "README.md").read_text()
