@@ -263,8 +263,7 @@ impl References {
         )
     }
 
-    /// Writes the cross-check folder of `fmu` for the platform of each of its `binaries`: the
-    /// FMU, the reference files and README.md.
+    /// Writes the cross-check folder of `fmu` for the platform of each of its `binaries`.
     pub fn write_cross_check(
         &self,
         out_dir: &Path,
@@ -272,27 +271,25 @@ impl References {
         binaries: &[(&str, PathBuf)],
     ) -> Result<(), Box<dyn Error>> {
         for (platform, _) in binaries {
-            let dir = out_dir
-                .join("compatibility/2.0/cs")
-                .join(platform)
-                .join(TOOL.0)
-                .join(TOOL.1)
-                .join(self.model);
-            std::fs::create_dir_all(&dir)?;
-            std::fs::copy(fmu, dir.join(format!("{}.fmu", self.model)))?;
-            for (name, text) in &self.files {
-                std::fs::write(dir.join(name), text)?;
-            }
-            std::fs::write(dir.join("README.md"), &self.readme)?;
+            let dir = out_dir.join("compatibility/2.0/cs").join(platform);
+            self.write_folder(&dir.join(TOOL.0).join(TOOL.1), fmu)?;
         }
         Ok(())
     }
 
-    /// Writes `compatibility/ssp/<model>/`: the system `ssp`, the reference files and README.md.
+    /// Writes `compatibility/ssp/<model>/` for the system `ssp`.
     pub fn write_system(&self, out_dir: &Path, ssp: &Path) -> Result<(), Box<dyn Error>> {
-        let dir = out_dir.join("compatibility/ssp").join(self.model);
+        self.write_folder(&out_dir.join("compatibility/ssp"), ssp)
+    }
+
+    /// Writes `parent/<model>/`: the `archive` (FMU or SSP), the reference files and README.md.
+    fn write_folder(&self, parent: &Path, archive: &Path) -> Result<(), Box<dyn Error>> {
+        let dir = parent.join(self.model);
         std::fs::create_dir_all(&dir)?;
-        std::fs::copy(ssp, dir.join(format!("{}.ssp", self.model)))?;
+        let name = archive
+            .file_name()
+            .ok_or("an archive without a file name")?;
+        std::fs::copy(archive, dir.join(name))?;
         for (name, text) in &self.files {
             std::fs::write(dir.join(name), text)?;
         }

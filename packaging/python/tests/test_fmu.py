@@ -247,21 +247,17 @@ def test_master_tolerance_tightens_but_never_loosens_the_integration(fmu):
     assert steps(relative_tolerance=1e-6, start_values={"solver.relativeTolerance": 1e-1}) == tight
 
 
-def feedthrough_measured(fmu):
-    """(output, input) pairs where setting the input changes the output at once, before a step:
-    over every drive x joint x rod model, 2 ms into benchmark B."""
+def every_model_at_2ms(fmu):
+    """For every drive x joint x rod model: (model, instance) 2 ms into benchmark B (20 steps of
+    1e-4 s). The caller frees the instance."""
     md = read_model_description(fmu)
     unzipdir = extract(fmu)
     vr = {v.name: v.valueReference for v in md.modelVariables}
-    inputs = [v.name for v in md.modelVariables if v.causality == "input"]
-    outputs = [v for v in md.modelVariables if v.causality == "output"]
-    getters = {"Real": "getReal", "Integer": "getInteger", "Boolean": "getBoolean"}
-    pairs = set()
     for drive in (1, 2):
         for joint in JOINTS.values():
             for formulation in (FORMULATIONS["rigid"], FORMULATIONS["craigBampton"]):
                 s = FMU2Slave(guid=md.guid, unzipDirectory=unzipdir,
-                              modelIdentifier=md.coSimulation.modelIdentifier, instanceName="dep")
+                              modelIdentifier=md.coSimulation.modelIdentifier, instanceName="at2ms")
                 s.instantiate()
                 s.setupExperiment(startTime=0.0)
                 s.setInteger([vr["drive.mode"], vr["joint.model"], vr["rod.formulation"]],
@@ -272,20 +268,31 @@ def feedthrough_measured(fmu):
                 for _ in range(20):
                     s.doStep(t, 1e-4)
                     t += 1e-4
+                yield (drive, joint, formulation), s
 
-                def read():
-                    return {o.name: getattr(s, getters[o.type])([o.valueReference])[0]
-                            for o in outputs}
-                before = read()
-                for u in inputs:
-                    x = s.getReal([vr[u]])[0]
-                    s.setReal([vr[u]], [1.01 * x + 1.0])
-                    after = read()
-                    pairs |= {(o, u) for o in after if after[o] != before[o]}
-                    s.setReal([vr[u]], [x])
-                    assert read() == before, (drive, joint, formulation, u)
-                s.terminate()
-                s.freeInstance()
+
+def feedthrough_measured(fmu):
+    """(output, input) pairs where setting the input changes the output at once, before a step:
+    over every drive x joint x rod model, 2 ms into benchmark B."""
+    md = read_model_description(fmu)
+    vr = {v.name: v.valueReference for v in md.modelVariables}
+    inputs = [v.name for v in md.modelVariables if v.causality == "input"]
+    outputs = [v for v in md.modelVariables if v.causality == "output"]
+    getters = {"Real": "getReal", "Integer": "getInteger", "Boolean": "getBoolean"}
+    pairs = set()
+    for model, s in every_model_at_2ms(fmu):
+        def read():
+            return {o.name: getattr(s, getters[o.type])([o.valueReference])[0] for o in outputs}
+        before = read()
+        for u in inputs:
+            x = s.getReal([vr[u]])[0]
+            s.setReal([vr[u]], [1.01 * x + 1.0])
+            after = read()
+            pairs |= {(o, u) for o in after if after[o] != before[o]}
+            s.setReal([vr[u]], [x])
+            assert read() == before, (model, u)
+        s.terminate()
+        s.freeInstance()
     return pairs
 
 
@@ -311,66 +318,49 @@ def test_directional_derivatives_agree_with_central_differences(fmu):
     those differences' round-off 4 eps |y| / h; exactly zero where no feedthrough is declared. A
     peak-hold output is compared where the master's differences stay on one side of its kink."""
     md = read_model_description(fmu)
-    unzipdir = extract(fmu)
     vr = {v.name: v.valueReference for v in md.modelVariables}
     inputs = [v.name for v in md.modelVariables if v.causality == "input"]
     outputs = [v.name for v in md.modelVariables if v.causality == "output" and v.type == "Real"]
     feedthrough = {(u.variable.name, d.name) for u in md.outputs for d in (u.dependencies or [])}
     ov = [vr[o] for o in outputs]
+    at = {o: i for i, o in enumerate(outputs)}
     eps = np.finfo(float).eps
     compared = straddled = 0
-    for drive in (1, 2):
-        for joint in JOINTS.values():
-            for formulation in (FORMULATIONS["rigid"], FORMULATIONS["craigBampton"]):
-                s = FMU2Slave(guid=md.guid, unzipDirectory=unzipdir,
-                              modelIdentifier=md.coSimulation.modelIdentifier, instanceName="dd")
-                s.instantiate()
-                s.setupExperiment(startTime=0.0)
-                s.setInteger([vr["drive.mode"], vr["joint.model"], vr["rod.formulation"]],
-                             [drive, joint, formulation])
-                s.enterInitializationMode()
-                s.exitInitializationMode()
-                t = 0.0
-                for _ in range(20):
-                    s.doStep(t, 1e-4)
-                    t += 1e-4
-                y = np.array(s.getReal(ov))
-                for u in inputs:
-                    derivative = np.array(s.getDirectionalDerivative(ov, [vr[u]], [1.0]))
-                    # Linear in the seed.
-                    assert np.array_equal(
-                        np.array(s.getDirectionalDerivative(ov, [vr[u]], [-2.0])), -2.0 * derivative)
-                    x = s.getReal([vr[u]])[0]
-                    h = 3e-4 * max(1.0, abs(x))
-                    s.setReal([vr[u]], [x + h])
-                    plus = np.array(s.getReal(ov))
-                    s.setReal([vr[u]], [x - h])
-                    minus = np.array(s.getReal(ov))
-                    s.setReal([vr[u]], [x])
-                    difference = (plus - minus) / (2.0 * h)
-                    bound = 1e-6 * np.abs(difference) + 4.0 * eps * np.abs(y) / h
-                    at = {o: i for i, o in enumerate(outputs)}
-                    for o, d, c, b in zip(outputs, derivative, difference, bound):
-                        case = (drive, joint, formulation, o, u)
-                        if o in PEAKS:
-                            # Differences across a kink of max(held, |value|) average both
-                            # sides: compare where the same side and the same sign of the value
-                            # hold at x - h, x and x + h.
-                            i, k = at[o], at[PEAKS[o]]
-                            sides = {(bool(z[i] == abs(z[k])), np.sign(z[k]))
-                                     for z in (minus, y, plus)}
-                            if len(sides) > 1:
-                                straddled += 1
-                                continue
-                        if (o, u) in feedthrough:
-                            assert abs(d - c) <= b, (case, d, c)
-                            compared += 1
-                        else:
-                            assert d == 0.0 and c == 0.0, (case, d, c)
-                s.terminate()
-                with pytest.raises(Exception):  # a parameter is no input: an error
-                    s.getDirectionalDerivative(ov, [vr["crank.length"]], [1.0])
-                s.freeInstance()
+    for model, s in every_model_at_2ms(fmu):
+        y = np.array(s.getReal(ov))
+        for u in inputs:
+            derivative = np.array(s.getDirectionalDerivative(ov, [vr[u]], [1.0]))
+            # Linear in the seed.
+            assert np.array_equal(
+                np.array(s.getDirectionalDerivative(ov, [vr[u]], [-2.0])), -2.0 * derivative)
+            x = s.getReal([vr[u]])[0]
+            h = 3e-4 * max(1.0, abs(x))
+            s.setReal([vr[u]], [x + h])
+            plus = np.array(s.getReal(ov))
+            s.setReal([vr[u]], [x - h])
+            minus = np.array(s.getReal(ov))
+            s.setReal([vr[u]], [x])
+            difference = (plus - minus) / (2.0 * h)
+            bound = 1e-6 * np.abs(difference) + 4.0 * eps * np.abs(y) / h
+            for o, d, c, b in zip(outputs, derivative, difference, bound):
+                if o in PEAKS:
+                    # Differences across a kink of max(held, |value|) average both sides:
+                    # compare where the same side and the same sign of the value hold at x - h,
+                    # x and x + h.
+                    i, k = at[o], at[PEAKS[o]]
+                    sides = {(bool(z[i] == abs(z[k])), np.sign(z[k])) for z in (minus, y, plus)}
+                    if len(sides) > 1:
+                        straddled += 1
+                        continue
+                if (o, u) in feedthrough:
+                    assert abs(d - c) <= b, (model, o, u, d, c)
+                    compared += 1
+                else:
+                    assert d == 0.0 and c == 0.0, (model, o, u, d, c)
+        s.terminate()
+        with pytest.raises(Exception):  # a parameter is no input: an error
+            s.getDirectionalDerivative(ov, [vr["crank.length"]], [1.0])
+        s.freeInstance()
     assert compared > 500 and straddled < compared / 10, (compared, straddled)
 
 
