@@ -2,7 +2,7 @@
 //! polynomials over the communication step, the state, the clock and the state codec.
 
 use fmi2_slave::clock::on_clock_grid;
-use fmi2_slave::model::{check_real, check_settable, check_step, lookup};
+use fmi2_slave::model::{check_real, check_step, lookup};
 use fmi2_slave::number::Num;
 use fmi2_slave::{FmuError, Logger, Model, State};
 
@@ -275,8 +275,6 @@ impl Model for DcMotorFmu {
     fn set_real(&mut self, state: State, vrs: &[u32], values: &[f64]) -> Result<(), FmuError> {
         for (vr, &value) in vrs.iter().zip(values) {
             let v = lookup(VARIABLES, *vr, "Real")?;
-            check_settable(state, v)?;
-            check_real(v, value)?;
             match Self::input_index(v.vr) {
                 Some(k) => {
                     self.inputs.value[k] = value;
@@ -295,27 +293,15 @@ impl Model for DcMotorFmu {
         Ok(())
     }
 
+    /// fmi2GetInteger: solver.warnings, the one Integer variable.
     fn get_integer(
         &mut self,
         _log: &Logger,
-        vrs: &[u32],
+        _vrs: &[u32],
         values: &mut [i32],
     ) -> Result<(), FmuError> {
-        for (vr, value) in vrs.iter().zip(values.iter_mut()) {
-            lookup(VARIABLES, *vr, "Integer")?;
-            *value = i32::try_from(self.warnings).unwrap_or(i32::MAX);
-        }
+        values.fill(i32::try_from(self.warnings).unwrap_or(i32::MAX));
         Ok(())
-    }
-
-    fn set_integer(&mut self, _state: State, vr: &[u32], _: &[i32]) -> Result<(), FmuError> {
-        vr.first()
-            .map_or(Ok(()), |&r| lookup(VARIABLES, r, "Integer").map(|_| ()))
-    }
-
-    fn get_boolean(&mut self, _log: &Logger, vr: &[u32], _: &mut [i32]) -> Result<(), FmuError> {
-        vr.first()
-            .map_or(Ok(()), |&r| lookup(VARIABLES, r, "Boolean").map(|_| ()))
     }
 
     fn set_real_input_derivatives(

@@ -5,11 +5,14 @@ use crate::error::FmuError;
 use crate::logger::Logger;
 use crate::number::Num;
 use crate::state::State;
-use crate::table::{Causality, Kind, ValueReference, Variable};
+use crate::table::{Causality, Enumeration, Kind, ValueReference, Variable};
 
-/// A co-simulation model behind the FMI functions. Value references arrive unchecked: the model
-/// looks them up in its table and answers an unknown or mistyped one with [`FmuError::Invalid`].
-/// Every method that may need to log gets the instance's logger.
+/// A co-simulation model behind the FMI functions. The generic layer checks every value
+/// reference before a getter or setter sees it: it exists and has the function's type, and a
+/// value to set is settable in the current state and inside its declared range
+/// ([`check_gettable`], [`check_set_real`], [`check_set_integer`], [`check_set_boolean`]); the
+/// model then looks the variables up only to dispatch. Every method that may need to log gets
+/// the instance's logger.
 pub trait Model: Sized + 'static {
     /// The GUID of the model's modelDescription.xml.
     const GUID: &'static str;
@@ -23,6 +26,8 @@ pub trait Model: Sized + 'static {
     type Vr: ValueReference;
     /// The model's variable table, in value-reference order (the generic checks read it).
     const VARIABLES: &'static [Variable<Self::Vr>];
+    /// The switch types its enumeration variables refer to.
+    const ENUMERATIONS: &'static [Enumeration] = &[];
 
     /// A model with every start value (fmi2Instantiate, fmi2Reset).
     fn new() -> Self;
@@ -54,11 +59,25 @@ pub trait Model: Sized + 'static {
     /// fmi2GetInteger.
     fn get_integer(&mut self, log: &Logger, vr: &[u32], value: &mut [i32]) -> Result<(), FmuError>;
 
-    /// fmi2SetInteger in machine state `state`.
-    fn set_integer(&mut self, state: State, vr: &[u32], value: &[i32]) -> Result<(), FmuError>;
+    /// fmi2SetInteger in machine state `state`: by default no Integer variable is settable.
+    fn set_integer(&mut self, _state: State, vr: &[u32], _value: &[i32]) -> Result<(), FmuError> {
+        not_settable(vr, "Integer")
+    }
 
-    /// fmi2GetBoolean.
-    fn get_boolean(&mut self, log: &Logger, vr: &[u32], value: &mut [i32]) -> Result<(), FmuError>;
+    /// fmi2GetBoolean: by default the model has no Boolean variable.
+    fn get_boolean(
+        &mut self,
+        _log: &Logger,
+        vr: &[u32],
+        _value: &mut [i32],
+    ) -> Result<(), FmuError> {
+        match vr.first() {
+            Some(r) => Err(FmuError::Invalid(format!(
+                "value reference {r} is not a Boolean variable"
+            ))),
+            None => Ok(()),
+        }
+    }
 
     /// fmi2SetBoolean: by default no Boolean variable is settable.
     fn set_boolean(&mut self, _state: State, vr: &[u32], _value: &[i32]) -> Result<(), FmuError> {
@@ -183,6 +202,61 @@ pub fn check_real<V>(v: &Variable<V>, value: f64) -> Result<(), FmuError> {
                 Num(max)
             )));
         }
+    }
+    Ok(())
+}
+
+/// Checks that every one of `vrs` is a variable of `M` of FMI type `base`.
+pub fn check_gettable<M: Model>(vrs: &[u32], base: &str) -> Result<(), FmuError> {
+    for &vr in vrs {
+        lookup(M::VARIABLES, vr, base)?;
+    }
+    Ok(())
+}
+
+/// Checks that each of `vrs` is a Real variable of `M` settable in `state` and its value inside
+/// the declared range.
+pub fn check_set_real<M: Model>(state: State, vrs: &[u32], values: &[f64]) -> Result<(), FmuError> {
+    for (&vr, &value) in vrs.iter().zip(values) {
+        let v = lookup(M::VARIABLES, vr, "Real")?;
+        check_settable(state, v)?;
+        check_real(v, value)?;
+    }
+    Ok(())
+}
+
+/// Checks that each of `vrs` is an Integer variable of `M` (a switch among them) settable in
+/// `state`, its value inside the declared range or one of the switch's items.
+pub fn check_set_integer<M: Model>(
+    state: State,
+    vrs: &[u32],
+    values: &[i32],
+) -> Result<(), FmuError> {
+    for (&vr, &value) in vrs.iter().zip(values) {
+        let v = lookup(M::VARIABLES, vr, "Integer")?;
+        check_settable(state, v)?;
+        let (min, max) = match v.kind {
+            Kind::Integer { min, max, .. } => (min, max),
+            Kind::Enumeration { type_index, .. } => {
+                let items = M::ENUMERATIONS.get(type_index).map_or(0, |e| e.items.len());
+                (1, i32::try_from(items).unwrap_or(i32::MAX))
+            }
+            _ => (0, -1),
+        };
+        if !(min..=max).contains(&value) {
+            return Err(FmuError::Invalid(format!(
+                "{} = {value} is outside the allowed range [{min}, {max}]",
+                v.name
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// Checks that each of `vrs` is a Boolean variable of `M` settable in `state`.
+pub fn check_set_boolean<M: Model>(state: State, vrs: &[u32]) -> Result<(), FmuError> {
+    for &vr in vrs {
+        check_settable(state, lookup(M::VARIABLES, vr, "Boolean")?)?;
     }
     Ok(())
 }

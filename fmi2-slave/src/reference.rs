@@ -3,7 +3,8 @@
 //! compatibility information (`<model>_ref.csv`, `<model>_in.csv`, `<model>_ref.opt`), so that
 //! any master's import of the FMU can be checked against them.
 //!
-//! The run is that of fmpy's `simulate_fmu`: fmi2SetupExperiment with the tolerance, start and
+//! [`Slave`] drives a model through the same checks as the exported functions. The run is that
+//! of fmpy's `simulate_fmu`: fmi2SetupExperiment with the tolerance, start and
 //! stop time, the inputs set in initialization mode and before every step, communication points
 //! at start + n · step, every Real output recorded at each of them.
 
@@ -11,7 +12,7 @@ use std::fmt::Write as _;
 
 use crate::error::FmuError;
 use crate::logger::Logger;
-use crate::model::Model;
+use crate::model::{Model, check_gettable, check_set_integer, check_set_real};
 use crate::state::State;
 use crate::table::{Causality, Kind, ValueReference};
 
@@ -100,7 +101,10 @@ impl<M: Model> Slave<M> {
     pub fn set(&mut self, name: &str, value: f64) -> Result<(), FmuError> {
         let (vr, kind) = Self::value_reference(name)?;
         match kind {
-            Kind::Real { .. } => self.model.set_real(self.state, &[vr], &[value]),
+            Kind::Real { .. } => {
+                check_set_real::<M>(self.state, &[vr], &[value])?;
+                self.model.set_real(self.state, &[vr], &[value])
+            }
             _ => {
                 let n = value as i32;
                 if f64::from(n) != value {
@@ -108,6 +112,7 @@ impl<M: Model> Slave<M> {
                         "{name} = {value} is not a whole number"
                     )));
                 }
+                check_set_integer::<M>(self.state, &[vr], &[n])?;
                 self.model.set_integer(self.state, &[vr], &[n])
             }
         }
@@ -116,6 +121,7 @@ impl<M: Model> Slave<M> {
     /// The values of the Real variables `vrs`.
     fn get_reals(&mut self, vrs: &[u32]) -> Result<Vec<f64>, FmuError> {
         let mut values = vec![0.0; vrs.len()];
+        check_gettable::<M>(vrs, "Real")?;
         self.model.get_real(&self.log, vrs, &mut values)?;
         Ok(values)
     }

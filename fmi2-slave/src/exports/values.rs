@@ -6,7 +6,9 @@ use fmi_sys::fmi2::*;
 use super::codes::{OK, ok};
 use crate::error::FmuError;
 use crate::ffi::{slice, slice_mut, with_instance};
-use crate::model::{Model, lookup};
+use crate::model::{
+    Model, check_gettable, check_set_boolean, check_set_integer, check_set_real, lookup,
+};
 use crate::number::Num;
 use crate::state::Call;
 use crate::table::{Causality, ValueReference, Variable};
@@ -21,6 +23,7 @@ pub unsafe fn fmi2GetReal<M: Model>(
     with_instance::<M>(c, Call::GetReal, |inst| {
         // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
         let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?) };
+        check_gettable::<M>(vr, "Real")?;
         inst.model.get_real(&inst.logger, vr, value).map(ok)
     })
 }
@@ -35,6 +38,7 @@ pub unsafe fn fmi2GetInteger<M: Model>(
     with_instance::<M>(c, Call::GetInteger, |inst| {
         // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
         let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?) };
+        check_gettable::<M>(vr, "Integer")?;
         inst.model.get_integer(&inst.logger, vr, value).map(ok)
     })
 }
@@ -49,6 +53,7 @@ pub unsafe fn fmi2GetBoolean<M: Model>(
     with_instance::<M>(c, Call::GetBoolean, |inst| {
         // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
         let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?) };
+        check_gettable::<M>(vr, "Boolean")?;
         inst.model.get_boolean(&inst.logger, vr, value).map(ok)
     })
 }
@@ -82,6 +87,7 @@ pub unsafe fn fmi2SetReal<M: Model>(
     with_instance::<M>(c, Call::SetReal, |inst| {
         // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
         let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice(value, nvr, "value")?) };
+        check_set_real::<M>(inst.state, vr, value)?;
         inst.model.set_real(inst.state, vr, value).map(ok)
     })
 }
@@ -96,6 +102,7 @@ pub unsafe fn fmi2SetInteger<M: Model>(
     with_instance::<M>(c, Call::SetInteger, |inst| {
         // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
         let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice(value, nvr, "value")?) };
+        check_set_integer::<M>(inst.state, vr, value)?;
         inst.model.set_integer(inst.state, vr, value).map(ok)
     })
 }
@@ -110,6 +117,7 @@ pub unsafe fn fmi2SetBoolean<M: Model>(
     with_instance::<M>(c, Call::SetBoolean, |inst| {
         // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
         let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice(value, nvr, "value")?) };
+        check_set_boolean::<M>(inst.state, vr)?;
         inst.model.set_boolean(inst.state, vr, value).map(ok)
     })
 }
