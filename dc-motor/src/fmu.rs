@@ -2,6 +2,7 @@
 //! polynomials over the communication step, the state, the clock and the state codec.
 
 use fmi2_slave::clock::on_clock_grid;
+use fmi2_slave::codec::{ByteReader, ByteWriter};
 use fmi2_slave::model::{check_real, check_step, lookup};
 use fmi2_slave::number::Num;
 use fmi2_slave::{FmuError, Logger, Model, State};
@@ -381,66 +382,64 @@ impl Model for DcMotorFmu {
         Ok(())
     }
 
+    /// The parameters, the input signal, the state (NaN before initialization), the clock, the
+    /// warnings count and the last checked step (NaN if none).
     fn save(&self, out: &mut Vec<u8>) {
-        let mut put = |x: f64| out.extend_from_slice(&x.to_bits().to_le_bytes());
-        self.parameters.iter().for_each(|&p| put(p));
+        let mut w = ByteWriter(out);
+        self.parameters.iter().for_each(|&p| w.f64(p));
         let s = &self.inputs;
-        put(s.start);
-        s.value.iter().for_each(|&v| put(v));
-        s.derivatives.iter().flatten().for_each(|&v| put(v));
+        w.f64(s.start);
+        s.value.iter().for_each(|&v| w.f64(v));
+        s.derivatives.iter().flatten().for_each(|&v| w.f64(v));
         let x = self.state.unwrap_or([f64::NAN; 4]);
-        x.iter().for_each(|&v| put(v));
-        put(self.time);
-        put(self.stop_time.unwrap_or(f64::NAN));
-        put(self.last_successful_time);
-        put(f64::from(self.warnings));
-        put(self.checked_step.unwrap_or(f64::NAN));
+        x.iter().for_each(|&v| w.f64(v));
+        w.f64(self.time);
+        w.f64(self.stop_time.unwrap_or(f64::NAN));
+        w.f64(self.last_successful_time);
+        w.u32(self.warnings);
+        w.f64(self.checked_step.unwrap_or(f64::NAN));
     }
 
     fn load(&mut self, _log: &Logger, bytes: &[u8], apply: bool) -> Result<(), FmuError> {
         let bad = |what: &str| Err(FmuError::Invalid(format!("FMU state rejected: {what}")));
-        const LENGTH: usize = N_PARAMETERS + 7 + 4 + 3 + 2;
-        if bytes.len() != 8 * LENGTH {
-            return bad(&format!("{} bytes, expected {}", bytes.len(), 8 * LENGTH));
+        let mut r = ByteReader::new(bytes);
+        let mut parameters = [0.0; N_PARAMETERS];
+        for (v, p) in VARIABLES.iter().zip(parameters.iter_mut()) {
+            *p = r.f64()?;
+            check_real(v, *p)?;
         }
-        let mut x = [0.0; LENGTH];
-        for (v, chunk) in x.iter_mut().zip(bytes.chunks_exact(8)) {
-            let mut b = [0; 8];
-            b.copy_from_slice(chunk);
-            *v = f64::from_bits(u64::from_le_bytes(b));
+        let mut signal = [0.0; 7];
+        for v in &mut signal {
+            *v = r.f64()?;
         }
-        let (parameters, rest) = x.split_at(N_PARAMETERS);
-        for (v, &p) in VARIABLES.iter().zip(parameters) {
-            check_real(v, p)?;
-        }
-        let state = [rest[7], rest[8], rest[9], rest[10]];
+        let inputs = Signal {
+            start: signal[0],
+            value: [signal[1], signal[2]],
+            derivatives: [[signal[3], signal[4]], [signal[5], signal[6]]],
+        };
+        let state = [r.f64()?, r.f64()?, r.f64()?, r.f64()?];
         let initialised = state.iter().all(|v| v.is_finite());
-        let [time, stop, last] = [rest[11], rest[12], rest[13]];
-        let (warnings, checked) = (rest[14], rest[15]);
-        if !(warnings >= 0.0 && warnings <= f64::from(u32::MAX) && warnings.fract() == 0.0)
-            || checked.is_infinite()
-        {
-            return bad("a warnings count or checked step out of range");
+        let (time, stop, last) = (r.f64()?, r.f64()?, r.f64()?);
+        let (warnings, checked) = (r.u32()?, r.f64()?);
+        if r.remaining() != 0 {
+            return bad(&format!("{} bytes too many", r.remaining()));
         }
-        if !(rest[..7].iter().all(|v| v.is_finite())
+        if !(signal.iter().all(|v| v.is_finite())
             && (initialised || state.iter().all(|v| v.is_nan()))
             && time.is_finite()
-            && last.is_finite())
+            && last.is_finite()
+            && !checked.is_infinite())
         {
-            return bad("a non-finite input, state or time");
+            return bad("a non-finite input, state, time or checked step");
         }
         if apply {
-            self.parameters.copy_from_slice(parameters);
-            self.inputs = Signal {
-                start: rest[0],
-                value: [rest[1], rest[2]],
-                derivatives: [[rest[3], rest[4]], [rest[5], rest[6]]],
-            };
+            self.parameters = parameters;
+            self.inputs = inputs;
             self.state = initialised.then_some(state);
             self.time = time;
             self.stop_time = (!stop.is_nan()).then_some(stop);
             self.last_successful_time = last;
-            self.warnings = warnings as u32;
+            self.warnings = warnings;
             self.checked_step = (!checked.is_nan()).then_some(checked);
         }
         Ok(())

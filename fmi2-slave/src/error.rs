@@ -43,3 +43,9 @@ impl fmt::Display for FmuError {
 }
 
 impl std::error::Error for FmuError {}
+
+impl From<crate::codec::CodecError> for FmuError {
+    fn from(e: crate::codec::CodecError) -> Self {
+        FmuError::Invalid(e.0)
+    }
+}

@@ -11,6 +11,7 @@
 //! - Modelica Association (2023), Functional Mock-up Interface 2.0.4.
 
 pub mod clock;
+pub mod codec;
 pub mod description;
 pub mod number;
 pub mod table;

@@ -10,7 +10,7 @@ use fmi2_slave::model::check_real;
 use crate::params::{
     Parameters, integer_parameter, real_parameter, set_integer_parameter, set_real_parameter,
 };
-use crate::simulation::codec::{ByteReader, ByteWriter, CodecError};
+use crate::simulation::codec::{ByteReader, ByteWriter, ReadRecords, WriteRecords};
 use crate::simulation::{InputSignal, Snapshot};
 use crate::variables::{Causality, Kind, VARIABLES, Vr};
 
@@ -50,12 +50,6 @@ fn check_range(vr: Vr, value: f64) -> Result<(), FmuError> {
 /// The error for a state that cannot be restored, saying why.
 fn rejected(what: &str) -> FmuError {
     FmuError::Invalid(format!("FMU state rejected: {what}"))
-}
-
-impl From<CodecError> for FmuError {
-    fn from(e: CodecError) -> Self {
-        FmuError::Invalid(e.0)
-    }
 }
 
 impl FmuSnapshot {

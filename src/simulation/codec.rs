@@ -1,18 +1,13 @@
-//! The byte codec of snapshots: little-endian numbers, length-prefixed vectors, flags, and the
-//! model's small records (contact state, peaks, input signals, integrator statistics). Used by
-//! [`super::Snapshot`] and by the FMU state that wraps it.
+//! The slider-crank's records in the byte codec of snapshots (`fmi2_slave::codec`): contact
+//! state, peaks, input signals, integrator statistics, step points. Used by [`super::Snapshot`]
+//! and by the FMU state that wraps it.
+
+pub use fmi2_slave::codec::{ByteReader, ByteWriter, CodecError};
 
 use super::peaks::Peaks;
 use super::step::StepPoint;
 use crate::integrator::Stats;
 use crate::mechanism::{ContactState, Contacts, InputSignal, Inputs};
-
-/// Largest accepted vector length (states, Jacobian entries) in a snapshot.
-const MAX_LENGTH: usize = 1 << 20;
-
-/// Why bytes could not be read.
-#[derive(Clone, Debug, PartialEq)]
-pub struct CodecError(pub String);
 
 /// The ten numbers of an input signal: start, then value, first and second derivatives, each
 /// as (drive speed, drive torque, slider force).
@@ -27,48 +22,36 @@ pub fn signal_values(s: &InputSignal) -> [f64; 10] {
     v
 }
 
-/// Appends little-endian values to a byte vector.
-pub struct ByteWriter<'a>(pub &'a mut Vec<u8>);
-
-impl ByteWriter<'_> {
-    /// Writes a byte.
-    pub fn u8(&mut self, v: u8) {
-        self.0.push(v);
-    }
-    /// Writes a u32.
-    pub fn u32(&mut self, v: u32) {
-        self.0.extend_from_slice(&v.to_le_bytes());
-    }
-    /// Writes a u64.
-    pub fn u64(&mut self, v: u64) {
-        self.0.extend_from_slice(&v.to_le_bytes());
-    }
-    /// Writes an f64 by its bits.
-    pub fn f64(&mut self, v: f64) {
-        self.u64(v.to_bits());
-    }
-    /// Writes a vector: its length (u32), then its values.
-    pub fn f64s(&mut self, v: &[f64]) {
-        self.u32(v.len() as u32);
-        for x in v {
-            self.f64(*x);
-        }
-    }
+/// Writes the slider-crank's records.
+pub trait WriteRecords {
     /// Writes the contact states of the joints.
-    pub fn contact(&mut self, contacts: &Contacts) {
+    fn contact(&mut self, contacts: &Contacts);
+    /// Writes a step point: its time, state and derivative.
+    fn step_point(&mut self, p: &StepPoint);
+    /// Writes peak values.
+    fn peaks(&mut self, p: &Peaks);
+    /// Writes an input signal ([`signal_values`]).
+    fn signal(&mut self, s: &InputSignal);
+    /// Writes integrator statistics.
+    fn stats(&mut self, s: &Stats);
+}
+
+impl WriteRecords for ByteWriter<'_> {
+    /// Writes the contact states of the joints.
+    fn contact(&mut self, contacts: &Contacts) {
         for c in &contacts.0 {
-            self.u8(u8::from(c.in_contact));
+            self.flag(c.in_contact);
             self.f64(c.impact_velocity);
         }
     }
     /// Writes a step point: its time, state and derivative.
-    pub fn step_point(&mut self, p: &StepPoint) {
+    fn step_point(&mut self, p: &StepPoint) {
         self.f64(p.time);
         self.f64s(&p.y);
         self.f64s(&p.f);
     }
     /// Writes peak values.
-    pub fn peaks(&mut self, p: &Peaks) {
+    fn peaks(&mut self, p: &Peaks) {
         self.f64(p.joint_force);
         self.f64(p.slider_acceleration);
         self.f64(p.deformation_energy);
@@ -81,13 +64,13 @@ impl ByteWriter<'_> {
         }
     }
     /// Writes an input signal ([`signal_values`]).
-    pub fn signal(&mut self, s: &InputSignal) {
+    fn signal(&mut self, s: &InputSignal) {
         for x in signal_values(s) {
             self.f64(x);
         }
     }
     /// Writes integrator statistics.
-    pub fn stats(&mut self, s: &Stats) {
+    fn stats(&mut self, s: &Stats) {
         for x in [
             s.steps,
             s.rejected,
@@ -101,68 +84,23 @@ impl ByteWriter<'_> {
     }
 }
 
-/// Reads what [`ByteWriter`] wrote, refusing truncated input, over-long vectors and invalid flags.
-pub struct ByteReader<'a> {
-    bytes: &'a [u8],
-    at: usize,
+/// Reads the slider-crank's records.
+pub trait ReadRecords {
+    /// Reads the contact states of the joints.
+    fn contact(&mut self) -> Result<Contacts, CodecError>;
+    /// Reads a step point.
+    fn step_point(&mut self) -> Result<StepPoint, CodecError>;
+    /// Reads peak values.
+    fn peaks(&mut self) -> Result<Peaks, CodecError>;
+    /// Reads an input signal.
+    fn signal(&mut self) -> Result<InputSignal, CodecError>;
+    /// Reads integrator statistics.
+    fn stats(&mut self) -> Result<Stats, CodecError>;
 }
 
-impl<'a> ByteReader<'a> {
-    /// A reader at the start of `bytes`.
-    pub fn new(bytes: &'a [u8]) -> Self {
-        Self { bytes, at: 0 }
-    }
-
-    /// Bytes not read yet.
-    pub fn remaining(&self) -> usize {
-        self.bytes.len() - self.at
-    }
-
-    /// The next `n` bytes.
-    pub fn take(&mut self, n: usize) -> Result<&[u8], CodecError> {
-        let end = self
-            .at
-            .checked_add(n)
-            .filter(|&e| e <= self.bytes.len())
-            .ok_or_else(|| {
-                CodecError(format!("FMU state truncated: {} bytes", self.bytes.len()))
-            })?;
-        let out = &self.bytes[self.at..end];
-        self.at = end;
-        Ok(out)
-    }
-    /// Reads a byte.
-    pub fn u8(&mut self) -> Result<u8, CodecError> {
-        Ok(self.take(1)?[0])
-    }
-    /// Reads a u32.
-    pub fn u32(&mut self) -> Result<u32, CodecError> {
-        let mut b = [0; 4];
-        b.copy_from_slice(self.take(4)?);
-        Ok(u32::from_le_bytes(b))
-    }
-    /// Reads a u64.
-    pub fn u64(&mut self) -> Result<u64, CodecError> {
-        let mut b = [0; 8];
-        b.copy_from_slice(self.take(8)?);
-        Ok(u64::from_le_bytes(b))
-    }
-    /// Reads an f64.
-    pub fn f64(&mut self) -> Result<f64, CodecError> {
-        Ok(f64::from_bits(self.u64()?))
-    }
-    /// Reads a vector of at most 2^20 values.
-    pub fn f64s(&mut self) -> Result<Vec<f64>, CodecError> {
-        let n = self.u32()? as usize;
-        if n > MAX_LENGTH {
-            return Err(CodecError(format!(
-                "FMU state rejected: a vector of {n} values"
-            )));
-        }
-        (0..n).map(|_| self.f64()).collect()
-    }
+impl ReadRecords for ByteReader<'_> {
     /// Reads the contact states of the joints.
-    pub fn contact(&mut self) -> Result<Contacts, CodecError> {
+    fn contact(&mut self) -> Result<Contacts, CodecError> {
         let mut contacts = Contacts::default();
         for c in &mut contacts.0 {
             *c = ContactState {
@@ -173,7 +111,7 @@ impl<'a> ByteReader<'a> {
         Ok(contacts)
     }
     /// Reads a step point.
-    pub fn step_point(&mut self) -> Result<StepPoint, CodecError> {
+    fn step_point(&mut self) -> Result<StepPoint, CodecError> {
         Ok(StepPoint {
             time: self.f64()?,
             y: self.f64s()?,
@@ -181,7 +119,7 @@ impl<'a> ByteReader<'a> {
         })
     }
     /// Reads peak values.
-    pub fn peaks(&mut self) -> Result<Peaks, CodecError> {
+    fn peaks(&mut self) -> Result<Peaks, CodecError> {
         Ok(Peaks {
             joint_force: self.f64()?,
             slider_acceleration: self.f64()?,
@@ -194,7 +132,7 @@ impl<'a> ByteReader<'a> {
         })
     }
     /// Reads an input signal.
-    pub fn signal(&mut self) -> Result<InputSignal, CodecError> {
+    fn signal(&mut self) -> Result<InputSignal, CodecError> {
         let start = self.f64()?;
         let mut inputs = [Inputs::default(); 3];
         for i in &mut inputs {
@@ -212,7 +150,7 @@ impl<'a> ByteReader<'a> {
         })
     }
     /// Reads integrator statistics.
-    pub fn stats(&mut self) -> Result<Stats, CodecError> {
+    fn stats(&mut self) -> Result<Stats, CodecError> {
         Ok(Stats {
             steps: self.u64()?,
             rejected: self.u64()?,
@@ -221,13 +159,5 @@ impl<'a> ByteReader<'a> {
             jacobians: self.u64()?,
             factorizations: self.u64()?,
         })
-    }
-    /// Reads a flag: 0 or 1, any other byte is an error.
-    pub fn flag(&mut self) -> Result<bool, CodecError> {
-        match self.u8()? {
-            0 => Ok(false),
-            1 => Ok(true),
-            b => Err(CodecError(format!("FMU state: invalid flag byte {b}"))),
-        }
     }
 }

@@ -1,6 +1,6 @@
 //! A complete, restorable state of a simulation, and its bytes.
 
-use super::codec::{ByteReader, ByteWriter, CodecError, signal_values};
+use super::codec::{ByteReader, ByteWriter, CodecError, ReadRecords, WriteRecords, signal_values};
 use super::peaks::PeakHold;
 use super::step::StepPoint;
 use crate::integrator::{ImplicitState, IntegratorState};

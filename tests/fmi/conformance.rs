@@ -384,7 +384,8 @@ fn do_step_checks_the_communication_point() {
 }
 
 /// Get/Set FMU state is bit-exact; serialization round-trips into another instance; a corrupted
-/// byte, a truncated buffer and a too-small serialization buffer are rejected.
+/// byte, a truncated buffer, a foreign magic, an older format version (named in the message) and
+/// a too-small serialization buffer are rejected.
 #[test]
 fn fmu_state_is_bit_exact_and_checked() {
     let outputs = [
@@ -428,12 +429,29 @@ fn fmu_state_is_bit_exact_and_checked() {
             v[0] = b'X';
             v
         }),
+        ("version", {
+            // An older format, with a valid checksum (FNV-1a 64 of every byte before it).
+            let mut v = bytes[..bytes.len() - 8].to_vec();
+            v[4..8].copy_from_slice(&1u32.to_le_bytes());
+            let sum = v.iter().fold(0xcbf2_9ce4_8422_2325_u64, |h, &b| {
+                (h ^ u64::from(b)).wrapping_mul(0x100_0000_01b3)
+            });
+            v.extend_from_slice(&sum.to_le_bytes());
+            v
+        }),
     ] {
         let c = Instance::new(&format!("state-{name}"));
         let (status, st) = c.deserialize(&bad);
         assert_eq!(status, ERROR, "{name}");
         assert!(st.is_null());
         assert!(c.last_message().contains("FMU state"), "{:?}", c.messages());
+        if name == "version" {
+            assert!(
+                c.last_message().contains("format version 1, expected"),
+                "{:?}",
+                c.messages()
+            );
+        }
     }
     let d = Instance::new("state-small");
     let st = d.get_state();
