@@ -5,6 +5,7 @@ use fmi2_slave::clock::on_clock_grid;
 use fmi2_slave::codec::{ByteReader, ByteWriter};
 use fmi2_slave::model::{check_real, check_step, lookup};
 use fmi2_slave::number::Num;
+use fmi2_slave::signal::Polynomial;
 use fmi2_slave::{FmuError, Logger, Model, State};
 
 use crate::coupling::{self, Exchange};
@@ -16,34 +17,15 @@ const N_PARAMETERS: usize = Vr::ShaftSpeed as usize;
 /// Most internal steps per communication step.
 const MAX_STEPS: f64 = 1e8;
 
-/// The inputs (load speed, set-point) over a communication step: u(t) = u + u̇ τ + ü τ²/2 with
-/// τ = t − start.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-struct Signal {
-    start: f64,
-    value: [f64; 2],
-    derivatives: [[f64; 2]; 2],
-}
+/// The inputs (load speed, set-point) over a communication step.
+type Signal = Polynomial<2>;
 
-impl Signal {
-    fn at(&self, t: f64) -> [f64; 2] {
-        let dt = t - self.start;
-        let [d1, d2] = self.derivatives;
-        [0, 1].map(|k| self.value[k] + dt * (d1[k] + 0.5 * dt * d2[k]))
-    }
-
-    fn rate(&self, t: f64) -> [f64; 2] {
-        let dt = t - self.start;
-        let [d1, d2] = self.derivatives;
-        [0, 1].map(|k| d1[k] + dt * d2[k])
-    }
-
-    fn inputs(&self, t: f64) -> MotorInputs {
-        let [load_speed, set_point] = self.at(t);
-        MotorInputs {
-            load_speed,
-            set_point,
-        }
+/// The motor's inputs at `t`.
+fn inputs(signal: &Signal, t: f64) -> MotorInputs {
+    let [load_speed, set_point] = signal.at(t);
+    MotorInputs {
+        load_speed,
+        set_point,
     }
 }
 
@@ -161,6 +143,8 @@ impl Model for DcMotorFmu {
     const GUID: &'static str = crate::GUID;
     type Vr = Vr;
     const VARIABLES: &'static [Variable] = VARIABLES;
+    const MAX_INPUT_DERIVATIVE_ORDER: u32 =
+        crate::variables::DESCRIPTION.max_input_derivative_order;
     const LOG_CATEGORIES: &'static [(&'static str, &'static str)] = LOG_CATEGORIES;
     const STATE_MAGIC: [u8; 4] = *b"DCMS";
     const STATE_VERSION: u32 = 2;
@@ -237,7 +221,7 @@ impl Model for DcMotorFmu {
             ..self.inputs
         };
         self.motor()
-            .advance(&mut x, end - t, n, |tau| signal.inputs(t + tau));
+            .advance(&mut x, end - t, n, |tau| inputs(&signal, t + tau));
         self.state = Some(x);
         self.time = end;
         self.last_successful_time = self.time;
@@ -264,7 +248,7 @@ impl Model for DcMotorFmu {
                 _ => {
                     let x = self.state();
                     output(
-                        &self.motor().outputs(&x, &self.inputs.inputs(self.time)),
+                        &self.motor().outputs(&x, &inputs(&self.inputs, self.time)),
                         v.vr,
                     )
                 }
@@ -315,15 +299,12 @@ impl Model for DcMotorFmu {
             let v = lookup(VARIABLES, *vr, "Real")?;
             let k = Self::input_index(v.vr)
                 .ok_or_else(|| FmuError::Invalid(format!("{} is not an input", v.name)))?;
-            if !(order == 1 || order == 2) || !value.is_finite() {
-                return Err(FmuError::Invalid(format!(
-                    "derivative of order {order} of {} = {}: the order must be 1 or 2 and the \
-                     value finite",
-                    v.name,
-                    Num(value)
-                )));
-            }
-            self.inputs.derivatives[order as usize - 1][k] = value;
+            let d = self
+                .inputs
+                .derivatives
+                .get_mut(order as usize - 1)
+                .ok_or_else(|| FmuError::Invalid(format!("order {order}")))?;
+            d[k] = value;
             self.inputs.start = self.time;
         }
         Ok(())
@@ -338,9 +319,9 @@ impl Model for DcMotorFmu {
     ) -> Result<(), FmuError> {
         let x = self.state();
         let motor = self.motor();
-        let inputs = self.inputs.inputs(self.time);
+        let now = inputs(&self.inputs, self.time);
         let load_rate = self.inputs.rate(self.time)[0];
-        let d = motor.derivative(&x, &inputs);
+        let d = motor.derivative(&x, &now);
         for ((vr, &order), value) in vrs.iter().zip(orders).zip(values.iter_mut()) {
             let v = lookup(VARIABLES, *vr, "Real")?;
             *value = match (v.vr, order) {
@@ -375,7 +356,7 @@ impl Model for DcMotorFmu {
         let x = self.state();
         let d = self
             .motor()
-            .output_derivatives(&x, &self.inputs.inputs(self.time), set_point);
+            .output_derivatives(&x, &inputs(&self.inputs, self.time), set_point);
         for (vr, c) in unknowns.iter().zip(column.iter_mut()) {
             *c = output(&d, lookup(VARIABLES, *vr, "Real")?.vr);
         }

@@ -14,6 +14,7 @@ pub mod clock;
 pub mod codec;
 pub mod description;
 pub mod number;
+pub mod signal;
 pub mod table;
 
 #[cfg(feature = "slave")]

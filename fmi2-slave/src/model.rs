@@ -28,6 +28,8 @@ pub trait Model: Sized + 'static {
     const VARIABLES: &'static [Variable<Self::Vr>];
     /// The switch types its enumeration variables refer to.
     const ENUMERATIONS: &'static [Enumeration] = &[];
+    /// The highest order of input derivatives it takes (0: canInterpolateInputs = false).
+    const MAX_INPUT_DERIVATIVE_ORDER: u32 = 0;
 
     /// A model with every start value (fmi2Instantiate, fmi2Reset).
     fn new() -> Self;
@@ -84,7 +86,8 @@ pub trait Model: Sized + 'static {
         not_settable(vr, "Boolean")
     }
 
-    /// fmi2SetRealInputDerivatives; by default inputs cannot be interpolated.
+    /// fmi2SetRealInputDerivatives, the arguments checked ([`check_input_derivatives`]); by
+    /// default inputs cannot be interpolated.
     fn set_real_input_derivatives(
         &mut self,
         _vr: &[u32],
@@ -247,6 +250,32 @@ pub fn check_set_integer<M: Model>(
             return Err(FmuError::Invalid(format!(
                 "{} = {value} is outside the allowed range [{min}, {max}]",
                 v.name
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// Checks fmi2SetRealInputDerivatives' arguments: each of `vrs` a Real input of `M`, each order
+/// from 1 to [`Model::MAX_INPUT_DERIVATIVE_ORDER`], each value finite.
+pub fn check_input_derivatives<M: Model>(
+    vrs: &[u32],
+    orders: &[i32],
+    values: &[f64],
+) -> Result<(), FmuError> {
+    let max = M::MAX_INPUT_DERIVATIVE_ORDER;
+    for ((&vr, &order), &value) in vrs.iter().zip(orders).zip(values) {
+        let v = lookup(M::VARIABLES, vr, "Real")?;
+        if v.causality != Causality::Input {
+            return Err(FmuError::Invalid(format!("{} is not an input", v.name)));
+        }
+        let order_ok = u32::try_from(order).is_ok_and(|o| (1..=max).contains(&o));
+        if !order_ok || !value.is_finite() {
+            return Err(FmuError::Invalid(format!(
+                "derivative of order {order} of {} = {}: the order must be 1 to {max} and the \
+                 value finite",
+                v.name,
+                Num(value)
             )));
         }
     }

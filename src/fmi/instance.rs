@@ -157,6 +157,8 @@ impl Model for SliderCrankFmu {
     type Vr = Vr;
     const VARIABLES: &'static [Variable] = VARIABLES;
     const ENUMERATIONS: &'static [Enumeration] = ENUMERATIONS;
+    const MAX_INPUT_DERIVATIVE_ORDER: u32 =
+        crate::variables::DESCRIPTION.max_input_derivative_order;
 
     fn new() -> Self {
         Self {
@@ -383,22 +385,11 @@ impl Model for SliderCrankFmu {
             let v = lookup(VARIABLES, *vr, "Real")?;
             let i = input(v.vr)
                 .ok_or_else(|| FmuError::Invalid(format!("{} is not an input", v.name)))?;
-            let d = match order {
-                1 | 2 => &mut self.inputs.derivatives[order as usize - 1],
-                _ => {
-                    return Err(FmuError::Invalid(format!(
-                        "order {order} of {} is not 1 or 2",
-                        v.name
-                    )));
-                }
-            };
-            if !value.is_finite() {
-                return Err(FmuError::Invalid(format!(
-                    "derivative of order {order} of {} = {} is not finite",
-                    v.name,
-                    Num(value)
-                )));
-            }
+            let d = self
+                .inputs
+                .derivatives
+                .get_mut(order as usize - 1)
+                .ok_or_else(|| FmuError::Invalid(format!("order {order}")))?;
             *d.get_mut(i) = value;
             if let Some(sim) = &mut self.simulation {
                 sim.set_input_derivative(i, order as usize, value)?;

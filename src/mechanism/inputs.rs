@@ -1,5 +1,7 @@
 //! The mechanism's inputs, as values and as functions of time over a communication interval.
 
+use fmi2_slave::signal;
+
 /// Inputs that the caller may change between steps.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Inputs {
@@ -89,9 +91,9 @@ impl InputSignal {
         let dt = t - self.start;
         let [first, second] = &self.derivatives;
         let value = Inputs::combine(&self.value, first, second, |u, d1, d2| {
-            u + dt * (d1 + 0.5 * dt * d2)
+            signal::value(u, d1, d2, dt)
         });
-        let rate = Inputs::combine(first, second, second, |d1, d2, _| d1 + dt * d2);
+        let rate = Inputs::combine(first, second, second, |d1, d2, _| signal::rate(d1, d2, dt));
         (value, rate)
     }
 

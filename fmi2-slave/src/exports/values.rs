@@ -7,7 +7,8 @@ use super::codes::{OK, ok};
 use crate::error::FmuError;
 use crate::ffi::{slice, slice_mut, with_instance};
 use crate::model::{
-    Model, check_gettable, check_set_boolean, check_set_integer, check_set_real, lookup,
+    Model, check_gettable, check_input_derivatives, check_set_boolean, check_set_integer,
+    check_set_real, lookup,
 };
 use crate::number::Num;
 use crate::state::Call;
@@ -232,6 +233,9 @@ pub unsafe fn fmi2SetRealInputDerivatives<M: Model>(
                 slice(value, nvr, "value")?,
             )
         };
+        if M::MAX_INPUT_DERIVATIVE_ORDER > 0 {
+            check_input_derivatives::<M>(vr, order, value)?;
+        }
         inst.model
             .set_real_input_derivatives(vr, order, value)
             .map(ok)
