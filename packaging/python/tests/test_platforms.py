@@ -100,6 +100,26 @@ def test_linux64_equals_the_host_build(linux_run, work):
     assert lines_differing(out.read_text(), linux_run[0]) == []
 
 
+def test_the_reference_results_in_the_release_fmu_are_its_linux64_run(linux_run):
+    """The reference results the release FMU carries (extra/org.fmi-standard.fmi-ls-ref/) are the
+    release linux64 binary's DefaultExperiment at every communication point, to the bit; the win64
+    run equals that one (below), so the reference holds for it too."""
+    import struct
+    import zipfile
+
+    with zipfile.ZipFile(RELEASE_FMU) as fmu:
+        lines = fmu.read("extra/org.fmi-standard.fmi-ls-ref/FlexibleSliderCrank_ref.csv")
+    header, *rows = lines.decode().splitlines()
+    names = [n.strip('"') for n in header.split(",")[1:]]
+    assert names == [v.name for v in md.modelVariables
+                     if v.causality == "output" and v.type == "Real"]
+    def bits(x):
+        return struct.pack(">d", float(x)).hex()
+    expected = [" ".join([str(k)] + [bits(x) for x in row.split(",")[1:]])
+                for k, row in enumerate(rows)]
+    assert lines_differing("\n".join(expected) + "\n", linux_run[0]) == []
+
+
 @pytest.mark.skipif(os.geteuid() != 0, reason="debootstrap and chroot need root")
 def test_linux64_runs_on_an_older_debian_bit_identically(linux_run, work):
     root = work / OLD_DEBIAN
