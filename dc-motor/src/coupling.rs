@@ -47,9 +47,6 @@ pub fn growth(
     n: u32,
     exchange: Exchange,
 ) -> f64 {
-    let torque = |x: &[f64; 4], load_speed: f64| {
-        motor.shaft_stiffness * x[2] + motor.shaft_damping * (x[1] - load_speed)
-    };
     let mut map = SMatrix::<f64, 5, 5>::zeros();
     for column in 0..5 {
         let mut x = [0.0; 4];
@@ -58,14 +55,14 @@ pub fn growth(
             Some(v) => *v = PERTURBATION,
             None => load_speed = PERTURBATION,
         }
-        let held = torque(&x, load_speed);
+        let held = motor.shaft_torque(&x, load_speed);
         motor.advance(&mut x, h, n, |_| MotorInputs {
             load_speed,
             set_point: 0.0,
         });
         let felt = match exchange {
             Exchange::Jacobi => held,
-            Exchange::MotorFirst => torque(&x, load_speed),
+            Exchange::MotorFirst => motor.shaft_torque(&x, load_speed),
         };
         let next = [x[0], x[1], x[2], x[3], load_speed + h * felt / load_inertia];
         for (row, value) in next.iter().enumerate() {

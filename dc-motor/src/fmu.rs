@@ -85,8 +85,8 @@ impl DcMotorFmu {
     }
 
     /// With `shaft.loadInertia` set, checks a communication step (as `given` by the master, `h`
-    /// on the clock grid, in `n` internal steps) other than the one checked last for the stability of the shaft's coupling to its load ([`coupling`]),
-    /// and warns of an unstable one.
+    /// on the clock grid, in `n` internal steps) other than the one checked last for the
+    /// stability of the shaft's coupling to its load ([`coupling`]), and warns of an unstable one.
     fn check_coupling(&mut self, log: &Logger, (given, h): (f64, f64), n: u32) {
         let load_inertia = self.parameters[Vr::ShaftLoadInertia as usize];
         // The same step a master represents differently (on the clock grid, to a few ps).
@@ -202,18 +202,16 @@ impl Model for DcMotorFmu {
     fn do_step(&mut self, log: &Logger, t: f64, h: f64) -> Result<(), FmuError> {
         check_step(self.time, t, h, self.stop_time)?;
         // On the clock grid, every master's representation of the same points gives the same
-        // step; the relative margin keeps n·solver.stepSize = h from rounding up to n + 1 steps.
+        // step.
         let (t, end) = (on_clock_grid(t), on_clock_grid(t + h));
-        let steps =
-            ((end - t) / self.parameters[Vr::SolverStepSize as usize] * (1.0 - 1e-9)).ceil();
-        if steps > MAX_STEPS {
+        let n = substeps(end - t, self.parameters[Vr::SolverStepSize as usize]);
+        if f64::from(n) > MAX_STEPS {
             return Err(FmuError::Invalid(format!(
                 "communicationStepSize = {} s is more than {} solver.stepSize",
                 Num(h),
                 Num(MAX_STEPS)
             )));
         }
-        let n = substeps(end - t, self.parameters[Vr::SolverStepSize as usize]);
         self.check_coupling(log, (h, end - t), n);
         let mut x = self.state();
         let signal = Signal {
@@ -325,9 +323,7 @@ impl Model for DcMotorFmu {
         for ((vr, &order), value) in vrs.iter().zip(orders).zip(values.iter_mut()) {
             let v = lookup(VARIABLES, *vr, "Real")?;
             *value = match (v.vr, order) {
-                (Vr::ShaftTorque, 1) => {
-                    motor.shaft_stiffness * d[2] + motor.shaft_damping * (d[1] - load_rate)
-                }
+                (Vr::ShaftTorque, 1) => motor.shaft_torque(&d, load_rate),
                 (Vr::MotorSpeed, 1) => d[1],
                 (Vr::MotorCurrent, 1) => d[0],
                 (Vr::ShaftTwist, 1) => d[2],

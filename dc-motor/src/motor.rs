@@ -83,6 +83,12 @@ impl MotorParameters {
         [current, speed, torque / self.shaft_stiffness, integral]
     }
 
+    /// Shaft torque τ = k_s φ + d_s (ω − ω_L) of state `x` at load speed ω_L. Linear in both, so
+    /// the same form of their rates gives its rate.
+    pub fn shaft_torque(&self, x: &MotorState, load_speed: f64) -> f64 {
+        self.shaft_stiffness * x[2] + self.shaft_damping * (x[1] - load_speed)
+    }
+
     /// Controller output v and the limited voltage u.
     fn voltage(&self, x: &MotorState, set_point: f64) -> (f64, f64) {
         let v = self.gain * (set_point - x[1]) + self.integral_gain * x[3];
@@ -91,9 +97,9 @@ impl MotorParameters {
 
     /// Time derivative of the state.
     pub fn derivative(&self, x: &MotorState, inputs: &MotorInputs) -> MotorState {
-        let [i, w, phi, _] = *x;
+        let [i, w, _, _] = *x;
         let (v, u) = self.voltage(x, inputs.set_point);
-        let torque = self.shaft_stiffness * phi + self.shaft_damping * (w - inputs.load_speed);
+        let torque = self.shaft_torque(x, inputs.load_speed);
         let tracking = if self.integral_gain > 0.0 {
             (u - v) / (self.integral_gain * self.tracking_time)
         } else {
@@ -111,8 +117,7 @@ impl MotorParameters {
     pub fn outputs(&self, x: &MotorState, inputs: &MotorInputs) -> MotorOutputs {
         let (_, u) = self.voltage(x, inputs.set_point);
         MotorOutputs {
-            shaft_torque: self.shaft_stiffness * x[2]
-                + self.shaft_damping * (x[1] - inputs.load_speed),
+            shaft_torque: self.shaft_torque(x, inputs.load_speed),
             speed: x[1],
             current: x[0],
             voltage: u,

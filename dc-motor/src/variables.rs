@@ -109,7 +109,7 @@ pub const FEEDTHROUGH: &[(Vr, &[Vr])] = &[
 
 /// Whether an output depends, in initialization mode, on an input or a parameter: the
 /// `dependencies` of ModelStructure/InitialUnknowns. The motor starts in steady state at the
-/// set-point ω = ω_set with the shaft torque τ₀ = `shaft.initialTorque` (`motor::steady_state`):
+/// set-point ω = ω_set with the shaft torque τ₀ = `shaft.initialTorque` (`MotorParameters::steady_state`):
 /// i = (τ₀ + b ω)/k_t, u = clamp(R i + k_t ω) held by the integrator (zero without integral
 /// action), φ = τ₀/c; the shaft torque c φ + d (ω − ω_L) = τ₀ + d (ω_set − ω_L).
 fn initial_dependency(unknown: Vr, known: Vr) -> bool {

@@ -265,10 +265,7 @@ pub fn check_input_derivatives<M: Model>(
 ) -> Result<(), FmuError> {
     let max = M::MAX_INPUT_DERIVATIVE_ORDER;
     for ((&vr, &order), &value) in vrs.iter().zip(orders).zip(values) {
-        let v = lookup(M::VARIABLES, vr, "Real")?;
-        if v.causality != Causality::Input {
-            return Err(FmuError::Invalid(format!("{} is not an input", v.name)));
-        }
+        let v = check_causality::<M>(vr, Causality::Input, "vr")?;
         let order_ok = u32::try_from(order).is_ok_and(|o| (1..=max).contains(&o));
         if !order_ok || !value.is_finite() {
             return Err(FmuError::Invalid(format!(
@@ -280,6 +277,24 @@ pub fn check_input_derivatives<M: Model>(
         }
     }
     Ok(())
+}
+
+/// The Real variable `vr` of `M` if it has `causality`; else an error naming the argument `arg`.
+pub fn check_causality<M: Model>(
+    vr: u32,
+    causality: Causality,
+    arg: &str,
+) -> Result<&'static Variable<M::Vr>, FmuError> {
+    let v = lookup(M::VARIABLES, vr, "Real")?;
+    if v.causality == causality {
+        Ok(v)
+    } else {
+        Err(FmuError::Invalid(format!(
+            "{arg}: value reference {vr} ({}) is not a Real {}",
+            v.name,
+            format!("{causality:?}").to_lowercase()
+        )))
+    }
 }
 
 /// Checks that each of `vrs` is a Boolean variable of `M` settable in `state`.

@@ -31,11 +31,11 @@ pub struct Experiment {
     pub inputs: Vec<(&'static str, f64)>,
 }
 
-/// The recorded run: the Real outputs' names and, at every communication point, the time and
-/// their values.
+/// A table over communication points: the names and, at every point, the time and the values
+/// (a run's Real outputs, or an experiment's inputs).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Results {
-    /// Names of the recorded outputs.
+    /// Names of the columns.
     pub names: Vec<String>,
     /// Time and values at each communication point.
     pub rows: Vec<(f64, Vec<f64>)>,
@@ -118,21 +118,16 @@ impl<M: Model> Slave<M> {
         }
     }
 
-    /// The values of the Real variables `vrs`.
-    fn get_reals(&mut self, vrs: &[u32]) -> Result<Vec<f64>, FmuError> {
-        let mut values = vec![0.0; vrs.len()];
-        check_gettable::<M>(vrs, "Real")?;
-        self.model.get_real(&self.log, vrs, &mut values)?;
-        Ok(values)
-    }
-
     /// The values of the Real variables `names`.
     pub fn get(&mut self, names: &[&str]) -> Result<Vec<f64>, FmuError> {
         let vrs = names
             .iter()
             .map(|n| Self::value_reference(n).map(|(vr, _)| vr))
             .collect::<Result<Vec<_>, _>>()?;
-        self.get_reals(&vrs)
+        check_gettable::<M>(&vrs, "Real")?;
+        let mut values = vec![0.0; vrs.len()];
+        self.model.get_real(&self.log, &vrs, &mut values)?;
+        Ok(values)
     }
 
     /// fmi2ExitInitializationMode.
@@ -190,8 +185,9 @@ fn is_close(a: f64, b: f64) -> bool {
 }
 
 impl Results {
-    /// `<model>_ref.csv`: a header of quoted names, then one line per communication point, every
-    /// number in Rust's shortest representation that reads back to the same bits.
+    /// The table as CSV in the cross-check convention: a header of quoted names, then one line
+    /// per communication point, every number in Rust's shortest representation that reads back
+    /// to the same bits.
     pub fn csv(&self) -> String {
         let mut out = String::from("\"time\"");
         for name in &self.names {
@@ -238,18 +234,15 @@ impl Experiment {
         if self.inputs.is_empty() {
             return None;
         }
-        let mut out = String::from("\"time\"");
-        for (name, _) in &self.inputs {
-            let _ = write!(out, ",\"{name}\"");
-        }
-        out.push('\n');
-        for t in self.points() {
-            let _ = write!(out, "{t:e}");
-            for (_, value) in &self.inputs {
-                let _ = write!(out, ",{value:e}");
-            }
-            out.push('\n');
-        }
-        Some(out)
+        let values: Vec<f64> = self.inputs.iter().map(|(_, v)| *v).collect();
+        let table = Results {
+            names: self.inputs.iter().map(|(n, _)| n.to_string()).collect(),
+            rows: self
+                .points()
+                .into_iter()
+                .map(|t| (t, values.clone()))
+                .collect(),
+        };
+        Some(table.csv())
     }
 }

@@ -115,22 +115,9 @@ fn references<M: Model>(
 /// libcosim's fixed-step algorithm and the fmpy loop `fsc.system.run` do). Every Real output of
 /// both, named `<component>.<variable>`.
 pub fn system() -> Result<References, Box<dyn Error>> {
-    let (stop, step) = (0.024, 1e-4);
-    let mut crank = Slave::<SliderCrankFmu>::new();
-    let mut motor = Slave::<DcMotorFmu>::new();
-    for (slave, parameters) in [
-        (
-            &mut crank as &mut dyn Unit,
-            &[("drive.mode", 2.0), ("crank.inertia", 0.02)][..],
-        ),
-        (&mut motor, &[("shaft.loadInertia", 0.0205)]),
-    ] {
-        slave.setup()?;
-        for (name, value) in parameters {
-            slave.set(name, *value)?;
-        }
-        slave.initialize()?;
-    }
+    let (stop, step): (f64, f64) = (0.024, 1e-4);
+    let mut crank = started::<SliderCrankFmu>(&[("drive.mode", 2.0), ("crank.inertia", 0.02)])?;
+    let mut motor = started::<DcMotorFmu>(&[("shaft.loadInertia", 0.0205)])?;
     let crank_outputs = Slave::<SliderCrankFmu>::real_outputs();
     let motor_outputs = Slave::<DcMotorFmu>::real_outputs();
     let record = |crank: &mut Slave<SliderCrankFmu>,
@@ -142,7 +129,7 @@ pub fn system() -> Result<References, Box<dyn Error>> {
         Ok((t, row))
     };
     let mut rows = vec![record(&mut crank, &mut motor, 0.0)?];
-    for k in 0..240u32 {
+    for k in 0..(stop / step).round() as u32 {
         let t = f64::from(k) * step;
         let torque = motor.get(&["shaft.torque"])?[0];
         let speed = crank.get(&["crank.speed"])?[0];
@@ -186,27 +173,17 @@ pub fn system() -> Result<References, Box<dyn Error>> {
     })
 }
 
-/// What the system run needs of a slave, whatever its model.
-trait Unit {
-    fn setup(&mut self) -> Result<(), FmuError>;
-    fn set(&mut self, name: &str, value: f64) -> Result<(), FmuError>;
-    fn initialize(&mut self) -> Result<(), FmuError>;
-}
-
-impl<M: Model> Unit for Slave<M> {
-    /// fmi2SetupExperiment from 0 without tolerance or stop time, as `fsc.system` does.
-    fn setup(&mut self) -> Result<(), FmuError> {
-        Slave::setup(self, None, 0.0, None)
+/// A slave of `M` set up from 0 without tolerance or stop time (as `fsc.system` does), with
+/// `parameters` set, initialized.
+fn started<M: Model>(parameters: &[(&str, f64)]) -> Result<Slave<M>, FmuError> {
+    let mut slave = Slave::<M>::new();
+    slave.setup(None, 0.0, None)?;
+    for (name, value) in parameters {
+        slave.set(name, *value)?;
     }
-
-    fn set(&mut self, name: &str, value: f64) -> Result<(), FmuError> {
-        Slave::set(self, name, value)
-    }
-
-    fn initialize(&mut self) -> Result<(), FmuError> {
-        self.enter_initialization();
-        self.exit_initialization()
-    }
+    slave.enter_initialization();
+    slave.exit_initialization()?;
+    Ok(slave)
 }
 
 impl References {

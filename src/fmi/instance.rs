@@ -1,6 +1,7 @@
 //! [`SliderCrankFmu`]: the slider-crank as an FMI 2.0 [`Model`] — parameters, inputs, the
-//! simulation and the clock; the state machine and the C functions come from `fmi2-slave`. Values are read and written by an exhaustive `match` on [`Vr`], with the
-//! ranges of the variable table, so every message quotes what the master sees in the XML.
+//! simulation and the clock; the state machine, the C functions and every value check (against
+//! the variable table, so every message quotes what the master sees in the XML) come from
+//! `fmi2-slave`. Values are read and written by an exhaustive `match` on [`Vr`].
 
 use fmi2_slave::model::{check_step, lookup};
 use fmi2_slave::table::Enumeration;
@@ -42,6 +43,12 @@ fn input(vr: Vr) -> Option<Input> {
         Vr::SliderForce => Some(Input::SliderForce),
         _ => None,
     }
+}
+
+/// The model input of the input variable `vr` (the generic layer has checked that it is one).
+fn input_of(vr: u32) -> Result<Input, FmuError> {
+    let v = lookup(VARIABLES, vr, "Real")?;
+    input(v.vr).ok_or_else(|| FmuError::Invalid(format!("{} is not an input", v.name)))
 }
 
 /// The slider-crank behind the FMI functions: parameters, inputs, the simulation and the clock.
@@ -185,8 +192,7 @@ impl Model for SliderCrankFmu {
         unknowns: &[u32],
         column: &mut [f64],
     ) -> Result<(), FmuError> {
-        let v = lookup(VARIABLES, known, "Real")?;
-        let i = input(v.vr).ok_or_else(|| FmuError::Invalid(format!("{} is no input", v.name)))?;
+        let i = input_of(known)?;
         let u = self.inputs.value.get(i);
         sensitivity(self.simulation(log)?, i, u, unknowns, column)
     }
@@ -382,9 +388,7 @@ impl Model for SliderCrankFmu {
         values: &[f64],
     ) -> Result<(), FmuError> {
         for ((vr, &order), &value) in vrs.iter().zip(orders).zip(values) {
-            let v = lookup(VARIABLES, *vr, "Real")?;
-            let i = input(v.vr)
-                .ok_or_else(|| FmuError::Invalid(format!("{} is not an input", v.name)))?;
+            let i = input_of(*vr)?;
             let d = self
                 .inputs
                 .derivatives

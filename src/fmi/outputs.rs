@@ -27,9 +27,9 @@ const PEAKS: &[(Vr, Vr)] = &[
 /// constraint forces and their components are affine in the inputs (the equations of motion and
 /// the drive constraint are linear in the applied torque, the slider force and the speed
 /// drive's velocity error), so their differences are exact up to round-off; a force magnitude
-/// |F| has the relative error (h ∂F/∂u / |F|)², below 1e-10 here. A peak-hold output
-/// max(held, |y|) has the derivative of |y| while the current value sets it and 0 while the
-/// held one does (its own differences would average both sides of a kink within ±h).
+/// |F| has a relative error of order (h ∂F/∂u / |F|)². A peak-hold output max(held, |y|) has the
+/// derivative of |y| while the current value sets it and 0 while the held one does (its own
+/// differences would average both sides of a kink within ±h).
 pub fn sensitivity(
     simulation: &mut Simulation,
     input: Input,

@@ -430,13 +430,10 @@ fn fmu_state_is_bit_exact_and_checked() {
             v
         }),
         ("version", {
-            // An older format, with a valid checksum (FNV-1a 64 of every byte before it).
+            // An older format, with a valid checksum.
             let mut v = bytes[..bytes.len() - 8].to_vec();
             v[4..8].copy_from_slice(&1u32.to_le_bytes());
-            let sum = v.iter().fold(0xcbf2_9ce4_8422_2325_u64, |h, &b| {
-                (h ^ u64::from(b)).wrapping_mul(0x100_0000_01b3)
-            });
-            v.extend_from_slice(&sum.to_le_bytes());
+            v.extend_from_slice(&fmi2_slave::model::state_checksum(&v).to_le_bytes());
             v
         }),
     ] {

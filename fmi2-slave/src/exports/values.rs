@@ -7,12 +7,12 @@ use super::codes::{OK, ok};
 use crate::error::FmuError;
 use crate::ffi::{slice, slice_mut, with_instance};
 use crate::model::{
-    Model, check_gettable, check_input_derivatives, check_set_boolean, check_set_integer,
-    check_set_real, lookup,
+    Model, check_causality, check_gettable, check_input_derivatives, check_set_boolean,
+    check_set_integer, check_set_real,
 };
 use crate::number::Num;
 use crate::state::Call;
-use crate::table::{Causality, ValueReference, Variable};
+use crate::table::Causality;
 
 /// Reads Real variables.
 pub unsafe fn fmi2GetReal<M: Model>(
@@ -164,16 +164,10 @@ pub unsafe fn fmi2GetDirectionalDerivative<M: Model>(
             )
         };
         for &vr in unknowns {
-            check_causality(
-                M::VARIABLES,
-                vr,
-                Causality::Output,
-                "vUnknown_ref",
-                "output",
-            )?;
+            check_causality::<M>(vr, Causality::Output, "vUnknown_ref")?;
         }
         for (&vr, dv) in knowns.iter().zip(dv_known) {
-            check_causality(M::VARIABLES, vr, Causality::Input, "vKnown_ref", "input")?;
+            check_causality::<M>(vr, Causality::Input, "vKnown_ref")?;
             if !dv.is_finite() {
                 return Err(FmuError::Invalid(format!(
                     "dvKnown = {} for value reference {vr} is not finite",
@@ -193,26 +187,6 @@ pub unsafe fn fmi2GetDirectionalDerivative<M: Model>(
         dv_unknown.copy_from_slice(&sum);
         Ok(OK)
     })
-}
-
-/// Checks that `vr` is a Real variable of `causality` (`what`), naming the argument `arg`.
-fn check_causality<V: ValueReference>(
-    table: &'static [Variable<V>],
-    vr: u32,
-    causality: Causality,
-    arg: &str,
-    what: &str,
-) -> Result<(), FmuError> {
-    let v = lookup(table, vr, "Real")?;
-    if v.causality == causality {
-        Ok(())
-    } else {
-        Err(FmuError::Invalid(format!(
-            "{arg}: value reference {vr} ({}) is not a Real {what}: directional derivatives are \
-             of the outputs with respect to the inputs",
-            v.name
-        )))
-    }
 }
 
 /// Sets first or second time derivatives of inputs at the current communication point; the

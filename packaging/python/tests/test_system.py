@@ -20,10 +20,17 @@ def test_both_fmus_pass_fmpy_validation():
     assert validate_fmu(str(system.CRANK_FMU)) == []
 
 
-def test_motor_starts_in_steady_state_at_its_set_point():
+def initialized_motor(parameters=None):
+    """A motor instance with `parameters` set, after initialization."""
     motor = system.Slave(system.MOTOR_FMU, "motor")
+    motor.set(parameters or {})
     motor.fmu.enterInitializationMode()
     motor.fmu.exitInitializationMode()
+    return motor
+
+
+def test_motor_starts_in_steady_state_at_its_set_point():
+    motor = initialized_motor()
     speed = motor.get("speed.setPoint")
     assert motor.get("motor.speed") == speed
     assert motor.get("shaft.torque") == 0.0
@@ -55,10 +62,7 @@ def test_motor_directional_derivatives_are_its_gains():
     ∂motor.voltage/∂speed.setPoint = controller.gain inside the voltage limit and 0 at it, every
     other entry 0; equal to central differences (the outputs are affine in the inputs)."""
     for limit in (200.0, 10.0):
-        motor = system.Slave(system.MOTOR_FMU, "motor")
-        motor.set({"supply.voltageLimit": limit})
-        motor.fmu.enterInitializationMode()
-        motor.fmu.exitInitializationMode()
+        motor = initialized_motor({"supply.voltageLimit": limit})
         for n in range(5):
             motor.set({"shaft.speed": 500.0})
             motor.fmu.doStep(n * STEP, STEP)
@@ -85,11 +89,7 @@ def test_motor_state_round_trips_and_an_old_format_is_rejected():
     new instance bit for bit; a state of another format version is refused (fmi2Error; the
     message names both versions, tests/fmi)."""
     def started():
-        motor = system.Slave(system.MOTOR_FMU, "motor")
-        motor.set({"shaft.loadInertia": 0.0205})
-        motor.fmu.enterInitializationMode()
-        motor.fmu.exitInitializationMode()
-        return motor
+        return initialized_motor(system.MOTOR_PARAMETERS)
     a = started()
     a.set({"shaft.speed": 500.0})
     a.fmu.doStep(0.0, 4e-4)
