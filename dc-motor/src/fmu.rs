@@ -3,7 +3,7 @@
 
 use fmi2_slave::clock::on_clock_grid;
 use fmi2_slave::codec::{ByteReader, ByteWriter};
-use fmi2_slave::model::{check_real, check_step, lookup};
+use fmi2_slave::model::{Var, check_real, check_step};
 use fmi2_slave::number::Num;
 use fmi2_slave::signal::Polynomial;
 use fmi2_slave::{FmuError, Logger, Model, State};
@@ -237,9 +237,13 @@ impl Model for DcMotorFmu {
         self.last_successful_time
     }
 
-    fn get_real(&mut self, _log: &Logger, vrs: &[u32], values: &mut [f64]) -> Result<(), FmuError> {
-        for (vr, value) in vrs.iter().zip(values.iter_mut()) {
-            let v = lookup(VARIABLES, *vr, "Real")?;
+    fn get_real(
+        &mut self,
+        _log: &Logger,
+        vars: &[Var<Vr>],
+        values: &mut [f64],
+    ) -> Result<(), FmuError> {
+        for (&v, value) in vars.iter().zip(values.iter_mut()) {
             *value = match v.causality {
                 Causality::Parameter => self.parameters[v.vr as usize],
                 Causality::Input => self.inputs.value[Self::input_index(v.vr).unwrap_or(0)],
@@ -255,9 +259,8 @@ impl Model for DcMotorFmu {
         Ok(())
     }
 
-    fn set_real(&mut self, state: State, vrs: &[u32], values: &[f64]) -> Result<(), FmuError> {
-        for (vr, &value) in vrs.iter().zip(values) {
-            let v = lookup(VARIABLES, *vr, "Real")?;
+    fn set_real(&mut self, state: State, vars: &[Var<Vr>], values: &[f64]) -> Result<(), FmuError> {
+        for (&v, &value) in vars.iter().zip(values) {
             match Self::input_index(v.vr) {
                 Some(k) => {
                     self.inputs.value[k] = value;
@@ -280,7 +283,7 @@ impl Model for DcMotorFmu {
     fn get_integer(
         &mut self,
         _log: &Logger,
-        _vrs: &[u32],
+        _vars: &[Var<Vr>],
         values: &mut [i32],
     ) -> Result<(), FmuError> {
         values.fill(i32::try_from(self.warnings).unwrap_or(i32::MAX));
@@ -289,12 +292,11 @@ impl Model for DcMotorFmu {
 
     fn set_real_input_derivatives(
         &mut self,
-        vrs: &[u32],
+        vars: &[Var<Vr>],
         orders: &[i32],
         values: &[f64],
     ) -> Result<(), FmuError> {
-        for ((vr, &order), &value) in vrs.iter().zip(orders).zip(values) {
-            let v = lookup(VARIABLES, *vr, "Real")?;
+        for ((&v, &order), &value) in vars.iter().zip(orders).zip(values) {
             let k = Self::input_index(v.vr)
                 .ok_or_else(|| FmuError::Invalid(format!("{} is not an input", v.name)))?;
             let d = self
@@ -311,7 +313,7 @@ impl Model for DcMotorFmu {
     fn get_real_output_derivatives(
         &mut self,
         _log: &Logger,
-        vrs: &[u32],
+        vars: &[Var<Vr>],
         orders: &[i32],
         values: &mut [f64],
     ) -> Result<(), FmuError> {
@@ -320,8 +322,7 @@ impl Model for DcMotorFmu {
         let now = inputs(&self.inputs, self.time);
         let load_rate = self.inputs.rate(self.time)[0];
         let d = motor.derivative(&x, &now);
-        for ((vr, &order), value) in vrs.iter().zip(orders).zip(values.iter_mut()) {
-            let v = lookup(VARIABLES, *vr, "Real")?;
+        for ((&v, &order), value) in vars.iter().zip(orders).zip(values.iter_mut()) {
             *value = match (v.vr, order) {
                 (Vr::ShaftTorque, 1) => motor.shaft_torque(&d, load_rate),
                 (Vr::MotorSpeed, 1) => d[1],
@@ -344,17 +345,17 @@ impl Model for DcMotorFmu {
     fn output_sensitivity(
         &mut self,
         _log: &Logger,
-        known: u32,
-        unknowns: &[u32],
+        known: Var<Vr>,
+        unknowns: &[Var<Vr>],
         column: &mut [f64],
     ) -> Result<(), FmuError> {
-        let set_point = known == Vr::SpeedSetPoint as u32;
+        let set_point = known.vr == Vr::SpeedSetPoint;
         let x = self.state();
         let d = self
             .motor()
             .output_derivatives(&x, &inputs(&self.inputs, self.time), set_point);
-        for (vr, c) in unknowns.iter().zip(column.iter_mut()) {
-            *c = output(&d, lookup(VARIABLES, *vr, "Real")?.vr);
+        for (v, c) in unknowns.iter().zip(column.iter_mut()) {
+            *c = output(&d, v.vr);
         }
         Ok(())
     }

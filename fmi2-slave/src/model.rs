@@ -7,12 +7,12 @@ use crate::number::Num;
 use crate::state::State;
 use crate::table::{Causality, Enumeration, Kind, ValueReference, Variable};
 
-/// A co-simulation model behind the FMI functions. The generic layer checks every value
-/// reference before a getter or setter sees it: it exists and has the function's type, and a
-/// value to set is settable in the current state and inside its declared range
-/// ([`check_gettable`], [`check_set_real`], [`check_set_integer`], [`check_set_boolean`]); the
-/// model then looks the variables up only to dispatch. Every method that may need to log gets
-/// the instance's logger.
+/// A co-simulation model behind the FMI functions. The generic layer resolves every value
+/// reference to the model's [`Variable`] before a getter or setter sees it ([`resolve`]: it
+/// exists and has the function's type) and checks that a value to set is settable in the current
+/// state and inside its declared range ([`check_set_real`], [`check_set_integer`],
+/// [`check_set_boolean`]): the callbacks receive typed, checked variables ([`Var`]) and only
+/// dispatch. Every method that may need to log gets the instance's logger.
 pub trait Model: Sized + 'static {
     /// The GUID of the model's modelDescription.xml.
     const GUID: &'static str;
@@ -53,57 +53,80 @@ pub trait Model: Sized + 'static {
     fn last_successful_time(&self) -> f64;
 
     /// fmi2GetReal.
-    fn get_real(&mut self, log: &Logger, vr: &[u32], value: &mut [f64]) -> Result<(), FmuError>;
+    fn get_real(
+        &mut self,
+        log: &Logger,
+        vars: &[Var<Self::Vr>],
+        value: &mut [f64],
+    ) -> Result<(), FmuError>;
 
     /// fmi2SetReal in machine state `state`.
-    fn set_real(&mut self, state: State, vr: &[u32], value: &[f64]) -> Result<(), FmuError>;
+    fn set_real(
+        &mut self,
+        state: State,
+        vars: &[Var<Self::Vr>],
+        value: &[f64],
+    ) -> Result<(), FmuError>;
 
     /// fmi2GetInteger.
-    fn get_integer(&mut self, log: &Logger, vr: &[u32], value: &mut [i32]) -> Result<(), FmuError>;
+    fn get_integer(
+        &mut self,
+        log: &Logger,
+        vars: &[Var<Self::Vr>],
+        value: &mut [i32],
+    ) -> Result<(), FmuError>;
 
     /// fmi2SetInteger in machine state `state`: by default no Integer variable is settable.
-    fn set_integer(&mut self, _state: State, vr: &[u32], _value: &[i32]) -> Result<(), FmuError> {
-        not_settable(vr, "Integer")
+    fn set_integer(
+        &mut self,
+        _state: State,
+        vars: &[Var<Self::Vr>],
+        _value: &[i32],
+    ) -> Result<(), FmuError> {
+        not_settable(vars)
     }
 
-    /// fmi2GetBoolean: by default the model has no Boolean variable.
+    /// fmi2GetBoolean: a model with Boolean variables reads them here (by default it has none,
+    /// and [`resolve`] refuses every value reference before this is called).
     fn get_boolean(
         &mut self,
         _log: &Logger,
-        vr: &[u32],
+        vars: &[Var<Self::Vr>],
         _value: &mut [i32],
     ) -> Result<(), FmuError> {
-        match vr.first() {
-            Some(r) => Err(FmuError::Invalid(format!(
-                "value reference {r} is not a Boolean variable"
-            ))),
+        match vars.first() {
+            Some(v) => Err(FmuError::Invalid(format!("{} cannot be read", v.name))),
             None => Ok(()),
         }
     }
 
     /// fmi2SetBoolean: by default no Boolean variable is settable.
-    fn set_boolean(&mut self, _state: State, vr: &[u32], _value: &[i32]) -> Result<(), FmuError> {
-        not_settable(vr, "Boolean")
+    fn set_boolean(
+        &mut self,
+        _state: State,
+        vars: &[Var<Self::Vr>],
+        _value: &[i32],
+    ) -> Result<(), FmuError> {
+        not_settable(vars)
     }
 
-    /// fmi2SetRealInputDerivatives, the arguments checked ([`check_input_derivatives`]); by
-    /// default inputs cannot be interpolated.
+    /// fmi2SetRealInputDerivatives, the arguments checked ([`check_input_derivatives`]); called
+    /// only for a model with [`Model::MAX_INPUT_DERIVATIVE_ORDER`] > 0 (the generic layer refuses
+    /// the call otherwise), which implements it.
     fn set_real_input_derivatives(
         &mut self,
-        _vr: &[u32],
+        _vars: &[Var<Self::Vr>],
         _order: &[i32],
         _value: &[f64],
     ) -> Result<(), FmuError> {
-        Err(FmuError::Invalid(
-            "input derivatives are not supported (canInterpolateInputs = false)".into(),
-        ))
+        Err(no_input_derivatives())
     }
 
     /// fmi2GetRealOutputDerivatives; by default none are provided.
     fn get_real_output_derivatives(
         &mut self,
         _log: &Logger,
-        _vr: &[u32],
+        _vars: &[Var<Self::Vr>],
         _order: &[i32],
         _value: &mut [f64],
     ) -> Result<(), FmuError> {
@@ -119,8 +142,8 @@ pub trait Model: Sized + 'static {
     fn output_sensitivity(
         &mut self,
         _log: &Logger,
-        _known: u32,
-        _unknowns: &[u32],
+        _known: Var<Self::Vr>,
+        _unknowns: &[Var<Self::Vr>],
         _column: &mut [f64],
     ) -> Result<(), FmuError> {
         Err(FmuError::Invalid(
@@ -137,12 +160,19 @@ pub trait Model: Sized + 'static {
     fn load(&mut self, log: &Logger, bytes: &[u8], apply: bool) -> Result<(), FmuError>;
 }
 
-/// An error for a non-empty set request on variables of a type the model has none settable of.
-pub fn not_settable(vr: &[u32], kind: &str) -> Result<(), FmuError> {
-    match vr.first() {
-        Some(r) => Err(FmuError::Invalid(format!(
-            "value reference {r} is not a settable {kind} variable"
-        ))),
+/// The refusal of input derivatives by a model that takes none.
+pub fn no_input_derivatives() -> FmuError {
+    FmuError::Invalid("input derivatives are not supported (canInterpolateInputs = false)".into())
+}
+
+/// A variable of a model's table, as the callbacks receive it.
+pub type Var<V> = &'static Variable<V>;
+
+/// An error for a non-empty set request on variables of a type the model has none settable of
+/// (by their causality, [`check_settable`] refuses them before this is called).
+pub fn not_settable<V>(vars: &[Var<V>]) -> Result<(), FmuError> {
+    match vars.first() {
+        Some(v) => Err(FmuError::Invalid(format!("{} cannot be set", v.name))),
         None => Ok(()),
     }
 }
@@ -209,34 +239,39 @@ pub fn check_real<V>(v: &Variable<V>, value: f64) -> Result<(), FmuError> {
     Ok(())
 }
 
-/// Checks that every one of `vrs` is a variable of `M` of FMI type `base`.
-pub fn check_gettable<M: Model>(vrs: &[u32], base: &str) -> Result<(), FmuError> {
+/// Resolves each of `vrs` to its variable of `M`, which must be of FMI type `base`, into `out`
+/// (cleared first; its capacity is reused, so that a call allocates only when it names more
+/// variables than any call before).
+pub fn resolve<M: Model>(
+    vrs: &[u32],
+    base: &str,
+    out: &mut Vec<Var<M::Vr>>,
+) -> Result<(), FmuError> {
+    out.clear();
     for &vr in vrs {
-        lookup(M::VARIABLES, vr, base)?;
+        out.push(lookup(M::VARIABLES, vr, base)?);
     }
     Ok(())
 }
 
-/// Checks that each of `vrs` is a Real variable of `M` settable in `state` and its value inside
-/// the declared range.
-pub fn check_set_real<M: Model>(state: State, vrs: &[u32], values: &[f64]) -> Result<(), FmuError> {
-    for (&vr, &value) in vrs.iter().zip(values) {
-        let v = lookup(M::VARIABLES, vr, "Real")?;
+/// Checks that each of the Real variables `vars` is settable in `state` and its value inside the
+/// declared range.
+pub fn check_set_real<V>(state: State, vars: &[Var<V>], values: &[f64]) -> Result<(), FmuError> {
+    for (v, &value) in vars.iter().zip(values) {
         check_settable(state, v)?;
         check_real(v, value)?;
     }
     Ok(())
 }
 
-/// Checks that each of `vrs` is an Integer variable of `M` (a switch among them) settable in
+/// Checks that each of the Integer variables `vars` of `M` (switches among them) is settable in
 /// `state`, its value inside the declared range or one of the switch's items.
 pub fn check_set_integer<M: Model>(
     state: State,
-    vrs: &[u32],
+    vars: &[Var<M::Vr>],
     values: &[i32],
 ) -> Result<(), FmuError> {
-    for (&vr, &value) in vrs.iter().zip(values) {
-        let v = lookup(M::VARIABLES, vr, "Integer")?;
+    for (v, &value) in vars.iter().zip(values) {
         check_settable(state, v)?;
         let (min, max) = match v.kind {
             Kind::Integer { min, max, .. } => (min, max),
@@ -256,16 +291,20 @@ pub fn check_set_integer<M: Model>(
     Ok(())
 }
 
-/// Checks fmi2SetRealInputDerivatives' arguments: each of `vrs` a Real input of `M`, each order
-/// from 1 to [`Model::MAX_INPUT_DERIVATIVE_ORDER`], each value finite.
+/// Checks fmi2SetRealInputDerivatives' arguments: each of `vrs` a Real input of `M` (resolved
+/// into `out`, as by [`resolve`]), each order from 1 to [`Model::MAX_INPUT_DERIVATIVE_ORDER`],
+/// each value finite.
 pub fn check_input_derivatives<M: Model>(
     vrs: &[u32],
     orders: &[i32],
     values: &[f64],
+    out: &mut Vec<Var<M::Vr>>,
 ) -> Result<(), FmuError> {
     let max = M::MAX_INPUT_DERIVATIVE_ORDER;
+    out.clear();
     for ((&vr, &order), &value) in vrs.iter().zip(orders).zip(values) {
         let v = check_causality::<M>(vr, Causality::Input, "vr")?;
+        out.push(v);
         let order_ok = u32::try_from(order).is_ok_and(|o| (1..=max).contains(&o));
         if !order_ok || !value.is_finite() {
             return Err(FmuError::Invalid(format!(
@@ -297,10 +336,10 @@ pub fn check_causality<M: Model>(
     }
 }
 
-/// Checks that each of `vrs` is a Boolean variable of `M` settable in `state`.
-pub fn check_set_boolean<M: Model>(state: State, vrs: &[u32]) -> Result<(), FmuError> {
-    for &vr in vrs {
-        check_settable(state, lookup(M::VARIABLES, vr, "Boolean")?)?;
+/// Checks that each of the Boolean variables `vars` is settable in `state`.
+pub fn check_set_boolean<V>(state: State, vars: &[Var<V>]) -> Result<(), FmuError> {
+    for v in vars {
+        check_settable(state, v)?;
     }
     Ok(())
 }
@@ -340,7 +379,7 @@ pub fn check_step(time: f64, t: f64, h: f64, stop: Option<f64>) -> Result<(), Fm
 
 /// One FMU instance.
 #[derive(Debug)]
-pub struct Instance<M> {
+pub struct Instance<M: Model> {
     /// The master's logger.
     pub logger: Logger,
     /// State-machine state.
@@ -352,6 +391,8 @@ pub struct Instance<M> {
     pub cause: Option<String>,
     /// The model.
     pub model: M,
+    /// The variables of the current call, resolved from its value references ([`resolve`]).
+    pub variables: Vec<Var<M::Vr>>,
 }
 
 /// The states in the order of their byte in a serialized state.
@@ -380,6 +421,7 @@ impl<M: Model> Instance<M> {
             poisoned: false,
             cause: None,
             model: M::new(),
+            variables: Vec::new(),
         }
     }
 

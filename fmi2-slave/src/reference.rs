@@ -12,9 +12,9 @@ use std::fmt::Write as _;
 
 use crate::error::FmuError;
 use crate::logger::Logger;
-use crate::model::{Model, check_gettable, check_set_integer, check_set_real};
+use crate::model::{Model, Var, check_set_integer, check_set_real};
 use crate::state::State;
-use crate::table::{Causality, Kind, ValueReference};
+use crate::table::{Causality, Kind};
 
 /// A fixed-step experiment with constant inputs.
 #[derive(Clone, Debug)]
@@ -73,11 +73,10 @@ impl<M: Model> Slave<M> {
             .collect()
     }
 
-    fn value_reference(name: &str) -> Result<(u32, &'static Kind), FmuError> {
+    fn variable(name: &str) -> Result<Var<M::Vr>, FmuError> {
         M::VARIABLES
             .iter()
             .find(|v| v.name == name)
-            .map(|v| (v.vr.index(), &v.kind))
             .ok_or_else(|| FmuError::Invalid(format!("no variable {name}")))
     }
 
@@ -99,11 +98,11 @@ impl<M: Model> Slave<M> {
 
     /// Sets a Real variable, or an Integer one to `value` (a whole number).
     pub fn set(&mut self, name: &str, value: f64) -> Result<(), FmuError> {
-        let (vr, kind) = Self::value_reference(name)?;
-        match kind {
+        let v = Self::variable(name)?;
+        match v.kind {
             Kind::Real { .. } => {
-                check_set_real::<M>(self.state, &[vr], &[value])?;
-                self.model.set_real(self.state, &[vr], &[value])
+                check_set_real(self.state, &[v], &[value])?;
+                self.model.set_real(self.state, &[v], &[value])
             }
             _ => {
                 let n = value as i32;
@@ -112,21 +111,26 @@ impl<M: Model> Slave<M> {
                         "{name} = {value} is not a whole number"
                     )));
                 }
-                check_set_integer::<M>(self.state, &[vr], &[n])?;
-                self.model.set_integer(self.state, &[vr], &[n])
+                check_set_integer::<M>(self.state, &[v], &[n])?;
+                self.model.set_integer(self.state, &[v], &[n])
             }
         }
     }
 
     /// The values of the Real variables `names`.
     pub fn get(&mut self, names: &[&str]) -> Result<Vec<f64>, FmuError> {
-        let vrs = names
+        let vars = names
             .iter()
-            .map(|n| Self::value_reference(n).map(|(vr, _)| vr))
+            .map(|n| Self::variable(n))
             .collect::<Result<Vec<_>, _>>()?;
-        check_gettable::<M>(&vrs, "Real")?;
-        let mut values = vec![0.0; vrs.len()];
-        self.model.get_real(&self.log, &vrs, &mut values)?;
+        if let Some(v) = vars.iter().find(|v| !matches!(v.kind, Kind::Real { .. })) {
+            return Err(FmuError::Invalid(format!(
+                "{} is not a Real variable",
+                v.name
+            )));
+        }
+        let mut values = vec![0.0; vars.len()];
+        self.model.get_real(&self.log, &vars, &mut values)?;
         Ok(values)
     }
 

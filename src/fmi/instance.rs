@@ -3,7 +3,7 @@
 //! the variable table, so every message quotes what the master sees in the XML) come from
 //! `fmi2-slave`. Values are read and written by an exhaustive `match` on [`Vr`].
 
-use fmi2_slave::model::{check_step, lookup};
+use fmi2_slave::model::{Var, check_step};
 use fmi2_slave::table::Enumeration;
 use fmi2_slave::{FmuError, Logger, Model, State};
 
@@ -45,9 +45,8 @@ fn input(vr: Vr) -> Option<Input> {
     }
 }
 
-/// The model input of the input variable `vr` (the generic layer has checked that it is one).
-fn input_of(vr: u32) -> Result<Input, FmuError> {
-    let v = lookup(VARIABLES, vr, "Real")?;
+/// The model input of the input variable `v` (the generic layer has checked that it is one).
+fn input_of(v: Var<Vr>) -> Result<Input, FmuError> {
     input(v.vr).ok_or_else(|| FmuError::Invalid(format!("{} is not an input", v.name)))
 }
 
@@ -188,8 +187,8 @@ impl Model for SliderCrankFmu {
     fn output_sensitivity(
         &mut self,
         log: &Logger,
-        known: u32,
-        unknowns: &[u32],
+        known: Var<Vr>,
+        unknowns: &[Var<Vr>],
         column: &mut [f64],
     ) -> Result<(), FmuError> {
         let i = input_of(known)?;
@@ -288,10 +287,14 @@ impl Model for SliderCrankFmu {
     }
 
     /// fmi2GetReal.
-    fn get_real(&mut self, log: &Logger, vrs: &[u32], values: &mut [f64]) -> Result<(), FmuError> {
+    fn get_real(
+        &mut self,
+        log: &Logger,
+        vars: &[Var<Vr>],
+        values: &mut [f64],
+    ) -> Result<(), FmuError> {
         let mut outputs: Option<Outputs> = None;
-        for (vr, value) in vrs.iter().zip(values.iter_mut()) {
-            let v = lookup(VARIABLES, *vr, "Real")?;
+        for (&v, value) in vars.iter().zip(values.iter_mut()) {
             if v.causality == Causality::Output && outputs.is_none() {
                 outputs = Some(self.outputs(log)?);
             }
@@ -317,9 +320,13 @@ impl Model for SliderCrankFmu {
     }
 
     /// fmi2SetReal.
-    fn set_real(&mut self, _state: State, vrs: &[u32], values: &[f64]) -> Result<(), FmuError> {
-        for (vr, &value) in vrs.iter().zip(values) {
-            let v = lookup(VARIABLES, *vr, "Real")?;
+    fn set_real(
+        &mut self,
+        _state: State,
+        vars: &[Var<Vr>],
+        values: &[f64],
+    ) -> Result<(), FmuError> {
+        for (&v, &value) in vars.iter().zip(values) {
             if set_real_parameter(&mut self.parameters, v.vr, value) {
                 // A parameter changed: the model is rebuilt when next needed.
                 self.simulation = None;
@@ -350,13 +357,12 @@ impl Model for SliderCrankFmu {
     fn get_real_output_derivatives(
         &mut self,
         log: &Logger,
-        vrs: &[u32],
+        vars: &[Var<Vr>],
         orders: &[i32],
         values: &mut [f64],
     ) -> Result<(), FmuError> {
         let o = self.outputs(log)?;
-        for ((vr, &order), value) in vrs.iter().zip(orders).zip(values.iter_mut()) {
-            let v = lookup(VARIABLES, *vr, "Real")?;
+        for ((&v, &order), value) in vars.iter().zip(orders).zip(values.iter_mut()) {
             *value = match (v.vr, order) {
                 (Vr::CrankAngle, 1) => o.crank_speed,
                 (Vr::CrankAngle, 2) | (Vr::CrankSpeed, 1) => o.crank_acceleration,
@@ -383,12 +389,12 @@ impl Model for SliderCrankFmu {
     /// communication point, for the next fmi2DoStep only (see [`Simulation::set_input_derivative`]).
     fn set_real_input_derivatives(
         &mut self,
-        vrs: &[u32],
+        vars: &[Var<Vr>],
         orders: &[i32],
         values: &[f64],
     ) -> Result<(), FmuError> {
-        for ((vr, &order), &value) in vrs.iter().zip(orders).zip(values) {
-            let i = input_of(*vr)?;
+        for ((&v, &order), &value) in vars.iter().zip(orders).zip(values) {
+            let i = input_of(v)?;
             let d = self
                 .inputs
                 .derivatives
@@ -406,11 +412,10 @@ impl Model for SliderCrankFmu {
     fn get_integer(
         &mut self,
         log: &Logger,
-        vrs: &[u32],
+        vars: &[Var<Vr>],
         values: &mut [i32],
     ) -> Result<(), FmuError> {
-        for (vr, value) in vrs.iter().zip(values.iter_mut()) {
-            let v = lookup(VARIABLES, *vr, "Integer")?;
+        for (&v, value) in vars.iter().zip(values.iter_mut()) {
             if let Some(x) = integer_parameter(&self.parameters, v.vr) {
                 *value = x;
                 continue;
@@ -434,9 +439,13 @@ impl Model for SliderCrankFmu {
     }
 
     /// fmi2SetInteger (Integer parameters, the switches among them).
-    fn set_integer(&mut self, _state: State, vrs: &[u32], values: &[i32]) -> Result<(), FmuError> {
-        for (vr, &value) in vrs.iter().zip(values) {
-            let v = lookup(VARIABLES, *vr, "Integer")?;
+    fn set_integer(
+        &mut self,
+        _state: State,
+        vars: &[Var<Vr>],
+        values: &[i32],
+    ) -> Result<(), FmuError> {
+        for (&v, &value) in vars.iter().zip(values) {
             if !set_integer_parameter(&mut self.parameters, v.vr, value) {
                 return unreachable_type(v);
             }
@@ -449,11 +458,10 @@ impl Model for SliderCrankFmu {
     fn get_boolean(
         &mut self,
         log: &Logger,
-        vrs: &[u32],
+        vars: &[Var<Vr>],
         values: &mut [i32],
     ) -> Result<(), FmuError> {
-        for (vr, value) in vrs.iter().zip(values.iter_mut()) {
-            let v = lookup(VARIABLES, *vr, "Boolean")?;
+        for (&v, value) in vars.iter().zip(values.iter_mut()) {
             *value = match v.vr {
                 Vr::JointInContact => i32::from(self.outputs(log)?.in_contact),
                 Vr::CrankPinInContact => i32::from(self.outputs(log)?.crank_pin_in_contact),

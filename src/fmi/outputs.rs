@@ -2,10 +2,10 @@
 //! row of the variable table to its field of [`Outputs`].
 
 use fmi2_slave::FmuError;
-use fmi2_slave::model::lookup;
+use fmi2_slave::model::Var;
 
 use crate::simulation::{Input, Outputs, Simulation};
-use crate::variables::{VARIABLES, Vr};
+use crate::variables::Vr;
 
 /// Relative size of the input steps of [`sensitivity`].
 const INPUT_STEP: f64 = 1e-3;
@@ -34,7 +34,7 @@ pub fn sensitivity(
     simulation: &mut Simulation,
     input: Input,
     u: f64,
-    unknowns: &[u32],
+    unknowns: &[Var<Vr>],
     column: &mut [f64],
 ) -> Result<(), FmuError> {
     let h = INPUT_STEP * u.abs().max(1.0);
@@ -44,8 +44,7 @@ pub fn sensitivity(
     let derivative = |vr: Vr| -> Option<f64> {
         Some((real_output(&plus, vr)? - real_output(&minus, vr)?) / (2.0 * h))
     };
-    for (vr, c) in unknowns.iter().zip(column.iter_mut()) {
-        let v = lookup(VARIABLES, *vr, "Real")?;
+    for (v, c) in unknowns.iter().zip(column.iter_mut()) {
         let held = PEAKS.iter().find(|(peak, _)| *peak == v.vr);
         let d = match held {
             Some(&(peak, value)) => real_output(&now, value).and_then(|y| {

@@ -7,8 +7,8 @@ use super::codes::{OK, ok};
 use crate::error::FmuError;
 use crate::ffi::{slice, slice_mut, with_instance};
 use crate::model::{
-    Model, check_causality, check_gettable, check_input_derivatives, check_set_boolean,
-    check_set_integer, check_set_real,
+    Model, check_causality, check_input_derivatives, check_set_boolean, check_set_integer,
+    check_set_real, no_input_derivatives, resolve,
 };
 use crate::number::Num;
 use crate::state::Call;
@@ -24,8 +24,10 @@ pub unsafe fn fmi2GetReal<M: Model>(
     with_instance::<M>(c, Call::GetReal, |inst| {
         // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
         let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?) };
-        check_gettable::<M>(vr, "Real")?;
-        inst.model.get_real(&inst.logger, vr, value).map(ok)
+        resolve::<M>(vr, "Real", &mut inst.variables)?;
+        inst.model
+            .get_real(&inst.logger, &inst.variables, value)
+            .map(ok)
     })
 }
 
@@ -39,8 +41,10 @@ pub unsafe fn fmi2GetInteger<M: Model>(
     with_instance::<M>(c, Call::GetInteger, |inst| {
         // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
         let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?) };
-        check_gettable::<M>(vr, "Integer")?;
-        inst.model.get_integer(&inst.logger, vr, value).map(ok)
+        resolve::<M>(vr, "Integer", &mut inst.variables)?;
+        inst.model
+            .get_integer(&inst.logger, &inst.variables, value)
+            .map(ok)
     })
 }
 
@@ -54,8 +58,10 @@ pub unsafe fn fmi2GetBoolean<M: Model>(
     with_instance::<M>(c, Call::GetBoolean, |inst| {
         // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
         let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?) };
-        check_gettable::<M>(vr, "Boolean")?;
-        inst.model.get_boolean(&inst.logger, vr, value).map(ok)
+        resolve::<M>(vr, "Boolean", &mut inst.variables)?;
+        inst.model
+            .get_boolean(&inst.logger, &inst.variables, value)
+            .map(ok)
     })
 }
 
@@ -88,8 +94,11 @@ pub unsafe fn fmi2SetReal<M: Model>(
     with_instance::<M>(c, Call::SetReal, |inst| {
         // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
         let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice(value, nvr, "value")?) };
-        check_set_real::<M>(inst.state, vr, value)?;
-        inst.model.set_real(inst.state, vr, value).map(ok)
+        resolve::<M>(vr, "Real", &mut inst.variables)?;
+        check_set_real(inst.state, &inst.variables, value)?;
+        inst.model
+            .set_real(inst.state, &inst.variables, value)
+            .map(ok)
     })
 }
 
@@ -103,8 +112,11 @@ pub unsafe fn fmi2SetInteger<M: Model>(
     with_instance::<M>(c, Call::SetInteger, |inst| {
         // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
         let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice(value, nvr, "value")?) };
-        check_set_integer::<M>(inst.state, vr, value)?;
-        inst.model.set_integer(inst.state, vr, value).map(ok)
+        resolve::<M>(vr, "Integer", &mut inst.variables)?;
+        check_set_integer::<M>(inst.state, &inst.variables, value)?;
+        inst.model
+            .set_integer(inst.state, &inst.variables, value)
+            .map(ok)
     })
 }
 
@@ -118,8 +130,11 @@ pub unsafe fn fmi2SetBoolean<M: Model>(
     with_instance::<M>(c, Call::SetBoolean, |inst| {
         // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
         let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice(value, nvr, "value")?) };
-        check_set_boolean::<M>(inst.state, vr)?;
-        inst.model.set_boolean(inst.state, vr, value).map(ok)
+        resolve::<M>(vr, "Boolean", &mut inst.variables)?;
+        check_set_boolean(inst.state, &inst.variables)?;
+        inst.model
+            .set_boolean(inst.state, &inst.variables, value)
+            .map(ok)
     })
 }
 
@@ -163,23 +178,32 @@ pub unsafe fn fmi2GetDirectionalDerivative<M: Model>(
                 slice_mut(dvUnknown, nUnknown, "dvUnknown")?,
             )
         };
+        inst.variables.clear();
         for &vr in unknowns {
-            check_causality::<M>(vr, Causality::Output, "vUnknown_ref")?;
+            let v = check_causality::<M>(vr, Causality::Output, "vUnknown_ref")?;
+            inst.variables.push(v);
         }
-        for (&vr, dv) in knowns.iter().zip(dv_known) {
-            check_causality::<M>(vr, Causality::Input, "vKnown_ref")?;
-            if !dv.is_finite() {
-                return Err(FmuError::Invalid(format!(
-                    "dvKnown = {} for value reference {vr} is not finite",
-                    Num(*dv)
-                )));
-            }
-        }
+        let knowns = knowns
+            .iter()
+            .zip(dv_known)
+            .map(|(&vr, &dv)| {
+                let v = check_causality::<M>(vr, Causality::Input, "vKnown_ref")?;
+                if dv.is_finite() {
+                    Ok((v, dv))
+                } else {
+                    Err(FmuError::Invalid(format!(
+                        "dvKnown = {} for {} is not finite",
+                        Num(dv),
+                        v.name
+                    )))
+                }
+            })
+            .collect::<Result<Vec<_>, _>>()?;
         let mut column = vec![0.0; unknowns.len()];
         let mut sum = vec![0.0; unknowns.len()];
-        for (&vr, &dv) in knowns.iter().zip(dv_known) {
+        for (known, dv) in knowns {
             inst.model
-                .output_sensitivity(&inst.logger, vr, unknowns, &mut column)?;
+                .output_sensitivity(&inst.logger, known, &inst.variables, &mut column)?;
             for (s, c) in sum.iter_mut().zip(&column) {
                 *s += c * dv;
             }
@@ -207,11 +231,12 @@ pub unsafe fn fmi2SetRealInputDerivatives<M: Model>(
                 slice(value, nvr, "value")?,
             )
         };
-        if M::MAX_INPUT_DERIVATIVE_ORDER > 0 {
-            check_input_derivatives::<M>(vr, order, value)?;
+        if M::MAX_INPUT_DERIVATIVE_ORDER == 0 {
+            return Err(no_input_derivatives());
         }
+        check_input_derivatives::<M>(vr, order, value, &mut inst.variables)?;
         inst.model
-            .set_real_input_derivatives(vr, order, value)
+            .set_real_input_derivatives(&inst.variables, order, value)
             .map(ok)
     })
 }
@@ -233,8 +258,9 @@ pub unsafe fn fmi2GetRealOutputDerivatives<M: Model>(
                 slice_mut(value, nvr, "value")?,
             )
         };
+        resolve::<M>(vr, "Real", &mut inst.variables)?;
         inst.model
-            .get_real_output_derivatives(&inst.logger, vr, order, value)
+            .get_real_output_derivatives(&inst.logger, &inst.variables, order, value)
             .map(ok)
     })
 }
