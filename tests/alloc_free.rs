@@ -1,5 +1,6 @@
 //! The hot path allocates nothing: after initialisation, `advance_to` and `outputs` of every rod ×
-//! joint model run without a single heap allocation (counting global allocator, own test binary).
+//! joint model run without a single heap allocation, and so do fmi2DoStep and fmi2GetReal through
+//! the FMI layer (counting global allocator, own test binary).
 
 // Test code: a failed unwrap is a failed test, with its message.
 #![allow(clippy::unwrap_used, clippy::expect_used)]
@@ -92,5 +93,69 @@ fn stepping_does_not_allocate() {
                 "{rod:?} rod, {joint:?} joint: {n} allocations in 40 steps"
             );
         }
+    }
+}
+
+/// Through the FMI layer, in process: after a first step and read, fmi2SetReal of an input,
+/// fmi2DoStep and fmi2GetReal of every Real output (the variables of each call resolved into the
+/// buffer the instance keeps) allocate nothing, for the default model.
+#[test]
+fn fmi_stepping_and_reading_do_not_allocate() {
+    use flexible_slider_crank::fmi::GUID;
+    use flexible_slider_crank::fmi::instance::SliderCrankFmu as M;
+    use flexible_slider_crank::variables::{Causality, Kind, VARIABLES, Vr};
+    use fmi2_slave::exports::sys::{fmi2CallbackFunctions, fmi2Type_fmi2CoSimulation};
+    use fmi2_slave::exports::{
+        fmi2DoStep, fmi2EnterInitializationMode, fmi2ExitInitializationMode, fmi2FreeInstance,
+        fmi2GetReal, fmi2Instantiate, fmi2SetReal, fmi2SetupExperiment,
+    };
+    use std::ffi::CString;
+
+    let callbacks = fmi2CallbackFunctions {
+        logger: Some(fmi_sys::fmi2::logger::callback_logger_handler),
+        allocateMemory: None,
+        freeMemory: None,
+        stepFinished: None,
+        componentEnvironment: std::ptr::null_mut(),
+    };
+    let (name, guid) = (CString::new("alloc").unwrap(), CString::new(GUID).unwrap());
+    let outputs: Vec<u32> = VARIABLES
+        .iter()
+        .filter(|v| v.causality == Causality::Output && matches!(v.kind, Kind::Real { .. }))
+        .map(|v| v.vr as u32)
+        .collect();
+    let mut values = vec![0.0; outputs.len()];
+    let speed = Vr::DriveSpeed as u32;
+    // SAFETY: valid strings, callbacks and buffers of the stated lengths for every call.
+    unsafe {
+        let c = fmi2Instantiate::<M>(
+            name.as_ptr(),
+            fmi2Type_fmi2CoSimulation,
+            guid.as_ptr(),
+            std::ptr::null(),
+            &callbacks,
+            0,
+            0,
+        );
+        assert!(!c.is_null());
+        assert_eq!(fmi2SetupExperiment::<M>(c, 0, 0.0, 0.0, 0, 0.0), 0);
+        assert_eq!(fmi2EnterInitializationMode::<M>(c), 0);
+        assert_eq!(fmi2ExitInitializationMode::<M>(c), 0);
+        assert_eq!(fmi2DoStep::<M>(c, 0.0, 1e-4, 1), 0);
+        let read = |values: &mut [f64]| {
+            fmi2GetReal::<M>(c, outputs.as_ptr(), outputs.len(), values.as_mut_ptr())
+        };
+        assert_eq!(read(&mut values), 0);
+        let n = allocations_in(|| {
+            for i in 1..=40 {
+                let t = 1e-4 * f64::from(i);
+                let u = 520.0 + f64::from(i);
+                assert_eq!(fmi2SetReal::<M>(c, &speed, 1, &u), 0);
+                assert_eq!(fmi2DoStep::<M>(c, t, 1e-4, 1), 0);
+                assert_eq!(read(&mut values), 0);
+            }
+        });
+        fmi2FreeInstance::<M>(c);
+        assert_eq!(n, 0, "{n} allocations in 40 steps through the FMI layer");
     }
 }
