@@ -369,7 +369,8 @@ def start_configurations(n=160, seed=7):
     independently), with gravity, friction, material damping and the inputs switched on at
     random; half keep crank.initialSpeed at its start value, so that the speed drive starts the
     crank at drive.speed. Six more put each lubricated joint at either edge of the short-bearing
-    range."""
+    range, and two start every joint dry and settled at a crank speed of 0.05 rad/s, where the
+    journals slip between the friction law's regularisation speeds."""
     rng = np.random.default_rng(seed)
 
     def pick(values):
@@ -397,6 +398,11 @@ def start_configurations(n=160, seed=7):
     for joint in ("joint", "crankPin", "mainBearing"):
         for length in (0.995 * radius, 1.005 * radius):
             configurations.append({f"{joint}.model": 3, f"{joint}.bearingLength": length})
+    for angle in (0.7, 2.0):
+        slow = {"drive.speed": 0.05, "crank.initialAngle": angle, "gravity": 9.81}
+        for joint in ("joint", "crankPin", "mainBearing"):
+            slow |= {f"{joint}.model": 2, f"{joint}.friction": 0.1, f"{joint}.initialState": 2}
+        configurations.append(slow)
     return configurations
 
 
