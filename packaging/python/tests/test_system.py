@@ -196,9 +196,9 @@ def test_fmpy_ssp_simulation_runs_the_system_with_connections_starting_at_zero()
 
 def test_the_ssp_carries_what_omsimulator_needs():
     """The SSD passes the SSP 1.0 schema (fmpy's read_ssd validates it) and carries OMSimulator's
-    annotation with its fixed-step master at the system's 1e-4 s step; no component name followed by
-    a dot starts one of its parameter bindings' or connectors' names (OMSimulator strips such a
-    prefix from binding names), and the OSP file names its simulators alike."""
+    annotation with its fixed-step master ("oms-ma") at the system's 1e-4 s step; no component
+    name followed by a dot starts one of its parameter bindings' or connectors' names (OMSimulator
+    strips such a prefix from binding names), and the OSP file names its simulators alike."""
     from lxml import etree
 
     read_ssd(str(system.SSP))
@@ -210,6 +210,8 @@ def test_the_ssp_carries_what_omsimulator_needs():
     masters = root.findall("ssd:System/ssd:Annotations/ssc:Annotation[@type='org.openmodelica']"
                            "/oms:Annotations/oms:SimulationInformation/oms:FixedStepMaster", ns)
     assert [float(m.get("stepSize")) for m in masters] == [STEP]
+    # OMSimulator's importer selects its master by this name and refuses the system without it.
+    assert [m.get("description") for m in masters] == ["oms-ma"]
     components = root.findall("ssd:System/ssd:Elements/ssd:Component", ns)
     assert {c.get("name") for c in components} == {"dcMotor", "sliderCrank"}
     for c in components:
