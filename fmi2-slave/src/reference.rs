@@ -12,9 +12,9 @@ use std::fmt::Write as _;
 
 use crate::error::FmuError;
 use crate::logger::Logger;
-use crate::model::{Model, Var, check_set_integer, check_set_real};
+use crate::model::{Model, Var, check_set_integer, check_set_real, lookup};
 use crate::state::State;
-use crate::table::{Causality, Kind};
+use crate::table::{Causality, Kind, ValueReference};
 
 /// A fixed-step experiment with constant inputs.
 #[derive(Clone, Debug)]
@@ -121,14 +121,8 @@ impl<M: Model> Slave<M> {
     pub fn get(&mut self, names: &[&str]) -> Result<Vec<f64>, FmuError> {
         let vars = names
             .iter()
-            .map(|n| Self::variable(n))
+            .map(|n| lookup(M::VARIABLES, Self::variable(n)?.vr.index(), "Real"))
             .collect::<Result<Vec<_>, _>>()?;
-        if let Some(v) = vars.iter().find(|v| !matches!(v.kind, Kind::Real { .. })) {
-            return Err(FmuError::Invalid(format!(
-                "{} is not a Real variable",
-                v.name
-            )));
-        }
         let mut values = vec![0.0; vars.len()];
         self.model.get_real(&self.log, &vars, &mut values)?;
         Ok(values)
