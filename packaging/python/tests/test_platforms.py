@@ -35,7 +35,13 @@ EXPERIMENT = ["0.024", "1e-4", REAL_OUTPUTS]
 
 
 def run(args, **kwargs):
-    return subprocess.run(args, check=True, capture_output=True, text=True, **kwargs)
+    """Runs a command; a failure reports its exit status and what it printed."""
+    done = subprocess.run(args, capture_output=True, text=True, **kwargs)
+    if done.returncode != 0:
+        pytest.fail(f"{' '.join(map(str, args))} exited with status {done.returncode}\n"
+                    f"stdout:\n{done.stdout[-4000:]}\nstderr:\n{done.stderr[-4000:]}",
+                    pytrace=False)
+    return done
 
 
 @pytest.fixture(scope="module")
@@ -150,6 +156,10 @@ def wine(work):
          "-o", str(win / "bcryptprimitives.dll")])
     shutil.copy(BINARIES / "win64" / "FlexibleSliderCrank.dll", win / "FlexibleSliderCrank.dll")
     env = dict(os.environ, WINEPREFIX=str(work / "wineprefix"), WINEDEBUG="-all")
+    # Create the prefix and wait until wine has finished setting it up, so that no run of the
+    # master overlaps the prefix's first-time update.
+    run(["wineboot", "--init"], env=env)
+    run(["wineserver", "--wait"], env=env)
 
     def master(*args):
         return run(["wine", "fmu_run.exe", "FlexibleSliderCrank.dll", GUID, *EXPERIMENT, *args],
