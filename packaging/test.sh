@@ -28,7 +28,7 @@ echo "== fuzzing: state deserialization and fmi2* call sequences, 60 s each"
 bash packaging/fuzz.sh 60
 echo "== platform test tools: wine (win64 DLL), debootstrap (an older Debian for linux64)"
 need=()
-for p in wine64 debootstrap; do dpkg -s "$p" >/dev/null 2>&1 || need+=("$p"); done
+for p in wine wine64 debootstrap; do dpkg -s "$p" >/dev/null 2>&1 || need+=("$p"); done
 if [ ${#need[@]} -gt 0 ]; then
   sudo=""
   [ "$(id -u)" -ne 0 ] && sudo=sudo
