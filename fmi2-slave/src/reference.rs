@@ -128,6 +128,49 @@ impl<M: Model> Slave<M> {
         Ok(values)
     }
 
+    /// The names of the model's outputs of every type (Real, Integer, Boolean), in table order.
+    pub fn outputs() -> Vec<&'static str> {
+        M::VARIABLES
+            .iter()
+            .filter(|v| v.causality == Causality::Output)
+            .map(|v| v.name)
+            .collect()
+    }
+
+    /// The values of every output of [`Slave::outputs`], each read through the getter of its
+    /// type (fmi2GetReal, fmi2GetInteger, fmi2GetBoolean); Integer and Boolean values are
+    /// converted to f64 exactly.
+    pub fn output_values(&mut self) -> Result<Vec<f64>, FmuError> {
+        let mut values = Vec::new();
+        for v in M::VARIABLES
+            .iter()
+            .filter(|v| v.causality == Causality::Output)
+        {
+            let vr = v.vr.index();
+            values.push(match v.kind {
+                Kind::Real { .. } => {
+                    let mut x = [0.0];
+                    let var = lookup(M::VARIABLES, vr, "Real")?;
+                    self.model.get_real(&self.log, &[var], &mut x)?;
+                    x[0]
+                }
+                Kind::Integer { .. } | Kind::Enumeration { .. } => {
+                    let mut n = [0];
+                    let var = lookup(M::VARIABLES, vr, "Integer")?;
+                    self.model.get_integer(&self.log, &[var], &mut n)?;
+                    f64::from(n[0])
+                }
+                Kind::Boolean => {
+                    let mut b = [0];
+                    let var = lookup(M::VARIABLES, vr, "Boolean")?;
+                    self.model.get_boolean(&self.log, &[var], &mut b)?;
+                    f64::from(b[0])
+                }
+            });
+        }
+        Ok(values)
+    }
+
     /// fmi2ExitInitializationMode.
     pub fn exit_initialization(&mut self) -> Result<(), FmuError> {
         self.model.exit_initialization(&self.log)?;
