@@ -47,12 +47,48 @@ pub fn interpolate(
         out[i] = h0 * q0 + h1 * h * v0 + h2 * h * h * a0 + h3 * h * h * a1 + h4 * h * v1 + h5 * q1;
         out[n_q + i] = (d0 * q0 + d5 * q1) / h + d1 * v0 + d2 * h * a0 + d3 * h * a1 + d4 * v1;
     }
-    let c00 = 2.0 * s3 - 3.0 * s2 + 1.0;
-    let c10 = s3 - 2.0 * s2 + s;
-    let c01 = -2.0 * s3 + 3.0 * s2;
-    let c11 = s3 - s2;
+    let [c00, c10, c01, c11] = cubic_hermite(s);
     for i in 2 * n_q..y0.len() {
         out[i] = c00 * y0[i] + c10 * h * f0[i] + c01 * y1[i] + c11 * h * f1[i];
+    }
+}
+
+/// The cubic Hermite basis at s ∈ [0, 1]: p(s) = b₀ p₀ + b₁ h ṗ₀ + b₂ p₁ + b₃ h ṗ₁ takes the
+/// values p₀, p₁ and the rates ṗ₀, ṗ₁ at the ends of an interval of length h.
+/// ```text
+/// b₀ = 2s³ − 3s² + 1,   b₁ = s³ − 2s² + s,   b₂ = −2s³ + 3s²,   b₃ = s³ − s²
+/// ```
+pub fn cubic_hermite(s: f64) -> [f64; 4] {
+    let (s2, s3) = (s * s, s * s * s);
+    [
+        2.0 * s3 - 3.0 * s2 + 1.0,
+        s3 - 2.0 * s2 + s,
+        -2.0 * s3 + 3.0 * s2,
+        s3 - s2,
+    ]
+}
+
+/// The derivatives db/ds of the [`cubic_hermite`] basis at s.
+pub fn cubic_hermite_rate(s: f64) -> [f64; 4] {
+    let s2 = s * s;
+    [
+        6.0 * s2 - 6.0 * s,
+        3.0 * s2 - 4.0 * s + 1.0,
+        6.0 * s - 6.0 * s2,
+        3.0 * s2 - 2.0 * s,
+    ]
+}
+
+/// Writes to the velocity rows `n_q .. 2 n_q` of `out` the velocities at t₀ + s·h of the cubic
+/// Hermite interpolant of the positions through q₀, q̇₀, q₁, q̇₁ (the derivative of the
+/// [`cubic_hermite`] polynomial, a quadratic in s; other rows are untouched). It reads no
+/// accelerations: after a large implicit step those carry the amplified, unresolved content of
+/// the stiff modes, which the quintic's velocities pass on as a spurious oscillation of amplitude
+/// about h Δq̈/32 in mid-step; the cubic's error is O(h³) of the resolved motion instead.
+pub fn cubic_velocities(n_q: usize, h: f64, y0: &[f64], y1: &[f64], s: f64, out: &mut [f64]) {
+    let [d0, d1, d2, d3] = cubic_hermite_rate(s);
+    for i in 0..n_q {
+        out[n_q + i] = (d0 * y0[i] + d2 * y1[i]) / h + d1 * y0[n_q + i] + d3 * y1[n_q + i];
     }
 }
 
@@ -112,6 +148,35 @@ mod tests {
             assert!((out[2] - w(t)).abs() < 1e-14, "w at s = {s}");
             acceleration(1, h, &y0, &f0, &y1, &f1, s, &mut out);
             assert!((out[1] - a(t)).abs() < 1e-12, "a at s = {s}: {}", out[1]);
+        }
+    }
+
+    /// The cubic Hermite basis takes the end values and rates, and its rates are its
+    /// derivatives (central differences); the cubic velocities reproduce a cubic's exactly.
+    #[test]
+    fn cubic_hermite_interpolates_and_differentiates() {
+        assert_eq!(cubic_hermite(0.0), [1.0, 0.0, 0.0, 0.0]);
+        assert_eq!(cubic_hermite(1.0), [0.0, 0.0, 1.0, 0.0]);
+        assert_eq!(cubic_hermite_rate(0.0), [0.0, 1.0, 0.0, 0.0]);
+        assert_eq!(cubic_hermite_rate(1.0), [0.0, 0.0, 0.0, 1.0]);
+        let d = 1e-6;
+        for s in [0.1, 0.37, 0.8] {
+            let (plus, minus) = (cubic_hermite(s + d), cubic_hermite(s - d));
+            for (k, rate) in cubic_hermite_rate(s).into_iter().enumerate() {
+                assert!(
+                    ((plus[k] - minus[k]) / (2.0 * d) - rate).abs() < 1e-9,
+                    "{k} at {s}"
+                );
+            }
+        }
+        let q = |t: f64| 0.4 - 1.5 * t + 2.0 * t * t - 0.8 * t.powi(3);
+        let v = |t: f64| -1.5 + 4.0 * t - 2.4 * t * t;
+        let (t0, h) = (0.2, 0.5);
+        let (y0, y1) = ([q(t0), v(t0)], [q(t0 + h), v(t0 + h)]);
+        let mut out = [0.0; 2];
+        for s in [0.0, 0.3, 0.5, 1.0] {
+            cubic_velocities(1, h, &y0, &y1, s, &mut out);
+            assert!((out[1] - v(t0 + s * h)).abs() < 1e-13, "v at s = {s}");
         }
     }
 }

@@ -5,6 +5,7 @@
 use super::{Failure, HISTORY, Implicit, MAX_ITERATIONS, NEWTON_TOLERANCE, Scheme};
 use crate::error::ModelError;
 use crate::integrator::control::{Tolerances, scaled_norm};
+use crate::integrator::dense;
 use crate::integrator::esdirk::Tableau;
 use crate::integrator::generalized_alpha::GeneralizedAlpha;
 use crate::integrator::system::MechanicalSystem;
@@ -152,9 +153,7 @@ impl Implicit {
                     let ((ta, va, aa), (tb, vb, ab)) = (point(a), point(b));
                     let dt = tb - ta;
                     let s = (target - ta) / dt;
-                    let (s2, s3) = (s * s, s * s * s);
-                    let (h00, h10) = (2.0 * s3 - 3.0 * s2 + 1.0, s3 - 2.0 * s2 + s);
-                    let (h01, h11) = (-2.0 * s3 + 3.0 * s2, s3 - s2);
+                    let [h00, h10, h01, h11] = dense::cubic_hermite(s);
                     for m in 0..n_q {
                         self.stage[n_q + m] =
                             h00 * va[m] + h10 * dt * aa[m] + h01 * vb[m] + h11 * dt * ab[m];
