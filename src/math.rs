@@ -1,6 +1,6 @@
 //! Elementary functions that give the same bits on every platform.
 //!
-//! `f64::sin`, `cos`, `powf`, `atan2` and `hypot` call the C library of the target (glibc on Linux,
+//! `f64::sin`, `cos`, `powf`, `ln`, `exp`, `atan2` and `hypot` call the C library of the target (glibc on Linux,
 //! mingw-w64's CRT on Windows, libSystem on macOS). Their results are faithful but not correctly
 //! rounded, and they differ between those libraries in the last bit. With impacts such
 //! differences grow without bound: the same FMU run on Windows and Linux would part at the first
@@ -32,6 +32,18 @@ pub fn sin_cos(x: f64) -> (f64, f64) {
 #[inline]
 pub fn powf(x: f64, y: f64) -> f64 {
     libm::pow(x, y)
+}
+
+/// The natural logarithm ln x.
+#[inline]
+pub fn ln(x: f64) -> f64 {
+    libm::log(x)
+}
+
+/// The exponential eˣ.
+#[inline]
+pub fn exp(x: f64) -> f64 {
+    libm::exp(x)
 }
 
 /// The angle of the point (x, y) from the x axis, in (−π, π].
@@ -67,6 +79,8 @@ mod tests {
             assert!(close(powf(base, 1.5), base.powf(1.5)), "pow {base}");
             assert!(close(powf(base, -0.2), base.powf(-0.2)), "pow {base}");
             assert!(close(hypot(x, base), x.hypot(base)), "hypot {x} {base}");
+            assert!(close(ln(base), base.ln()), "ln {base}");
+            assert!(close(exp(0.1 * x), (0.1 * x).exp()), "exp {x}");
         }
     }
 }

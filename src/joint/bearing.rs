@@ -7,8 +7,22 @@
 //! P(θ) = (μL³/2c²) (ε w sin θ − 2ε̇ cos θ)/(1 + ε cos θ)³      (θ from the maximum film)
 //!      = (μL³/2c²) A sin(θ − θ₁)/(1 + ε cos θ)³,   A = √((εw)² + (2ε̇)²),  θ₁ = atan2(2ε̇, εw)
 //! F_r = R ∫ P cos θ dθ,  F_t = R ∫ P sin θ dθ   over Θ = (θ₁, θ₁ + π), where P > 0
-//! force on the journal F = F_r n + F_t t   (through the journal centre: no moment)
+//! force on the journal F = F_r n + F_t t,  on the bearing −F
+//! shear moments  M_J = −T − |e| F_t/2   on the journal,   M_B = T − |e| F_t/2   on the bearing
+//!                T = 2π μ R³ L (ω_J − ω_B) / (c √(1 − ε²))
 //! ```
+//! The film shear: T is the Couette shear of the relative rotation taken over the whole
+//! circumference (engineering practice: the oil fills the cavitated zone in streamers), which
+//! tends to Petroff's 2π μ R³ L (ω_J − ω_B)/c for a centred journal; −|e| F_t/2 on each surface is
+//! the pressure-driven (Poiseuille) part. Together they balance the couple |e| F_t of the force
+//! pair at the two centres, M_J + M_B + |e| F_t = 0, so the massless film transmits no net moment
+//! (the journal bearing's friction torque with its pressure part e W sin φ / 2: Pinkus &
+//! Sternlicht 1961; Hamrock, Schmid & Jacobson 2004). With them the film's power on journal and
+//! bearing, F·ė + M_J ω_J + M_B ω_B = c ε̇ F_r − |e| F_t w/2 − T (ω_J − ω_B), is
+//! −(c K_h/2) ∫_Θ (ε w sin θ − 2ε̇ cos θ)²/(1 + ε cos θ)³ dθ − T (ω_J − ω_B) ≤ 0 for ε ≤ ε_b:
+//! the film never adds energy, also in a whirl (where its force alone, through the journal
+//! centre, can). Above ε_b the clamped film's force is no pressure field's; its moments
+//! keep the actual |e| (the moment balance) and T the clamped ε.
 //! For ε̇ = 0, w > 0 the region is (0, π) and the forces are Flores's closed forms
 //! F_r = −K_h 2ε²w/(1−ε²)², F_t = K_h πεw/(2(1−ε²)^{3/2}), K_h = μRL³/(2c²) (tested below).
 //! The fixed π-film with its mirror image for w < 0 (docs/model.md §4 (i)) has a jump in F_t at w = 0;
@@ -27,9 +41,13 @@
 //!   dynamics of mechanical systems including joints with clearance and lubrication, Mech. Mach.
 //!   Theory 41, 247–261.
 //! - O. Pinkus, B. Sternlicht (1961), Theory of Hydrodynamic Lubrication, McGraw-Hill.
+//! - B. J. Hamrock, S. R. Schmid, B. O. Jacobson (2004), Fundamentals of Fluid Film Lubrication,
+//!   2nd ed., Marcel Dekker (short journal bearings: pressure, friction torque, Petroff).
 //! - L. L. G. Daniel, T. H. Machado, K. L. Cavalca (2016), Mech. Mach. Theory 99, 19 (time-dependent
 //!   cavitation boundaries).
 //! - docs/model.md §4 (pressure, sign convention verified against direct integration).
+
+use std::f64::consts::PI;
 
 use nalgebra::Vector2;
 
@@ -48,6 +66,7 @@ const FILM_NODES: usize = 5 * FILM_PANELS;
 /// per node (the film force is evaluated at every right-hand side).
 #[derive(Clone, Debug, PartialEq)]
 struct FilmRule {
+    phi: [f64; FILM_NODES],
     weight: [f64; FILM_NODES],
     sin: [f64; FILM_NODES],
     cos: [f64; FILM_NODES],
@@ -57,14 +76,17 @@ impl FilmRule {
     fn new() -> Self {
         let panel = std::f64::consts::PI / FILM_PANELS as f64;
         let mut rule = Self {
+            phi: [0.0; FILM_NODES],
             weight: [0.0; FILM_NODES],
             sin: [0.0; FILM_NODES],
             cos: [0.0; FILM_NODES],
         };
         for i in 0..FILM_PANELS {
             for (k, (xi, weight)) in GAUSS_5.on_unit_interval(panel).enumerate() {
-                let (sin, cos) = math::sin_cos((i as f64 + xi) * panel);
+                let phi = (i as f64 + xi) * panel;
+                let (sin, cos) = math::sin_cos(phi);
                 let m = 5 * i + k;
+                rule.phi[m] = phi;
                 rule.weight[m] = weight;
                 rule.sin[m] = sin;
                 rule.cos[m] = cos;
@@ -77,6 +99,42 @@ impl FilmRule {
 fn film_rule() -> &'static FilmRule {
     static RULE: std::sync::OnceLock<FilmRule> = std::sync::OnceLock::new();
     RULE.get_or_init(FilmRule::new)
+}
+
+/// Newton iterations for the location of the film's peak pressure (quadratic convergence from
+/// the largest of 120 nodes: 3 or 4 reach round-off).
+const PEAK_ITERATIONS: usize = 8;
+
+/// The film's pressure field in one state: the direction n = e/|e|, ε (clamped to ε_b), and the
+/// amplitude A and phase θ₁ of εw sin θ − 2ε̇ cos θ = A sin(θ − θ₁).
+#[derive(Clone, Copy, Debug)]
+struct FilmField {
+    n: Vector2<f64>,
+    eps: f64,
+    amplitude: f64,
+    sin1: f64,
+    cos1: f64,
+}
+
+impl FilmField {
+    /// Calls `f(p, sin φ, sin θ, cos θ)` at each node of the film's rule over the pressure
+    /// region θ = θ₁ + φ, φ ∈ (0, π), with p = wᵢ A sin φ/(1 + ε cos θ)³ (P(θ) dθ / K_h).
+    #[inline]
+    fn integrate(&self, mut f: impl FnMut(f64, f64, f64, f64)) {
+        let rule = film_rule();
+        for m in 0..FILM_NODES {
+            let (sin_phi, cos_phi) = (rule.sin[m], rule.cos[m]);
+            let cos = self.cos1 * cos_phi - self.sin1 * sin_phi;
+            let sin = self.sin1 * cos_phi + self.cos1 * sin_phi;
+            let d = 1.0 + self.eps * cos;
+            f(
+                rule.weight[m] * self.amplitude * sin_phi / (d * d * d),
+                sin_phi,
+                sin,
+                cos,
+            );
+        }
+    }
 }
 
 /// Constants of the lubricated joint.
@@ -101,44 +159,148 @@ impl JournalBearing {
 
     /// Film force on the journal over the positive-pressure region, ε clamped to ε_b.
     pub fn film_force(&self, k: &JointKinematics) -> Vector2<f64> {
+        self.film(k).0
+    }
+
+    /// The film's pressure field in a state, `None` where it vanishes (a centred journal, or no
+    /// wedge and no squeeze).
+    fn field(&self, k: &JointKinematics) -> Option<FilmField> {
         let c = self.dry.clearance;
         let e_norm = k.e.norm();
         if e_norm <= 1e-12 * c {
             // Centred journal: the pressure amplitude εw → 0 and the direction is undefined.
-            return Vector2::zeros();
+            return None;
         }
         let n = k.e / e_norm;
-        let t = Vector2::new(-n.y, n.x);
         let eps = (e_norm / c).min(self.switch_eccentricity);
         let eps_dot = k.e.dot(&k.e_dot) / (e_norm * c);
         let gamma_dot = (k.e.x * k.e_dot.y - k.e.y * k.e_dot.x) / (e_norm * e_norm);
         let w = k.omega_journal + k.omega_bearing - 2.0 * gamma_dot;
         let amplitude = math::hypot(eps * w, 2.0 * eps_dot);
         if amplitude == 0.0 {
-            return Vector2::zeros();
+            return None;
         }
         // θ₁ = atan2(2ε̇, εw): its sine and cosine directly.
-        let (sin1, cos1) = (2.0 * eps_dot / amplitude, eps * w / amplitude);
-        let rule = film_rule();
-        let (mut f_r, mut f_t) = (0.0, 0.0);
-        for m in 0..FILM_NODES {
-            let (sin_phi, cos_phi) = (rule.sin[m], rule.cos[m]);
-            let cos = cos1 * cos_phi - sin1 * sin_phi;
-            let sin = sin1 * cos_phi + cos1 * sin_phi;
-            let d = 1.0 + eps * cos;
-            let p = rule.weight[m] * amplitude * sin_phi / (d * d * d);
-            f_r += p * cos;
-            f_t += p * sin;
-        }
-        let scale = self.film_coefficient();
-        scale * (f_r * n + f_t * t)
+        Some(FilmField {
+            n,
+            eps,
+            amplitude,
+            sin1: 2.0 * eps_dot / amplitude,
+            cos1: eps * w / amplitude,
+        })
     }
 
-    /// Film force plus dry contact when the journal touches the bearing.
+    /// Film force on the journal and its tangential component F_t = F · t.
+    fn film(&self, k: &JointKinematics) -> (Vector2<f64>, f64) {
+        let Some(field) = self.field(k) else {
+            return (Vector2::zeros(), 0.0);
+        };
+        let (mut f_r, mut f_t) = (0.0, 0.0);
+        field.integrate(|p, _, sin, cos| {
+            f_r += p * cos;
+            f_t += p * sin;
+        });
+        let scale = self.film_coefficient();
+        let t = Vector2::new(-field.n.y, field.n.x);
+        (scale * (f_r * field.n + f_t * t), scale * f_t)
+    }
+
+    /// The largest film pressure at mid-length \[Pa\]: the short bearing's field
+    /// p(θ, z) = (3μ/c²) (L²/4 − z²) A sin(θ − θ₁)/(1 + ε cos θ)³ (whose integral over the length
+    /// is the P(θ) above) at z = 0, at its maximum over the pressure region, located from the
+    /// largest node of the film's rule by Newton's method on d/dφ ln p = 0 (φ = θ − θ₁):
+    /// ```text
+    /// cot φ + 3ε sin θ/(1 + ε cos θ) = 0,   its derivative −1/sin²φ + 3ε (cos θ + ε)/(1 + ε cos θ)²
+    /// ```
+    /// For ε̇ = 0 the maximum is at cos θ* = (1 − √(1 + 24ε²))/(4ε). 0 without a film.
+    pub fn peak_pressure(&self, k: &JointKinematics) -> f64 {
+        let Some(field) = self.field(k) else {
+            return 0.0;
+        };
+        let FilmField {
+            eps, sin1, cos1, ..
+        } = field;
+        let shape = |phi: f64| {
+            let (sin_phi, cos_phi) = math::sin_cos(phi);
+            let (sin, cos) = (sin1 * cos_phi + cos1 * sin_phi, cos1 * cos_phi - sin1 * sin_phi);
+            (sin_phi, cos_phi, sin, cos)
+        };
+        let rule = film_rule();
+        let (mut best, mut phi) = (0.0, 0.0);
+        for m in 0..FILM_NODES {
+            let cos = cos1 * rule.cos[m] - sin1 * rule.sin[m];
+            let d = 1.0 + eps * cos;
+            let value = rule.sin[m] / (d * d * d);
+            if value > best {
+                (best, phi) = (value, rule.phi[m]);
+            }
+        }
+        for _ in 0..PEAK_ITERATIONS {
+            let (sin_phi, cos_phi, sin, cos) = shape(phi);
+            let d = 1.0 + eps * cos;
+            let slope = cos_phi / sin_phi + 3.0 * eps * sin / d;
+            let curvature = -1.0 / (sin_phi * sin_phi) + 3.0 * eps * (cos + eps) / (d * d);
+            if curvature >= 0.0 {
+                break;
+            }
+            let next = (phi - slope / curvature).clamp(0.5 * phi, 0.5 * (phi + PI));
+            let converged = (next - phi).abs() <= 1e-12;
+            phi = next;
+            if converged {
+                break;
+            }
+        }
+        let (sin_phi, _, _, cos) = shape(phi);
+        let d = 1.0 + eps * cos;
+        let c = self.dry.clearance;
+        let shape = (sin_phi / (d * d * d)).max(best);
+        3.0 * self.viscosity * self.length * self.length / (4.0 * c * c) * field.amplitude * shape
+    }
+
+    /// The rate at which the film dissipates energy \[W\], ≥ 0: its Couette shear
+    /// T (ω_J − ω_B) and its pressure flow (c K_h/2) ∫_Θ A² sin²(θ − θ₁)/(1 + ε cos θ)³ dθ, which
+    /// equal −(F·ė + M_J ω_J + M_B ω_B) for ε ≤ ε_b (module documentation); above ε_b, those of
+    /// the film clamped there.
+    pub fn film_loss(&self, k: &JointKinematics) -> f64 {
+        let relative = k.omega_journal - k.omega_bearing;
+        let eps = (k.e.norm() / self.dry.clearance).min(self.switch_eccentricity);
+        let shear = self.petroff_coefficient() * relative * relative / (1.0 - eps * eps).sqrt();
+        let Some(field) = self.field(k) else {
+            return shear;
+        };
+        let mut flow = 0.0;
+        field.integrate(|p, sin_phi, _, _| flow += p * field.amplitude * sin_phi);
+        shear + 0.5 * self.dry.clearance * self.film_coefficient() * flow
+    }
+
+    /// Petroff's coefficient 2π μ R³ L / c \[N m s\]: the Couette shear torque of a centred
+    /// journal per unit of relative speed ω_J − ω_B.
+    pub fn petroff_coefficient(&self) -> f64 {
+        let r = self.dry.journal_radius;
+        std::f64::consts::TAU * self.viscosity * r * r * r * self.length / self.dry.clearance
+    }
+
+    /// The film's shear moments (M_J on the journal, M_B on the bearing) for its tangential
+    /// force `f_t` on the journal: the Couette part ∓T with ε clamped to ε_b, and the pressure
+    /// part −|e| F_t/2 on each (see the module documentation).
+    fn shear_moments(&self, k: &JointKinematics, f_t: f64) -> (f64, f64) {
+        let e_norm = k.e.norm();
+        let eps = (e_norm / self.dry.clearance).min(self.switch_eccentricity);
+        let couette = self.petroff_coefficient() * (k.omega_journal - k.omega_bearing)
+            / (1.0 - eps * eps).sqrt();
+        let pressure = 0.5 * e_norm * f_t;
+        (-couette - pressure, couette - pressure)
+    }
+
+    /// Film force and shear moments, plus dry contact when the journal touches the bearing.
     pub fn force(&self, k: &JointKinematics, impact_velocity: f64) -> JointForce {
         let dry = self.dry.force(k, impact_velocity);
+        let (film, f_t) = self.film(k);
+        let (journal, bearing) = self.shear_moments(k, f_t);
         JointForce {
-            force: self.film_force(k) + dry.force,
+            force: film + dry.force,
+            moment: dry.moment + journal,
+            bearing_moment: dry.bearing_moment + bearing,
             ..dry
         }
     }
@@ -156,7 +318,7 @@ mod tests {
             length: 0.04,
             switch_eccentricity: 0.95,
             dry: DryContact {
-                stiffness: hertz_stiffness(0.010, 0.0095, 207e9, 0.3),
+                elastic: crate::joint::Elastic::Point(hertz_stiffness(0.010, 0.0095, 207e9, 0.3)),
                 clearance: 0.5e-3,
                 journal_radius: 0.0095,
                 restitution: 0.9,

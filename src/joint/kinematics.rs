@@ -65,9 +65,9 @@ pub fn normal_rate_error((px, py): (f64, f64), (ex, ey): (f64, f64)) -> f64 {
 pub struct JointForce {
     /// Force on the journal \[N\] (the bearing receives −force).
     pub force: Vector2<f64>,
-    /// Moment on the journal about its centre \[N m\] (friction only).
+    /// Moment on the journal about its centre \[N m\] (dry friction, film shear).
     pub moment: f64,
-    /// Moment on the bearing about its centre \[N m\] (friction only): the opposite friction
+    /// Moment on the bearing about its centre \[N m\] (dry friction, film shear): the opposite friction
     /// force acts at the bearing's radius R_b = R_j + c, so it is −(R_b/R_j) times `moment`.
     pub bearing_moment: f64,
     /// Elastic energy stored in the contact, K δ^2.5 / 2.5 \[J\].

@@ -17,7 +17,9 @@ pub mod parameters;
 pub mod role;
 
 pub use bearing::JournalBearing;
-pub use contact::{ContactLaw, DryContact, hertz_stiffness};
+pub use contact::{
+    ContactGeometry, ContactLaw, DryContact, Elastic, LineContact, hertz_stiffness,
+};
 pub use kinematics::{
     ContactState, Contacts, JointForce, JointKinematics, MIN_IMPACT_VELOCITY, normal_rate_error,
 };
@@ -41,7 +43,7 @@ impl Joint {
     /// The joint of the parameters `p` (validated beforehand).
     pub fn new(p: &JointParameters) -> Self {
         let dry = DryContact {
-            stiffness: p.contact_stiffness(),
+            elastic: p.elastic(),
             clearance: p.clearance,
             journal_radius: p.journal_radius,
             restitution: p.restitution,
@@ -75,7 +77,7 @@ impl Joint {
     /// turning at `omega_journal` and `omega_bearing`, receives the force `force` from the joint: its quasi-static equilibrium
     /// against a steady load (the settled start, docs/model.md §8).
     ///
-    /// Dry and frictionless in closed form, e = −(c + δ) F/|F| with K δ^1.5 = |F|; with friction
+    /// Dry and frictionless in closed form, e = −(c + δ) F/|F| with F_e(δ) = |F|; with friction
     /// or a film, Newton's method on F(e) = F in polar coordinates e = ρ (cos φ, sin φ) from that
     /// point (friction and film turn the force against e, so the angle is the natural unknown),
     /// with a difference Jacobian and steps halved until the residual falls. The ideal joint and
@@ -106,7 +108,7 @@ impl Joint {
             };
             self.force(&kinematics, MIN_IMPACT_VELOCITY).force - force
         };
-        let depth = crate::math::powf(magnitude / dry.stiffness, 2.0 / 3.0);
+        let depth = dry.elastic.penetration(magnitude);
         let (h_rho, h_phi) = (1e-7 * depth.max(1e-3 * dry.clearance), 1e-7);
         let newton = |mut x: (f64, f64)| {
             let mut r = residual(x);
@@ -158,6 +160,51 @@ impl Joint {
             Self::Lubricated(bearing) => bearing.force(k, impact_velocity),
         }
     }
+
+    /// What a bearing designer reads off the joint in a state ([`BearingState`]); all zeros for
+    /// the ideal joint, which has no clearance.
+    pub fn bearing_state(&self, k: &JointKinematics, impact_velocity: f64) -> BearingState {
+        let Some(dry) = self.dry_contact() else {
+            return BearingState::default();
+        };
+        let c = dry.clearance;
+        let eccentricity_ratio = k.e.norm() / c;
+        let force = self.force(k, impact_velocity);
+        let (film_pressure, film_loss) = match self {
+            Self::Lubricated(bearing) => (bearing.peak_pressure(k), bearing.film_loss(k)),
+            _ => (0.0, 0.0),
+        };
+        BearingState {
+            eccentricity_ratio,
+            film_thickness: film_thickness(c, eccentricity_ratio),
+            film_pressure,
+            friction_torque: force.moment,
+            friction_power: film_loss + dry.friction_power(k, impact_velocity),
+        }
+    }
+}
+
+/// The minimum gap c (1 − ε) between journal and bearing at the eccentricity ratio ε, 0 in
+/// metal contact (ε ≥ 1) \[m\].
+pub fn film_thickness(clearance: f64, eccentricity_ratio: f64) -> f64 {
+    (clearance * (1.0 - eccentricity_ratio)).max(0.0)
+}
+
+/// A joint as its designer reads it in one state (SI units).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct BearingState {
+    /// The eccentricity ratio ε = |e|/c (the actual one, not the film model's clamped value).
+    pub eccentricity_ratio: f64,
+    /// The minimum gap c (1 − ε), 0 in metal contact \[m\] ([`film_thickness`]).
+    pub film_thickness: f64,
+    /// The largest film pressure, at mid-length; 0 without a film \[Pa\]
+    /// ([`JournalBearing::peak_pressure`]).
+    pub film_pressure: f64,
+    /// The friction moment on the journal about its centre: dry friction and film shear \[N m\].
+    pub friction_torque: f64,
+    /// The rate at which the joint's friction dissipates energy, ≥ 0: the film's viscous loss
+    /// ([`JournalBearing::film_loss`]) and dry friction's −F_T v_T \[W\].
+    pub friction_power: f64,
 }
 
 #[cfg(test)]

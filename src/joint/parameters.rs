@@ -2,7 +2,7 @@
 //! from which the joint's law (`Joint`) is built: its model, geometry, material, friction and lubricant, and
 //! where its journal starts.
 
-use super::contact::{ContactLaw, hertz_stiffness};
+use super::contact::{ContactGeometry, ContactLaw, Elastic, LineContact, hertz_stiffness};
 
 /// Model of a revolute joint.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -42,6 +42,8 @@ pub struct JointParameters {
     pub restitution: f64,
     /// Hysteresis-damping law of the dry contact.
     pub contact_law: ContactLaw,
+    /// Geometry of the dry contact: point (Hertz) or cylinder (Johnson's line contact).
+    pub contact_geometry: ContactGeometry,
     /// Coulomb friction coefficient μ.
     pub friction: f64,
     /// Tangential speed below which friction vanishes v₀ \[m/s\].
@@ -72,6 +74,7 @@ impl JointParameters {
             poisson_ratio: 0.3,
             restitution: 0.9,
             contact_law: ContactLaw::LankaraniNikravesh,
+            contact_geometry: ContactGeometry::Point,
             friction: 0.0,
             friction_v0: 1e-4,
             friction_v1: 1e-3,
@@ -96,8 +99,22 @@ impl JointParameters {
         self.journal_radius + self.clearance
     }
 
+    /// The elastic law of the dry contact for its geometry: Hertz's point contact with
+    /// [`JointParameters::contact_stiffness`], or Johnson's line contact over the bearing length.
+    pub fn elastic(&self) -> Elastic {
+        match self.contact_geometry {
+            ContactGeometry::Point => Elastic::Point(self.contact_stiffness()),
+            ContactGeometry::Cylinder => Elastic::Cylinder(LineContact::new(
+                self.bearing_length,
+                self.clearance,
+                self.youngs_modulus,
+                self.poisson_ratio,
+            )),
+        }
+    }
+
     /// Hertz-type stiffness K \[N/m^1.5\] of the journal in its bearing
-    /// ([`hertz_stiffness`]).
+    /// ([`hertz_stiffness`]), the point contact's.
     pub fn contact_stiffness(&self) -> f64 {
         hertz_stiffness(
             self.bearing_radius(),

@@ -4,6 +4,7 @@ use faer::MatRef;
 
 use super::layout::CRANK_ANGLE;
 use super::slider_crank::SliderCrank;
+use crate::joint::JointRole;
 use crate::math;
 
 /// Energies of a state.
@@ -21,14 +22,35 @@ pub struct Energies {
     pub drive_work: f64,
     /// Work done by the joint forces (contact, friction, film) \[J\].
     pub joint_work: f64,
+    /// The work done by each joint's forces and the elastic energy stored in its contact, by
+    /// [`JointRole`] (zeros for an ideal joint) \[J\].
+    pub joints: [JointEnergy; 3],
     /// Work done by the external slider force \[J\].
     pub external_work: f64,
     /// Energy dissipated by the rod's material (strain-rate) damping \[J\].
     pub material_damping: f64,
 }
 
+/// The work of one joint's forces and its contact's stored energy.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct JointEnergy {
+    /// Work done by the joint's forces on journal and bearing \[J\].
+    pub work: f64,
+    /// Elastic energy stored in its contact \[J\].
+    pub contact: f64,
+}
+
+impl JointEnergy {
+    /// Energy the joint has dissipated: −W − stored contact energy (≥ 0 up to integration
+    /// error).
+    pub fn dissipated(&self) -> f64 {
+        -self.work - self.contact
+    }
+}
+
 impl Energies {
-    /// Energy lost in the joint: −W_joint − stored contact energy (≥ 0 up to integration error).
+    /// Energy lost in the joints: −W_joint − stored contact energy (≥ 0 up to integration
+    /// error), the sum of the joints' [`JointEnergy::dissipated`].
     pub fn dissipated(&self) -> f64 {
         -self.joint_work - self.contact
     }
@@ -92,13 +114,21 @@ impl SliderCrank {
         let l = self.layout;
         let p = &y[l.rod()];
         let rod_gravity: f64 = self.rod_gravity.iter().zip(p).map(|(g, x)| g * x).sum();
+        let joints = JointRole::ALL.map(|role| match self.joint_work[role as usize] {
+            Some(i) => JointEnergy {
+                work: y[i],
+                contact: self.joint_force(role, y).0.potential,
+            },
+            None => JointEnergy::default(),
+        });
         Energies {
             kinetic: self.kinetic_energy(y),
             strain: self.rod.strain_energy(p),
             contact: self.contact_potential(y),
             gravity: self.gravity_potential(y) - rod_gravity,
             drive_work: y[l.drive_work()],
-            joint_work: y[l.joint_work()],
+            joint_work: y[l.joint_works()].iter().sum(),
+            joints,
             external_work: y[l.external_work()],
             material_damping: y.get(l.material_damping()).copied().unwrap_or(0.0),
         }

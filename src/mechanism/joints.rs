@@ -17,7 +17,7 @@ use nalgebra::Vector2;
 
 use super::layout::{CRANK_ANGLE, PIN_A, pair};
 use super::slider_crank::SliderCrank;
-use crate::joint::{Joint, JointForce, JointKinematics, JointRole};
+use crate::joint::{BearingState, Joint, JointForce, JointKinematics, JointRole};
 use crate::math;
 use crate::reduction::RodEnd;
 
@@ -45,6 +45,13 @@ impl SliderCrank {
     /// Whether the joint `role` has a clearance (dry or lubricated).
     pub fn has_clearance(&self, role: JointRole) -> bool {
         !matches!(self.joint(role), Joint::Ideal)
+    }
+
+    /// Whether any joint is lubricated (has an oil film).
+    pub fn has_film(&self) -> bool {
+        self.joints
+            .iter()
+            .any(|joint| matches!(joint, Joint::Lubricated(_)))
     }
 
     /// The crank's reference point r_O and its velocity: the fixed pivot (at rest at the origin)
@@ -155,6 +162,31 @@ impl SliderCrank {
             power: kin.power(f),
             potential: f.potential,
         }
+    }
+
+    /// What a bearing designer reads off the joint `role` in state `y`
+    /// ([`crate::joint::Joint::bearing_state`]).
+    pub fn bearing_state(&self, role: JointRole, y: &[f64]) -> BearingState {
+        let kin = self.joint_kinematics(role, y);
+        self.joint(role)
+            .bearing_state(&kin, self.impact_velocity(role, &kin))
+    }
+
+    /// The eccentricity ratio ε = |e|/c and the film's peak pressure of each joint in state `y`,
+    /// by [`JointRole`] (zeros for an ideal joint, a zero pressure without a film): what the
+    /// film's peak-hold outputs follow between communication points.
+    pub fn film_extremes(&self, y: &[f64]) -> [(f64, f64); 3] {
+        JointRole::ALL.map(|role| match self.joint(role) {
+            Joint::Ideal => (0.0, 0.0),
+            Joint::Dry(dry) => (self.joint_kinematics(role, y).e.norm() / dry.clearance, 0.0),
+            Joint::Lubricated(bearing) => {
+                let kin = self.joint_kinematics(role, y);
+                (
+                    kin.e.norm() / bearing.dry.clearance,
+                    bearing.peak_pressure(&kin),
+                )
+            }
+        })
     }
 
     /// Elastic energy stored in the contacts of every clearance joint in state `y` \[J\].

@@ -1,12 +1,14 @@
 //! Where each quantity sits in the mechanism's state vector,
 //! ```text
-//! y = [θ, p, x_s, (r_G),  θ̇, ṗ, ẋ_s, (ṙ_G),  θ_d, W_drive, W_joint, W_external, (D_material)]
+//! y = [θ, p, x_s, (r_G),  θ̇, ṗ, ẋ_s, (ṙ_G),  θ_d, W_drive, W_joint…, W_external, (D_material)]
 //!      └─ n coordinates ─┘ └── n velocities ──┘
 //! ```
 //! with p the rod's coordinates, whose pin A position comes first and pin B position at the rod's
 //! end offset, and r_G = (x_G, y_G) the crank's centre of mass, a coordinate only when the crank
 //! is free in a clearance main bearing (a fixed pivot otherwise). Every index into a state goes
-//! through [`StateLayout`].
+//! through [`StateLayout`]. W_joint… is the work of the joint forces, one integral per clearance
+//! joint (from the ground to the slider), or a single one when at most one joint has a
+//! clearance.
 
 use std::ops::{Range, RangeFrom};
 
@@ -25,6 +27,8 @@ pub struct StateLayout {
     material_damping: bool,
     /// Whether the crank's centre of mass is a coordinate (a clearance main bearing).
     free_crank: bool,
+    /// Number of joint-work integrals (at least 1).
+    joint_works: usize,
 }
 
 /// Position of the crank angle θ.
@@ -39,14 +43,23 @@ pub fn pair(y: &[f64], at: usize) -> Vector2<f64> {
 
 impl StateLayout {
     /// The layout of a rod with `n_rod` coordinates whose pin B x is the rod coordinate `pin_b`,
-    /// and of a crank on a fixed pivot or, with `free_crank`, free in the main bearing.
-    pub fn new(n_rod: usize, pin_b: usize, material_damping: bool, free_crank: bool) -> Self {
+    /// of a crank on a fixed pivot or, with `free_crank`, free in the main bearing, and of
+    /// `clearance_joints` joints with a clearance (each with its own work integral when there
+    /// are several).
+    pub fn new(
+        n_rod: usize,
+        pin_b: usize,
+        material_damping: bool,
+        free_crank: bool,
+        clearance_joints: usize,
+    ) -> Self {
         Self {
             n: n_rod + 2 + 2 * usize::from(free_crank),
             n_rod,
             pin_b,
             material_damping,
             free_crank,
+            joint_works: clearance_joints.max(1),
         }
     }
 
@@ -55,9 +68,10 @@ impl StateLayout {
         self.n
     }
 
-    /// Length of the state vector: 2n + 4, plus 1 with material damping.
+    /// Length of the state vector: 2n + 3 + the joint-work integrals, plus 1 with material
+    /// damping.
     pub fn n_states(self) -> usize {
-        2 * self.n + 4 + usize::from(self.material_damping)
+        2 * self.n + 3 + self.joint_works + usize::from(self.material_damping)
     }
 
     /// The coordinates q.
@@ -130,19 +144,20 @@ impl StateLayout {
         2 * self.n + 1
     }
 
-    /// The work of the joint forces.
-    pub fn joint_work(self) -> usize {
-        2 * self.n + 2
+    /// The works of the joint forces: one per clearance joint, from the ground to the slider (a
+    /// single one with at most one clearance joint).
+    pub fn joint_works(self) -> Range<usize> {
+        2 * self.n + 2..2 * self.n + 2 + self.joint_works
     }
 
     /// The work of the external slider force.
     pub fn external_work(self) -> usize {
-        2 * self.n + 3
+        2 * self.n + 2 + self.joint_works
     }
 
     /// The energy dissipated by material damping (present only with material damping).
     pub fn material_damping(self) -> usize {
-        2 * self.n + 4
+        2 * self.n + 3 + self.joint_works
     }
 
     /// The work and energy integrals, every state after the drive angle.
@@ -158,13 +173,13 @@ mod tests {
     /// Every state has exactly one place: the named positions and ranges tile 0..len.
     #[test]
     fn positions_tile_the_state() {
-        for (n_rod, pin_b, damping, free) in [
-            (4, 2, false, false),
-            (20, 10, true, false),
-            (36, 32, false, true),
-            (12, 8, true, true),
+        for (n_rod, pin_b, damping, free, joints) in [
+            (4, 2, false, false, 1),
+            (20, 10, true, false, 0),
+            (36, 32, false, true, 3),
+            (12, 8, true, true, 2),
         ] {
-            let l = StateLayout::new(n_rod, pin_b, damping, free);
+            let l = StateLayout::new(n_rod, pin_b, damping, free, joints);
             let mut seen = vec![0; l.n_states()];
             let mut mark = |i: usize| seen[i] += 1;
             mark(CRANK_ANGLE);
@@ -182,10 +197,9 @@ mod tests {
             (l.drive_work()..l.n_states()).for_each(&mut mark);
             assert!(seen.iter().all(|&k| k == 1), "{seen:?}");
             assert_eq!(l.integrals().start, l.drive_work());
-            assert_eq!(
-                [l.joint_work(), l.external_work()],
-                [l.drive_work() + 1, l.drive_work() + 2]
-            );
+            assert_eq!(l.joint_works().start, l.drive_work() + 1);
+            assert_eq!(l.joint_works().len(), joints.max(1));
+            assert_eq!(l.external_work(), l.joint_works().end);
             assert_eq!(l.material_damping() < l.n_states(), damping);
             assert_eq!(l.rate_of(l.pin_b()), l.rod_rate(pin_b));
             assert_eq!(l.rod_coordinate(pin_b), l.pin_b());

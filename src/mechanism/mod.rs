@@ -36,7 +36,7 @@ mod slider_crank;
 mod start;
 
 pub use crate::joint::{ContactState, Contacts};
-pub use energy::Energies;
+pub use energy::{Energies, JointEnergy};
 pub use events::CONTACT_ONSET_PENETRATION;
 pub use inputs::{Input, InputSignal, Inputs};
 pub use layout::StateLayout;

@@ -76,6 +76,9 @@ pub struct SliderCrank {
     pub(super) rod_gravity: Vec<f64>,
     /// Where each quantity sits in the state vector.
     pub(super) layout: StateLayout,
+    /// The state position of each joint's work integral, by [`JointRole`] (none for an ideal
+    /// joint; [`StateLayout::joint_works`]).
+    pub(super) joint_work: [Option<usize>; 3],
     /// The inputs as functions of time.
     pub(super) signal: InputSignal,
     /// The inputs at the time of the last [`SliderCrank::set_time`].
@@ -134,6 +137,18 @@ impl SliderCrank {
                 w[(1 + i, 1 + j)] = rod_compliance[j * n_rod + pins[i]];
             }
         }
+        let clearance = p
+            .joints()
+            .map(|(_, joint)| joint.model != JointModel::Ideal);
+        let layout = StateLayout::new(
+            n_rod,
+            b,
+            rod.rigid_length().is_none() && p.rod.stiffness_damping > 0.0,
+            free_crank,
+            clearance.iter().filter(|&&c| c).count(),
+        );
+        let mut next_work = layout.joint_works();
+        let joint_work = clearance.map(|c| if c { next_work.next() } else { None });
         let active = Active {
             crank_pin: p.crank_pin.model == JointModel::Ideal,
             ideal_joint: p.joint.model == JointModel::Ideal,
@@ -143,12 +158,8 @@ impl SliderCrank {
         };
         Ok(Self {
             rod_gravity: rod.gravity_force(p.gravity_vector()),
-            layout: StateLayout::new(
-                n_rod,
-                b,
-                rod.rigid_length().is_none() && p.rod.stiffness_damping > 0.0,
-                free_crank,
-            ),
+            layout,
+            joint_work,
             joints: p.joints().map(|(_, joint)| Joint::new(joint)),
             drive: p.drive_mode,
             active,
@@ -423,13 +434,22 @@ impl SliderCrank {
             Some(k) => -lambda[k],
             None => torque_in,
         };
-        let (joint_force, mut joint_power, mut contact_potential) = match c.ideal_row {
+        let (joint_force, joint_power, mut contact_potential) = match c.ideal_row {
             Some(k) => (-Vector2::new(lambda[k], lambda[k + 1]), 0.0, 0.0),
             None => (joint.force, kin.power(&joint), joint.potential),
         };
         for load in crank_loads.iter().flatten() {
-            joint_power += load.power;
             contact_potential += load.potential;
+        }
+        dy[l.joint_works()].fill(0.0);
+        let [crank_pin_power, main_bearing_power] =
+            crank_loads.map(|load| load.map(|load| load.power));
+        // By role, from the ground to the slider.
+        let powers = [main_bearing_power, crank_pin_power, Some(joint_power)];
+        for (work, power) in self.joint_work.iter().zip(powers) {
+            if let (Some(i), Some(power)) = (work, power) {
+                dy[*i] = power;
+            }
         }
         dy[l.drive_angle()] = if self.active.speed_drive {
             self.inputs.drive_speed
@@ -437,7 +457,6 @@ impl SliderCrank {
             0.0
         };
         dy[l.drive_work()] = crank_torque * v[CRANK_ANGLE];
-        dy[l.joint_work()] = joint_power;
         dy[l.external_work()] = self.inputs.slider_force * v[l.slider()];
         if let Some(d) = dy.get_mut(l.material_damping()) {
             *d = damping_power;

@@ -4,7 +4,7 @@
 
 pub use fmi2_slave::codec::{ByteReader, ByteWriter, CodecError};
 
-use super::peaks::Peaks;
+use super::peaks::{Peaks, Sample};
 use super::step::StepPoint;
 use crate::integrator::Stats;
 use crate::mechanism::{ContactState, Contacts, InputSignal, Inputs};
@@ -52,13 +52,9 @@ impl WriteRecords for ByteWriter<'_> {
     }
     /// Writes peak values.
     fn peaks(&mut self, p: &Peaks) {
-        self.f64(p.joint_force);
-        self.f64(p.slider_acceleration);
-        self.f64(p.deformation_energy);
-        self.f64(p.crank_pin_force);
-        self.f64(p.main_bearing_force);
-        self.f64(p.guide_force);
-        self.f64(p.rod_stress);
+        for x in p.sample() {
+            self.f64(x);
+        }
         for onsets in p.contact_onsets {
             self.u64(onsets);
         }
@@ -120,16 +116,14 @@ impl ReadRecords for ByteReader<'_> {
     }
     /// Reads peak values.
     fn peaks(&mut self) -> Result<Peaks, CodecError> {
-        Ok(Peaks {
-            joint_force: self.f64()?,
-            slider_acceleration: self.f64()?,
-            deformation_energy: self.f64()?,
-            crank_pin_force: self.f64()?,
-            main_bearing_force: self.f64()?,
-            guide_force: self.f64()?,
-            rod_stress: self.f64()?,
-            contact_onsets: [self.u64()?, self.u64()?, self.u64()?],
-        })
+        let mut sample = Sample::default();
+        for x in &mut sample {
+            *x = self.f64()?;
+        }
+        Ok(Peaks::from_sample(
+            sample,
+            [self.u64()?, self.u64()?, self.u64()?],
+        ))
     }
     /// Reads an input signal.
     fn signal(&mut self) -> Result<InputSignal, CodecError> {

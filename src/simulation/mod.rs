@@ -425,17 +425,18 @@ impl Simulation {
         let onsets = JointRole::ALL
             .map(|role| u64::from(!self.contact_start[role].in_contact && end[role].in_contact));
         self.mechanism.set_time(self.end.time);
+        let film = self.mechanism.film_extremes(&self.end.y);
         let at_end = match self.mechanism.clearance_joint_load(&self.end.y) {
             Some((force, acceleration)) => {
                 let loads = self.mechanism.loads(&self.end.y, &self.end.f, force);
-                peaks::sample(force, acceleration, &loads)
+                peaks::sample(force, acceleration, &loads, film)
             }
             None => {
                 let ev = *self.mechanism.evaluate(&self.end.y, &mut self.scratch)?;
                 let loads = self
                     .mechanism
                     .loads(&self.end.y, &self.scratch, ev.joint_force);
-                peaks::sample(ev.joint_force, ev.slider_acceleration, &loads)
+                peaks::sample(ev.joint_force, ev.slider_acceleration, &loads, film)
             }
         };
         let step = AcceptedStep {

@@ -25,6 +25,11 @@ pub struct Peaks {
     pub guide_force: f64,
     /// Largest rod stress \[Pa\].
     pub rod_stress: f64,
+    /// Largest eccentricity ratio ε = |e|/c at each joint (the smallest film thickness
+    /// c (1 − ε)), by [`crate::joint::JointRole`].
+    pub eccentricity_ratio: [f64; 3],
+    /// Largest film pressure at each joint \[Pa\].
+    pub film_pressure: [f64; 3],
     /// Number of contact onsets at each joint.
     pub contact_onsets: Onsets,
 }
@@ -32,8 +37,14 @@ pub struct Peaks {
 /// Contact onsets at each joint, indexed by [`crate::joint::JointRole`].
 pub type Onsets = [u64; 3];
 
-/// Number of peak-held quantities.
-const SERIES: usize = 7;
+/// Number of peak-held quantities: seven loads, then each joint's eccentricity ratio and film
+/// pressure (by role).
+const SERIES: usize = 13;
+
+/// Position in a [`Sample`] of the main bearing's eccentricity ratio (the other joints follow in
+/// role order), and of its film pressure.
+const ECCENTRICITY_RATIO: usize = 7;
+const FILM_PRESSURE: usize = 10;
 
 /// Positions in a [`Sample`] of the quantities whose peaks inside a step are refined always (the
 /// joint force, the slider acceleration, the deformation energy), and of the crank pin's and the
@@ -66,6 +77,7 @@ impl Peaks {
             main_bearing_force,
             guide_force,
             rod_stress,
+            ..,
         ] = sample;
         Self {
             joint_force,
@@ -75,12 +87,16 @@ impl Peaks {
             main_bearing_force,
             guide_force,
             rod_stress,
+            eccentricity_ratio: std::array::from_fn(|i| sample[ECCENTRICITY_RATIO + i]),
+            film_pressure: std::array::from_fn(|i| sample[FILM_PRESSURE + i]),
             contact_onsets,
         }
     }
 
     /// The extremes as a sample (see [`Peaks::from_sample`]).
-    fn sample(&self) -> Sample {
+    pub(super) fn sample(&self) -> Sample {
+        let [e0, e1, e2] = self.eccentricity_ratio;
+        let [p0, p1, p2] = self.film_pressure;
         [
             self.joint_force,
             self.slider_acceleration,
@@ -89,13 +105,26 @@ impl Peaks {
             self.main_bearing_force,
             self.guide_force,
             self.rod_stress,
+            e0,
+            e1,
+            e2,
+            p0,
+            p1,
+            p2,
         ]
     }
 }
 
 /// The peak-held magnitudes of one instant: the joint force on the journal, the slider
-/// acceleration and the loads.
-pub(super) fn sample(joint_force: Vector2<f64>, slider_acceleration: f64, loads: &Loads) -> Sample {
+/// acceleration, the loads, and each joint's eccentricity ratio and film pressure
+/// ([`SliderCrank::film_extremes`]).
+pub(super) fn sample(
+    joint_force: Vector2<f64>,
+    slider_acceleration: f64,
+    loads: &Loads,
+    film: [(f64, f64); 3],
+) -> Sample {
+    let [(e0, p0), (e1, p1), (e2, p2)] = film;
     [
         joint_force.norm(),
         slider_acceleration.abs(),
@@ -104,6 +133,12 @@ pub(super) fn sample(joint_force: Vector2<f64>, slider_acceleration: f64, loads:
         loads.main_bearing.norm(),
         loads.guide.abs(),
         loads.stress,
+        e0,
+        e1,
+        e2,
+        p0,
+        p1,
+        p2,
     ]
 }
 
@@ -146,11 +181,18 @@ pub struct PeakHold {
     pub pending: bool,
     /// Contact onsets up to the current time.
     pub total_onsets: Onsets,
+    /// The extremes since the start, of every accepted step taken into an interval (the film's
+    /// are output; the value at the current time is added when the outputs are read).
+    pub since_start: Peaks,
 }
 
 impl PeakHold {
     /// Moves the last step end's extremes into the current interval.
     pub(super) fn take_step_end(&mut self) {
+        self.since_start.absorb(&Peaks {
+            contact_onsets: [0; 3],
+            ..self.step_end
+        });
         self.interval.absorb(&self.step_end);
         for (total, onsets) in self
             .total_onsets
@@ -196,7 +238,7 @@ pub(super) fn within_step(
     acceleration: &mut [f64],
 ) -> Sample {
     let end_contact = mechanism.contact_state();
-    if !(step.contact_start.any() || end_contact.any()) {
+    if !(step.contact_start.any() || end_contact.any() || mechanism.has_film()) {
         return [0.0; SERIES];
     }
     // The contact state the step was integrated with (an onset inside it is latched at its end).
@@ -263,11 +305,15 @@ fn load_within(
     let (y0, f0, y1, f1) = (&start.y, &start.f, &end.y, &end.f);
     dense::interpolate(n_q, h, y0, f0, y1, f1, theta, sample);
     dense::acceleration(n_q, h, y0, f0, y1, f1, theta, acceleration);
+    if mechanism.has_film() {
+        dense::cubic_velocities(n_q, h, y0, y1, theta, sample);
+    }
     let (force, slider_acceleration) = mechanism
         .clearance_joint_load(sample)
         .unwrap_or((Vector2::zeros(), 0.0));
     let loads = mechanism.loads(sample, acceleration, force);
-    self::sample(force, slider_acceleration, &loads)
+    let film = mechanism.film_extremes(sample);
+    self::sample(force, slider_acceleration, &loads, film)
 }
 #[cfg(test)]
 mod tests {

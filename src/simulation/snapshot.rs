@@ -92,6 +92,7 @@ impl Snapshot {
         for total in self.peaks.total_onsets {
             w.u64(total);
         }
+        w.peaks(&self.peaks.since_start);
         w.u64(self.warnings);
     }
 
@@ -146,6 +147,7 @@ impl Snapshot {
                 step_end: r.peaks()?,
                 pending: r.flag()?,
                 total_onsets: [r.u64()?, r.u64()?, r.u64()?],
+                since_start: r.peaks()?,
             },
             warnings: r.u64()?,
         })
