@@ -28,6 +28,7 @@ pub const DESCRIPTION: Description<Vr> = Description {
         ("rad/s", "rpm", 60.0 / core::f64::consts::TAU),
         ("rad", "deg", 180.0 / core::f64::consts::PI),
         ("m", "mm", 1e3),
+        ("m", "um", 1e6),
         ("N", "kN", 1e-3),
         ("Pa", "MPa", 1e-6),
     ],
@@ -74,6 +75,21 @@ pub const DESCRIPTION: Description<Vr> = Description {
         (Vr::MainBearingEccentricityX, "mm"),
         (Vr::MainBearingEccentricityY, "mm"),
         (Vr::MainBearingPenetration, "mm"),
+        (Vr::JointFilmThickness, "um"),
+        (Vr::JointFilmThicknessMin, "um"),
+        (Vr::JointFilmThicknessMinSinceStart, "um"),
+        (Vr::JointFilmPressurePeak, "MPa"),
+        (Vr::JointFilmPressurePeakSinceStart, "MPa"),
+        (Vr::CrankPinFilmThickness, "um"),
+        (Vr::CrankPinFilmThicknessMin, "um"),
+        (Vr::CrankPinFilmThicknessMinSinceStart, "um"),
+        (Vr::CrankPinFilmPressurePeak, "MPa"),
+        (Vr::CrankPinFilmPressurePeakSinceStart, "MPa"),
+        (Vr::MainBearingFilmThickness, "um"),
+        (Vr::MainBearingFilmThicknessMin, "um"),
+        (Vr::MainBearingFilmThicknessMinSinceStart, "um"),
+        (Vr::MainBearingFilmPressurePeak, "MPa"),
+        (Vr::MainBearingFilmPressurePeakSinceStart, "MPa"),
     ],
     enumerations: ENUMERATIONS,
     log_categories: LOG_CATEGORIES,
@@ -204,6 +220,19 @@ pub const ENUMERATIONS: &[Enumeration] = &[
             ),
         ],
     },
+    Enumeration {
+        name: "ContactGeometry",
+        items: &[
+            (
+                "point",
+                "Hertz point contact, K penetration^1.5 (the benchmarks' law)",
+            ),
+            (
+                "cylinder",
+                "Johnson's line contact of the pin along bearingLength: a long pin sinks much less",
+            ),
+        ],
+    },
 ];
 
 /// Units: name and SI base-unit exponents (kg, m, s, A, rad), or None where FMI 2's integer
@@ -223,6 +252,7 @@ pub const UNITS: &[(&str, Option<[i32; 5]>)] = &[
     ("N", Some([1, 1, -2, 0, 0])),
     ("N.m", Some([1, 2, -2, 0, 0])),
     ("J", Some([1, 2, -2, 0, 0])),
+    ("W", Some([1, 2, -3, 0, 0])),
     ("rad", Some([0, 0, 0, 0, 1])),
     ("rad/s", Some([0, 0, -1, 0, 1])),
     ("1", Some([0, 0, 0, 0, 0])),
@@ -475,6 +505,36 @@ pub enum Vr {
     MainBearingContactOnsetsTotal,
     MainBearingInitialState,
     RodQuadrature,
+    JointContactGeometry,
+    JointEccentricityRatio,
+    JointFilmThickness,
+    JointFilmThicknessMin,
+    JointFilmThicknessMinSinceStart,
+    JointFilmPressurePeak,
+    JointFilmPressurePeakSinceStart,
+    JointFrictionTorque,
+    JointFrictionPower,
+    JointEnergyDissipated,
+    CrankPinContactGeometry,
+    CrankPinEccentricityRatio,
+    CrankPinFilmThickness,
+    CrankPinFilmThicknessMin,
+    CrankPinFilmThicknessMinSinceStart,
+    CrankPinFilmPressurePeak,
+    CrankPinFilmPressurePeakSinceStart,
+    CrankPinFrictionTorque,
+    CrankPinFrictionPower,
+    CrankPinEnergyDissipated,
+    MainBearingContactGeometry,
+    MainBearingEccentricityRatio,
+    MainBearingFilmThickness,
+    MainBearingFilmThicknessMin,
+    MainBearingFilmThicknessMinSinceStart,
+    MainBearingFilmPressurePeak,
+    MainBearingFilmPressurePeakSinceStart,
+    MainBearingFrictionTorque,
+    MainBearingFrictionPower,
+    MainBearingEnergyDissipated,
 }
 
 /// 5000 rpm in rad/s (benchmark B); the same expression as `params::BENCHMARK_SPEED`.
@@ -700,38 +760,33 @@ macro_rules! joint_rows {
 /// There is no `time` variable: FMI 2.0 makes the independent variable optional, and FMIL (used by
 /// the FMU Compliance Checker and libcosim) reports an independent variable without `start` as a
 /// parse error although the standard forbids `start` there.
-pub const VARIABLES: &[Variable] = &concat::<N_VARIABLES>(
+pub const VARIABLES: &[Variable] = &concat::<N_VARIABLES>(&[
     BASE_VARIABLES,
-    [&CRANK_PIN_VARIABLES, &MAIN_BEARING_VARIABLES],
-    LATER_VARIABLES,
-);
+    &CRANK_PIN_VARIABLES,
+    &MAIN_BEARING_VARIABLES,
+    &[ROD_QUADRATURE],
+    &JOINT_BEARING_VARIABLES,
+    &CRANK_PIN_BEARING_VARIABLES,
+    &MAIN_BEARING_BEARING_VARIABLES,
+]);
 
 /// Number of variables.
-const N_VARIABLES: usize = BASE_VARIABLES.len() + 2 * JOINT_ROWS + LATER_VARIABLES.len();
+const N_VARIABLES: usize = BASE_VARIABLES.len() + 2 * JOINT_ROWS + 1 + 3 * BEARING_ROWS;
 
-/// `base`, the rows of each joint in `joints`, then `later`, as one array of `N` rows.
-const fn concat<const N: usize>(
-    base: &[Variable],
-    joints: [&[Variable; JOINT_ROWS]; 2],
-    later: &[Variable],
-) -> [Variable; N] {
-    let mut out = [base[0]; N];
-    let mut i = 0;
-    while i < base.len() {
-        out[i] = base[i];
-        i += 1;
+/// The rows of `parts`, one after the other, as one array of `N` rows.
+const fn concat<const N: usize>(parts: &[&[Variable]]) -> [Variable; N] {
+    let mut out = [parts[0][0]; N];
+    let (mut i, mut part) = (0, 0);
+    while part < parts.len() {
+        let mut row = 0;
+        while row < parts[part].len() {
+            out[i] = parts[part][row];
+            i += 1;
+            row += 1;
+        }
+        part += 1;
     }
-    let mut j = 0;
-    while j < JOINT_ROWS * joints.len() {
-        out[i + j] = joints[j / JOINT_ROWS][j % JOINT_ROWS];
-        j += 1;
-    }
-    i += j;
-    let mut k = 0;
-    while k < later.len() {
-        out[i + k] = later[k];
-        k += 1;
-    }
+    assert!(i == N, "N_VARIABLES must count every row");
     out
 }
 
@@ -1013,7 +1068,7 @@ const BASE_VARIABLES: &[Variable] = &[
             max: f64::INFINITY,
             unit: "N/m1.5",
         },
-        description: "Hertz contact stiffness 4/(3(s_i+s_j)) sqrt(Ri Rj/(Ri-Rj)), s = (1-nu^2)/E",
+        description: "Hertz point-contact stiffness 4/(3(s_i+s_j)) sqrt(Ri Rj/(Ri-Rj)), s = (1-nu^2)/E, of the rod-slider joint (joint.contactGeometry = point; the line contact has no single stiffness: its force is Johnson's law of joint.bearingLength and E/(2(1-nu^2)))",
     },
     Variable::input(
         Vr::DriveSpeed,
@@ -1145,7 +1200,7 @@ const BASE_VARIABLES: &[Variable] = &[
         Vr::EnergyDissipated,
         "energy.dissipated",
         "J",
-        "Energy dissipated in the joint",
+        "Energy dissipated in the joints: the sum of joint, crankPin and mainBearing.energyDissipated",
     ),
     Variable::count(
         Vr::SolverSteps,
@@ -1219,7 +1274,7 @@ const BASE_VARIABLES: &[Variable] = &[
         Vr::EnergyContact,
         "energy.contact",
         "J",
-        "Elastic energy stored in the joint contact, K penetration^2.5 / 2.5",
+        "Elastic energy stored in the joints' contacts (K penetration^2.5 / 2.5 for the point contact; the integral of the line contact's force)",
     ),
     Variable::output(
         Vr::EnergyGravity,
@@ -1251,7 +1306,7 @@ const BASE_VARIABLES: &[Variable] = &[
     Variable::count(
         Vr::SolverWarnings,
         "solver.warnings",
-        "Warnings raised since the start, also without logging: the model left the domain its laws were made for (penetration, deflection, crank speed, stroke), a parameter outside a law's range, a crank speed that jumps to drive.speed at the first step; the logger gives each message",
+        "Warnings raised since the start, also without logging: the model left the domain its laws were made for (penetration, deflection, crank speed, stroke, the line contact's range), a parameter outside a law's range, a crank speed that jumps to drive.speed at the first step, a lubricated joint's force peak inside a step that the interpolant decides; the logger gives each message",
     ),
     Variable::peak(
         Vr::RodDeformationEnergyPeak,
@@ -1379,14 +1434,14 @@ const BASE_VARIABLES: &[Variable] = &[
     ),
 ];
 
-/// The variables after both joints' rows, in value-reference order.
-const LATER_VARIABLES: &[Variable] = &[Variable::enumeration(
+/// The Craig–Bampton rod's quadrature switch, after both joints' rows.
+const ROD_QUADRATURE: Variable = Variable::enumeration(
     Vr::RodQuadrature,
     "rod.quadrature",
     1,
     8,
     "How the Craig-Bampton rod integrates its internal forces and strain energy (sampled: rod.nModes at most 8)",
-)];
+);
 
 /// Number of rows of a revolute clearance joint besides the rod–slider joint ([`joint_rows`]).
 const JOINT_ROWS: usize = 20;
@@ -1454,5 +1509,186 @@ const MAIN_BEARING_VARIABLES: [Variable; JOINT_ROWS] = joint_rows!(
         MainBearingContactOnsets,
         MainBearingContactOnsetsTotal,
         MainBearingInitialState,
+    ]
+);
+
+/// Number of rows of a joint's bearing-design variables ([`bearing_rows`]).
+const BEARING_ROWS: usize = 10;
+
+/// What a bearing designer reads off a revolute joint, the same for every joint: the geometry of
+/// its dry contact and the outputs of its oil film, gap, friction and dissipation. Arguments: the
+/// variable-name prefix, its name starting a description, the journal, and the 10 value
+/// references in the order of the rows.
+macro_rules! bearing_rows {
+    (
+        $prefix:literal,
+        $label:literal,
+        $journal:literal,
+        [
+            $geometry:ident,
+            $ratio:ident,
+            $thickness:ident,
+            $thickness_min:ident,
+            $thickness_min_start:ident,
+            $pressure:ident,
+            $pressure_start:ident,
+            $torque:ident,
+            $power:ident,
+            $dissipated:ident $(,)?
+        ]
+    ) => {
+        [
+            Variable::enumeration(
+                Vr::$geometry,
+                concat!($prefix, ".contactGeometry"),
+                1,
+                9,
+                concat!(
+                    $label,
+                    ": geometry of the dry contact's elastic law (point: Hertz; cylinder: Johnson's line contact over ",
+                    $prefix,
+                    ".bearingLength); the hysteresis damping, contact energy and settled start follow it"
+                ),
+            ),
+            Variable::output(
+                Vr::$ratio,
+                concat!($prefix, ".eccentricityRatio"),
+                "1",
+                concat!(
+                    $label,
+                    ": eccentricity ratio |e|/c, the actual one (above 1 in metal contact); 0 for the ideal joint"
+                ),
+            ),
+            Variable::output(
+                Vr::$thickness,
+                concat!($prefix, ".filmThickness"),
+                "m",
+                concat!(
+                    $label,
+                    ": minimum oil-film thickness (gap between ",
+                    $journal,
+                    " and bearing) c (1 - |e|/c); 0 in metal contact (see ",
+                    $prefix,
+                    ".penetration) and for the ideal joint"
+                ),
+            ),
+            Variable::peak(
+                Vr::$thickness_min,
+                concat!($prefix, ".filmThicknessMin"),
+                "m",
+                concat!(
+                    "Smallest ",
+                    $prefix,
+                    ".filmThickness over the last communication interval (every internal step's end, and within the steps in contact or with a film)"
+                ),
+            ),
+            Variable::peak(
+                Vr::$thickness_min_start,
+                concat!($prefix, ".filmThicknessMinSinceStart"),
+                "m",
+                concat!("Smallest ", $prefix, ".filmThickness since the start"),
+            ),
+            Variable::peak(
+                Vr::$pressure,
+                concat!($prefix, ".filmPressurePeak"),
+                "Pa",
+                concat!(
+                    $label,
+                    ": largest oil-film pressure over the last communication interval, at mid-length (short-bearing field; every internal step); 0 without a film (dry and ideal joints)"
+                ),
+            ),
+            Variable::peak(
+                Vr::$pressure_start,
+                concat!($prefix, ".filmPressurePeakSinceStart"),
+                "Pa",
+                concat!("Largest ", $prefix, ".filmPressurePeak since the start"),
+            ),
+            Variable::output(
+                Vr::$torque,
+                concat!($prefix, ".frictionTorque"),
+                "N.m",
+                concat!(
+                    $label,
+                    ": friction moment on the ",
+                    $journal,
+                    " about its centre, CCW positive (dry friction and the film's shear); 0 for the ideal joint"
+                ),
+            ),
+            Variable::output(
+                Vr::$power,
+                concat!($prefix, ".frictionPower"),
+                "W",
+                concat!(
+                    $label,
+                    ": rate at which the joint's friction dissipates energy, >= 0 (the oil film's viscous loss in shear and squeeze; dry friction -F_T v_T); 0 for the ideal joint"
+                ),
+            ),
+            Variable::output(
+                Vr::$dissipated,
+                concat!($prefix, ".energyDissipated"),
+                "J",
+                concat!(
+                    $label,
+                    ": energy dissipated in the joint since the start (friction, contact hysteresis, film); the three joints' sum to energy.dissipated; 0 for the ideal joint"
+                ),
+            ),
+        ]
+    };
+}
+
+/// The rod–slider joint's bearing-design variables.
+const JOINT_BEARING_VARIABLES: [Variable; BEARING_ROWS] = bearing_rows!(
+    "joint",
+    "Rod-slider joint",
+    "rod's pin",
+    [
+        JointContactGeometry,
+        JointEccentricityRatio,
+        JointFilmThickness,
+        JointFilmThicknessMin,
+        JointFilmThicknessMinSinceStart,
+        JointFilmPressurePeak,
+        JointFilmPressurePeakSinceStart,
+        JointFrictionTorque,
+        JointFrictionPower,
+        JointEnergyDissipated,
+    ]
+);
+
+/// The crank pin's bearing-design variables.
+const CRANK_PIN_BEARING_VARIABLES: [Variable; BEARING_ROWS] = bearing_rows!(
+    "crankPin",
+    "Crank pin",
+    "crank pin",
+    [
+        CrankPinContactGeometry,
+        CrankPinEccentricityRatio,
+        CrankPinFilmThickness,
+        CrankPinFilmThicknessMin,
+        CrankPinFilmThicknessMinSinceStart,
+        CrankPinFilmPressurePeak,
+        CrankPinFilmPressurePeakSinceStart,
+        CrankPinFrictionTorque,
+        CrankPinFrictionPower,
+        CrankPinEnergyDissipated,
+    ]
+);
+
+/// The main bearing's bearing-design variables.
+const MAIN_BEARING_BEARING_VARIABLES: [Variable; BEARING_ROWS] = bearing_rows!(
+    "mainBearing",
+    "Main bearing",
+    "crank journal",
+    [
+        MainBearingContactGeometry,
+        MainBearingEccentricityRatio,
+        MainBearingFilmThickness,
+        MainBearingFilmThicknessMin,
+        MainBearingFilmThicknessMinSinceStart,
+        MainBearingFilmPressurePeak,
+        MainBearingFilmPressurePeakSinceStart,
+        MainBearingFrictionTorque,
+        MainBearingFrictionPower,
+        MainBearingEnergyDissipated,
     ]
 );

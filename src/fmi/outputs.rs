@@ -4,7 +4,7 @@
 use fmi2_slave::FmuError;
 use fmi2_slave::model::Var;
 
-use crate::simulation::{Input, Outputs, Simulation};
+use crate::simulation::{BearingOutputs, Input, Outputs, Simulation};
 use crate::variables::Vr;
 
 /// Relative size of the input steps of [`sensitivity`].
@@ -111,8 +111,72 @@ pub fn real_output(o: &Outputs, vr: Vr) -> Option<f64> {
         Vr::RodStressPeak => o.rod_stress_peak,
         Vr::RodAxialForceCrankPin => o.rod_axial_force_crank_pin,
         Vr::RodAxialForceSliderPin => o.rod_axial_force_slider_pin,
-        _ => return None,
+        _ => return bearing_output(o, vr),
     })
+}
+
+/// Each joint's bearing-design outputs, by [`JointRole`], in the order of
+/// [`bearing_values`].
+const BEARING_OUTPUTS: [[Vr; 9]; 3] = [
+    [
+        Vr::MainBearingEccentricityRatio,
+        Vr::MainBearingFilmThickness,
+        Vr::MainBearingFilmThicknessMin,
+        Vr::MainBearingFilmThicknessMinSinceStart,
+        Vr::MainBearingFilmPressurePeak,
+        Vr::MainBearingFilmPressurePeakSinceStart,
+        Vr::MainBearingFrictionTorque,
+        Vr::MainBearingFrictionPower,
+        Vr::MainBearingEnergyDissipated,
+    ],
+    [
+        Vr::CrankPinEccentricityRatio,
+        Vr::CrankPinFilmThickness,
+        Vr::CrankPinFilmThicknessMin,
+        Vr::CrankPinFilmThicknessMinSinceStart,
+        Vr::CrankPinFilmPressurePeak,
+        Vr::CrankPinFilmPressurePeakSinceStart,
+        Vr::CrankPinFrictionTorque,
+        Vr::CrankPinFrictionPower,
+        Vr::CrankPinEnergyDissipated,
+    ],
+    [
+        Vr::JointEccentricityRatio,
+        Vr::JointFilmThickness,
+        Vr::JointFilmThicknessMin,
+        Vr::JointFilmThicknessMinSinceStart,
+        Vr::JointFilmPressurePeak,
+        Vr::JointFilmPressurePeakSinceStart,
+        Vr::JointFrictionTorque,
+        Vr::JointFrictionPower,
+        Vr::JointEnergyDissipated,
+    ],
+];
+
+/// A joint's bearing-design outputs in the order of a row of [`BEARING_OUTPUTS`].
+fn bearing_values(b: &BearingOutputs) -> [f64; 9] {
+    [
+        b.eccentricity_ratio,
+        b.film_thickness,
+        b.film_thickness_min,
+        b.film_thickness_min_since_start,
+        b.film_pressure_peak,
+        b.film_pressure_peak_since_start,
+        b.friction_torque,
+        b.friction_power,
+        b.energy_dissipated,
+    ]
+}
+
+/// The value of a joint's bearing-design output, None for other variables.
+fn bearing_output(o: &Outputs, vr: Vr) -> Option<f64> {
+    BEARING_OUTPUTS
+        .iter()
+        .zip(&o.bearings)
+        .find_map(|(vrs, b)| {
+            let k = vrs.iter().position(|&v| v == vr)?;
+            Some(bearing_values(b)[k])
+        })
 }
 
 /// The value of a count output (an Integer computed from the outputs), None for other variables.

@@ -222,7 +222,10 @@ impl JournalBearing {
         } = field;
         let shape = |phi: f64| {
             let (sin_phi, cos_phi) = math::sin_cos(phi);
-            let (sin, cos) = (sin1 * cos_phi + cos1 * sin_phi, cos1 * cos_phi - sin1 * sin_phi);
+            let (sin, cos) = (
+                sin1 * cos_phi + cos1 * sin_phi,
+                cos1 * cos_phi - sin1 * sin_phi,
+            );
             (sin_phi, cos_phi, sin, cos)
         };
         let rule = film_rule();
@@ -449,6 +452,109 @@ mod tests {
             omega_bearing: 0.0,
         };
         assert!(b.film_force(&k).y < 0.0);
+    }
+
+    /// Petroff: a lightly loaded journal (ε = 0.01) turning at 300 rad/s in a bearing turning at
+    /// −20 rad/s has the friction moment −2π μ R³ L (ω_J − ω_B)/c on it (3 %; the film's own
+    /// terms add 0.005 %), the bearing the opposite, and the film's loss is the moment times the
+    /// relative speed.
+    #[test]
+    fn a_lightly_loaded_journal_has_petroffs_torque() {
+        let b = bearing();
+        let (c, r, mu, l) = (b.dry.clearance, b.dry.journal_radius, b.viscosity, b.length);
+        let k = JointKinematics {
+            e: Vector2::new(0.01 * c, 0.0),
+            e_dot: Vector2::zeros(),
+            omega_journal: 300.0,
+            omega_bearing: -20.0,
+        };
+        let petroff = std::f64::consts::TAU * mu * r * r * r * l * 320.0 / c;
+        let f = b.force(&k, 1.0);
+        assert!(
+            (f.moment + petroff).abs() < 0.03 * petroff,
+            "{} vs {petroff}",
+            f.moment
+        );
+        assert!((f.bearing_moment - petroff).abs() < 0.03 * petroff);
+        let loss = b.film_loss(&k);
+        assert!(
+            (loss - petroff * 320.0).abs() < 0.03 * petroff * 320.0,
+            "{loss}"
+        );
+    }
+
+    /// The steady short bearing's peak pressure at mid-length (ε̇ = 0, wedge speed w):
+    /// p_max = 3μ|w|/c² · L²/4 · ε sin θ*/(1 + ε cos θ*)³, cos θ* = (1 − √(1 + 24ε²))/(4ε),
+    /// for ε from 0.1 to 0.95 and both senses of rotation (1e-9; 3 % asked).
+    #[test]
+    fn the_steady_peak_pressure_is_the_short_bearings() {
+        let b = bearing();
+        let (c, mu, l) = (b.dry.clearance, b.viscosity, b.length);
+        for eps in [0.1f64, 0.4, 0.8, 0.95] {
+            for w in [250.0f64, -90.0] {
+                let k = JointKinematics {
+                    e: Vector2::new(0.0, eps * c),
+                    e_dot: Vector2::zeros(),
+                    omega_journal: w,
+                    omega_bearing: 0.0,
+                };
+                let cos = (1.0 - (1.0 + 24.0 * eps * eps).sqrt()) / (4.0 * eps);
+                let sin = (1.0 - cos * cos).sqrt();
+                let expected = 3.0 * mu * w.abs() / (c * c) * l * l / 4.0 * eps * sin
+                    / (1.0 + eps * cos).powi(3);
+                let p = b.peak_pressure(&k);
+                assert!(
+                    (p - expected).abs() <= 1e-9 * expected,
+                    "ε = {eps}, w = {w}: {p} vs {expected}"
+                );
+            }
+        }
+    }
+
+    /// The film transmits no net moment (M_J + M_B + |e| F_t = 0) and never adds energy, also in
+    /// a whirl: for journals whirling, squeezing and turning in every combination below ε_b, its
+    /// power on journal and bearing F·ė + M_J ω_J + M_B ω_B is −film_loss (1e-9), ≤ 0. In a
+    /// whirl slower than half the journal's speed (oil whirl) the force alone does positive work.
+    #[test]
+    fn the_film_transmits_no_moment_and_dissipates() {
+        let b = bearing();
+        let c = b.dry.clearance;
+        let mut force_alone_adds = false;
+        for eps in [0.2f64, 0.6, 0.9] {
+            for (radial, whirl) in [
+                (0.0, 0.0),
+                (0.3, 0.0),
+                (-0.2, 150.0),
+                (0.05, -80.0),
+                (0.0, 60.0),
+            ] {
+                for (omega_journal, omega_bearing) in [(200.0, 0.0), (200.0, 60.0), (-50.0, 0.0)] {
+                    let (sin, cos) = math::sin_cos(0.7);
+                    let n = Vector2::new(cos, sin);
+                    let t = Vector2::new(-sin, cos);
+                    let e = eps * c * n;
+                    let k = JointKinematics {
+                        e,
+                        e_dot: radial * c * 100.0 * n + eps * c * whirl * t,
+                        omega_journal,
+                        omega_bearing,
+                    };
+                    let f = b.force(&k, 1.0);
+                    let f_t = f.force.dot(&t);
+                    let couple = f.moment + f.bearing_moment + e.norm() * f_t;
+                    assert!(couple.abs() < 1e-12 * f.moment.abs().max(1e-9), "{couple}");
+                    let power = k.power(&f);
+                    let loss = b.film_loss(&k);
+                    assert!(
+                        (power + loss).abs() <= 1e-9 * loss,
+                        "ε {eps}, ė ({radial}, {whirl}), ω ({omega_journal}, {omega_bearing}): \
+                         {power} vs −{loss}"
+                    );
+                    force_alone_adds |= f.force.dot(&k.e_dot) > 0.0;
+                }
+            }
+        }
+        assert!(force_alone_adds);
     }
 
     /// The force is continuous across the switch ratio ε_b and across metal contact (δ = 0).

@@ -479,19 +479,29 @@ mod tests {
         for f in [1.0, 100.0, 4.4e3, 0.5 * force_lim, 0.999 * force_lim] {
             let d = johnson(f);
             assert!((line.penetration(f) - d).abs() <= 1e-12 * d, "{f} N");
-            assert!((line.force(d) - f).abs() <= 1e-12 * f, "{f} N: {}", line.force(d));
+            assert!(
+                (line.force(d) - f).abs() <= 1e-12 * f,
+                "{f} N: {}",
+                line.force(d)
+            );
         }
         for d in [1e-7, 1e-6, 5e-6, 0.99 * delta_lim, 1.2 * delta_lim] {
             let h = 1e-6 * d;
             let slope = (line.energy(d + h) - line.energy(d - h)) / (2.0 * h);
-            assert!((slope - line.force(d)).abs() < 1e-6 * line.force(d), "{d:e}");
+            assert!(
+                (slope - line.force(d)).abs() < 1e-6 * line.force(d),
+                "{d:e}"
+            );
         }
         let below = |d: f64| line.force(delta_lim * (1.0 - d));
         let above = |d: f64| line.force(delta_lim * (1.0 + d));
         assert!((below(1e-12) - above(1e-12)).abs() < 1e-6 * force_lim);
         let stiffness = |f: &dyn Fn(f64) -> f64| (f(1e-6) - f(2e-6)) / (1e-6 * delta_lim);
         let (inside, beyond) = (stiffness(&below), -stiffness(&above));
-        assert!((inside - beyond).abs() < 1e-3 * beyond, "{inside} vs {beyond}");
+        assert!(
+            (inside - beyond).abs() < 1e-3 * beyond,
+            "{inside} vs {beyond}"
+        );
     }
 
     /// No force without penetration; continuous (zero) at touch-down; grows as δ^1.5.

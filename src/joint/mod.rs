@@ -17,9 +17,7 @@ pub mod parameters;
 pub mod role;
 
 pub use bearing::JournalBearing;
-pub use contact::{
-    ContactGeometry, ContactLaw, DryContact, Elastic, LineContact, hertz_stiffness,
-};
+pub use contact::{ContactGeometry, ContactLaw, DryContact, Elastic, LineContact, hertz_stiffness};
 pub use kinematics::{
     ContactState, Contacts, JointForce, JointKinematics, MIN_IMPACT_VELOCITY, normal_rate_error,
 };

@@ -3,7 +3,7 @@
 
 use super::parameters::{DriveMode, InitialState, Parameters, RodFormulation};
 use crate::integrator::Method;
-use crate::joint::{ContactLaw, JointModel, JournalStart};
+use crate::joint::{ContactGeometry, ContactLaw, JointModel, JournalStart};
 use crate::reduction::{Boundary, Quadrature};
 use crate::variables::Vr;
 
@@ -150,6 +150,12 @@ integer_fields! {
             [JournalStart::Centred, JournalStart::Settled];
         MainBearingInitialState => main_bearing.initial_state:
             [JournalStart::Centred, JournalStart::Settled];
+        JointContactGeometry => joint.contact_geometry:
+            [ContactGeometry::Point, ContactGeometry::Cylinder];
+        CrankPinContactGeometry => crank_pin.contact_geometry:
+            [ContactGeometry::Point, ContactGeometry::Cylinder];
+        MainBearingContactGeometry => main_bearing.contact_geometry:
+            [ContactGeometry::Point, ContactGeometry::Cylinder];
     }
     counts {
         RodNElements => n_elements;

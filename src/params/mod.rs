@@ -7,7 +7,9 @@ mod access;
 mod parameters;
 mod validate;
 
-pub use crate::joint::{ContactLaw, JointModel, JointParameters, JointRole, JournalStart};
+pub use crate::joint::{
+    ContactGeometry, ContactLaw, JointModel, JointParameters, JointRole, JournalStart,
+};
 pub use access::{integer_parameter, real_parameter, set_integer_parameter, set_real_parameter};
 pub use parameters::{
     BENCHMARK_SPEED, DEFAULT_MAX_STEPS_PER_INTERVAL, DEFAULT_SPECTRAL_RADIUS, DriveMode,

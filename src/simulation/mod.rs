@@ -11,7 +11,7 @@ mod snapshot;
 mod step;
 pub mod validity;
 
-pub use self::outputs::Outputs;
+pub use self::outputs::{BearingOutputs, Outputs};
 use self::peaks::AcceptedStep;
 pub use self::peaks::{PeakHold, Peaks};
 pub use self::snapshot::Snapshot;
@@ -19,7 +19,7 @@ pub use self::step::StepPoint;
 use self::validity::Monitor;
 use crate::error::{ModelError, Num};
 use crate::integrator::{Integrator, Stats};
-use crate::joint::JointRole;
+use crate::joint::{Joint, JointRole};
 use crate::mechanism::{ContactState, Contacts, Energies, SliderCrank};
 pub use crate::mechanism::{Input, InputSignal, Inputs};
 use crate::params::{DriveMode, InitialState, JointModel, JournalStart, Parameters};
@@ -450,10 +450,29 @@ impl Simulation {
             &mut self.y_sample,
             &mut self.a_sample,
         );
-        self.peaks.step_end = Peaks::from_sample(peaks::larger(at_end, within), onsets);
+        self.doubt_film_peaks(&within);
+        self.peaks.step_end = Peaks::from_sample(peaks::larger(at_end, within.largest), onsets);
         self.peaks.pending = true;
         self.check_validity(true);
         Ok(())
+    }
+
+    /// Warns, once per joint, of a lubricated joint's force peak inside the step just accepted
+    /// that the interpolant decides ([`peaks::interpolated_peak`]), against the largest force of
+    /// that joint so far.
+    fn doubt_film_peaks(&mut self, within: &peaks::Within) {
+        let known = peaks::larger(
+            self.peaks.since_start.sample(),
+            self.peaks.interval.sample(),
+        );
+        for role in JointRole::ALL {
+            let i = peaks::force_series(role);
+            let film = matches!(self.mechanism.joint(role), Joint::Lubricated(_));
+            let (value, rise) = (within.largest[i], within.rise[i]);
+            if film && peaks::interpolated_peak(value, rise, known[i]) {
+                self.monitor.doubt_peak(role, self.end.time, value, rise);
+            }
+        }
     }
 
     /// Checks the end of the accepted step (or the state at the communication point, which the

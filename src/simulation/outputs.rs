@@ -2,7 +2,7 @@
 
 use super::peaks::PeakHold;
 use crate::error::ModelError;
-use crate::joint::JointRole;
+use crate::joint::{JointRole, film_thickness};
 use crate::mechanism::SliderCrank;
 use crate::mechanism::layout::CRANK_ANGLE;
 
@@ -129,6 +129,32 @@ pub struct Outputs {
     pub main_bearing_contact_onsets_total: u64,
     /// Warnings raised since the start ([`super::Simulation::take_warnings`]).
     pub warnings: u64,
+    /// What a bearing designer reads at each joint, by [`JointRole`].
+    pub bearings: [BearingOutputs; 3],
+}
+
+/// A joint as its designer reads it (SI units): all zeros for an ideal joint, which has no
+/// clearance.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct BearingOutputs {
+    /// The eccentricity ratio ε = |e|/c (the actual one: above 1 in metal contact).
+    pub eccentricity_ratio: f64,
+    /// The minimum gap c (1 − ε), 0 in metal contact \[m\].
+    pub film_thickness: f64,
+    /// Its smallest value over the last communication interval \[m\] ([`super::PeakHold`]).
+    pub film_thickness_min: f64,
+    /// Its smallest value since the start \[m\].
+    pub film_thickness_min_since_start: f64,
+    /// The largest film pressure (at mid-length) over the last communication interval \[Pa\].
+    pub film_pressure_peak: f64,
+    /// The largest film pressure since the start \[Pa\].
+    pub film_pressure_peak_since_start: f64,
+    /// The friction moment on the journal (dry friction, film shear) \[N m\].
+    pub friction_torque: f64,
+    /// The rate at which the joint's friction dissipates energy, ≥ 0 \[W\].
+    pub friction_power: f64,
+    /// The energy the joint has dissipated since the start \[J\].
+    pub energy_dissipated: f64,
 }
 
 /// The outputs of state `y` at `time` with the mechanism's current inputs and contact state
@@ -175,6 +201,30 @@ pub(super) fn outputs(
     let (crank_pin, crank_pin_penetration) = clearance(JointRole::CrankPin);
     let (main_bearing, main_bearing_penetration) = clearance(JointRole::MainBearing);
     let energies = mechanism.energies(y);
+    let bearings = JointRole::ALL.map(|role| {
+        let i = role as usize;
+        let Some(clearance) = mechanism.joint(role).dry_contact().map(|dry| dry.clearance) else {
+            return BearingOutputs::default();
+        };
+        let now = mechanism.bearing_state(role, y);
+        let (interval, since_start) = (&peaks.interval, &peaks.since_start);
+        let ratio = interval.eccentricity_ratio[i].max(now.eccentricity_ratio);
+        let pressure = interval.film_pressure[i].max(now.film_pressure);
+        BearingOutputs {
+            eccentricity_ratio: now.eccentricity_ratio,
+            film_thickness: now.film_thickness,
+            film_thickness_min: film_thickness(clearance, ratio),
+            film_thickness_min_since_start: film_thickness(
+                clearance,
+                since_start.eccentricity_ratio[i].max(ratio),
+            ),
+            film_pressure_peak: pressure,
+            film_pressure_peak_since_start: since_start.film_pressure[i].max(pressure),
+            friction_torque: now.friction_torque,
+            friction_power: now.friction_power,
+            energy_dissipated: energies.joints[i].dissipated(),
+        }
+    });
     Ok(Outputs {
         time,
         crank_angle: y[CRANK_ANGLE],
@@ -241,5 +291,6 @@ pub(super) fn outputs(
         main_bearing_contact_onsets: peaks.interval.contact_onsets[JointRole::MainBearing as usize],
         main_bearing_contact_onsets_total: peaks.total_onsets[JointRole::MainBearing as usize],
         warnings,
+        bearings,
     })
 }

@@ -3,7 +3,7 @@
 //! ([`super::Simulation::take_warnings`]).
 
 use crate::error::Num;
-use crate::joint::{JointField, JointRole};
+use crate::joint::{Elastic, JointField, JointRole};
 use crate::mechanism::SliderCrank;
 use crate::params::{JointModel, Parameters, RodFormulation};
 
@@ -24,7 +24,12 @@ pub const STROKE_EXCESS_PER_CRANK: f64 = 0.01;
 /// yet taken, and the count since the start.
 #[derive(Clone, Debug, Default)]
 pub(super) struct Monitor {
-    fired: [bool; 4],
+    fired: [bool; 5],
+    /// Whether a joint's force peak was reported as resting on the interpolant, by role.
+    doubted: [bool; 3],
+    /// Such a report not yet taken (time, peak, rise), by role: the message is written when it
+    /// is taken, so that stepping allocates nothing.
+    doubts: [Option<(f64, f64, f64)>; 3],
     messages: Vec<String>,
     /// Warnings raised since the start.
     pub(super) total: u64,
@@ -37,8 +42,33 @@ impl Monitor {
         self.total += 1;
     }
 
+    /// Warns, once per joint, that a force peak `value` at the joint `role` inside the step ending
+    /// at `t` rose `rise` above the step's ends, more than the accuracy its peaks are held to.
+    pub(super) fn doubt_peak(&mut self, role: JointRole, t: f64, value: f64, rise: f64) {
+        if !std::mem::replace(&mut self.doubted[role as usize], true) {
+            self.doubts[role as usize] = Some((t, value, rise));
+            self.total += 1;
+        }
+    }
+
     /// The warnings raised since the last call.
     pub(super) fn take(&mut self) -> Vec<String> {
+        for (role, doubt) in JointRole::ALL.into_iter().zip(&mut self.doubts) {
+            let Some((t, value, rise)) = doubt.take() else {
+                continue;
+            };
+            self.messages.push(format!(
+                "t = {} s: a peak of {}.force = {} N inside an internal step rose {} % above \
+                 the step's ends: the interpolant between the steps, not the integration, sets \
+                 that part of {}.forcePeak; a smaller solver.relativeTolerance or \
+                 solver.maxStepSize resolves it",
+                Num(t),
+                role.prefix(),
+                Num(value),
+                Num((1000.0 * rise / value).round() / 10.0),
+                role.prefix()
+            ));
+        }
         std::mem::take(&mut self.messages)
     }
 
@@ -46,9 +76,11 @@ impl Monitor {
     /// communication point, which the outputs show) against the limits; each cause warns once.
     pub(super) fn check(&mut self, p: &Parameters, mechanism: &mut SliderCrank, t: f64, y: &[f64]) {
         let layout = mechanism.layout();
-        // The clearance joint deepest into its wall, relative to its journal's radius.
+        let elastic = |role: JointRole| mechanism.joint(role).dry_contact().map(|d| d.elastic);
+        // The point contact deepest into its wall, relative to its journal's radius.
         let (role, penetration) = JointRole::ALL
             .into_iter()
+            .filter(|&role| matches!(elastic(role), Some(Elastic::Point(_))))
             .map(|role| (role, mechanism.penetration(role, y)))
             .max_by(|a, b| {
                 let ratio = |(role, d): (JointRole, f64)| d / p.joint(role).journal_radius;
@@ -56,6 +88,17 @@ impl Monitor {
             })
             .unwrap_or((JointRole::RodSlider, f64::NEG_INFINITY));
         let radius = p.joint(role).journal_radius;
+        // A line contact beyond the range of Johnson's law.
+        let beyond = JointRole::ALL
+            .into_iter()
+            .find_map(|role| match elastic(role) {
+                Some(Elastic::Cylinder(line)) => {
+                    let (limit, _) = line.limit();
+                    let depth = mechanism.penetration(role, y);
+                    (depth > limit).then_some((role, depth, limit))
+                }
+                _ => None,
+            });
         // The crank's joints widen the stroke by their clearances.
         let crank_gaps: f64 = [JointRole::MainBearing, JointRole::CrankPin]
             .map(|role| match p.joint(role).model {
@@ -78,6 +121,7 @@ impl Monitor {
             deflection.abs() > DEFLECTION_PER_LENGTH * l,
             speed.abs() > CRANK_SPEED,
             excess > STROKE_EXCESS_PER_CRANK * r_c,
+            beyond.is_some(),
         ];
         for (i, &left) in left.iter().enumerate() {
             if !left || self.fired[i] {
@@ -104,13 +148,24 @@ impl Monitor {
                     "crank speed {} rad/s is more than 1 % beyond the drive's range ±1e4 rad/s",
                     Num(speed)
                 ),
-                _ => format!(
+                3 => format!(
                     "slider position {} m is {} m beyond its kinematic stroke [{}, {}] m",
                     Num(x),
                     Num(excess),
                     Num(l - r_c - c),
                     Num(l + r_c + c)
                 ),
+                _ => {
+                    let (role, depth, limit) = beyond.unwrap_or((role, 0.0, 0.0));
+                    format!(
+                        "{} penetration {} m is beyond the line contact's range {} m (0.40 {}): \
+                         the force continues along the law's tangent there",
+                        role.prefix(),
+                        Num(depth),
+                        Num(limit),
+                        role.parameter(JointField::Clearance)
+                    )
+                }
             };
             self.warn(format!(
                 "t = {} s: the model left its domain: {message}",

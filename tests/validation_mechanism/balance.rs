@@ -37,7 +37,8 @@ fn energy_outputs_close_the_balance() {
 
 /// The outputs' energy-balance residual over one revolution falls at least
 /// 100× from rtol 1e-4 to 1e-8 on benchmarks A, B (4 modes and full), C, with the torque drive
-/// and a slider force, with friction 0.1, with gravity 9.81 and with material damping 1e-5 s
+/// and a slider force, with friction 0.1, with three worn joints (two films with their shear), with
+/// gravity 9.81 and with material damping 1e-5 s
 /// (the work integrals are states under the same error control as the motion).
 #[test]
 fn energy_balance_converges_with_the_tolerance() {
@@ -71,6 +72,32 @@ fn energy_balance_converges_with_the_tolerance() {
             "gravity 9.81",
             Parameters {
                 gravity: 9.81,
+                ..Parameters::default()
+            },
+            0.0,
+            0.0,
+        ),
+        (
+            "lubricated crank pin and main bearing (film shear), dry friction 0.1",
+            Parameters {
+                crank_pin: JointParameters {
+                    model: JointModel::Lubricated,
+                    clearance: 5e-5,
+                    bearing_length: 9e-3,
+                    viscosity: 0.04,
+                    ..JointParameters::benchmark()
+                },
+                main_bearing: JointParameters {
+                    model: JointModel::Lubricated,
+                    clearance: 5e-5,
+                    bearing_length: 9e-3,
+                    viscosity: 0.04,
+                    ..JointParameters::benchmark()
+                },
+                joint: JointParameters {
+                    friction: 0.1,
+                    ..JointParameters::benchmark()
+                },
                 ..Parameters::default()
             },
             0.0,

@@ -6,6 +6,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 mod balance;
+mod bearings;
 mod contract;
 mod crank_pin;
 mod domain;
