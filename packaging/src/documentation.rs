@@ -100,10 +100,13 @@ fn escape(text: &str) -> String {
 }
 
 /// The README's text from the heading `from` (a line starting with it) up to the next heading of
-/// the same or a higher level, without the heading itself; empty if there is none.
-fn readme_section(readme: &str, from: &str) -> String {
+/// the same or a higher level, without the heading itself; an error if the README has no such
+/// heading (a renamed section would otherwise vanish from the FMU's documentation).
+fn readme_section(readme: &str, from: &str) -> Result<String, String> {
     let Some(start) = readme.find(&format!("\n{from}")) else {
-        return String::new();
+        return Err(format!(
+            "README.md has no section \"{from}\" for the FMU's documentation"
+        ));
     };
     let level = from.chars().take_while(|&c| c == '#').count();
     let body = &readme[start + 1..];
@@ -115,7 +118,7 @@ fn readme_section(readme: &str, from: &str) -> String {
             hashes <= level && body[i + 1 + hashes..].starts_with(' ')
         })
         .map_or(body.len(), |(i, _)| i);
-    body[..end].to_string()
+    Ok(body[..end].to_string())
 }
 
 /// Markdown to HTML, headings shifted down by `shift` levels; images (files of
@@ -168,9 +171,10 @@ fn to_html(markdown: &str, shift: u8, root: &Path, images: &mut Vec<PathBuf>) ->
 }
 
 /// documentation/index.html of the slider-crank, and the images it shows (files to pack beside
-/// it).
-pub fn slider_crank(root: &Path) -> (String, Vec<PathBuf>) {
-    let readme = std::fs::read_to_string(root.join("README.md")).unwrap_or_default();
+/// it); an error if the README lacks one of the sections it shows.
+pub fn slider_crank(root: &Path) -> Result<(String, Vec<PathBuf>), String> {
+    let readme = std::fs::read_to_string(root.join("README.md")).map_err(|e| e.to_string())?;
+    let section = |heading: &str| readme_section(&readme, heading);
     let mut images = Vec::new();
     let intro = readme
         .split("\n## ")
@@ -191,23 +195,17 @@ pub fn slider_crank(root: &Path) -> (String, Vec<PathBuf>) {
     let intro = html(&intro, 0);
     let demo = html(&demo, 0);
     let quick_start = html(
-        readme_section(&readme, "## Using the FMU")
+        section("## Using the FMU")?
             .split("\n### ")
             .next()
             .unwrap_or_default(),
         0,
     );
-    let behaviour = html(
-        &readme_section(&readme, "### Behaviour a master can rely on"),
-        0,
-    );
-    let ranges = html(
-        &readme_section(&readme, "#### Why the ranges are what they are"),
-        0,
-    );
+    let behaviour = html(&section("### Behaviour a master can rely on")?, 0);
+    let ranges = html(&section("#### Why the ranges are what they are")?, 0);
     // The README's output table is the variable table's; the notes after it are kept.
     let output_notes = html(
-        &readme_section(&readme, "#### Outputs")
+        &section("#### Outputs")?
             .lines()
             .filter(|line| !line.starts_with('|'))
             .collect::<Vec<_>>()
@@ -215,15 +213,23 @@ pub fn slider_crank(root: &Path) -> (String, Vec<PathBuf>) {
         0,
     );
     let choosing = html(
-        &readme_section(
-            &readme,
-            "### Choosing `rod.nModes`, `rod.boundary`, `solver.*`",
-        ),
+        &section("### Choosing `rod.nModes`, `rod.boundary`, `rod.quadrature`, `solver.*`")?,
         0,
     );
+    let mut sections = |headings: [&str; 3], shift| -> Result<[String; 3], String> {
+        let [a, b, c] = headings.map(&section);
+        Ok([html(&a?, shift), html(&b?, shift), html(&c?, shift)])
+    };
+    let [sizing, clearance, bearings] = sections(
+        [
+            "### Sizing parts: loads at every joint, stress in the rod, clean starts",
+            "### Clearance at every joint",
+            "### Bearing design: film thickness, film pressure, friction loss",
+        ],
+        0,
+    )?;
     let [validation, performance, limits] =
-        ["## Validation", "## Performance", "## Current limits"]
-            .map(|heading| html(&readme_section(&readme, heading), 1));
+        sections(["## Validation", "## Performance", "## Current limits"], 1)?;
     let rows = |causality| variable_rows(&DESCRIPTION, ENUMERATIONS, causality);
     let page = format!(
         r##"<!DOCTYPE html>
@@ -234,6 +240,8 @@ pub fn slider_crank(root: &Path) -> (String, Vec<PathBuf>) {
 {intro}
 <p>GUID <code>{GUID}</code>. Contents: <a href="#quick-start">Quick start</a> ·
 <a href="#behaviour">Behaviour a master can rely on</a> · <a href="#variables">Variables</a> ·
+<a href="#sizing">Sizing parts</a> · <a href="#clearance">Clearance at every joint</a> ·
+<a href="#bearings">Bearing design</a> ·
 <a href="#choosing">Choosing the model and solver</a> · <a href="#validation">Validation</a> ·
 <a href="#performance">Performance</a> · <a href="#limits">Current limits</a></p>
 {demo}
@@ -250,6 +258,12 @@ Switches are Integer parameters whose items are listed in the range column.</p>
 <h3>Inputs (continuous, settable at every communication point)</h3>{}
 <h3>Outputs</h3>{}
 {output_notes}
+<h2 id="sizing">Sizing parts: loads at every joint, stress in the rod, clean starts</h2>
+{sizing}
+<h2 id="clearance">Clearance at every joint</h2>
+{clearance}
+<h2 id="bearings">Bearing design: film thickness, film pressure, friction loss</h2>
+{bearings}
 <h2 id="choosing">Choosing the model and solver</h2>
 {choosing}
 <h2 id="validation">Validation</h2>
@@ -265,7 +279,7 @@ Switches are Integer parameters whose items are listed in the range column.</p>
         rows(Causality::Input),
         rows(Causality::Output)
     );
-    (page, images)
+    Ok((page, images))
 }
 
 /// documentation/index.html of the DC motor.

@@ -227,7 +227,7 @@ fn package(
     motor_binaries: &[(&str, PathBuf)],
 ) -> Result<Vec<PathBuf>, Box<dyn Error>> {
     std::fs::create_dir_all(out_dir)?;
-    let (guide, images) = documentation::slider_crank(root);
+    let (guide, images) = documentation::slider_crank(root)?;
     let crank_references = compatibility::slider_crank()?;
     let crank_fmu = out_dir.join(format!("{MODEL_IDENTIFIER}.fmu"));
     write_fmu(

@@ -24,7 +24,7 @@
 //! The line contact ([`LineContact`]): two cylinders of radii R_j and R_b = R_j + c in internal
 //! contact along the bearing length L, E* the plane-strain modulus 1/E* = (1 − ν²)/E + (1 − ν²)/E.
 //! The approach of the axes under the load F is Johnson's for two cylinders pressed along their
-//! length (Johnson 1985, §5.6), with the relative radius R_j R_b/c of the conformal pair, as the
+//! length (Johnson 1985, pp. 99–104), with the relative radius R_j R_b/c of the conformal pair, as the
 //! clearance-joint literature uses it (Pereira, Ramalho & Ambrósio 2011). It holds while the
 //! contact half-width b = √(4 F R_j R_b/(π L E* c)) stays small against the radius; F_e(δ) is its
 //! inverse, by Newton's method (4 to 6 iterations), up to δ_lim = 8 e⁻³ c ≈ 0.40 c, where its
@@ -41,7 +41,7 @@
 //!   models for soft materials in multibody dynamics, Multibody Syst. Dyn. 25, 357–375.
 //! - S. Hu, X. Guo (2015), A dissipative contact force model for impact analysis in multibody
 //!   dynamics, Multibody Syst. Dyn. 35, 131–151.
-//! - K. L. Johnson (1985), Contact Mechanics, Cambridge University Press, §5.6 (the approach of
+//! - K. L. Johnson (1985), Contact Mechanics, Cambridge University Press, pp. 99–104 (the approach of
 //!   two cylinders in line contact).
 //! - C. M. Pereira, A. L. Ramalho, J. A. Ambrósio (2011), A critical overview of internal and
 //!   external cylinder contact force models, Nonlinear Dyn. 63, 681–697.

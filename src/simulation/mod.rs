@@ -6,20 +6,20 @@ mod failure;
 mod outputs;
 mod peaks;
 mod reading;
+mod record;
 mod restore;
 mod snapshot;
 mod step;
 pub mod validity;
 
 pub use self::outputs::{BearingOutputs, Outputs};
-use self::peaks::AcceptedStep;
 pub use self::peaks::{PeakHold, Peaks};
 pub use self::snapshot::Snapshot;
 pub use self::step::StepPoint;
 use self::validity::Monitor;
 use crate::error::{ModelError, Num};
 use crate::integrator::{Integrator, Stats};
-use crate::joint::{Joint, JointRole};
+use crate::joint::JointRole;
 use crate::mechanism::{ContactState, Contacts, Energies, SliderCrank};
 pub use crate::mechanism::{Input, InputSignal, Inputs};
 use crate::params::{DriveMode, InitialState, JointModel, JournalStart, Parameters};
@@ -419,65 +419,9 @@ impl Simulation {
         stats.steps + stats.rejected
     }
 
-    /// Evaluates the end of the step just accepted for the peak-hold outputs.
-    fn record_step_end(&mut self) -> Result<(), ModelError> {
-        let end = self.mechanism.contact_state();
-        let onsets = JointRole::ALL
-            .map(|role| u64::from(!self.contact_start[role].in_contact && end[role].in_contact));
-        self.mechanism.set_time(self.end.time);
-        let film = self.mechanism.film_extremes(&self.end.y);
-        let at_end = match self.mechanism.clearance_joint_load(&self.end.y) {
-            Some((force, acceleration)) => {
-                let loads = self.mechanism.loads(&self.end.y, &self.end.f, force);
-                peaks::sample(force, acceleration, &loads, film)
-            }
-            None => {
-                let ev = *self.mechanism.evaluate(&self.end.y, &mut self.scratch)?;
-                let loads = self
-                    .mechanism
-                    .loads(&self.end.y, &self.scratch, ev.joint_force);
-                peaks::sample(ev.joint_force, ev.slider_acceleration, &loads, film)
-            }
-        };
-        let step = AcceptedStep {
-            start: &self.start,
-            end: &self.end,
-            contact_start: self.contact_start,
-        };
-        let within = peaks::within_step(
-            &mut self.mechanism,
-            &step,
-            &mut self.y_sample,
-            &mut self.a_sample,
-        );
-        self.doubt_film_peaks(&within);
-        self.peaks.step_end = Peaks::from_sample(peaks::larger(at_end, within.largest), onsets);
-        self.peaks.pending = true;
-        self.check_validity(true);
-        Ok(())
-    }
-
-    /// Warns, once per joint, of a lubricated joint's force peak inside the step just accepted
-    /// that the interpolant decides ([`peaks::interpolated_peak`]), against the largest force of
-    /// that joint so far.
-    fn doubt_film_peaks(&mut self, within: &peaks::Within) {
-        let known = peaks::larger(
-            self.peaks.since_start.sample(),
-            self.peaks.interval.sample(),
-        );
-        for role in JointRole::ALL {
-            let i = peaks::force_series(role);
-            let film = matches!(self.mechanism.joint(role), Joint::Lubricated(_));
-            let (value, rise) = (within.largest[i], within.rise[i]);
-            if film && peaks::interpolated_peak(value, rise, known[i]) {
-                self.monitor.doubt_peak(role, self.end.time, value, rise);
-            }
-        }
-    }
-
     /// Checks the end of the accepted step (or the state at the communication point, which the
     /// outputs show) against the [`validity`] limits; each cause warns once.
-    fn check_validity(&mut self, at_step_end: bool) {
+    pub(super) fn check_validity(&mut self, at_step_end: bool) {
         let (t, y) = if at_step_end {
             (self.end.time, &self.end.y)
         } else {

@@ -27,8 +27,8 @@ pub(super) struct Monitor {
     fired: [bool; 5],
     /// Whether a joint's force peak was reported as resting on the interpolant, by role.
     doubted: [bool; 3],
-    /// Such a report not yet taken (time, peak, rise), by role: the message is written when it
-    /// is taken, so that stepping allocates nothing.
+    /// Such a report not yet taken (time, interpolated peak, integrated value), by role: the
+    /// message is written when it is taken, so that stepping allocates nothing.
     doubts: [Option<(f64, f64, f64)>; 3],
     messages: Vec<String>,
     /// Warnings raised since the start.
@@ -42,11 +42,12 @@ impl Monitor {
         self.total += 1;
     }
 
-    /// Warns, once per joint, that a force peak `value` at the joint `role` inside the step ending
-    /// at `t` rose `rise` above the step's ends, more than the accuracy its peaks are held to.
-    pub(super) fn doubt_peak(&mut self, role: JointRole, t: f64, value: f64, rise: f64) {
+    /// Warns, once per joint, that a force peak `value` at the joint `role` inside a step, at
+    /// time `t`, differs from the integrator's own solution there, `integrated`, by more than the
+    /// accuracy its peaks are held to.
+    pub(super) fn doubt_peak(&mut self, role: JointRole, t: f64, value: f64, integrated: f64) {
         if !std::mem::replace(&mut self.doubted[role as usize], true) {
-            self.doubts[role as usize] = Some((t, value, rise));
+            self.doubts[role as usize] = Some((t, value, integrated));
             self.total += 1;
         }
     }
@@ -54,19 +55,19 @@ impl Monitor {
     /// The warnings raised since the last call.
     pub(super) fn take(&mut self) -> Vec<String> {
         for (role, doubt) in JointRole::ALL.into_iter().zip(&mut self.doubts) {
-            let Some((t, value, rise)) = doubt.take() else {
+            let Some((t, value, integrated)) = doubt.take() else {
                 continue;
             };
             self.messages.push(format!(
-                "t = {} s: a peak of {}.force = {} N inside an internal step rose {} % above \
-                 the step's ends: the interpolant between the steps, not the integration, sets \
-                 that part of {}.forcePeak; a smaller solver.relativeTolerance or \
-                 solver.maxStepSize resolves it",
+                "t = {} s: {}.forcePeak holds {} N from the interpolant between two internal \
+                 steps, where the integrator's own solution gives {} N: that peak is {} % off, \
+                 and others of the run may be; a smaller solver.relativeTolerance or \
+                 solver.maxStepSize resolves them",
                 Num(t),
                 role.prefix(),
                 Num(value),
-                Num((1000.0 * rise / value).round() / 10.0),
-                role.prefix()
+                Num(integrated),
+                Num((1000.0 * (value - integrated).abs() / value).round() / 10.0),
             ));
         }
         std::mem::take(&mut self.messages)

@@ -52,3 +52,56 @@ def test_every_combination_runs_without_warnings(fmu, capsys, rod, main_bearing,
             assert res[f"{joint}.force"].max() > 100.0
     if set(models.values()) == {"ideal"}:
         assert np.all(res["energy.dissipated"] == 0.0)
+
+
+BEARING_OUTPUTS = ("eccentricityRatio", "filmThickness", "filmThicknessMin", "filmThicknessMinSinceStart",
+                   "filmPressurePeak", "filmPressurePeakSinceStart", "frictionTorque", "frictionPower",
+                   "energyDissipated")
+ALL_JOINTS = ["mainBearing", "crankPin", "joint"]
+
+
+def test_bearing_outputs_through_fmpy(fmu):
+    """Every joint's bearing-design outputs through fmpy, with a lubricated main bearing and crank pin
+    (0.05 mm, 9 mm long, 0.04 Pa s) and the dry rod-slider joint with friction, every journal settled:
+    the film thickness is c (1 - |e|/c), 0 in contact, its interval minimum never above it and the run's
+    never above the interval's; the films have a pressure and the dry joint none; the friction power is
+    never negative; the three dissipations sum to energy.dissipated; an ideal joint reports zeros."""
+    start = {"joint.initialState": 2, "joint.friction": 0.1}
+    for joint in CRANK_JOINTS:
+        start.update({f"{joint}.model": 3, f"{joint}.clearance": 5e-5, f"{joint}.bearingLength": 9e-3,
+                      f"{joint}.viscosity": 0.04, f"{joint}.initialState": 2})
+    names = [f"{j}.{o}" for j in ALL_JOINTS for o in BEARING_OUTPUTS]
+    names += [f"{j}.eccentricity{a}" for j in ALL_JOINTS for a in "XY"] + ["energy.dissipated"]
+    res = simulate_fmu(fmu, stop_time=0.012, output_interval=1e-4, start_values=start, output=names)
+    clearance = {"mainBearing": 5e-5, "crankPin": 5e-5, "joint": 5e-4}
+    for j in ALL_JOINTS:
+        ratio = np.hypot(res[f"{j}.eccentricityX"], res[f"{j}.eccentricityY"]) / clearance[j]
+        assert np.allclose(res[f"{j}.eccentricityRatio"], ratio, rtol=1e-12, atol=1e-12), j
+        thickness = np.maximum(clearance[j] * (1 - ratio), 0.0)
+        assert np.allclose(res[f"{j}.filmThickness"], thickness, rtol=0, atol=1e-12 * clearance[j]), j
+        assert np.all(res[f"{j}.filmThicknessMin"][1:] <= res[f"{j}.filmThickness"][1:]), j
+        assert np.all(res[f"{j}.filmThicknessMinSinceStart"] <= res[f"{j}.filmThicknessMin"]), j
+        assert np.all(res[f"{j}.filmPressurePeakSinceStart"] >= res[f"{j}.filmPressurePeak"]), j
+        assert np.all(res[f"{j}.frictionPower"] >= 0.0), j
+        film = res[f"{j}.filmPressurePeak"].max()
+        assert film > 1e6 if j != "joint" else film == 0.0, (j, film)
+    total = sum(res[f"{j}.energyDissipated"] for j in ALL_JOINTS)
+    assert np.allclose(total, res["energy.dissipated"], rtol=1e-12, atol=1e-12)
+    ideal = simulate_fmu(fmu, stop_time=1e-3, output_interval=1e-4,
+                         output=[f"mainBearing.{o}" for o in BEARING_OUTPUTS])
+    for o in BEARING_OUTPUTS:
+        assert np.all(ideal[f"mainBearing.{o}"] == 0.0), o
+
+
+def test_a_pin_with_its_length_sinks_less(fmu):
+    """joint.contactGeometry = cylinder (Johnson's line contact over joint.bearingLength) through fmpy:
+    benchmark A's impacts penetrate less deeply than with the point contact, and the run's energy
+    account still holds its contact energy."""
+    deepest = {}
+    for geometry in (1, 2):
+        res = simulate_fmu(fmu, stop_time=0.006, output_interval=1e-5,
+                           start_values={"rod.formulation": 1, "joint.contactGeometry": geometry},
+                           output=["joint.penetration", "energy.contact", "joint.contactOnsetsTotal"])
+        assert res["joint.contactOnsetsTotal"][-1] > 0
+        deepest[geometry] = res["joint.penetration"].max()
+    assert deepest[2] < 0.5 * deepest[1], deepest

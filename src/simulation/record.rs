@@ -1,0 +1,84 @@
+//! The bookkeeping of each accepted step: the peak-hold outputs' extremes at its end and inside
+//! it, its contact onsets, and the check of a lubricated joint's peak inside it.
+
+use super::Simulation;
+use super::peaks::{self, AcceptedStep, Peaks};
+use crate::error::ModelError;
+use crate::joint::{Joint, JointRole};
+
+impl Simulation {
+    /// Evaluates the end of the step just accepted for the peak-hold outputs.
+    pub(super) fn record_step_end(&mut self) -> Result<(), ModelError> {
+        let end = self.mechanism.contact_state();
+        let onsets = JointRole::ALL
+            .map(|role| u64::from(!self.contact_start[role].in_contact && end[role].in_contact));
+        self.mechanism.set_time(self.end.time);
+        let film = self.mechanism.film_extremes(&self.end.y);
+        let at_end = match self.mechanism.clearance_joint_load(&self.end.y) {
+            Some((force, acceleration)) => {
+                let loads = self.mechanism.loads(&self.end.y, &self.end.f, force);
+                peaks::sample(force, acceleration, &loads, film)
+            }
+            None => {
+                let ev = *self.mechanism.evaluate(&self.end.y, &mut self.scratch)?;
+                let loads = self
+                    .mechanism
+                    .loads(&self.end.y, &self.scratch, ev.joint_force);
+                peaks::sample(ev.joint_force, ev.slider_acceleration, &loads, film)
+            }
+        };
+        let step = AcceptedStep {
+            start: &self.start,
+            end: &self.end,
+            contact_start: self.contact_start,
+        };
+        let within = peaks::within_step(
+            &mut self.mechanism,
+            &step,
+            &mut self.y_sample,
+            &mut self.a_sample,
+        );
+        self.doubt_film_peaks(&within)?;
+        self.peaks.step_end = Peaks::from_sample(peaks::larger(at_end, within.largest), onsets);
+        self.peaks.pending = true;
+        self.check_validity(true);
+        Ok(())
+    }
+
+    /// Warns, once per joint, of a lubricated joint's force peak inside the step just accepted
+    /// that the interpolant decides: one that rose more than [`peaks::PEAK_TOLERANCE`] above the
+    /// step's ends ([`peaks::interpolated_peak`]) and differs by more than that from the force in
+    /// the integrator's own solution at its place ([`crate::integrator::Integrator::state_within`],
+    /// a partial step: the check costs a step only where such a rise occurs).
+    fn doubt_film_peaks(&mut self, within: &peaks::Within) -> Result<(), ModelError> {
+        let known = peaks::larger(
+            self.peaks.since_start.sample(),
+            self.peaks.interval.sample(),
+        );
+        for role in JointRole::ALL {
+            let i = peaks::force_series(role);
+            let film = matches!(self.mechanism.joint(role), Joint::Lubricated(_));
+            let (value, rise) = (within.largest[i], within.rise[i]);
+            if !(film && peaks::interpolated_peak(value, rise, known[i])) {
+                continue;
+            }
+            let (start, end) = (&self.start, &self.end);
+            let h = end.time - start.time;
+            let s = within.place[i];
+            let contact = self.contact_start;
+            let (integrator, y) = (&mut self.integrator, &mut self.y_sample);
+            let integrated = self.mechanism.with_contact_state(contact, |mechanism| {
+                mechanism.set_time(start.time + s * h);
+                integrator.state_within(
+                    mechanism, start.time, h, &start.y, &start.f, &end.y, &end.f, s, y,
+                )?;
+                Ok::<f64, ModelError>(mechanism.joint_force(role, y).0.force.norm())
+            })?;
+            if (integrated - value).abs() > peaks::PEAK_TOLERANCE * value {
+                self.monitor
+                    .doubt_peak(role, start.time + s * h, value, integrated);
+            }
+        }
+        Ok(())
+    }
+}
