@@ -4,8 +4,8 @@
 # the fuzzing half an hour per target of it); with arguments only the named ones:
 #
 #   bash packaging/benchmarks.sh [fmu] [native] [impacts] [weight] [integrators] [accuracy]
-#                                [energy] [criterion] [modes] [coupling] [system] [dask] [space]
-#                                [platforms] [fuzz]
+#                                [energy] [criterion] [modes] [bearings] [coupling] [system] [dask]
+#                                [space] [platforms] [fuzz]
 #
 # Needs the packaged FMU and the venv (the README's first command makes both). Figures vary with the
 # machine's load: compare ratios within one table, measured in one run.
@@ -13,7 +13,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 py=.venv/bin/python
 fmu=target/fmu/FlexibleSliderCrank.fmu
-all=(fmu native impacts weight integrators accuracy energy criterion modes coupling system dask space platforms fuzz)
+all=(fmu native impacts weight integrators accuracy energy criterion modes bearings coupling system dask space platforms fuzz)
 sections=("$@")
 [ ${#sections[@]} -eq 0 ] && sections=("${all[@]}")
 
@@ -41,6 +41,9 @@ for s in "${sections[@]}"; do
       cargo bench --bench element -- --warm-up-time 0.5 --measurement-time 1
       cargo bench --bench step ;;
     modes) cargo run --release --quiet --example mode_study ;;
+    bearings)
+      cargo test --release --quiet --test validation_mechanism bearings -- --nocapture
+      cargo run --release --quiet --example bearing_design ;;
     coupling) "$py" packaging/python/coupling_benchmark.py "$fmu" ;;
     system) "$py" -m fsc.system ;;
     dask) "$py" packaging/python/sweep_benchmark.py "$fmu" ;;
