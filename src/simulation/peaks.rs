@@ -124,22 +124,19 @@ pub(super) fn sample(
     loads: &Loads,
     film: [(f64, f64); 3],
 ) -> Sample {
-    let [(e0, p0), (e1, p1), (e2, p2)] = film;
-    [
-        joint_force.norm(),
-        slider_acceleration.abs(),
-        loads.deformation_energy,
-        loads.crank_pin.norm(),
-        loads.main_bearing.norm(),
-        loads.guide.abs(),
-        loads.stress,
-        e0,
-        e1,
-        e2,
-        p0,
-        p1,
-        p2,
-    ]
+    Peaks {
+        joint_force: joint_force.norm(),
+        slider_acceleration: slider_acceleration.abs(),
+        deformation_energy: loads.deformation_energy,
+        crank_pin_force: loads.crank_pin.norm(),
+        main_bearing_force: loads.main_bearing.norm(),
+        guide_force: loads.guide.abs(),
+        rod_stress: loads.stress,
+        eccentricity_ratio: film.map(|(ratio, _)| ratio),
+        film_pressure: film.map(|(_, pressure)| pressure),
+        contact_onsets: [0; 3],
+    }
+    .sample()
 }
 
 /// The larger of two samples, quantity by quantity.
