@@ -535,6 +535,8 @@ pub enum Vr {
     MainBearingFrictionTorque,
     MainBearingFrictionPower,
     MainBearingEnergyDissipated,
+    CrankCentreOfMassRatio,
+    SliderOffset,
 }
 
 /// 5000 rpm in rad/s (benchmark B); the same expression as `params::BENCHMARK_SPEED`.
@@ -768,10 +770,12 @@ pub const VARIABLES: &[Variable] = &concat::<N_VARIABLES>(&[
     &JOINT_BEARING_VARIABLES,
     &CRANK_PIN_BEARING_VARIABLES,
     &MAIN_BEARING_BEARING_VARIABLES,
+    MACHINE_VARIABLES,
 ]);
 
 /// Number of variables.
-const N_VARIABLES: usize = BASE_VARIABLES.len() + 2 * JOINT_ROWS + 1 + 3 * BEARING_ROWS;
+const N_VARIABLES: usize =
+    BASE_VARIABLES.len() + 2 * JOINT_ROWS + 1 + 3 * BEARING_ROWS + MACHINE_VARIABLES.len();
 
 /// The rows of `parts`, one after the other, as one array of `N` rows.
 const fn concat<const N: usize>(parts: &[&[Variable]]) -> [Variable; N] {
@@ -885,7 +889,7 @@ const BASE_VARIABLES: &[Variable] = &[
         1e-6,
         1e4,
         "kg",
-        "Crank mass (centre of mass at mid-length)",
+        "Crank mass (its centre of mass at crank.centreOfMassRatio along the crank)",
     ),
     Variable::parameter(
         Vr::CrankInertia,
@@ -912,7 +916,7 @@ const BASE_VARIABLES: &[Variable] = &[
         -1e4,
         1e4,
         "rad/s",
-        "Initial crank speed (mechanism starts with ideal-joint velocities)",
+        "Initial crank speed (mechanism starts with ideal-joint velocities); not set, the crank starts at drive.speed's value, in either drive mode",
     ),
     Variable::parameter(
         Vr::SliderMass,
@@ -1692,3 +1696,25 @@ const MAIN_BEARING_BEARING_VARIABLES: [Variable; BEARING_ROWS] = bearing_rows!(
         MainBearingEnergyDissipated,
     ]
 );
+
+/// The user's own machine: the crank's mass distribution and the cylinder's offset.
+const MACHINE_VARIABLES: &[Variable] = &[
+    Variable::parameter(
+        Vr::CrankCentreOfMassRatio,
+        "crank.centreOfMassRatio",
+        0.5,
+        -2.0,
+        2.0,
+        "1",
+        "The crank's centre of mass: its distance from the pivot along the crank (towards the pin) as a fraction of crank.length; 0.5 a uniform crank, negative a counterweight beyond the pivot (crank.inertia stays about the centre of mass)",
+    ),
+    Variable::parameter(
+        Vr::SliderOffset,
+        "slider.offset",
+        0.0,
+        -10.0,
+        10.0,
+        "m",
+        "Cylinder (piston-pin) offset: the guide line's distance from the crank pivot along +y; a full turn needs crank.length + |slider.offset| < rod.length. With an offset, crank angle zero is not a dead centre: they lie at asin(e/(l + r)) and pi + asin(e/(l - r))",
+    ),
+];

@@ -43,7 +43,7 @@ fn random_sets_near_the_defaults_run_or_fail_cleanly() {
             ContactLaw::HuGuo,
         ][case % 3];
         p.joint.clearance = rng.scale(p.joint.clearance);
-        p.crank_initial_speed = rng.scale(p.crank_initial_speed);
+        p.crank_initial_speed = Some(rng.scale(flexible_slider_crank::params::BENCHMARK_SPEED));
         p.joint.restitution = (rng.scale(p.joint.restitution)).min(1.0);
         p.joint.friction = 0.05 * rng.next();
         p.slider_mass = rng.scale(p.slider_mass);
@@ -87,7 +87,7 @@ fn random_sets_near_the_defaults_run_or_fail_cleanly() {
             p.rod_formulation,
             p.joint.model,
             p.joint.clearance,
-            p.crank_initial_speed,
+            p.start_speed(flexible_slider_crank::params::BENCHMARK_SPEED),
             sim.stats().steps,
             sim.take_warnings()
         );

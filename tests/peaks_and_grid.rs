@@ -204,7 +204,8 @@ fn constant_inputs_give_grid_independent_results() {
         assert_eq!(r.steps, runs[0].steps);
         assert_eq!(r.onsets_total, runs[0].onsets_total);
     }
-    let speed = |t: f64| p.crank_initial_speed * (1.0 + 0.01 * math::sin(2e3 * t));
+    let start = p.start_speed(flexible_slider_crank::params::BENCHMARK_SPEED);
+    let speed = |t: f64| start * (1.0 + 0.01 * math::sin(2e3 * t));
     let varying = run(p.clone(), 1e-4, |sim, t| {
         sim.set_input(Input::DriveSpeed, speed(t))
     });

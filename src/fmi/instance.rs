@@ -509,7 +509,11 @@ mod tests {
         let inputs = start_inputs().value;
         assert_eq!(
             inputs.drive_speed.to_bits(),
-            p.crank_initial_speed.to_bits()
+            p.start_speed(inputs.drive_speed).to_bits()
+        );
+        assert_eq!(
+            real_parameter(&p, Vr::CrankInitialSpeed).map(f64::to_bits),
+            Some(inputs.drive_speed.to_bits())
         );
         for v in VARIABLES
             .iter()

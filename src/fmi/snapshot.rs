@@ -2,7 +2,8 @@
 //!
 //! Layout (little-endian, inside the framing of `fmi2-slave`: magic, version, state machine,
 //! checksum): the parameter count of the variable table and nModes (so a state from another build
-//! or model is rejected), every parameter in table order, inputs, clock, the simulation snapshot.
+//! or model is rejected), every parameter in table order, whether crank.initialSpeed was set,
+//! inputs, clock, the simulation snapshot.
 
 use fmi2_slave::FmuError;
 use fmi2_slave::model::check_real;
@@ -102,6 +103,8 @@ impl FmuSnapshot {
                 _ => w.u32(integer_parameter(&self.parameters, v.vr).unwrap_or(0) as u32),
             }
         }
+        // Whether crank.initialSpeed was set (unset, the crank starts at drive.speed).
+        w.u8(u8::from(self.parameters.crank_initial_speed.is_some()));
         w.signal(&self.inputs);
         w.f64(self.start_time);
         for x in [self.stop_time, self.tolerance] {
@@ -140,6 +143,9 @@ impl FmuSnapshot {
             if !ok {
                 return Err(rejected(&format!("invalid value of {}", v.name)));
             }
+        }
+        if !r.flag()? {
+            parameters.crank_initial_speed = None;
         }
         if parameters.n_modes as u32 != n_modes {
             return Err(rejected(&format!(

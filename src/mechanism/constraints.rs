@@ -4,13 +4,14 @@
 //!
 //! ```text
 //! crank pin     Φ = r_A − r_O − d (cos θ, sin θ)  γ = −d θ̇² (cos θ, sin θ)     (ideal)
-//! rod–slider    Φ = r_B − (x_s, 0)                γ = 0                        (ideal)
+//! rod–slider    Φ = r_B − (x_s, e)                γ = 0                        (ideal)
 //! rigid rod     Φ = ½ (|r_B − r_A|² − l²)          γ = −|ṙ_B − ṙ_A|²
 //! speed drive   Φ = θ − θ_d,  θ̇_d = ω_in          γ = 0
 //! Φ_q q̈ = γ − 2α Φ̇ − β² Φ        (Baumgarte stabilisation)
 //! ```
 //! with the crank's reference point r_O and arm d: the fixed pivot r_O = 0 and d = r_c, or for the
-//! free crank its centre of mass r_O = r_G and d = r_c − a (a: the pivot to centre-of-mass distance).
+//! free crank its centre of mass r_O = r_G and d = r_c − a (a: the pivot to centre-of-mass distance),
+//! and e the guide line's offset from the crank pivot.
 //!
 //! # References
 //! - J. Baumgarte (1972), Stabilization of constraints and integrals of motion in dynamical
@@ -97,6 +98,8 @@ pub struct ConstraintState {
     pub v_b: Vector2<f64>,
     /// x_s.
     pub x_s: f64,
+    /// The guide line's y, e (the slider offset).
+    pub guide: f64,
     /// ẋ_s.
     pub v_s: f64,
     /// The crank's reference point r_O: the pivot (0) or the free crank's centre of mass.
@@ -156,7 +159,7 @@ impl Constraints {
             );
             push(
                 [0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0],
-                s.r_b.y,
+                s.r_b.y - s.guide,
                 s.v_b.y,
                 0.0,
             );
@@ -225,6 +228,7 @@ mod tests {
             r_b: Vector2::new(q[3], q[4]),
             v_b: Vector2::zeros(),
             x_s: q[5],
+            guide: 0.004,
             v_s: 0.0,
             r_o: if active.free_crank {
                 Vector2::new(q[6], q[7])

@@ -89,9 +89,9 @@ impl SliderCrank {
         }
     }
 
-    /// Gravitational potential −m g·r of the crank (centre of mass r_G, at (r_c/2)(cos θ, sin θ) on
-    /// the fixed pivot) and of the slider (at (x_s, 0)) \[J\]; the rod's is −Q_gᵀp (its gravity
-    /// load is constant).
+    /// Gravitational potential −m g·r of the crank (centre of mass r_G, at a (cos θ, sin θ) on the
+    /// fixed pivot) and of the slider (at (x_s, e)) \[J\]; the rod's is −Q_gᵀp (its gravity load
+    /// is constant).
     fn gravity_potential(&self, y: &[f64]) -> f64 {
         if self.gravity == nalgebra::Vector2::zeros() {
             return 0.0;
@@ -101,12 +101,14 @@ impl SliderCrank {
             None => {
                 let (sin, cos) = math::sin_cos(y[CRANK_ANGLE]);
                 -self.crank_mass
-                    * 0.5
+                    * self.crank_centre_ratio
                     * self.crank_length
                     * (self.gravity.x * cos + self.gravity.y * sin)
             }
         };
-        crank - self.slider_mass * self.gravity.x * y[self.layout.slider()]
+        crank
+            - self.slider_mass * self.gravity.x * y[self.layout.slider()]
+            - self.slider_mass * self.gravity.y * self.slider_offset
     }
 
     /// Energies of a state (evaluates the joint forces for the stored contact energy).

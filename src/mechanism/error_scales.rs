@@ -100,7 +100,7 @@ impl SliderCrank {
                 JointRole::RodSlider => {
                     let (b, rate) = (l.pin_b(), l.rate_of(l.pin_b()));
                     normal_rate_error(
-                        (y[b] - y[l.slider()], y[b + 1]),
+                        (y[b] - y[l.slider()], y[b + 1] - self.slider_offset),
                         (err[rate] - err[l.slider_velocity()], err[rate + 1]),
                     )
                 }

@@ -26,10 +26,13 @@ pub enum Input {
 
 impl Inputs {
     /// The inputs a model starts with when none are given: the prescribed speed equal to the
-    /// crank's initial speed, no torque, no slider force.
+    /// crank's initial speed (`drive.speed`'s start value if it is not set), no torque, no slider
+    /// force.
     pub fn at_start(p: &crate::params::Parameters) -> Self {
         Self {
-            drive_speed: p.crank_initial_speed,
+            drive_speed: p
+                .crank_initial_speed
+                .unwrap_or(crate::params::BENCHMARK_SPEED),
             ..Self::default()
         }
     }

@@ -5,11 +5,12 @@
 //! joint        journal (ω_j)               bearing (ω_b)           e = r_journal − r_bearing
 //! main bearing crank's pivot (θ̇)           ground (0)              r_G − a (cos θ, sin θ)
 //! crank pin    crank pin r_P (θ̇)           rod's eye at A (ω_A)    r_O + d (cos θ, sin θ) − r_A
-//! rod–slider   rod's pin at B (ω_B)         slider (0)              r_B − (x_s, 0)
+//! rod–slider   rod's pin at B (ω_B)         slider (0)              r_B − (x_s, e)
 //! ```
 //! ω_A, ω_B are the rod's rotations at its ends, r_O and d the crank's reference point and the
 //! pin's distance from it (the fixed pivot, 0 and r_c; or the free crank's centre of mass r_G and
-//! r_c − a, with a = r_c/2 from the pivot). The force F and moment M_j act on the journal, −F and
+//! r_c − a, with a the pivot to centre-of-mass distance; e the guide's offset). The force F and
+//! moment M_j act on the journal, −F and
 //! M_b on the bearing: the crank receives F at its pin (crank pin) or at its pivot (main bearing)
 //! and the moment M_j, and the rod −F at A with the moment M_b.
 
@@ -106,7 +107,7 @@ impl SliderCrank {
             JointRole::RodSlider => {
                 let (b, b_rate) = (l.pin_b(), l.rate_of(l.pin_b()));
                 JointKinematics {
-                    e: Vector2::new(y[b] - y[l.slider()], y[b + 1]),
+                    e: Vector2::new(y[b] - y[l.slider()], y[b + 1] - self.slider_offset),
                     e_dot: Vector2::new(y[b_rate] - y[l.slider_velocity()], y[b_rate + 1]),
                     omega_journal: self.rod.end_angular_velocity(RodEnd::SliderPin, p, p_dot),
                     omega_bearing: 0.0,

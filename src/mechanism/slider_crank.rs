@@ -44,8 +44,13 @@ pub struct SliderCrank {
     pub(super) drive: DriveMode,
     pub(super) active: Active,
     pub(super) crank_length: f64,
-    /// Distance a from the crank's pivot to its pin-side centre of mass, r_c/2 \[m\].
+    /// Distance a from the crank's pivot to its centre of mass along the crank (towards the pin;
+    /// negative beyond the pivot) \[m\].
     pub(super) crank_centre: f64,
+    /// That distance as a fraction of the crank length.
+    pub(super) crank_centre_ratio: f64,
+    /// The guide line's distance from the crank pivot along +y \[m\].
+    pub(super) slider_offset: f64,
     /// The crank pin's distance d from the crank's reference point: r_c from the fixed pivot,
     /// r_c − a from the free crank's centre of mass \[m\].
     pub(super) crank_arm: f64,
@@ -119,7 +124,7 @@ impl SliderCrank {
                 .collect()
         });
         let free_crank = p.main_bearing.model != JointModel::Ideal;
-        let crank_centre = 0.5 * p.crank_length;
+        let crank_centre = p.crank_centre_of_mass();
         let (crank_inertia, crank_arm) = if free_crank {
             (p.crank_inertia, p.crank_length - crank_centre)
         } else {
@@ -165,6 +170,8 @@ impl SliderCrank {
             active,
             crank_length: p.crank_length,
             crank_centre,
+            crank_centre_ratio: p.crank_centre_of_mass_ratio,
+            slider_offset: p.slider_offset,
             crank_arm,
             crank_mass: p.crank_mass,
             crank_inertia,
@@ -274,6 +281,7 @@ impl SliderCrank {
             r_b: pair(y, l.pin_b()),
             v_b: pair(y, l.rate_of(l.pin_b())),
             x_s: y[l.slider()],
+            guide: self.slider_offset,
             v_s: y[l.slider_velocity()],
             r_o: l.crank_centre().map_or(Vector2::zeros(), |g| pair(y, g)),
             v_o: l
@@ -399,10 +407,10 @@ impl SliderCrank {
         let gravity_torque = if self.gravity == Vector2::zeros() || self.active.free_crank {
             0.0
         } else {
-            // r_G × m_c g with r_G = (r_c/2)(cos θ, sin θ).
+            // r_G × m_c g with r_G = a (cos θ, sin θ).
             let (sin, cos) = math::sin_cos(q[CRANK_ANGLE]);
             self.crank_mass
-                * 0.5
+                * self.crank_centre_ratio
                 * self.crank_length
                 * (cos * self.gravity.y - sin * self.gravity.x)
         };

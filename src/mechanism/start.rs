@@ -43,7 +43,7 @@ impl SliderCrank {
         let (r_c, l) = (self.crank_length, self.rod_length);
         let (sin, cos) = math::sin_cos(angle);
         let a = r_c * Vector2::new(cos, sin) + (pivot - crank_pin);
-        let sin_beta = (rod_slider.y - a.y) / l;
+        let sin_beta = (self.slider_offset + rod_slider.y - a.y) / l;
         let cos_beta = (1.0 - sin_beta * sin_beta).sqrt();
         let b = a + l * Vector2::new(cos_beta, sin_beta);
         let v_a = r_c * speed * Vector2::new(-sin, cos);

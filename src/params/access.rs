@@ -1,36 +1,42 @@
 //! [`Parameters`] by value reference: the one list that maps each parameter row of the variable
 //! table to its field, from which both the getter and the setter are generated.
 
-use super::parameters::{DriveMode, InitialState, Parameters, RodFormulation};
+use super::parameters::{BENCHMARK_SPEED, DriveMode, InitialState, Parameters, RodFormulation};
 use crate::integrator::Method;
 use crate::joint::{ContactGeometry, ContactLaw, JointModel, JournalStart};
 use crate::reduction::{Boundary, Quadrature};
 use crate::variables::Vr;
 
-/// `real_parameter` and `set_real_parameter` over one list of (value reference, field).
+/// `real_parameter` and `set_real_parameter` over one list of (value reference, field), and one
+/// of optional fields (value reference, field, the value read while it is not set).
 macro_rules! real_fields {
-    ($($vr:ident => $($field:ident).+;)*) => {
+    (
+        fields { $($vr:ident => $($field:ident).+;)* }
+        optional { $($ovr:ident => $ofield:ident unset $unset:expr;)* }
+    ) => {
         /// Value of a Real parameter, None for other variables.
         pub fn real_parameter(p: &Parameters, vr: Vr) -> Option<f64> {
             match vr {
                 $(Vr::$vr => Some(p.$($field).+),)*
+                $(Vr::$ovr => Some(p.$ofield.unwrap_or($unset)),)*
                 _ => None,
             }
         }
 
         /// Sets a Real parameter (value already range-checked); false if `vr` is not one.
         pub fn set_real_parameter(p: &mut Parameters, vr: Vr, value: f64) -> bool {
-            let field = match vr {
-                $(Vr::$vr => &mut p.$($field).+,)*
+            match vr {
+                $(Vr::$vr => p.$($field).+ = value,)*
+                $(Vr::$ovr => p.$ofield = Some(value),)*
                 _ => return false,
-            };
-            *field = value;
+            }
             true
         }
     };
 }
 
 real_fields! {
+    fields {
     RodLength => rod.length;
     RodYoungsModulus => rod.youngs_modulus;
     RodDensity => rod.density;
@@ -42,7 +48,8 @@ real_fields! {
     CrankMass => crank_mass;
     CrankInertia => crank_inertia;
     CrankInitialAngle => crank_initial_angle;
-    CrankInitialSpeed => crank_initial_speed;
+    CrankCentreOfMassRatio => crank_centre_of_mass_ratio;
+    SliderOffset => slider_offset;
     SliderMass => slider_mass;
     JointClearance => joint.clearance;
     JointJournalRadius => joint.journal_radius;
@@ -83,6 +90,11 @@ real_fields! {
     SolverMaxStepSize => max_step_size;
     SolverSpectralRadius => spectral_radius;
     SolverImpactErrorWeight => impact_error_weight;
+    }
+    optional {
+        // Not set, the crank starts at drive.speed; its start value reads.
+        CrankInitialSpeed => crank_initial_speed unset BENCHMARK_SPEED;
+    }
 }
 
 /// `integer_parameter` and `set_integer_parameter` over one list of switches (value reference,

@@ -55,16 +55,24 @@ pub struct Parameters {
     pub rod: RodProperties,
     /// Crank length r_c (pivot to pin) \[m\].
     pub crank_length: f64,
-    /// Crank mass \[kg\] (uniform, centre of mass at mid-length).
+    /// Crank mass \[kg\].
     pub crank_mass: f64,
+    /// The crank's centre of mass: its distance from the pivot along the crank (towards the pin)
+    /// as a fraction of `crank_length`; 0.5 for a uniform crank, negative for a counterweight
+    /// beyond the pivot.
+    pub crank_centre_of_mass_ratio: f64,
     /// Crank moment of inertia about its centre of mass \[kg m²\].
     pub crank_inertia: f64,
     /// Initial crank angle \[rad\].
     pub crank_initial_angle: f64,
-    /// Initial crank speed \[rad/s\] (with the speed drive, see [`Parameters::start_speed`]).
-    pub crank_initial_speed: f64,
+    /// Initial crank speed \[rad/s\], if set; otherwise the crank starts at the prescribed
+    /// speed's value ([`Parameters::start_speed`]).
+    pub crank_initial_speed: Option<f64>,
     /// Slider mass \[kg\].
     pub slider_mass: f64,
+    /// The guide line's distance from the crank pivot along +y (cylinder or piston-pin offset)
+    /// \[m\].
+    pub slider_offset: f64,
     /// The rod–slider joint (the FMU's `joint.*`).
     pub joint: JointParameters,
     /// The crank pin (`crankPin.*`): the crank's pin in the rod's eye.
@@ -150,8 +158,10 @@ impl Default for Parameters {
             crank_mass: 0.30,
             crank_inertia: 1e-4,
             crank_initial_angle: 0.0,
-            crank_initial_speed: BENCHMARK_SPEED,
+            crank_centre_of_mass_ratio: 0.5,
+            crank_initial_speed: None,
             slider_mass: 0.14,
+            slider_offset: 0.0,
             joint: JointParameters::benchmark(),
             crank_pin: JointParameters::ideal(),
             main_bearing: JointParameters::ideal(),
@@ -222,16 +232,16 @@ impl Parameters {
     }
 
     /// The crank's speed at the start when the prescribed speed starts at `drive_speed`:
-    /// `crank_initial_speed`, except with the speed drive while `crank_initial_speed` keeps its
-    /// default ([`BENCHMARK_SPEED`]), when the crank starts at the prescribed speed: setting only
-    /// `drive.speed` starts the mechanism in its motion, without an impulsive jump at the first
-    /// step \[rad/s\].
+    /// `crank_initial_speed` if it was set, else the prescribed speed's value, in either drive
+    /// mode (setting only `drive.speed` starts the mechanism in its motion, without an impulsive
+    /// jump at the speed drive's first step) \[rad/s\].
     pub fn start_speed(&self, drive_speed: f64) -> f64 {
-        if self.drive_mode == DriveMode::Speed && self.crank_initial_speed == BENCHMARK_SPEED {
-            drive_speed
-        } else {
-            self.crank_initial_speed
-        }
+        self.crank_initial_speed.unwrap_or(drive_speed)
+    }
+
+    /// The crank's centre of mass: its distance a from the pivot along the crank \[m\].
+    pub fn crank_centre_of_mass(&self) -> f64 {
+        self.crank_centre_of_mass_ratio * self.crank_length
     }
 
     /// The three revolute joints with their parameters, from the ground to the slider.
@@ -270,9 +280,10 @@ impl Parameters {
         }
     }
 
-    /// Crank moment of inertia about the pivot, I_c + m_c (r_c/2)² \[kg m²\].
+    /// Crank moment of inertia about the pivot, I_c + m_c a² \[kg m²\] (a: the centre of mass's
+    /// distance from the pivot).
     pub fn crank_inertia_about_pivot(&self) -> f64 {
-        self.crank_inertia + self.crank_mass * (0.5 * self.crank_length).powi(2)
+        self.crank_inertia + self.crank_mass * self.crank_centre_of_mass().powi(2)
     }
 
     /// Integrator tolerances: rtol as given for both the relative and the absolute part (the

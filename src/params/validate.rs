@@ -114,6 +114,21 @@ impl Parameters {
                 ),
             ));
         }
+        let reach = self.crank_length + self.slider_offset.abs();
+        if reach >= self.rod.length {
+            return Err(ModelError::invalid(
+                "slider.offset",
+                self.slider_offset,
+                format!(
+                    "(-{gap}, {gap}) = (-(rod.length - crank.length), rod.length - crank.length) \
+                     with rod.length = {} m and crank.length = {} m: a full crank turn needs \
+                     crank.length + |slider.offset| < rod.length",
+                    Num(self.rod.length),
+                    Num(self.crank_length),
+                    gap = Num(self.rod.length - self.crank_length),
+                ),
+            ));
+        }
         if self.rod_formulation != RodFormulation::Rigid {
             self.check_slenderness()?;
             self.check_material_damping()?;

@@ -46,12 +46,15 @@ pub(super) fn unequilibrated(p: &Parameters, error: &ModelError) -> ModelError {
         "rod.initialState = equilibrated: the rod's quasi-static deflection under the inertial \
              loads of the initial motion was not found: {error}. Likely cause: a rod too compliant \
              for that motion (rod.youngsModulus = {} Pa, rod.secondMomentOfArea = {} m4, \
-             rod.length = {} m, crank.initialSpeed = {} rad/s); start with rod.initialState = \
-             straight, or make the rod stiffer or the start slower",
+             rod.length = {} m, {}); start with rod.initialState = straight, or make the rod \
+             stiffer or the start slower",
         Num(p.rod.youngs_modulus),
         Num(p.rod.second_moment_of_area),
         Num(p.rod.length),
-        Num(p.crank_initial_speed)
+        match p.crank_initial_speed {
+            Some(speed) => format!("crank.initialSpeed = {} rad/s", Num(speed)),
+            None => "the crank starting at drive.speed".to_string(),
+        }
     ))
 }
 

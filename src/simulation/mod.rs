@@ -297,9 +297,9 @@ impl Simulation {
                     "crank.initialSpeed = {} rad/s differs from drive.speed = {} rad/s: with the \
                      speed drive the crank's speed jumps to drive.speed at the first step (an \
                      impulsive change through the constraints, booked as drive work); leave \
-                     crank.initialSpeed at its start value (the crank then starts at drive.speed) \
-                     or set it to drive.speed for a smooth start",
-                    Num(self.parameters.crank_initial_speed),
+                     crank.initialSpeed unset (the crank then starts at drive.speed) or set it to \
+                     drive.speed for a smooth start",
+                    Num(current.at(t_start).0.drive_speed),
                     Num(next.value.drive_speed)
                 ));
             }

@@ -16,8 +16,9 @@ pub const DEFLECTION_PER_LENGTH: f64 = 0.05;
 /// Largest crank speed \[rad/s\]: 1 % beyond the range of `drive.speed` (±1e4 rad/s), so that
 /// a speed drive at its limit stays silent.
 pub const CRANK_SPEED: f64 = 1.01e4;
-/// Largest excursion of the slider beyond its rigid-mechanism stroke [l − r − c, l + r + c], as
-/// a fraction of the crank length.
+/// Largest excursion of the slider beyond its rigid-mechanism stroke
+/// [√((l − r)² − e²) − c, √((l + r)² − e²) + c] (e: the slider offset), as a fraction of the crank
+/// length.
 pub const STROKE_EXCESS_PER_CRANK: f64 = 0.01;
 
 /// The warnings of a simulation: which validity limits were already crossed, the messages not
@@ -109,8 +110,14 @@ impl Monitor {
             .iter()
             .sum();
         let (r_c, l, c) = (p.crank_length, p.rod.length, p.joint.clearance + crank_gaps);
+        // The rigid mechanism's stroke: its dead centres at √((l ∓ r)² − e²).
+        let e = p.slider_offset;
+        let (inner, outer) = (
+            ((l - r_c) * (l - r_c) - e * e).sqrt() - c,
+            ((l + r_c) * (l + r_c) - e * e).sqrt() + c,
+        );
         let x = y[layout.slider()];
-        let excess = ((l - r_c - c) - x).max(x - (l + r_c + c));
+        let excess = (inner - x).max(x - outer);
         let speed = y[layout.crank_speed()];
         let deflection = if p.rod_formulation == RodFormulation::Rigid {
             0.0
@@ -153,8 +160,8 @@ impl Monitor {
                     "slider position {} m is {} m beyond its kinematic stroke [{}, {}] m",
                     Num(x),
                     Num(excess),
-                    Num(l - r_c - c),
-                    Num(l + r_c + c)
+                    Num(inner),
+                    Num(outer)
                 ),
                 _ => {
                     let (role, depth, limit) = beyond.unwrap_or((role, 0.0, 0.0));

@@ -53,7 +53,7 @@ pub fn parameters(rtol: f64) -> Parameters {
             ..defaults.rod
         },
         slider_mass: 0.25,
-        crank_initial_speed: SPEED,
+        crank_initial_speed: Some(SPEED),
         main_bearing: bearing,
         crank_pin: bearing,
         joint: JointParameters {

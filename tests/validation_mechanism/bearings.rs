@@ -116,7 +116,7 @@ fn a_long_pin_sinks_as_the_line_contact_says() {
     let depth = |contact_geometry| {
         let p = Parameters {
             rod_formulation: RodFormulation::Rigid,
-            crank_initial_speed: 0.0,
+            crank_initial_speed: Some(0.0),
             crank_initial_angle: 0.5,
             joint: JointParameters {
                 initial_state: flexible_slider_crank::params::JournalStart::Settled,

@@ -40,7 +40,7 @@ fn leaving_the_domain_is_reported_once_per_cause() {
         drive_mode: DriveMode::Torque,
         ..Parameters::default()
     };
-    stiff_drive.crank_initial_speed = 0.0;
+    stiff_drive.crank_initial_speed = Some(0.0);
     let cases = [
         (
             "joint penetration",
@@ -55,7 +55,7 @@ fn leaving_the_domain_is_reported_once_per_cause() {
         (
             "slider position",
             Parameters {
-                crank_initial_speed: 1e4,
+                crank_initial_speed: Some(1e4),
                 ..Parameters::default()
             },
         ),
@@ -71,7 +71,7 @@ fn leaving_the_domain_is_reported_once_per_cause() {
     // A speed drive at the declared limit (1e4 rad/s) is within the drive's range.
     let at_limit = warnings_over_2_ms(
         Simulation::new(Parameters {
-            crank_initial_speed: 1e4,
+            crank_initial_speed: Some(1e4),
             ..Parameters::default()
         })
         .unwrap(),
@@ -96,7 +96,7 @@ fn start_from_rest_is_equilibrated() {
             let p = Parameters {
                 drive_mode,
                 rod_formulation,
-                crank_initial_speed: 0.0,
+                crank_initial_speed: Some(0.0),
                 ..Parameters::default()
             };
             let mut sim = Simulation::new(p).unwrap();

@@ -21,7 +21,7 @@ fn every_contact_law_handles_low_restitution() {
                     ..Parameters::default().joint
                 },
                 rod_formulation: RodFormulation::Rigid,
-                crank_initial_speed: speed,
+                crank_initial_speed: Some(speed),
                 relative_tolerance: 1e-6,
                 ..Parameters::default()
             };
@@ -181,7 +181,7 @@ fn lubricated_orbit_stays_inside_the_clearance() {
             ..Parameters::default().joint
         },
         rod_formulation: RodFormulation::Rigid,
-        crank_initial_speed: speed,
+        crank_initial_speed: Some(speed),
         ..Parameters::default()
     };
     let period = std::f64::consts::TAU / speed;

@@ -35,7 +35,7 @@ fn a_slow_loaded_mechanism_has_a_two_force_rod() {
                 ..Parameters::default().joint
             },
             rod_formulation,
-            crank_initial_speed: speed,
+            crank_initial_speed: Some(speed),
             crank_initial_angle: 0.3,
             ..Parameters::default()
         };
@@ -92,7 +92,7 @@ fn a_rod_at_rest_bends_under_its_own_weight_as_a_pinned_beam() {
                 ..Parameters::default().joint
             },
             rod_formulation,
-            crank_initial_speed: 0.0,
+            crank_initial_speed: Some(0.0),
             gravity: 1000.0,
             ..Parameters::default()
         };
@@ -136,7 +136,7 @@ fn a_rotating_rods_stress_follows_its_inertial_load() {
             },
             rod_formulation,
             n_modes,
-            crank_initial_speed: speed,
+            crank_initial_speed: Some(speed),
             rod: RodProperties {
                 stiffness_damping: 1e-5,
                 ..RodProperties::benchmark_b()

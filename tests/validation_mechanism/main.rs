@@ -13,6 +13,7 @@ mod domain;
 mod impacts;
 mod joints;
 mod loads;
+mod machine;
 mod motion;
 mod sampled_rod;
 mod start;

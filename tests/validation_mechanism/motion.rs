@@ -236,7 +236,7 @@ fn a_crank_at_rest_carries_the_weights_in_any_direction() {
                 gravity: 500.0,
                 gravity_angle: f64::to_radians(angle_deg),
                 crank_initial_angle: theta,
-                crank_initial_speed: 0.0,
+                crank_initial_speed: Some(0.0),
                 relative_tolerance: 1e-8,
                 ..Parameters::default()
             };

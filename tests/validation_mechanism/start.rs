@@ -175,7 +175,7 @@ fn the_crank_starts_at_the_prescribed_speed() {
     assert_eq!(o.warnings, 0);
     let mut jump = Simulation::with_inputs(
         Parameters {
-            crank_initial_speed: 300.0,
+            crank_initial_speed: Some(300.0),
             ..Parameters::default()
         },
         inputs,

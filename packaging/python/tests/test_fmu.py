@@ -539,6 +539,8 @@ BOUND_COMPANIONS = {
     ("crankPin.frictionV1", "min"): {"crankPin.frictionV0": 0.0},
     ("mainBearing.frictionV0", "max"): {"mainBearing.frictionV1": 10.0},
     ("mainBearing.frictionV1", "min"): {"mainBearing.frictionV0": 0.0},
+    ("slider.offset", "min"): {"rod.length": 100.0, "rod.formulation": FORMULATIONS["rigid"]},
+    ("slider.offset", "max"): {"rod.length": 100.0, "rod.formulation": FORMULATIONS["rigid"]},
 }
 
 
