@@ -537,6 +537,7 @@ pub enum Vr {
     MainBearingEnergyDissipated,
     CrankCentreOfMassRatio,
     SliderOffset,
+    RodDampingRatio,
 }
 
 /// 5000 rpm in rad/s (benchmark B); the same expression as `params::BENCHMARK_SPEED`.
@@ -871,7 +872,7 @@ const BASE_VARIABLES: &[Variable] = &[
         0.0,
         1.0,
         "s",
-        "Strain-rate (stiffness-proportional) damping coefficient; a flexible rod takes at most 2/omega1, its first pinned-pinned bending mode critically damped (1.31e-4 s for the default rod)",
+        "Strain-rate (stiffness-proportional) damping coefficient; a flexible rod takes at most 2/omega1, its first pinned-pinned bending mode critically damped (1.31e-4 s for the default rod); rod.dampingRatio gives the same damping as a ratio",
     ),
     Variable::parameter(
         Vr::CrankLength,
@@ -1716,5 +1717,14 @@ const MACHINE_VARIABLES: &[Variable] = &[
         10.0,
         "m",
         "Cylinder (piston-pin) offset: the guide line's distance from the crank pivot along +y; a full turn needs crank.length + |slider.offset| < rod.length. With an offset, crank angle zero is not a dead centre: they lie at asin(e/(l + r)) and pi + asin(e/(l - r))",
+    ),
+    Variable::parameter(
+        Vr::RodDampingRatio,
+        "rod.dampingRatio",
+        0.0,
+        0.0,
+        1.0,
+        "1",
+        "Material damping of the flexible rod as the damping ratio of its first pinned-pinned bending mode, omega1 = pi^2 sqrt(EI/(rho A l^4)): stiffness-proportional, so mode k gets zeta1 omega_k/omega1 (higher modes more); 0.01-0.02 is typical of steel rods, and a damped rod is both the realistic one and the fast one. Exclusive with rod.stiffnessDamping",
     ),
 ];

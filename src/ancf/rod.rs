@@ -38,6 +38,9 @@ pub struct RodProperties {
     pub outer_fibre_distance: f64,
     /// Strain-rate (stiffness-proportional) damping coefficient β \[s\]; 0 = undamped.
     pub stiffness_damping: f64,
+    /// The damping ratio ζ₁ of the first pinned–pinned bending mode, which sets β = 2ζ₁/ω₁ when
+    /// it is not 0 ([`RodProperties::damping`]; at most one of the two is set).
+    pub damping_ratio: f64,
 }
 
 impl RodProperties {
@@ -52,6 +55,7 @@ impl RodProperties {
             second_moment_of_area: 4.195e-9,
             outer_fibre_distance: 7.4893e-3,
             stiffness_damping: 0.0,
+            damping_ratio: 0.0,
         }
     }
 
@@ -64,12 +68,26 @@ impl RodProperties {
         require_positive("rod.secondMomentOfArea", self.second_moment_of_area)?;
         require_positive("rod.outerFibreDistance", self.outer_fibre_distance)?;
         require_non_negative("rod.stiffnessDamping", self.stiffness_damping)?;
+        require_non_negative("rod.dampingRatio", self.damping_ratio)?;
         Ok(())
     }
 
     /// Total mass ρ A L \[kg\].
     pub fn mass(&self) -> f64 {
         self.density * self.area * self.length
+    }
+
+    /// The strain-rate damping coefficient β the rod is integrated with \[s\]: 2ζ₁/ω₁ when the
+    /// damping ratio ζ₁ of its first pinned–pinned bending mode (ω₁,
+    /// [`RodProperties::first_bending_frequency`]) is given, else `stiffness_damping`. Being
+    /// stiffness-proportional, it damps every mode k at ζ_k = β ω_k / 2 = ζ₁ ω_k/ω₁: the rod's
+    /// higher bending modes (ω_k ≈ k² ω₁ pinned–pinned) and its axial modes more.
+    pub fn damping(&self) -> f64 {
+        if self.damping_ratio > 0.0 {
+            2.0 * self.damping_ratio / self.first_bending_frequency()
+        } else {
+            self.stiffness_damping
+        }
     }
 
     /// First axial frequency of the rod held at both ends, ω = (π/L) √(E/ρ) \[rad/s\].
@@ -144,7 +162,7 @@ impl Rod {
             ea: p.youngs_modulus * p.area,
             ei: p.youngs_modulus * p.second_moment_of_area,
             rho_a: p.density * p.area,
-            damping: p.stiffness_damping,
+            damping: p.damping(),
         };
         let element = Element::new(section, p.length / n_elements as f64);
         Ok(Self {

@@ -148,7 +148,7 @@ impl SliderCrank {
         let layout = StateLayout::new(
             n_rod,
             b,
-            rod.rigid_length().is_none() && p.rod.stiffness_damping > 0.0,
+            rod.rigid_length().is_none() && p.rod.damping() > 0.0,
             free_crank,
             clearance.iter().filter(|&&c| c).count(),
         );

@@ -44,6 +44,7 @@ real_fields! {
     RodSecondMomentOfArea => rod.second_moment_of_area;
     RodOuterFibreDistance => rod.outer_fibre_distance;
     RodStiffnessDamping => rod.stiffness_damping;
+    RodDampingRatio => rod.damping_ratio;
     CrankLength => crank_length;
     CrankMass => crank_mass;
     CrankInertia => crank_inertia;

@@ -59,23 +59,48 @@ impl Parameters {
     /// (measured: a 12 cm rod with I = 1.5e-17 m⁴ and β = 1 s, ζ_axial = 7e4, energy-balance
     /// residual 1.2 of the largest energy at rtol 1e-2).
     fn check_material_damping(&self) -> Result<(), ModelError> {
-        let beta = self.rod.stiffness_damping;
+        if self.rod.damping_ratio > 0.0 && self.rod.stiffness_damping > 0.0 {
+            return Err(ModelError::invalid(
+                "rod.dampingRatio",
+                self.rod.damping_ratio,
+                format!(
+                    "{{0}} with rod.stiffnessDamping = {} s: the rod's damping is given either as \
+                     the damping ratio of its first bending mode or as the strain-rate \
+                     coefficient, not both",
+                    Num(self.rod.stiffness_damping)
+                ),
+            ));
+        }
+        let beta = self.rod.damping();
+        let name = if self.rod.damping_ratio > 0.0 {
+            "rod.dampingRatio"
+        } else {
+            "rod.stiffnessDamping"
+        };
         let axial = self.rod.first_axial_frequency();
         let omega = self
             .rod
             .first_bending_frequency()
             .max(axial / Self::MAX_AXIAL_DAMPING_RATIO);
         if beta * omega > 2.0 {
+            let (value, range) = if self.rod.damping_ratio > 0.0 {
+                let first = self.rod.first_bending_frequency();
+                (
+                    self.rod.damping_ratio,
+                    format!("[0, {}]", Num(first / omega)),
+                )
+            } else {
+                (beta, format!("[0, {}] s", Num(2.0 / omega)))
+            };
             return Err(ModelError::invalid(
-                "rod.stiffnessDamping",
-                beta,
+                name,
+                value,
                 format!(
-                    "[0, {}] s for this rod: its first bending mode (ω₁ = π²/L² √(EI/ρA) = {} \
+                    "{range} for this rod: its first bending mode (ω₁ = π²/L² √(EI/ρA) = {} \
                      rad/s from rod.length, rod.youngsModulus, rod.secondMomentOfArea, \
                      rod.density, rod.area) would get the damping ratio β ω₁/2 = {} > 1, \
                      overdamping every mode, or its first axial mode (ω = π/L √(E/ρ) = {} rad/s) \
                      a damping ratio above {}",
-                    Num(2.0 / omega),
                     Num(self.rod.first_bending_frequency()),
                     Num(0.5 * beta * self.rod.first_bending_frequency()),
                     Num(axial),

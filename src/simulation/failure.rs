@@ -73,10 +73,11 @@ fn likely_causes(p: &Parameters) -> String {
             Num(p.joint.friction)
         ));
     }
-    if p.rod_formulation != RodFormulation::Rigid && p.rod.stiffness_damping > 0.0 {
+    if p.rod_formulation != RodFormulation::Rigid && p.rod.damping() > 0.0 {
         causes.push(format!(
-            "strong material damping (rod.stiffnessDamping = {} s)",
-            Num(p.rod.stiffness_damping)
+            "strong material damping (rod.stiffnessDamping = {} s, rod.dampingRatio = {})",
+            Num(p.rod.stiffness_damping),
+            Num(p.rod.damping_ratio)
         ));
     }
     if clearance_joint {

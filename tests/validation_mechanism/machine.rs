@@ -208,3 +208,36 @@ fn the_crank_starts_at_drive_speed_unless_its_initial_speed_is_set() {
         }
     }
 }
+
+/// `rod.dampingRatio` ζ₁ is the strain-rate coefficient β = 2ζ₁/ω₁ with ω₁ = π² √(EI/(ρA l⁴)):
+/// a run with ζ₁ = 1 % equals, bit for bit, one with rod.stiffnessDamping = 2 · 0.01/ω₁; setting
+/// both is refused with a message naming them, and a ratio that would overdamp the rod names its
+/// range.
+#[test]
+fn the_damping_ratio_is_a_strain_rate_coefficient() {
+    let mut by_ratio = Parameters::default();
+    by_ratio.rod.damping_ratio = 0.01;
+    let r = &by_ratio.rod;
+    let omega = (std::f64::consts::PI / r.length).powi(2)
+        * (r.youngs_modulus * r.second_moment_of_area / (r.density * r.area)).sqrt();
+    let mut by_coefficient = Parameters::default();
+    by_coefficient.rod.stiffness_damping = 2.0 * 0.01 / omega;
+    let (_, a) = run(by_ratio.clone(), 0.002, 20);
+    let (_, b) = run(by_coefficient.clone(), 0.002, 20);
+    assert_eq!(a, b);
+    assert!(a[20].material_damping > 0.0);
+    let mut both = by_ratio.clone();
+    both.rod.stiffness_damping = 1e-6;
+    let message = Simulation::new(both).unwrap_err().to_string();
+    assert!(message.contains("rod.dampingRatio = 0.01"), "{message}");
+    assert!(message.contains("rod.stiffnessDamping = 1e-6"), "{message}");
+    let mut overdamped = by_ratio;
+    overdamped.rod.damping_ratio = 1.0;
+    overdamped.rod.second_moment_of_area = 1.5e-12;
+    let message = Simulation::new(overdamped).unwrap_err().to_string();
+    println!("{message}");
+    assert!(
+        message.contains("rod.dampingRatio = 1 is outside"),
+        "{message}"
+    );
+}

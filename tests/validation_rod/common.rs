@@ -45,6 +45,7 @@ pub fn slender_rod(n_elements: usize) -> Rod {
         // A rectangle of that I/A: height √(12 I/A) = 1.095 mm.
         outer_fibre_distance: 5.477e-4,
         stiffness_damping: 0.0,
+        damping_ratio: 0.0,
     };
     Rod::new(properties, n_elements).unwrap()
 }
