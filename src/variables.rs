@@ -538,6 +538,8 @@ pub enum Vr {
     CrankCentreOfMassRatio,
     SliderOffset,
     RodDampingRatio,
+    RodCrankEndMass,
+    RodSliderEndMass,
 }
 
 /// 5000 rpm in rad/s (benchmark B); the same expression as `params::BENCHMARK_SPEED`.
@@ -1422,13 +1424,13 @@ const BASE_VARIABLES: &[Variable] = &[
         Vr::RodAxialForceCrankPin,
         "rod.axialForceCrankPin",
         "N",
-        "Axial force of the rod at the crank pin (along the rod's end tangent), tension positive",
+        "Axial force of the rod's shank at the crank pin (along the rod's end tangent; rod.crankEndMass's inertia and weight excluded), tension positive",
     ),
     Variable::output(
         Vr::RodAxialForceSliderPin,
         "rod.axialForceSliderPin",
         "N",
-        "Axial force of the rod at the slider pin (along the rod's end tangent), tension positive",
+        "Axial force of the rod's shank at the slider pin (along the rod's end tangent; rod.sliderEndMass's inertia and weight excluded), tension positive",
     ),
     Variable::enumeration(
         Vr::JointInitialState,
@@ -1726,5 +1728,23 @@ const MACHINE_VARIABLES: &[Variable] = &[
         1.0,
         "1",
         "Material damping of the flexible rod as the damping ratio of its first pinned-pinned bending mode, omega1 = pi^2 sqrt(EI/(rho A l^4)): stiffness-proportional, so mode k gets zeta1 omega_k/omega1 (higher modes more); 0.01-0.02 is typical of steel rods, and a damped rod is both the realistic one and the fast one. Exclusive with rod.stiffnessDamping",
+    ),
+    Variable::parameter(
+        Vr::RodCrankEndMass,
+        "rod.crankEndMass",
+        0.0,
+        0.0,
+        1e4,
+        "kg",
+        "Mass lumped at the crank-pin centre (the rod's big eye, its bush and bolts), beside the beam's rod.density rod.area rod.length: in the rod's inertia, weight and loads, not in its stress",
+    ),
+    Variable::parameter(
+        Vr::RodSliderEndMass,
+        "rod.sliderEndMass",
+        0.0,
+        0.0,
+        1e4,
+        "kg",
+        "Mass lumped at the slider-pin centre (the rod's small eye)",
     ),
 ];

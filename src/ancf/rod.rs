@@ -41,6 +41,12 @@ pub struct RodProperties {
     /// The damping ratio ζ₁ of the first pinned–pinned bending mode, which sets β = 2ζ₁/ω₁ when
     /// it is not 0 ([`RodProperties::damping`]; at most one of the two is set).
     pub damping_ratio: f64,
+    /// Mass lumped at the crank-pin centre (the rod's big eye, its bush and bolts) \[kg\]: part
+    /// of the rod's inertia and weight, not of its beam (the ANCF element carries ρ A only; the
+    /// mechanism adds it at the pin).
+    pub crank_end_mass: f64,
+    /// Mass lumped at the slider-pin centre (the small eye) \[kg\].
+    pub slider_end_mass: f64,
 }
 
 impl RodProperties {
@@ -56,6 +62,8 @@ impl RodProperties {
             outer_fibre_distance: 7.4893e-3,
             stiffness_damping: 0.0,
             damping_ratio: 0.0,
+            crank_end_mass: 0.0,
+            slider_end_mass: 0.0,
         }
     }
 
@@ -69,12 +77,24 @@ impl RodProperties {
         require_positive("rod.outerFibreDistance", self.outer_fibre_distance)?;
         require_non_negative("rod.stiffnessDamping", self.stiffness_damping)?;
         require_non_negative("rod.dampingRatio", self.damping_ratio)?;
+        require_non_negative("rod.crankEndMass", self.crank_end_mass)?;
+        require_non_negative("rod.sliderEndMass", self.slider_end_mass)?;
         Ok(())
     }
 
-    /// Total mass ρ A L \[kg\].
+    /// The beam's mass ρ A L \[kg\] (without the end masses).
     pub fn mass(&self) -> f64 {
         self.density * self.area * self.length
+    }
+
+    /// The rod's whole mass: the beam's and the end masses \[kg\].
+    pub fn total_mass(&self) -> f64 {
+        self.mass() + self.crank_end_mass + self.slider_end_mass
+    }
+
+    /// The end masses at the crank pin and at the slider pin \[kg\].
+    pub fn end_masses(&self) -> [f64; 2] {
+        [self.crank_end_mass, self.slider_end_mass]
     }
 
     /// The strain-rate damping coefficient β the rod is integrated with \[s\]: 2ζ₁/ω₁ when the

@@ -19,6 +19,10 @@
 //! The stress: for a flexible rod from its strains ([`crate::ancf::Rod::largest_normal_stress`]);
 //! for the rigid rod from the equilibrium of its parts under the pin force and the distributed
 //! inertia and gravity (d'Alembert), in closed form ([`rigid_rod_stress`]).
+//!
+//! With masses lumped at the pins (the rod's eyes, m_A and m_B) the pin forces move them too: the
+//! rod's shank receives F_A − m_A (a_A − g) at A and F_B − m_B (a_B − g) at B, which set the axial
+//! forces at the pins and the rigid rod's stress (the eyes are not beam material).
 
 use nalgebra::Vector2;
 
@@ -90,13 +94,14 @@ impl SliderCrank {
                 let (r_a, r_b) = (pair(y, PIN_A), pair(y, l.pin_b()));
                 let t = (r_b - r_a).normalize();
                 let accelerations = [pair(dy, l.rate_of(PIN_A)), pair(dy, l.rate_of(l.pin_b()))];
+                let [shank_a, _] = self.shank_forces(dy, crank_pin, joint_force);
                 Deformation {
                     energy: 0.0,
                     stress: rigid_rod_stress(
                         &self.rod_section,
                         t,
                         accelerations,
-                        crank_pin,
+                        shank_a,
                         self.gravity,
                     ),
                     tangents: [t, t],
@@ -105,14 +110,35 @@ impl SliderCrank {
             RodBody::Flexible(model) => model.deformation(&y[l.rod()]),
         };
         let [t_a, t_b] = deformation.tangents;
+        let [shank_a, shank_b] = self.shank_forces(dy, crank_pin, joint_force);
         Loads {
             crank_pin,
             main_bearing,
             guide: joint_force.y - self.slider_mass * self.gravity.y,
-            axial: [-crank_pin.dot(&t_a), joint_force.dot(&t_b)],
+            axial: [-shank_a.dot(&t_a), shank_b.dot(&t_b)],
             stress: deformation.stress,
             deformation_energy: deformation.energy,
         }
+    }
+}
+
+impl SliderCrank {
+    /// The forces on the rod's shank at its ends, the pin forces `crank_pin` (of the crank on the
+    /// rod at A) and `joint_force` (on the rod's journal at B) less what accelerates the end masses:
+    /// F − m (a − g) at each pin, with the accelerations of `dy`.
+    fn shank_forces(
+        &self,
+        dy: &[f64],
+        crank_pin: Vector2<f64>,
+        joint_force: Vector2<f64>,
+    ) -> [Vector2<f64>; 2] {
+        let l = self.layout;
+        let [m_a, m_b] = self.rod_section.end_masses();
+        let (a_a, a_b) = (pair(dy, l.rate_of(PIN_A)), pair(dy, l.rate_of(l.pin_b())));
+        [
+            crank_pin - m_a * (a_a - self.gravity),
+            joint_force - m_b * (a_b - self.gravity),
+        ]
     }
 }
 

@@ -8,6 +8,9 @@
 //!   ½(|r_B − r_A|² − l²) = 0 added by the mechanism.
 //! - ANCF / Craig–Bampton: [`RodModel`].
 //!
+//! The end masses m_A, m_B (the eyes) add m_A I₂ and m_B I₂ to M at the pins' coordinates, and
+//! their weights m g to the gravity load there.
+//!
 //! # References
 //! - J. García de Jalón, E. Bayo (1994), Kinematic and Dynamic Simulation of Multibody Systems,
 //!   Springer, ch. 3 (natural coordinates).
@@ -25,8 +28,10 @@ use crate::reduction::{RodEnd, RodModel};
 pub enum RodBody {
     /// Rigid uniform bar in natural coordinates [r_A, r_B].
     Rigid {
-        /// Mass \[kg\].
+        /// The bar's mass \[kg\].
         mass: f64,
+        /// The masses at its pins, A and B \[kg\].
+        end_masses: [f64; 2],
         /// Length \[m\].
         length: f64,
         /// Constant 4 × 4 mass matrix.
@@ -46,31 +51,36 @@ impl RodBody {
         match p.rod_formulation {
             RodFormulation::Rigid => {
                 let mass = p.rod.mass();
+                let end_masses = p.rod.end_masses();
                 let mass_matrix = Mat::from_fn(4, 4, |i, j| {
                     if i % 2 != j % 2 {
                         0.0
                     } else if i / 2 == j / 2 {
-                        mass / 3.0
+                        mass / 3.0 + end_masses[i / 2]
                     } else {
                         mass / 6.0
                     }
                 });
                 Ok(Self::Rigid {
                     mass,
+                    end_masses,
                     length: p.rod.length,
                     mass_matrix,
                 })
             }
-            RodFormulation::Ancf => Ok(Self::Flexible(Box::new(RodModel::full(Rod::new(
-                p.rod,
-                p.n_elements,
-            )?)?))),
-            RodFormulation::CraigBampton => Ok(Self::Flexible(Box::new(RodModel::craig_bampton(
-                Rod::new(p.rod, p.n_elements)?,
-                p.n_modes,
-                p.boundary,
-                p.quadrature,
-            )?))),
+            RodFormulation::Ancf => Ok(Self::Flexible(Box::new(
+                RodModel::full(Rod::new(p.rod, p.n_elements)?)?
+                    .with_end_masses(p.rod.end_masses())?,
+            ))),
+            RodFormulation::CraigBampton => Ok(Self::Flexible(Box::new(
+                RodModel::craig_bampton(
+                    Rod::new(p.rod, p.n_elements)?,
+                    p.n_modes,
+                    p.boundary,
+                    p.quadrature,
+                )?
+                .with_end_masses(p.rod.end_masses())?,
+            ))),
         }
     }
 
@@ -101,13 +111,31 @@ impl RodBody {
     /// Solves M x = b in place.
     pub fn solve_mass(&self, b: &mut [f64]) {
         match self {
-            Self::Rigid { mass, .. } => {
+            Self::Rigid {
+                mass, end_masses, ..
+            } if *end_masses == [0.0; 2] => {
                 // M⁻¹ = (2/m) [2 −1; −1 2] ⊗ I₂.
                 let c = 2.0 / mass;
                 for d in 0..2 {
                     let (a, bb) = (b[d], b[2 + d]);
                     b[d] = c * (2.0 * a - bb);
                     b[2 + d] = c * (2.0 * bb - a);
+                }
+            }
+            Self::Rigid {
+                mass, end_masses, ..
+            } => {
+                // [m/3 + m_A, m/6; m/6, m/3 + m_B]⁻¹ ⊗ I₂.
+                let (p, q, r) = (
+                    mass / 3.0 + end_masses[0],
+                    mass / 6.0,
+                    mass / 3.0 + end_masses[1],
+                );
+                let det = p * r - q * q;
+                for d in 0..2 {
+                    let (a, bb) = (b[d], b[2 + d]);
+                    b[d] = (r * a - q * bb) / det;
+                    b[2 + d] = (p * bb - q * a) / det;
                 }
             }
             Self::Flexible(model) => model.solve_mass(b),
@@ -129,14 +157,25 @@ impl RodBody {
     /// Constant gravity load for the acceleration `g`.
     pub fn gravity_force(&self, g: Vector2<f64>) -> Vec<f64> {
         match self {
-            Self::Rigid { mass, .. } => {
+            Self::Rigid {
+                mass, end_masses, ..
+            } => {
                 let half = 0.5 * mass;
-                vec![half * g.x, half * g.y, half * g.x, half * g.y]
+                let [a, b] = end_masses.map(|m| half + m);
+                vec![a * g.x, a * g.y, b * g.x, b * g.y]
             }
             Self::Flexible(model) => {
                 let q = model.rod().gravity_force(g);
                 let mut out = vec![0.0; model.n_coordinates()];
                 model.project_force(&q, &mut out);
+                let b = model.end_node_offset();
+                for (pin, m) in [0, b]
+                    .into_iter()
+                    .zip(model.rod().properties().end_masses())
+                {
+                    out[pin] += m * g.x;
+                    out[pin + 1] += m * g.y;
+                }
                 out
             }
         }

@@ -62,6 +62,7 @@ pub struct SliderCrank {
     /// Gravitational acceleration \[m/s²\].
     pub(super) gravity: Vector2<f64>,
     pub(super) rod_length: f64,
+    /// The rod's whole mass, its end masses included \[kg\].
     pub(super) rod_mass: f64,
     /// The rod's material and section (the rigid rod's stress).
     pub(super) rod_section: RodProperties,
@@ -178,7 +179,7 @@ impl SliderCrank {
             slider_mass: p.slider_mass,
             gravity: p.gravity_vector(),
             rod_length: p.rod.length,
-            rod_mass: p.rod.mass(),
+            rod_mass: p.rod.total_mass(),
             rod_section: p.rod,
             rod_translation,
             reference_speed: p.start_speed(inputs.drive_speed).abs().max(1.0),

@@ -45,6 +45,8 @@ real_fields! {
     RodOuterFibreDistance => rod.outer_fibre_distance;
     RodStiffnessDamping => rod.stiffness_damping;
     RodDampingRatio => rod.damping_ratio;
+    RodCrankEndMass => rod.crank_end_mass;
+    RodSliderEndMass => rod.slider_end_mass;
     CrankLength => crank_length;
     CrankMass => crank_mass;
     CrankInertia => crank_inertia;

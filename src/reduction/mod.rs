@@ -68,6 +68,8 @@ pub struct RodModel {
     sampled: Option<SampledForces>,
     mass: Mat<f64>,
     mass_factor: BandCholesky,
+    /// Masses lumped at the crank-pin and the slider-pin ends (in `mass`) \[kg\].
+    end_masses: [f64; 2],
     /// r_ₓ at each end ([`RodEnd`]) = Σ (w · (p₂ⱼ, p₂ⱼ₊₁)) over (j, w): the end slopes as
     /// combinations of coordinate pairs.
     end_slopes: [Vec<(usize, f64)>; 2],
@@ -173,6 +175,7 @@ impl RodModel {
             sampled: None,
             mass_factor,
             mass,
+            end_masses: [0.0; 2],
             e: vec![0.0; n_full],
             e_dot: vec![0.0; n_full],
             q: vec![0.0; n_full],
@@ -181,6 +184,25 @@ impl RodModel {
             memo: ForceMemo::new(n),
             rod,
         })
+    }
+
+    /// The model with the masses `end_masses` lumped at its end nodes' positions (the pins): added
+    /// to the mass matrix's diagonal there, where the coordinates are physical in every model
+    /// (the reduced rod's boundary block; its fixed-interface modes do not change), and the
+    /// factor renewed. Without end masses the model is returned as it is.
+    pub fn with_end_masses(mut self, end_masses: [f64; 2]) -> Result<Self, ModelError> {
+        if end_masses == [0.0; 2] {
+            return Ok(self);
+        }
+        let b = self.end_node_offset();
+        for (pin, mass) in [0, b].into_iter().zip(end_masses) {
+            for d in 0..2 {
+                self.mass[(pin + d, pin + d)] += mass;
+            }
+        }
+        self.mass_factor = BandCholesky::new(self.mass.as_ref())?;
+        self.end_masses = end_masses;
+        Ok(self)
     }
 
     /// The underlying ANCF rod.
@@ -376,14 +398,21 @@ impl RodModel {
     }
 
     /// Model coordinates of nodal coordinates `e`: the M-orthogonal projection
-    /// p = (Vᵀ M V)⁻¹ Vᵀ M e, exact when e lies in the reduced space (e.g. any straight rod).
+    /// p = (Vᵀ M V)⁻¹ Vᵀ M e, exact when e lies in the reduced space (e.g. any straight rod), M
+    /// the beam's mass with the end masses at its end nodes' positions.
     pub fn model_coordinates(&self, e: &[f64]) -> Vec<f64> {
         let Some(cb) = &self.reduction else {
             return e.to_vec();
         };
         let me = self.rod.mass_matrix() * MatRef::from_column_major_slice(e, e.len(), 1);
         let mut p = vec![0.0; self.n_coordinates()];
-        let me: Vec<f64> = (0..e.len()).map(|i| me[(i, 0)]).collect();
+        let mut me: Vec<f64> = (0..e.len()).map(|i| me[(i, 0)]).collect();
+        let last = self.rod.last_node_offset();
+        for (node, mass) in [0, last].into_iter().zip(self.end_masses) {
+            for d in 0..2 {
+                me[node + d] += mass * e[node + d];
+            }
+        }
         cb.project(&me, &mut p);
         self.solve_mass(&mut p);
         p

@@ -241,3 +241,145 @@ fn the_damping_ratio_is_a_strain_rate_coefficient() {
         "{message}"
     );
 }
+
+/// The rigid mechanism with ideal joints at 1000 rpm under a −500 N slider force, over half a
+/// revolution: the outputs at 60 points.
+fn ideal_rigid(p: Parameters) -> Vec<Outputs> {
+    let p = Parameters {
+        rod_formulation: RodFormulation::Rigid,
+        joint: JointParameters {
+            model: JointModel::Ideal,
+            ..JointParameters::benchmark()
+        },
+        crank_initial_speed: Some(1000.0 * std::f64::consts::TAU / 60.0),
+        relative_tolerance: 1e-10,
+        ..p
+    };
+    let inputs = Inputs {
+        drive_speed: 1000.0 * std::f64::consts::TAU / 60.0,
+        slider_force: -500.0,
+        ..Default::default()
+    };
+    let mut sim = Simulation::with_inputs(p, inputs).unwrap();
+    (1..=60)
+        .map(|k| {
+            sim.advance_to(f64::from(k) * 5e-4).unwrap();
+            sim.outputs().unwrap()
+        })
+        .collect()
+}
+
+/// The largest relative difference between two runs' values of `f`, against the largest |f|.
+fn differ(a: &[Outputs], b: &[Outputs], f: impl Fn(&Outputs) -> f64) -> f64 {
+    let scale = a.iter().map(|o| f(o).abs()).fold(0.0, f64::max);
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| (f(x) - f(y)).abs())
+        .fold(0.0, f64::max)
+        / scale
+}
+
+/// A mass at the rod's slider pin moves as the slider does (the ideal joint ties the pin to it):
+/// `rod.sliderEndMass` = 0.1 kg gives the crank the loads that 0.1 kg more on the slider gives —
+/// crank-pin and main-bearing forces and crank torque within 1e-6. A mass at the crank pin moves
+/// with the crank's pin: `rod.crankEndMass` = 0.2 kg gives the main-bearing force and the crank
+/// torque of that mass merged into the crank (its mass, centre of mass and inertia about it
+/// recomputed), within 1e-6.
+#[test]
+fn end_masses_act_as_the_masses_they_ride_with() {
+    let base = Parameters::default();
+    let mut on_rod = base.clone();
+    on_rod.rod.slider_end_mass = 0.1;
+    let on_slider = Parameters {
+        slider_mass: base.slider_mass + 0.1,
+        ..base.clone()
+    };
+    let (a, b) = (ideal_rigid(on_rod), ideal_rigid(on_slider));
+    for (name, f) in [
+        (
+            "crankPin.force",
+            (|o: &Outputs| o.crank_pin_force) as fn(&Outputs) -> f64,
+        ),
+        ("mainBearing.force", |o: &Outputs| o.main_bearing_force),
+        ("crank.torque", |o: &Outputs| o.crank_torque),
+    ] {
+        let d = differ(&a, &b, f);
+        println!("slider-end mass vs slider mass: {name} differs by {d:.1e}");
+        assert!(d < 1e-6, "{name}: {d:e}");
+    }
+    let (m_c, m, r) = (base.crank_mass, 0.2, base.crank_length);
+    let a_c = base.crank_centre_of_mass();
+    let merged = m_c + m;
+    let centre = (m_c * a_c + m * r) / merged;
+    let mut on_rod = base.clone();
+    on_rod.rod.crank_end_mass = m;
+    let on_crank = Parameters {
+        crank_mass: merged,
+        crank_centre_of_mass_ratio: centre / r,
+        crank_inertia: base.crank_inertia + m_c * (a_c - centre).powi(2) + m * (r - centre).powi(2),
+        ..base
+    };
+    let (a, b) = (ideal_rigid(on_rod), ideal_rigid(on_crank));
+    for (name, f) in [
+        (
+            "mainBearing.force",
+            (|o: &Outputs| o.main_bearing_force) as fn(&Outputs) -> f64,
+        ),
+        ("crank.torque", |o: &Outputs| o.crank_torque),
+    ] {
+        let d = differ(&a, &b, f);
+        println!("crank-end mass vs merged into the crank: {name} differs by {d:.1e}");
+        assert!(d < 1e-6, "{name}: {d:e}");
+    }
+}
+
+/// A flexible rod ten times stiffer than benchmark B's (2 % damping, so that its start-up
+/// vibration dies out), with end masses of 0.15 and 0.05 kg, full (8 elements) and reduced
+/// (4 modes), gives the rigid rod's loads with the same end masses: crank-pin and main-bearing
+/// forces and crank torque within 0.5 % of their largest.
+#[test]
+fn a_stiff_flexible_rod_with_end_masses_has_the_rigid_rods_loads() {
+    let mut base = Parameters::default();
+    base.rod.crank_end_mass = 0.15;
+    base.rod.slider_end_mass = 0.05;
+    let rigid = ideal_rigid(base.clone());
+    for rod_formulation in [RodFormulation::Ancf, RodFormulation::CraigBampton] {
+        let mut p = base.clone();
+        p.rod.youngs_modulus *= 10.0;
+        p.rod.damping_ratio = 0.02;
+        let p = Parameters {
+            rod_formulation,
+            joint: JointParameters {
+                model: JointModel::Ideal,
+                ..JointParameters::benchmark()
+            },
+            crank_initial_speed: Some(1000.0 * std::f64::consts::TAU / 60.0),
+            relative_tolerance: 1e-5,
+            ..p
+        };
+        let inputs = Inputs {
+            drive_speed: 1000.0 * std::f64::consts::TAU / 60.0,
+            slider_force: -500.0,
+            ..Default::default()
+        };
+        let mut sim = Simulation::with_inputs(p, inputs).unwrap();
+        let flexible: Vec<Outputs> = (1..=60)
+            .map(|k| {
+                sim.advance_to(f64::from(k) * 5e-4).unwrap();
+                sim.outputs().unwrap()
+            })
+            .collect();
+        for (name, f) in [
+            (
+                "crankPin.force",
+                (|o: &Outputs| o.crank_pin_force) as fn(&Outputs) -> f64,
+            ),
+            ("mainBearing.force", |o: &Outputs| o.main_bearing_force),
+            ("crank.torque", |o: &Outputs| o.crank_torque),
+        ] {
+            let d = differ(&rigid, &flexible, f);
+            println!("{rod_formulation:?}, stiff, end masses: {name} differs by {d:.1e}");
+            assert!(d < 5e-3, "{rod_formulation:?} {name}: {d:e}");
+        }
+    }
+}

@@ -46,6 +46,8 @@ pub fn slender_rod(n_elements: usize) -> Rod {
         outer_fibre_distance: 5.477e-4,
         stiffness_damping: 0.0,
         damping_ratio: 0.0,
+        crank_end_mass: 0.0,
+        slider_end_mass: 0.0,
     };
     Rod::new(properties, n_elements).unwrap()
 }
