@@ -62,6 +62,10 @@ pub const DESCRIPTION: Description<Vr> = Description {
         (Vr::GuideForcePeak, "kN"),
         (Vr::RodStress, "MPa"),
         (Vr::RodStressPeak, "MPa"),
+        (Vr::RodStressMax, "MPa"),
+        (Vr::RodStressMin, "MPa"),
+        (Vr::RodStressMaxPeak, "MPa"),
+        (Vr::RodStressMinPeak, "MPa"),
         (Vr::RodAxialForceCrankPin, "kN"),
         (Vr::RodAxialForceSliderPin, "kN"),
         (Vr::RodOuterFibreDistance, "mm"),
@@ -292,6 +296,13 @@ pub const FEEDTHROUGH: &[(Vr, &[Vr])] = &[
     (Vr::RodStressPeak, ALL_INPUTS),
     (Vr::RodAxialForceCrankPin, ALL_INPUTS),
     (Vr::RodAxialForceSliderPin, ALL_INPUTS),
+    (Vr::RodStressMax, ALL_INPUTS),
+    (Vr::RodStressMin, ALL_INPUTS),
+    (Vr::RodStressMaxPeak, ALL_INPUTS),
+    (Vr::RodStressMinPeak, ALL_INPUTS),
+    (Vr::RodStressLocation, ALL_INPUTS),
+    (Vr::RodAxialForceMidspan, ALL_INPUTS),
+    (Vr::RodBendingMomentMidspan, ALL_INPUTS),
 ];
 
 /// The accelerations and the forces that follow from them react to every input at once: the
@@ -540,6 +551,13 @@ pub enum Vr {
     RodDampingRatio,
     RodCrankEndMass,
     RodSliderEndMass,
+    RodStressMax,
+    RodStressMin,
+    RodStressMaxPeak,
+    RodStressMinPeak,
+    RodStressLocation,
+    RodAxialForceMidspan,
+    RodBendingMomentMidspan,
 }
 
 /// 5000 rpm in rad/s (benchmark B); the same expression as `params::BENCHMARK_SPEED`.
@@ -1746,5 +1764,47 @@ const MACHINE_VARIABLES: &[Variable] = &[
         1e4,
         "kg",
         "Mass lumped at the slider-pin centre (the rod's small eye)",
+    ),
+    Variable::output(
+        Vr::RodStressMax,
+        "rod.stressMax",
+        "Pa",
+        "The most tensile fibre stress over the rod, max (N/A + |M| c/I) (signed: negative when the whole rod is compressed); N axial force, tension positive, M bending moment, c = rod.outerFibreDistance",
+    ),
+    Variable::output(
+        Vr::RodStressMin,
+        "rod.stressMin",
+        "Pa",
+        "The most compressive fibre stress over the rod, min (N/A - |M| c/I) (signed: negative in compression)",
+    ),
+    Variable::peak(
+        Vr::RodStressMaxPeak,
+        "rod.stressMaxPeak",
+        "Pa",
+        "Largest rod.stressMax over the last communication interval (every internal step)",
+    ),
+    Variable::peak(
+        Vr::RodStressMinPeak,
+        "rod.stressMinPeak",
+        "Pa",
+        "Smallest rod.stressMin over the last communication interval (every internal step); with rod.stressMaxPeak the stress range a fatigue check reads",
+    ),
+    Variable::output(
+        Vr::RodStressLocation,
+        "rod.stressLocation",
+        "1",
+        "Where the largest |stress| (rod.stress) lies, as a fraction of the rod's length from the crank pin",
+    ),
+    Variable::output(
+        Vr::RodAxialForceMidspan,
+        "rod.axialForceMidspan",
+        "N",
+        "Axial force at the rod's middle section, tension positive",
+    ),
+    Variable::output(
+        Vr::RodBendingMomentMidspan,
+        "rod.bendingMomentMidspan",
+        "N.m",
+        "Bending moment at the rod's middle section, positive where the rod bends to its left (counter-clockwise curvature, looking along the rod from the crank pin)",
     ),
 ];

@@ -15,4 +15,4 @@ pub mod rod;
 pub mod shape;
 
 pub use element::{Element, Section};
-pub use rod::{Rod, RodProperties};
+pub use rod::{NormalStresses, Rod, RodProperties};

@@ -153,10 +153,66 @@ const PATCH_AT_NODE: [f64; 4] = [
 /// A one-element rod's linear field through its two Gauss-point values (given twice, as
 /// [g₁, g₂, g₁, g₂]) at ξ = 0, 1/2 and 1.
 const SINGLE_ELEMENT: [[f64; 4]; 3] = {
-    let (a, b) = (0.211_324_865_405_187_1, 0.788_675_134_594_812_9);
+    let (a, b) = GAUSS_POINTS;
     let (w, v) = (0.5 * b / (b - a), -0.5 * a / (b - a));
     [[w, v, w, v], [0.25; 4], [v, w, v, w]]
 };
+
+/// The places (element fractions) of an element's two Gauss points, (1 ∓ 1/√3)/2, at which the
+/// patch weights above read the strains.
+const GAUSS_POINTS: (f64, f64) = (0.211_324_865_405_187_1, 0.788_675_134_594_812_9);
+
+/// The normal stresses of a rod in one state ([`Rod::normal_stresses`]; SI units).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct NormalStresses {
+    /// The largest magnitude over the rod, |N|/A + |M| c/I \[Pa\].
+    pub largest: f64,
+    /// The most tensile fibre's stress, max (N/A + |M| c/I) \[Pa\].
+    pub max: f64,
+    /// The most compressive fibre's stress, min (N/A − |M| c/I) \[Pa\].
+    pub min: f64,
+    /// Where the largest magnitude lies, a fraction of the rod's length from the crank pin.
+    pub location: f64,
+    /// The axial force at mid-span, tension positive \[N\].
+    pub midspan_axial_force: f64,
+    /// The bending moment at mid-span, positive where the rod turns left (counter-clockwise
+    /// curvature) \[N m\].
+    pub midspan_moment: f64,
+}
+
+/// The extremes of ε ± c |κ| over the samples of a rod, and where the largest magnitude lies.
+#[derive(Clone, Copy, Debug)]
+struct Field {
+    largest: f64,
+    max: f64,
+    min: f64,
+    location: f64,
+}
+
+impl Default for Field {
+    fn default() -> Self {
+        Self {
+            largest: 0.0,
+            max: f64::NEG_INFINITY,
+            min: f64::INFINITY,
+            location: 0.0,
+        }
+    }
+}
+
+impl Field {
+    /// Takes in the strains (ε, κ) at `place` along the rod, for the outer-fibre distance `c`.
+    fn add(&mut self, place: f64, (eps, kappa): (f64, f64), c: f64) {
+        let bending = c * kappa.abs();
+        let magnitude = eps.abs() + bending;
+        if magnitude > self.largest {
+            self.largest = magnitude;
+            self.location = place;
+        }
+        self.max = self.max.max(eps + bending);
+        self.min = self.min.min(eps - bending);
+    }
+}
 
 /// An assembled ANCF rod of `n` equal elements.
 #[derive(Clone, Debug)]
@@ -280,8 +336,11 @@ impl Rod {
         }
     }
 
-    /// Largest normal stress magnitude over the rod, max |N|/A + |M| c/I = E max (|ε| + c |κ|)
-    /// (Euler–Bernoulli, c the outer-fibre distance) \[Pa\].
+    /// The rod's normal stresses ([`NormalStresses`]): over the rod, σ = N/A ± |M| c/I =
+    /// E (ε ± c |κ|) (Euler–Bernoulli, c the outer-fibre distance), its largest magnitude
+    /// |N|/A + |M| c/I and where it lies, its most tensile and most compressive values, and the
+    /// axial force and bending moment at mid-span (N = EA ε, M = EI κ: tension and a left-turning
+    /// curvature positive).
     ///
     /// N and M are taken at the elements' Gauss points, where they are superconvergent
     /// ([`Element::strain_at_stress_points`]), and recovered at the nodes and the element
@@ -290,9 +349,10 @@ impl Rod {
     /// Int. J. Numer. Meth. Eng. 33, 1331–1364). The recovery is exact for a quadratic moment (a
     /// beam under a uniform load), so the largest moment is found wherever it lies: at a node, in
     /// an element, at a pin. A one-element rod uses its own linear field.
-    pub fn largest_normal_stress(&self, e: &[f64]) -> f64 {
+    pub fn normal_stresses(&self, e: &[f64]) -> NormalStresses {
         let n = self.n_elements;
-        let c = self.properties.outer_fibre_distance;
+        let p = &self.properties;
+        let c = p.outer_fibre_distance;
         // (ε, κ) at the Gauss points, in order along the rod (no allocation: at most 64 elements).
         let mut points = [(0.0, 0.0); 2 * MAX_ELEMENTS];
         for j in 0..n {
@@ -303,7 +363,6 @@ impl Rod {
             points[2 * j + 1] = b;
         }
         let points = &points[..2 * n];
-        let sigma = |(eps, kappa): (f64, f64)| eps.abs() + c * kappa.abs();
         let combine = |weights: &[f64; 4], values: &[(f64, f64)]| {
             weights
                 .iter()
@@ -312,30 +371,53 @@ impl Rod {
                     (eps + w * v.0, kappa + w * v.1)
                 })
         };
-        let mut largest = points.iter().map(|&p| sigma(p)).fold(0.0, f64::max);
-        if n == 1 {
-            let doubled = [points[0], points[1], points[0], points[1]];
-            for weights in &SINGLE_ELEMENT {
-                largest = largest.max(sigma(combine(weights, &doubled)));
-            }
+        // Every sample: its place along the rod (a fraction of its length) and (ε, κ) there.
+        let mut field = Field::default();
+        let (a, b) = GAUSS_POINTS;
+        let element = 1.0 / n as f64;
+        for (k, &point) in points.iter().enumerate() {
+            let offset = if k % 2 == 0 { a } else { b };
+            field.add(((k / 2) as f64 + offset) * element, point, c);
         }
+        let mirrored = |w: &[f64; 4]| [w[3], w[2], w[1], w[0]];
+        let midspan = if n == 1 {
+            let doubled = [points[0], points[1], points[0], points[1]];
+            for (weights, place) in SINGLE_ELEMENT.iter().zip([0.0, 0.5, 1.0]) {
+                field.add(place, combine(weights, &doubled), c);
+            }
+            combine(&SINGLE_ELEMENT[1], &doubled)
+        } else if n % 2 == 0 {
+            combine(&PATCH_AT_NODE, &points[n - 2..n + 2])
+        } else {
+            combine(&PATCH_AT_HALF, &points[n - 1..n + 3])
+        };
         // Patch j: elements j and j + 1, its points at a, b, 1 + a, 1 + b element lengths.
         for j in 0..n.saturating_sub(1) {
             let patch = &points[2 * j..2 * j + 4];
-            largest = largest
-                .max(sigma(combine(&PATCH_AT_NODE, patch)))
-                .max(sigma(combine(&PATCH_AT_HALF, patch)));
+            field.add((j + 1) as f64 * element, combine(&PATCH_AT_NODE, patch), c);
+            field.add(
+                (j as f64 + 0.5) * element,
+                combine(&PATCH_AT_HALF, patch),
+                c,
+            );
             if j == 0 {
-                largest = largest.max(sigma(combine(&PATCH_AT_END, patch)));
+                field.add(0.0, combine(&PATCH_AT_END, patch), c);
             }
             if j + 2 == n {
-                let mirrored = |w: &[f64; 4]| [w[3], w[2], w[1], w[0]];
-                largest = largest
-                    .max(sigma(combine(&mirrored(&PATCH_AT_HALF), patch)))
-                    .max(sigma(combine(&mirrored(&PATCH_AT_END), patch)));
+                let half = combine(&mirrored(&PATCH_AT_HALF), patch);
+                field.add((j as f64 + 1.5) * element, half, c);
+                field.add(1.0, combine(&mirrored(&PATCH_AT_END), patch), c);
             }
         }
-        self.properties.youngs_modulus * largest
+        let modulus = p.youngs_modulus;
+        NormalStresses {
+            largest: modulus * field.largest,
+            max: modulus * field.max,
+            min: modulus * field.min,
+            location: field.location,
+            midspan_axial_force: modulus * p.area * midspan.0,
+            midspan_moment: modulus * p.second_moment_of_area * midspan.1,
+        }
     }
 
     /// Strain energy U(e) = Σ element energies \[J\].
@@ -444,7 +526,7 @@ mod tests {
                     };
                 }
             }
-            let sigma = rod.largest_normal_stress(&e);
+            let sigma = rod.normal_stresses(&e).largest;
             let expected = p.youngs_modulus * strain;
             assert!((sigma - expected).abs() < 1e-9 * expected, "{n}: {sigma}");
         }
@@ -453,7 +535,8 @@ mod tests {
     /// A pinned beam under a uniform load q (small deflection, exact nodal values w(x) =
     /// q x (L³ − 2Lx² + x³)/(24 EI)): the largest stress is the mid-span moment's,
     /// σ = (q L²/8) c/I, whether mid-span is a node (even n) or inside an element (odd n), and
-    /// the recovered nodal moments are exact (a quadratic moment); the end moments are zero.
+    /// the recovered nodal moments are exact (a quadratic moment); the end moments are zero. The
+    /// signed field: the mid-span moment and both fibres' stresses, where the largest lies.
     #[test]
     fn a_pinned_beam_under_a_uniform_load_has_the_midspan_stress() {
         let p = RodProperties::benchmark_b();
@@ -470,10 +553,28 @@ mod tests {
                     [x, w(x), 1.0, slope(x)]
                 })
                 .collect();
-            let sigma = rod.largest_normal_stress(&e);
+            let stresses = rod.normal_stresses(&e);
+            let sigma = stresses.largest;
             assert!(
                 (sigma - expected).abs() < 1e-6 * expected,
                 "{n} elements: {sigma} vs {expected}"
+            );
+            // Bulging up (w > 0) the rod turns right: the moment −q L²/8 at mid-span, its fibres
+            // at ±σ, no axial force; the largest stress at mid-span.
+            let moment = q * l * l / 8.0;
+            assert!(
+                (stresses.midspan_moment + moment).abs() < 1e-6 * moment,
+                "{n}: {stresses:?}"
+            );
+            assert!((stresses.max - expected).abs() < 1e-6 * expected);
+            assert!((stresses.min + expected).abs() < 1e-6 * expected);
+            assert!(
+                stresses.midspan_axial_force.abs() < 1e-3 * q * l,
+                "{n}: {stresses:?}"
+            );
+            assert!(
+                (stresses.location - 0.5).abs() < 0.5 / n as f64,
+                "{n}: {stresses:?}"
             );
         }
     }

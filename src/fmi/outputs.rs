@@ -10,6 +10,13 @@ use crate::variables::Vr;
 /// Relative size of the input steps of [`sensitivity`].
 const INPUT_STEP: f64 = 1e-3;
 
+/// Each peak-hold output of a signed value with the output whose largest (or smallest) value it
+/// holds.
+const SIGNED_PEAKS: &[(Vr, Vr)] = &[
+    (Vr::RodStressMaxPeak, Vr::RodStressMax),
+    (Vr::RodStressMinPeak, Vr::RodStressMin),
+];
+
 /// Each peak-hold output with the output whose largest |value| it holds.
 const PEAKS: &[(Vr, Vr)] = &[
     (Vr::JointForcePeak, Vr::JointForce),
@@ -29,7 +36,8 @@ const PEAKS: &[(Vr, Vr)] = &[
 /// drive's velocity error), so their differences are exact up to round-off; a force magnitude
 /// |F| has a relative error of order (h ∂F/∂u / |F|)². A peak-hold output max(held, |y|) has the
 /// derivative of |y| while the current value sets it and 0 while the held one does (its own
-/// differences would average both sides of a kink within ±h).
+/// differences would average both sides of a kink within ±h); a signed peak-hold (the largest or
+/// smallest value) likewise, with the value's derivative itself.
 pub fn sensitivity(
     simulation: &mut Simulation,
     input: Input,
@@ -46,8 +54,13 @@ pub fn sensitivity(
     };
     for (v, c) in unknowns.iter().zip(column.iter_mut()) {
         let held = PEAKS.iter().find(|(peak, _)| *peak == v.vr);
-        let d = match held {
-            Some(&(peak, value)) => real_output(&now, value).and_then(|y| {
+        let signed = SIGNED_PEAKS.iter().find(|(peak, _)| *peak == v.vr);
+        let d = match (held, signed) {
+            (_, Some(&(peak, value))) => real_output(&now, value).and_then(|y| {
+                let set_now = real_output(&now, peak)? == y;
+                Some(if set_now { derivative(value)? } else { 0.0 })
+            }),
+            (Some(&(peak, value)), None) => real_output(&now, value).and_then(|y| {
                 let set_now = real_output(&now, peak)? == y.abs();
                 // d|y| = sign(y) dy, the mean of both sides (0) at y = 0.
                 let sign = if y == 0.0 { 0.0 } else { y.signum() };
@@ -57,7 +70,7 @@ pub fn sensitivity(
                     0.0
                 })
             }),
-            None => derivative(v.vr),
+            (None, None) => derivative(v.vr),
         };
         *c = d.ok_or_else(|| FmuError::Invalid(format!("{} is not a Real output", v.name)))?;
     }
@@ -111,6 +124,13 @@ pub fn real_output(o: &Outputs, vr: Vr) -> Option<f64> {
         Vr::RodStressPeak => o.rod_stress_peak,
         Vr::RodAxialForceCrankPin => o.rod_axial_force_crank_pin,
         Vr::RodAxialForceSliderPin => o.rod_axial_force_slider_pin,
+        Vr::RodStressMax => o.rod_stress_max,
+        Vr::RodStressMin => o.rod_stress_min,
+        Vr::RodStressMaxPeak => o.rod_stress_max_peak,
+        Vr::RodStressMinPeak => o.rod_stress_min_peak,
+        Vr::RodStressLocation => o.rod_stress_location,
+        Vr::RodAxialForceMidspan => o.rod_axial_force_midspan,
+        Vr::RodBendingMomentMidspan => o.rod_bending_moment_midspan,
         _ => return bearing_output(o, vr),
     })
 }

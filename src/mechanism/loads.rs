@@ -16,7 +16,7 @@
 //! main bearing gives its force by its joint law instead (F_A = −F, F_O = F, with F the force on
 //! the journal), exact in every state, as the rod–slider joint's is.
 //!
-//! The stress: for a flexible rod from its strains ([`crate::ancf::Rod::largest_normal_stress`]);
+//! The stress: for a flexible rod from its strains ([`crate::ancf::Rod::normal_stresses`]);
 //! for the rigid rod from the equilibrium of its parts under the pin force and the distributed
 //! inertia and gravity (d'Alembert), in closed form ([`rigid_rod_stress`]).
 //!
@@ -29,7 +29,7 @@ use nalgebra::Vector2;
 use super::layout::{CRANK_ANGLE, PIN_A, pair};
 use super::rod_body::RodBody;
 use super::slider_crank::SliderCrank;
-use crate::ancf::RodProperties;
+use crate::ancf::{NormalStresses, RodProperties};
 use crate::joint::JointRole;
 use crate::math;
 use crate::reduction::Deformation;
@@ -45,8 +45,10 @@ pub struct Loads {
     pub guide: f64,
     /// The rod's axial force at the crank pin and at the slider pin, tension positive \[N\].
     pub axial: [f64; 2],
-    /// Largest normal stress magnitude over the rod, |N|/A + |M| c/I \[Pa\].
-    pub stress: f64,
+    /// The rod's normal stresses: the largest magnitude |N|/A + |M| c/I, the most tensile and
+    /// the most compressive fibre's, where the largest lies, and the mid-span section's axial
+    /// force and bending moment.
+    pub stress: NormalStresses,
     /// The rod's strain energy \[J\].
     pub deformation_energy: f64,
 }
@@ -97,7 +99,7 @@ impl SliderCrank {
                 let [shank_a, _] = self.shank_forces(dy, crank_pin, joint_force);
                 Deformation {
                     energy: 0.0,
-                    stress: rigid_rod_stress(
+                    stresses: rigid_rod_stress(
                         &self.rod_section,
                         t,
                         accelerations,
@@ -116,7 +118,7 @@ impl SliderCrank {
             main_bearing,
             guide: joint_force.y - self.slider_mass * self.gravity.y,
             axial: [-shank_a.dot(&t_a), shank_b.dot(&t_b)],
-            stress: deformation.stress,
+            stress: deformation.stresses,
             deformation_energy: deformation.energy,
         }
     }
@@ -142,27 +144,27 @@ impl SliderCrank {
     }
 }
 
-/// Largest normal stress \[Pa\] of a rigid uniform rod with unit direction `t` (crank → slider),
-/// pin accelerations `accelerations` = [a_A, a_B], loaded by the force `f_a` of the crank at pin A,
+/// The normal stresses of a rigid uniform rod with unit direction `t` (crank → slider), pin
+/// accelerations `accelerations` = [a_A, a_B], loaded by the force `f_a` of the crank at pin A,
 /// its weight and its inertia (the slider pin's force closes the balance).
 ///
 /// The rod's acceleration field is linear along it, a(u) = a_A + (a_B − a_A) u/l, so the load per
 /// length q(u) = ρA (g − a(u)) is linear too, with axial part q·t = p₀ + p₁u and transverse part
 /// t × q = α + βu. The equilibrium of the part [0, s] gives the axial force (tension positive) and
-/// the bending moment
+/// the bending moment (positive where the rod turns left)
 /// ```text
 /// N(s) = −F_A·t − p₀ s − p₁ s²/2,      M(s) = (t × F_A) s + α s²/2 + β s³/6,
 /// ```
-/// and the stress σ(s) = |N|/A + |M| c/I. On each stretch where N and M keep their signs σ is a
-/// cubic, so its maximum over [0, l] lies at an end or where ±N'/A ± M' c/I = 0: the
-/// roots of four quadratics are the only candidates besides the ends (exact, no sampling).
+/// and the fibres' stresses N/A ± |M| c/I. On each stretch where N and M keep their signs each
+/// is a cubic, so its extremes over [0, l] lie at an end or where ±N'/A ± M' c/I = 0: the roots of
+/// four quadratics are the only candidates besides the ends (exact, no sampling).
 pub fn rigid_rod_stress(
     section: &RodProperties,
     t: Vector2<f64>,
     accelerations: [Vector2<f64>; 2],
     f_a: Vector2<f64>,
     g: Vector2<f64>,
-) -> f64 {
+) -> NormalStresses {
     let cross = |a: Vector2<f64>, b: Vector2<f64>| a.x * b.y - a.y * b.x;
     let (length, area) = (section.length, section.area);
     let bending = section.outer_fibre_distance / section.second_moment_of_area;
@@ -174,8 +176,26 @@ pub fn rigid_rod_stress(
     let (n0, f_perp) = (-f_a.dot(&t), cross(t, f_a));
     let axial = |s: f64| n0 - p0 * s - 0.5 * p1 * s * s;
     let moment = |s: f64| f_perp * s + 0.5 * alpha * s * s + beta * s * s * s / 6.0;
-    let sigma = |s: f64| axial(s).abs() / area + moment(s).abs() * bending;
-    let mut largest = sigma(0.0).max(sigma(length));
+    let mut stresses = NormalStresses {
+        largest: 0.0,
+        max: f64::NEG_INFINITY,
+        min: f64::INFINITY,
+        location: 0.0,
+        midspan_axial_force: axial(0.5 * length),
+        midspan_moment: moment(0.5 * length),
+    };
+    let mut take = |s: f64| {
+        let (direct, flexural) = (axial(s) / area, moment(s).abs() * bending);
+        let magnitude = direct.abs() + flexural;
+        if magnitude > stresses.largest {
+            stresses.largest = magnitude;
+            stresses.location = s / length;
+        }
+        stresses.max = stresses.max.max(direct + flexural);
+        stresses.min = stresses.min.min(direct - flexural);
+    };
+    take(0.0);
+    take(length);
     for sign_n in [-1.0, 1.0] {
         for sign_m in [-1.0, 1.0] {
             // sign_n N'/A + sign_m M' c/I = a s² + b s + c = 0.
@@ -183,12 +203,12 @@ pub fn rigid_rod_stress(
             let (a, b, c) = (0.5 * beta * m, alpha * m - p1 * n, f_perp * m - p0 * n);
             for s in quadratic_roots(a, b, c).into_iter().flatten() {
                 if s > 0.0 && s < length {
-                    largest = largest.max(sigma(s));
+                    take(s);
                 }
             }
         }
     }
-    largest
+    stresses
 }
 
 /// The real roots of a s² + b s + c = 0 (a linear or constant equation when a vanishes).
@@ -209,10 +229,13 @@ fn quadratic_roots(a: f64, b: f64, c: f64) -> [Option<f64>; 2] {
 mod tests {
     use super::*;
 
-    /// The closed form against a dense sampling of σ(s) from the parts' equilibrium summed
-    /// numerically: a rod with a pin force, inertia and oblique gravity.
+    /// The closed form against a dense sampling of the fibres' stresses N/A ± |M| c/I from the
+    /// parts' equilibrium summed numerically: a rod with a pin force, inertia and oblique
+    /// gravity. The largest magnitude, the most tensile and the most compressive stress within
+    /// 1e-6, the largest's place within 1e-3 of the length, the mid-span section's axial force and
+    /// moment within 1e-6.
     #[test]
-    fn rigid_rod_stress_is_the_largest_over_the_rod() {
+    fn rigid_rod_stress_is_the_extremes_over_the_rod() {
         let section = RodProperties::benchmark_b();
         let t = Vector2::new(0.8, 0.6);
         let accelerations = [Vector2::new(-900.0, 4000.0), Vector2::new(2500.0, -300.0)];
@@ -221,27 +244,47 @@ mod tests {
         let stress = rigid_rod_stress(&section, t, accelerations, f_a, g);
         let (l, n) = (section.length, 20_000);
         let rho_a = section.density * section.area;
+        let bending = section.outer_fibre_distance / section.second_moment_of_area;
         let ds = l / n as f64;
-        let mut sampled = 0.0f64;
+        let (mut largest, mut max, mut min) = (0.0f64, f64::NEG_INFINITY, f64::INFINITY);
+        let (mut location, mut midspan) = (0.0, (0.0, 0.0));
         // March along the rod: the internal force T and moment M of the part [0, s].
         let (mut force, mut moment) = (-f_a, 0.0f64);
         let cross = |a: Vector2<f64>, b: Vector2<f64>| a.x * b.y - a.y * b.x;
         for k in 0..=n {
             let s = k as f64 * ds;
-            let sigma = force.dot(&t).abs() / section.area
-                + moment.abs() * section.outer_fibre_distance / section.second_moment_of_area;
-            sampled = sampled.max(sigma);
+            // (−M, by the sign convention of this sum.)
+            let (axial, flexural) = (force.dot(&t) / section.area, moment.abs() * bending);
+            if axial.abs() + flexural > largest {
+                (largest, location) = (axial.abs() + flexural, s / l);
+            }
+            max = max.max(axial + flexural);
+            min = min.min(axial - flexural);
+            if k == n / 2 {
+                midspan = (force.dot(&t), -moment);
+            }
             // Midpoint rule for the load on [s, s + ds].
             let u = s + 0.5 * ds;
             let a = accelerations[0] + (accelerations[1] - accelerations[0]) * (u / l);
             let q = rho_a * (g - a) * ds;
-            // (−M, by the sign convention of this sum: |M| is compared.)
             moment += cross(t, force) * ds - cross(t, q) * 0.5 * ds;
             force -= q;
         }
+        let close = |a: f64, b: f64, scale: f64| (a - b).abs() < 1e-6 * scale;
         assert!(
-            (stress - sampled).abs() < 1e-6 * stress,
-            "closed form {stress} vs sampled {sampled}"
+            close(stress.largest, largest, largest),
+            "{stress:?} vs {largest}"
+        );
+        assert!(close(stress.max, max, largest), "{stress:?} vs {max}");
+        assert!(close(stress.min, min, largest), "{stress:?} vs {min}");
+        assert!(
+            (stress.location - location).abs() < 1e-3,
+            "{stress:?} vs {location}"
+        );
+        assert!(close(stress.midspan_axial_force, midspan.0, f_a.norm()));
+        assert!(
+            close(stress.midspan_moment, midspan.1, f_a.norm() * l),
+            "{stress:?} vs {midspan:?}"
         );
     }
 

@@ -19,7 +19,7 @@ pub use sampling::SampledForces;
 
 use nalgebra::Vector2;
 
-use crate::ancf::Rod;
+use crate::ancf::{NormalStresses, Rod};
 use crate::error::ModelError;
 
 /// How the reduced rod integrates its internal forces and strain energy.
@@ -36,8 +36,8 @@ pub enum Quadrature {
 pub struct Deformation {
     /// Strain energy \[J\].
     pub energy: f64,
-    /// Largest normal stress magnitude over the rod ([`Rod::largest_normal_stress`]) \[Pa\].
-    pub stress: f64,
+    /// The rod's normal stresses ([`Rod::normal_stresses`]).
+    pub stresses: NormalStresses,
     /// Unit tangents r,ₓ/|r,ₓ| at the crank-pin end and at the slider-pin end.
     pub tangents: [Vector2<f64>; 2],
 }
@@ -344,7 +344,7 @@ impl RodModel {
                 Some(sampled) => sampled.strain_energy(p),
                 None => self.rod.strain_energy(e),
             },
-            stress: self.rod.largest_normal_stress(e),
+            stresses: self.rod.normal_stresses(e),
             tangents: [unit(2), unit(last + 2)],
         }
     }

@@ -111,6 +111,21 @@ pub struct Outputs {
     pub rod_stress: f64,
     /// Largest rod stress over the last communication interval \[Pa\].
     pub rod_stress_peak: f64,
+    /// The most tensile fibre stress over the rod, max (N/A + |M| c/I) \[Pa\] (signed).
+    pub rod_stress_max: f64,
+    /// The most compressive fibre stress over the rod, min (N/A − |M| c/I) \[Pa\] (signed).
+    pub rod_stress_min: f64,
+    /// The largest `rod_stress_max` over the last communication interval \[Pa\].
+    pub rod_stress_max_peak: f64,
+    /// The smallest `rod_stress_min` over the last communication interval \[Pa\].
+    pub rod_stress_min_peak: f64,
+    /// Where the largest stress magnitude lies, a fraction of the rod's length from the crank
+    /// pin.
+    pub rod_stress_location: f64,
+    /// The rod's axial force at mid-span, tension positive \[N\].
+    pub rod_axial_force_midspan: f64,
+    /// The rod's bending moment at mid-span, positive where it turns left \[N m\].
+    pub rod_bending_moment_midspan: f64,
     /// The rod's axial force at the crank pin, tension positive \[N\].
     pub rod_axial_force_crank_pin: f64,
     /// The rod's axial force at the slider pin, tension positive \[N\].
@@ -280,8 +295,15 @@ pub(super) fn outputs(
             .max(loads.main_bearing.norm()),
         guide_force: loads.guide,
         guide_force_peak: peaks.interval.guide_force.max(loads.guide.abs()),
-        rod_stress: loads.stress,
-        rod_stress_peak: peaks.interval.rod_stress.max(loads.stress),
+        rod_stress: loads.stress.largest,
+        rod_stress_peak: peaks.interval.rod_stress.max(loads.stress.largest),
+        rod_stress_max: loads.stress.max,
+        rod_stress_min: loads.stress.min,
+        rod_stress_max_peak: peaks.interval.rod_tension.max(loads.stress.max),
+        rod_stress_min_peak: (-peaks.interval.rod_compression).min(loads.stress.min),
+        rod_stress_location: loads.stress.location,
+        rod_axial_force_midspan: loads.stress.midspan_axial_force,
+        rod_bending_moment_midspan: loads.stress.midspan_moment,
         rod_axial_force_crank_pin: loads.axial[0],
         rod_axial_force_slider_pin: loads.axial[1],
         contact_onsets: peaks.interval.contact_onsets[JointRole::RodSlider as usize],

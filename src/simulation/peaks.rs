@@ -8,8 +8,9 @@ use crate::integrator::dense;
 use crate::joint::JointRole;
 use crate::mechanism::{Contacts, Loads, SliderCrank};
 
-/// Extremes of the solution over a stretch of time, and the contact onsets in it.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+/// Extremes of the solution over a stretch of time, and the contact onsets in it (−∞ for an
+/// extreme not yet seen: some are signed).
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Peaks {
     /// Largest |joint force| \[N\].
     pub joint_force: f64,
@@ -30,16 +31,29 @@ pub struct Peaks {
     pub eccentricity_ratio: [f64; 3],
     /// Largest film pressure at each joint \[Pa\].
     pub film_pressure: [f64; 3],
+    /// The most tensile fibre stress over the rod (signed: negative when the whole rod is
+    /// compressed) \[Pa\].
+    pub rod_tension: f64,
+    /// The most compressive fibre stress over the rod, as a compression (minus the signed
+    /// stress) \[Pa\].
+    pub rod_compression: f64,
     /// Number of contact onsets at each joint.
     pub contact_onsets: Onsets,
+}
+
+impl Default for Peaks {
+    /// No extreme seen, no onset.
+    fn default() -> Self {
+        Self::from_sample([f64::NEG_INFINITY; SERIES], [0; 3])
+    }
 }
 
 /// Contact onsets at each joint, indexed by [`crate::joint::JointRole`].
 pub type Onsets = [u64; 3];
 
-/// Number of peak-held quantities: seven loads, then each joint's eccentricity ratio and film
-/// pressure (by role).
-const SERIES: usize = 13;
+/// Number of peak-held quantities: seven loads, each joint's eccentricity ratio and film pressure
+/// (by role), the rod's tension and compression.
+const SERIES: usize = 15;
 
 /// Position in a [`Sample`] of the main bearing's eccentricity ratio (the other joints follow in
 /// role order), and of its film pressure.
@@ -78,6 +92,8 @@ impl Peaks {
             guide_force,
             rod_stress,
             ..,
+            rod_tension,
+            rod_compression,
         ] = sample;
         Self {
             joint_force,
@@ -89,6 +105,8 @@ impl Peaks {
             rod_stress,
             eccentricity_ratio: std::array::from_fn(|i| sample[ECCENTRICITY_RATIO + i]),
             film_pressure: std::array::from_fn(|i| sample[FILM_PRESSURE + i]),
+            rod_tension,
+            rod_compression,
             contact_onsets,
         }
     }
@@ -111,6 +129,8 @@ impl Peaks {
             p0,
             p1,
             p2,
+            self.rod_tension,
+            self.rod_compression,
         ]
     }
 }
@@ -131,9 +151,11 @@ pub(super) fn sample(
         crank_pin_force: loads.crank_pin.norm(),
         main_bearing_force: loads.main_bearing.norm(),
         guide_force: loads.guide.abs(),
-        rod_stress: loads.stress,
+        rod_stress: loads.stress.largest,
         eccentricity_ratio: film.map(|(ratio, _)| ratio),
         film_pressure: film.map(|(_, pressure)| pressure),
+        rod_tension: loads.stress.max,
+        rod_compression: -loads.stress.min,
         contact_onsets: [0; 3],
     }
     .sample()
@@ -265,7 +287,7 @@ fn largest_loads(at: &mut impl FnMut(f64) -> Sample, refined: [bool; SERIES]) ->
         }
     }
     let mut largest: Sample =
-        std::array::from_fn(|i| series[i].iter().copied().fold(0.0, f64::max));
+        std::array::from_fn(|i| series[i].iter().copied().fold(f64::NEG_INFINITY, f64::max));
     // Where each quantity's largest sample lies, as a fraction of the step.
     let mut place: Sample = std::array::from_fn(|i| {
         let k = (0..PEAK_SAMPLES + 2)
@@ -273,7 +295,7 @@ fn largest_loads(at: &mut impl FnMut(f64) -> Sample, refined: [bool; SERIES]) ->
             .unwrap_or(0);
         k as f64 / (PEAK_SAMPLES + 1) as f64
     });
-    let mut vertices: Sample = [0.0; SERIES];
+    let mut vertices: Sample = [f64::NEG_INFINITY; SERIES];
     for (i, values) in series.iter().enumerate() {
         if !refined[i] {
             continue;
@@ -304,7 +326,7 @@ fn largest_loads(at: &mut impl FnMut(f64) -> Sample, refined: [bool; SERIES]) ->
 }
 
 /// The extremes inside an accepted step ([`within_step`]).
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub(super) struct Within {
     /// The largest value of each quantity inside the step.
     pub(super) largest: Sample,
@@ -313,6 +335,17 @@ pub(super) struct Within {
     pub(super) rise: Sample,
     /// Where each largest value lies, as a fraction s ∈ [0, 1] of the step.
     pub(super) place: Sample,
+}
+
+impl Default for Within {
+    /// A step not sampled inside: no extreme, no rise.
+    fn default() -> Self {
+        Self {
+            largest: [f64::NEG_INFINITY; SERIES],
+            rise: [0.0; SERIES],
+            place: [0.0; SERIES],
+        }
+    }
 }
 
 /// Largest relative error of the peak of a lubricated joint's force inside a step: the 2 % its

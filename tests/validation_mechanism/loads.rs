@@ -19,7 +19,8 @@ fn run_with(p: Parameters, inputs: Inputs, t_end: f64, n: usize) -> Vec<Outputs>
 /// A slow mechanism (10 rpm) under a slider load of −1000 N has a two-force rod: the crank-pin,
 /// rod–slider and main-bearing forces are one force (within 0.1 %), the rod is in compression
 /// by it at both pins, and the guide carries its y component. With the 4-mode rod the largest
-/// stress is N/A (within 1 %).
+/// stress is N/A (within 1 %), and the most tensile and the most compressive fibres and the middle
+/// section carry −N/A too (a compressed two-force rod).
 #[test]
 fn a_slow_loaded_mechanism_has_a_two_force_rod() {
     let speed = 10.0 * std::f64::consts::TAU / 60.0;
@@ -75,6 +76,21 @@ fn a_slow_loaded_mechanism_has_a_two_force_rod() {
                 o.time,
                 o.rod_stress
             );
+            // Compressed: both fibres carry −N/A, and so does the middle section.
+            for (name, signed) in [
+                ("rod.stressMax", o.rod_stress_max),
+                ("rod.stressMin", o.rod_stress_min),
+                (
+                    "rod.axialForceMidspan / A",
+                    o.rod_axial_force_midspan / area,
+                ),
+            ] {
+                assert!(
+                    (signed + axial_stress).abs() < tolerance * axial_stress,
+                    "{rod_formulation:?}, t = {}: {name} = {signed} Pa vs −N/A",
+                    o.time
+                );
+            }
         }
     }
 }
@@ -84,7 +100,9 @@ fn a_slow_loaded_mechanism_has_a_two_force_rod() {
 /// mid-span moment's, σ = ρA g l² c/(8I), within 1 % for the full rod (8 elements) and the
 /// 4-mode rod, each pin carries half the weight and the guide the slider's and half the rod's.
 /// With end masses of 0.3 and 0.1 kg (heavier than the beam) the stress is the same, and each
-/// pin carries its end mass's weight besides.
+/// pin carries its end mass's weight besides. Signed: the mid-span moment is +q l²/8 (the rod
+/// turns left), its fibres at ±σ, the largest stress at mid-span (the nearest sample: within
+/// half an element), no axial force.
 #[test]
 fn a_rod_at_rest_bends_under_its_own_weight_as_a_pinned_beam() {
     for (rod_formulation, ends) in [
@@ -119,6 +137,23 @@ fn a_rod_at_rest_bends_under_its_own_weight_as_a_pinned_beam() {
                 100.0 * error
             );
             assert!(error < 1e-2, "{rod_formulation:?}, t = {}", o.time);
+            // The rod sags: its middle section turns left (counter-clockwise, the rod running
+            // along +x) under the moment q l²/8, its lower fibre in tension, the upper in
+            // compression, the largest stress at mid-span.
+            let moment = q * rod.length.powi(2) / 8.0;
+            assert!(
+                (o.rod_bending_moment_midspan - moment).abs() < 1e-2 * moment,
+                "{rod_formulation:?}: {} vs {moment}",
+                o.rod_bending_moment_midspan
+            );
+            assert!((o.rod_stress_max - expected).abs() < 1e-2 * expected);
+            assert!((o.rod_stress_min + expected).abs() < 1e-2 * expected);
+            assert!(
+                (o.rod_stress_location - 0.5).abs() < 0.07,
+                "{}",
+                o.rod_stress_location
+            );
+            assert!(o.rod_axial_force_midspan.abs() < 1e-2 * q * rod.length);
             let pin_a = 0.5 * weight + ends[0] * g;
             assert!(
                 (o.crank_pin_force_y - pin_a).abs() < 1e-3 * weight,

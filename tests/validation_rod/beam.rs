@@ -155,7 +155,7 @@ fn cantilever_tip(rod: Rod, alpha: f64, steps: usize) -> (f64, f64, f64) {
     let mut load = vec![0.0; e.len()];
     load[tip + 1] = alpha * ei / (length * length);
     solve_static(&mut model, &mut e, &[0, 1, 2, 3], &load, steps);
-    let stress = model.rod().largest_normal_stress(&e);
+    let stress = model.rod().normal_stresses(&e).largest;
     (length - e[tip], e[tip + 1], stress)
 }
 
