@@ -21,6 +21,9 @@ pub enum ModelError {
     },
     /// A numerical operation failed (factorisation, eigenproblem, Newton iteration, step size).
     Numerical(String),
+    /// A file a parameter names is missing or malformed; the message names the parameter, the
+    /// file and what is wrong where.
+    InvalidFile(String),
 }
 
 impl ModelError {
@@ -44,7 +47,7 @@ impl fmt::Display for ModelError {
                     Num(*value)
                 )
             }
-            Self::Numerical(what) => f.write_str(what),
+            Self::Numerical(what) | Self::InvalidFile(what) => f.write_str(what),
         }
     }
 }

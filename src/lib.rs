@@ -17,6 +17,7 @@ pub mod fmi;
 pub mod integrator;
 pub mod joint;
 pub mod linalg;
+pub mod load_table;
 pub mod math;
 pub mod mechanism;
 pub mod params;

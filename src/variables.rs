@@ -303,6 +303,7 @@ pub const FEEDTHROUGH: &[(Vr, &[Vr])] = &[
     (Vr::RodStressLocation, ALL_INPUTS),
     (Vr::RodAxialForceMidspan, ALL_INPUTS),
     (Vr::RodBendingMomentMidspan, ALL_INPUTS),
+    (Vr::SliderAppliedForce, &[Vr::SliderForce]),
 ];
 
 /// The accelerations and the forces that follow from them react to every input at once: the
@@ -319,7 +320,7 @@ const ALL_INPUTS: &[Vr] = &[Vr::DriveSpeed, Vr::DriveTorque, Vr::SliderForce];
 /// applied loads and each journal rests where its contact carries its load, so the start's
 /// positions, forces and energies depend on every physical parameter and every input (the
 /// speed drive's input through the drive constraint). The exceptions are the crank's prescribed
-/// start, the contact stiffness (a formula of four parameters), the model warnings (the
+/// start, the slider's applied force (the input and the load table at the start angle), the contact stiffness (a formula of four parameters), the model warnings (the
 /// short-bearing range of a lubricated joint) and the step counters and work integrals, which
 /// start at zero. The solver settings shape no start. The lists are the union over every drive,
 /// joint and rod model; `packaging/python/tests/test_fmu.py` checks them against perturbations
@@ -328,7 +329,11 @@ fn initial_dependency(unknown: Vr, known: Vr) -> bool {
     use Vr::*;
     match unknown {
         CrankAngle => known == CrankInitialAngle,
-        CrankSpeed => matches!(known, CrankInitialSpeed | DriveMode | DriveSpeed),
+        CrankSpeed => matches!(known, CrankInitialSpeed | DriveSpeed),
+        SliderAppliedForce => matches!(
+            known,
+            SliderForce | SliderForceTable | SliderForceTablePeriod | CrankInitialAngle
+        ),
         JointContactStiffness => matches!(
             known,
             JointClearance | JointJournalRadius | JointYoungsModulus | JointPoissonRatio
@@ -558,6 +563,9 @@ pub enum Vr {
     RodStressLocation,
     RodAxialForceMidspan,
     RodBendingMomentMidspan,
+    SliderForceTable,
+    SliderForceTablePeriod,
+    SliderAppliedForce,
 }
 
 /// 5000 rpm in rad/s (benchmark B); the same expression as `params::BENCHMARK_SPEED`.
@@ -1120,9 +1128,14 @@ const BASE_VARIABLES: &[Variable] = &[
         -1e7,
         1e7,
         "N",
-        "External force on the slider along the guide",
+        "External force on the slider along the guide, +x (away from the crank) positive: negative pushes the slider towards the crank; slider.forceTable adds to it",
     ),
-    Variable::output(Vr::CrankAngle, "crank.angle", "rad", "Crank angle"),
+    Variable::output(
+        Vr::CrankAngle,
+        "crank.angle",
+        "rad",
+        "Crank angle from +x (the guide's direction, from the crank pivot towards the slider), counter-clockwise positive",
+    ),
     Variable::output(
         Vr::CrankSpeed,
         "crank.speed",
@@ -1139,7 +1152,7 @@ const BASE_VARIABLES: &[Variable] = &[
         Vr::SliderPosition,
         "slider.position",
         "m",
-        "Slider position along the guide",
+        "Slider position along the guide: the slider pin's x from the crank pivot",
     ),
     Variable::output(
         Vr::SliderVelocity,
@@ -1311,13 +1324,13 @@ const BASE_VARIABLES: &[Variable] = &[
         Vr::EnergySliderWork,
         "energy.sliderWork",
         "J",
-        "Work done by the input slider.force",
+        "Work done on the slider by its external force, slider.appliedForce (the input slider.force and slider.forceTable)",
     ),
     Variable::output(
         Vr::EnergyMaterialDamping,
         "energy.materialDamping",
         "J",
-        "Energy dissipated in the rod by its material damping (rod.stiffnessDamping)",
+        "Energy dissipated in the rod by its material damping (rod.dampingRatio or rod.stiffnessDamping)",
     ),
     Variable::parameter(
         Vr::SolverSpectralRadius,
@@ -1806,5 +1819,25 @@ const MACHINE_VARIABLES: &[Variable] = &[
         "rod.bendingMomentMidspan",
         "N.m",
         "Bending moment at the rod's middle section, positive where the rod bends to its left (counter-clockwise curvature, looking along the rod from the crank pin)",
+    ),
+    Variable::string(
+        Vr::SliderForceTable,
+        "slider.forceTable",
+        "",
+        "A load on the slider tied to the crank angle: a CSV file of crank angle [deg], force [N] (a relative path is looked up in the working directory, then in the FMU's resources), periodic over slider.forceTablePeriod, interpolated monotonically (no overshoot of a combustion pulse) at every evaluation and added to the input slider.force; empty for none",
+    ),
+    Variable::integer(
+        Vr::SliderForceTablePeriod,
+        "slider.forceTablePeriod",
+        360,
+        360,
+        720,
+        "Period of slider.forceTable in degrees of crank angle: 360, or 720 for a four-stroke cycle (crank angle 0 at the table's 0)",
+    ),
+    Variable::output(
+        Vr::SliderAppliedForce,
+        "slider.appliedForce",
+        "N",
+        "The total external force on the slider along the guide: the input slider.force and slider.forceTable at the crank angle (negative pushes the slider towards the crank)",
     ),
 ];

@@ -40,6 +40,11 @@ impl ByteWriter<'_> {
     pub fn flag(&mut self, v: bool) {
         self.u8(u8::from(v));
     }
+    /// Writes a string: its length in bytes (u32), then its UTF-8 bytes.
+    pub fn str(&mut self, v: &str) {
+        self.u32(v.len() as u32);
+        self.0.extend_from_slice(v.as_bytes());
+    }
 }
 
 /// Reads what [`ByteWriter`] wrote, refusing truncated input, over-long vectors and invalid flags.
@@ -101,6 +106,17 @@ impl<'a> ByteReader<'a> {
             )));
         }
         (0..n).map(|_| self.f64()).collect()
+    }
+    /// Reads a string of at most 2^20 bytes of UTF-8.
+    pub fn str(&mut self) -> Result<String, CodecError> {
+        let n = self.u32()? as usize;
+        if n > MAX_LENGTH {
+            return Err(CodecError(format!(
+                "FMU state rejected: a string of {n} bytes"
+            )));
+        }
+        String::from_utf8(self.take(n)?.to_vec())
+            .map_err(|_| CodecError("FMU state rejected: a string that is not UTF-8".into()))
     }
     /// Reads a flag: 0 or 1, any other byte is an error.
     pub fn flag(&mut self) -> Result<bool, CodecError> {

@@ -163,7 +163,7 @@ pub fn check<V: ValueReference>(d: &Description<V>) -> Result<(), String> {
             Kind::Real { start, .. } => start.is_some(),
             Kind::Integer { start, .. } => start.is_some(),
             Kind::Boolean => false,
-            Kind::Enumeration { .. } => true,
+            Kind::Enumeration { .. } | Kind::String { .. } => true,
         };
         let needs_start = matches!(v.causality, Causality::Parameter | Causality::Input);
         if has_start != needs_start {
@@ -352,6 +352,7 @@ fn render<V: ValueReference>(d: &Description<V>) -> String {
                 None => "<Integer/>".to_string(),
             },
             Kind::Boolean => "<Boolean/>".to_string(),
+            Kind::String { start } => format!(r#"<String start="{}"/>"#, escape(start)),
             Kind::Enumeration { start, type_index } => format!(
                 r#"<Integer declaredType="{}" start="{start}"/>"#,
                 d.enumerations[type_index].name

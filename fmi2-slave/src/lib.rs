@@ -20,6 +20,8 @@ pub mod table;
 #[cfg(feature = "slave")]
 mod callback;
 #[cfg(feature = "slave")]
+pub mod checks;
+#[cfg(feature = "slave")]
 pub mod error;
 #[cfg(feature = "slave")]
 pub mod exports;

@@ -3,15 +3,13 @@
 
 use crate::error::FmuError;
 use crate::logger::Logger;
-use crate::number::Num;
 use crate::state::State;
-use crate::table::{Causality, Enumeration, Kind, ValueReference, Variable};
+use crate::table::{Enumeration, ValueReference, Variable};
 
 /// A co-simulation model behind the FMI functions. The generic layer resolves every value
-/// reference to the model's [`Variable`] before a getter or setter sees it ([`resolve`]: it
+/// reference to the model's [`Variable`] before a getter or setter sees it ([`crate::checks::resolve`]: it
 /// exists and has the function's type) and checks that a value to set is settable in the current
-/// state and inside its declared range ([`check_set_real`], [`check_set_integer`],
-/// [`check_set_boolean`]): the callbacks receive typed, checked variables ([`Var`]) and only
+/// state and inside its declared range ([`crate::checks`]): the callbacks receive typed, checked variables ([`Var`]) and only
 /// dispatch. Every method that may need to log gets the instance's logger.
 pub trait Model: Sized + 'static {
     /// The GUID of the model's modelDescription.xml.
@@ -87,7 +85,7 @@ pub trait Model: Sized + 'static {
     }
 
     /// fmi2GetBoolean: a model with Boolean variables reads them here (by default it has none,
-    /// and [`resolve`] refuses every value reference before this is called).
+    /// and [`crate::checks::resolve`] refuses every value reference before this is called).
     fn get_boolean(
         &mut self,
         _log: &Logger,
@@ -110,7 +108,36 @@ pub trait Model: Sized + 'static {
         not_settable(vars)
     }
 
-    /// fmi2SetRealInputDerivatives, the arguments checked ([`check_input_derivatives`]); called
+    /// fmi2GetString: a model with String variables writes their values to `value` (cleared
+    /// first); by default it has none, and [`crate::checks::resolve`] refuses every value reference before this
+    /// is called.
+    fn get_string(
+        &mut self,
+        vars: &[Var<Self::Vr>],
+        _value: &mut Vec<String>,
+    ) -> Result<(), FmuError> {
+        match vars.first() {
+            Some(v) => Err(FmuError::Invalid(format!("{} cannot be read", v.name))),
+            None => Ok(()),
+        }
+    }
+
+    /// fmi2SetString: by default no String variable is settable.
+    fn set_string(
+        &mut self,
+        _state: State,
+        vars: &[Var<Self::Vr>],
+        _value: &[&str],
+    ) -> Result<(), FmuError> {
+        not_settable(vars)
+    }
+
+    /// The directory of the FMU's unpacked `resources` folder, from fmi2Instantiate's
+    /// fmuResourceLocation (a `file:` URI), if the master gave one that names a directory here:
+    /// for a model that reads files from it. By default it is not kept.
+    fn set_resource_directory(&mut self, _directory: Option<std::path::PathBuf>) {}
+
+    /// fmi2SetRealInputDerivatives, the arguments checked ([`crate::checks::check_input_derivatives`]); called
     /// only for a model with [`Model::MAX_INPUT_DERIVATIVE_ORDER`] > 0 (the generic layer refuses
     /// the call otherwise), which implements it.
     fn set_real_input_derivatives(
@@ -169,211 +196,11 @@ pub fn no_input_derivatives() -> FmuError {
 pub type Var<V> = &'static Variable<V>;
 
 /// An error for a non-empty set request on variables of a type the model has none settable of
-/// (by their causality, [`check_settable`] refuses them before this is called).
+/// (by their causality, [`crate::checks::check_settable`] refuses them before this is called).
 pub fn not_settable<V>(vars: &[Var<V>]) -> Result<(), FmuError> {
     match vars.first() {
         Some(v) => Err(FmuError::Invalid(format!("{} cannot be set", v.name))),
         None => Ok(()),
-    }
-}
-
-/// The variable of value reference `vr` in `table`, if it exists and is of FMI type `base`
-/// ("Real", "Integer" — switches included — or "Boolean").
-pub fn lookup<V: ValueReference>(
-    table: &'static [Variable<V>],
-    vr: u32,
-    base: &str,
-) -> Result<&'static Variable<V>, FmuError> {
-    let v = table
-        .get(vr as usize)
-        .ok_or_else(|| FmuError::Invalid(format!("unknown value reference {vr}")))?;
-    let matches = matches!(
-        (v.kind, base),
-        (Kind::Real { .. }, "Real")
-            | (Kind::Integer { .. } | Kind::Enumeration { .. }, "Integer")
-            | (Kind::Boolean, "Boolean")
-    );
-    if matches {
-        Ok(v)
-    } else {
-        Err(FmuError::Invalid(format!(
-            "value reference {vr} ({}) is not of type {base}",
-            v.name
-        )))
-    }
-}
-
-/// Checks that `v` may be set in machine state `state`: parameters until initialization ends,
-/// inputs always, nothing else.
-pub fn check_settable<V>(state: State, v: &Variable<V>) -> Result<(), FmuError> {
-    let ok = match v.causality {
-        Causality::Parameter => {
-            matches!(state, State::Instantiated | State::InitializationMode)
-        }
-        Causality::Input => true,
-        _ => false,
-    };
-    if ok {
-        Ok(())
-    } else {
-        Err(FmuError::Invalid(format!(
-            "variable {} ({:?}) cannot be set in state {state:?}",
-            v.name, v.causality
-        )))
-    }
-}
-
-/// Checks a Real value against the declared range of `v` (finite, within [min, max]).
-pub fn check_real<V>(v: &Variable<V>, value: f64) -> Result<(), FmuError> {
-    if let Kind::Real { min, max, unit, .. } = v.kind {
-        if !(value.is_finite() && min <= value && value <= max) {
-            return Err(FmuError::Invalid(format!(
-                "{} = {} is outside the allowed range [{}, {}] {unit}",
-                v.name,
-                Num(value),
-                Num(min),
-                Num(max)
-            )));
-        }
-    }
-    Ok(())
-}
-
-/// Resolves each of `vrs` to its variable of `M`, which must be of FMI type `base`, into `out`
-/// (cleared first; its capacity is reused, so that a call allocates only when it names more
-/// variables than any call before).
-pub fn resolve<M: Model>(
-    vrs: &[u32],
-    base: &str,
-    out: &mut Vec<Var<M::Vr>>,
-) -> Result<(), FmuError> {
-    out.clear();
-    for &vr in vrs {
-        out.push(lookup(M::VARIABLES, vr, base)?);
-    }
-    Ok(())
-}
-
-/// Checks that each of the Real variables `vars` is settable in `state` and its value inside the
-/// declared range.
-pub fn check_set_real<V>(state: State, vars: &[Var<V>], values: &[f64]) -> Result<(), FmuError> {
-    for (v, &value) in vars.iter().zip(values) {
-        check_settable(state, v)?;
-        check_real(v, value)?;
-    }
-    Ok(())
-}
-
-/// Checks that each of the Integer variables `vars` of `M` (switches among them) is settable in
-/// `state`, its value inside the declared range or one of the switch's items.
-pub fn check_set_integer<M: Model>(
-    state: State,
-    vars: &[Var<M::Vr>],
-    values: &[i32],
-) -> Result<(), FmuError> {
-    for (v, &value) in vars.iter().zip(values) {
-        check_settable(state, v)?;
-        let (min, max) = match v.kind {
-            Kind::Integer { min, max, .. } => (min, max),
-            Kind::Enumeration { type_index, .. } => {
-                let items = M::ENUMERATIONS.get(type_index).map_or(0, |e| e.items.len());
-                (1, i32::try_from(items).unwrap_or(i32::MAX))
-            }
-            _ => (0, -1),
-        };
-        if !(min..=max).contains(&value) {
-            return Err(FmuError::Invalid(format!(
-                "{} = {value} is outside the allowed range [{min}, {max}]",
-                v.name
-            )));
-        }
-    }
-    Ok(())
-}
-
-/// Checks fmi2SetRealInputDerivatives' arguments: each of `vrs` a Real input of `M` (resolved
-/// into `out`, as by [`resolve`]), each order from 1 to [`Model::MAX_INPUT_DERIVATIVE_ORDER`],
-/// each value finite.
-pub fn check_input_derivatives<M: Model>(
-    vrs: &[u32],
-    orders: &[i32],
-    values: &[f64],
-    out: &mut Vec<Var<M::Vr>>,
-) -> Result<(), FmuError> {
-    let max = M::MAX_INPUT_DERIVATIVE_ORDER;
-    out.clear();
-    for ((&vr, &order), &value) in vrs.iter().zip(orders).zip(values) {
-        let v = check_causality::<M>(vr, Causality::Input, "vr")?;
-        out.push(v);
-        let order_ok = u32::try_from(order).is_ok_and(|o| (1..=max).contains(&o));
-        if !order_ok || !value.is_finite() {
-            return Err(FmuError::Invalid(format!(
-                "derivative of order {order} of {} = {}: the order must be 1 to {max} and the \
-                 value finite",
-                v.name,
-                Num(value)
-            )));
-        }
-    }
-    Ok(())
-}
-
-/// The Real variable `vr` of `M` if it has `causality`; else an error naming the argument `arg`.
-pub fn check_causality<M: Model>(
-    vr: u32,
-    causality: Causality,
-    arg: &str,
-) -> Result<&'static Variable<M::Vr>, FmuError> {
-    let v = lookup(M::VARIABLES, vr, "Real")?;
-    if v.causality == causality {
-        Ok(v)
-    } else {
-        Err(FmuError::Invalid(format!(
-            "{arg}: value reference {vr} ({}) is not a Real {}",
-            v.name,
-            format!("{causality:?}").to_lowercase()
-        )))
-    }
-}
-
-/// Checks that each of the Boolean variables `vars` is settable in `state`.
-pub fn check_set_boolean<V>(state: State, vars: &[Var<V>]) -> Result<(), FmuError> {
-    for v in vars {
-        check_settable(state, v)?;
-    }
-    Ok(())
-}
-
-/// Tolerance on the communication point: |t − t_expected| ≤ 1e-9 (1 + |t|).
-pub const TIME_TOLERANCE: f64 = 1e-9;
-
-/// Checks fmi2DoStep's arguments against an instance at `time` with stop time `stop`: the
-/// communication point is the current time (within [`TIME_TOLERANCE`]), the step is positive and
-/// finite, and t + h is not past the stop time.
-pub fn check_step(time: f64, t: f64, h: f64, stop: Option<f64>) -> Result<(), FmuError> {
-    if (t - time).abs() > TIME_TOLERANCE * (1.0 + t.abs()) {
-        return Err(FmuError::Invalid(format!(
-            "expected currentCommunicationPoint = {} s but was {} s",
-            Num(time),
-            Num(t)
-        )));
-    }
-    if !(h > 0.0 && h.is_finite()) {
-        return Err(FmuError::Invalid(format!(
-            "communicationStepSize must be > 0 and finite but was {} s",
-            Num(h)
-        )));
-    }
-    let end = t + h;
-    match stop {
-        Some(stop) if end > stop + TIME_TOLERANCE * (1.0 + stop.abs()) => {
-            Err(FmuError::Invalid(format!(
-                "currentCommunicationPoint + communicationStepSize = {} s is past stopTime = {} s",
-                Num(end),
-                Num(stop)
-            )))
-        }
-        _ => Ok(()),
     }
 }
 
@@ -391,8 +218,13 @@ pub struct Instance<M: Model> {
     pub cause: Option<String>,
     /// The model.
     pub model: M,
-    /// The variables of the current call, resolved from its value references ([`resolve`]).
+    /// The variables of the current call, resolved from its value references ([`crate::checks::resolve`]).
     pub variables: Vec<Var<M::Vr>>,
+    /// The String values fmi2GetString returned last: the master may read them until the next
+    /// call on this instance.
+    pub strings: Vec<std::ffi::CString>,
+    /// The FMU's resources directory, from fmi2Instantiate (given to every new model).
+    pub resources: Option<std::path::PathBuf>,
 }
 
 /// The states in the order of their byte in a serialized state.
@@ -413,15 +245,19 @@ pub fn state_checksum(bytes: &[u8]) -> u64 {
 }
 
 impl<M: Model> Instance<M> {
-    /// A fresh instance with the start values.
-    pub fn new(logger: Logger) -> Self {
+    /// A fresh instance with the start values, its model told the FMU's resources directory.
+    pub fn new(logger: Logger, resources: Option<std::path::PathBuf>) -> Self {
+        let mut model = M::new();
+        model.set_resource_directory(resources.clone());
         Self {
             logger,
             state: State::Instantiated,
             poisoned: false,
             cause: None,
-            model: M::new(),
+            model,
             variables: Vec::new(),
+            strings: Vec::new(),
+            resources,
         }
     }
 
@@ -431,6 +267,7 @@ impl<M: Model> Instance<M> {
         self.poisoned = false;
         self.cause = None;
         self.model = M::new();
+        self.model.set_resource_directory(self.resources.clone());
     }
 
     /// The serialized state: magic, version, state machine, the model's bytes, and an FNV-1a 64

@@ -10,9 +10,10 @@
 
 use std::fmt::Write as _;
 
+use crate::checks::{check_set_integer, check_set_real, lookup};
 use crate::error::FmuError;
 use crate::logger::Logger;
-use crate::model::{Model, Var, check_set_integer, check_set_real, lookup};
+use crate::model::{Model, Var};
 use crate::state::State;
 use crate::table::{Causality, Kind, ValueReference};
 
@@ -128,11 +129,12 @@ impl<M: Model> Slave<M> {
         Ok(values)
     }
 
-    /// The names of the model's outputs of every type (Real, Integer, Boolean), in table order.
+    /// The names of the model's outputs of every type but String (Real, Integer, Boolean), in
+    /// table order.
     pub fn outputs() -> Vec<&'static str> {
         M::VARIABLES
             .iter()
-            .filter(|v| v.causality == Causality::Output)
+            .filter(|v| v.causality == Causality::Output && !matches!(v.kind, Kind::String { .. }))
             .map(|v| v.name)
             .collect()
     }
@@ -160,6 +162,7 @@ impl<M: Model> Slave<M> {
                     self.model.get_integer(&self.log, &[var], &mut n)?;
                     f64::from(n[0])
                 }
+                Kind::String { .. } => continue,
                 Kind::Boolean => {
                     let mut b = [0];
                     let var = lookup(M::VARIABLES, vr, "Boolean")?;

@@ -65,6 +65,11 @@ pub enum Kind {
         /// Index into the table's enumerations.
         type_index: usize,
     },
+    /// String (a file name, for instance).
+    String {
+        /// Start value.
+        start: &'static str,
+    },
 }
 
 /// One FMI variable, with `V` the model's value-reference type.
@@ -104,6 +109,23 @@ pub struct Enumeration {
 }
 
 impl<V: Copy> Variable<V> {
+    /// A fixed String parameter.
+    pub const fn string(
+        vr: V,
+        name: &'static str,
+        start: &'static str,
+        description: &'static str,
+    ) -> Self {
+        Self {
+            vr,
+            name,
+            causality: Causality::Parameter,
+            variability: Variability::Fixed,
+            kind: Kind::String { start },
+            description,
+        }
+    }
+
     /// A fixed Real parameter.
     pub const fn parameter(
         vr: V,

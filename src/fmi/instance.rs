@@ -3,7 +3,8 @@
 //! the variable table, so every message quotes what the master sees in the XML) come from
 //! `fmi2-slave`. Values are read and written by an exhaustive `match` on [`Vr`].
 
-use fmi2_slave::model::{Var, check_step};
+use fmi2_slave::checks::check_step;
+use fmi2_slave::model::Var;
 use fmi2_slave::table::Enumeration;
 use fmi2_slave::{FmuError, Logger, Model, State};
 
@@ -12,6 +13,7 @@ use super::snapshot::FmuSnapshot;
 use crate::error::{ModelError, Num};
 use crate::params::{
     Parameters, integer_parameter, real_parameter, set_integer_parameter, set_real_parameter,
+    set_string_parameter, string_parameter,
 };
 use crate::simulation::{Input, InputSignal, Inputs, Outputs, Simulation};
 use crate::variables::{Causality, ENUMERATIONS, Kind, LOG_CATEGORIES, VARIABLES, Variable, Vr};
@@ -105,54 +107,6 @@ impl SliderCrankFmu {
     fn outputs(&mut self, log: &Logger) -> Result<Outputs, FmuError> {
         Ok(self.simulation(log)?.outputs()?)
     }
-
-    /// Captures the complete state (parameters, inputs, clock, simulation).
-    fn snapshot(&self) -> FmuSnapshot {
-        FmuSnapshot {
-            parameters: self.parameters.clone(),
-            inputs: self.inputs,
-            start_time: self.start_time,
-            stop_time: self.stop_time,
-            tolerance: self.tolerance,
-            time: self.time,
-            last_successful_time: self.last_successful_time,
-            simulation: self.simulation.as_ref().map(Simulation::snapshot),
-        }
-    }
-
-    /// Restores a captured state; the model is rebuilt only if its parameters differ.
-    fn restore(&mut self, s: &FmuSnapshot) -> Result<(), FmuError> {
-        let same_model = self.parameters == s.parameters
-            && self.tolerance == s.tolerance
-            && self.simulation.is_some();
-        let mut simulation = if same_model {
-            self.simulation.take()
-        } else {
-            None
-        };
-        if let Some(snap) = &s.simulation {
-            if simulation.is_none() {
-                simulation = Some(Simulation::new(model_parameters(
-                    &s.parameters,
-                    s.tolerance,
-                ))?);
-            }
-            if let Some(sim) = &mut simulation {
-                sim.restore(snap)?;
-            }
-        } else {
-            simulation = None;
-        }
-        self.simulation = simulation;
-        self.parameters = s.parameters.clone();
-        self.inputs = s.inputs;
-        self.start_time = s.start_time;
-        self.stop_time = s.stop_time;
-        self.tolerance = s.tolerance;
-        self.time = s.time;
-        self.last_successful_time = s.last_successful_time;
-        Ok(())
-    }
 }
 
 impl Model for SliderCrankFmu {
@@ -201,7 +155,9 @@ impl Model for SliderCrankFmu {
     }
 
     fn load(&mut self, _log: &Logger, bytes: &[u8], apply: bool) -> Result<(), FmuError> {
-        let snapshot = FmuSnapshot::read(bytes)?;
+        let mut snapshot = FmuSnapshot::read(bytes)?;
+        // A load table is looked up where this instance's resources are.
+        snapshot.parameters.resource_directory = self.parameters.resource_directory.clone();
         snapshot.validate()?;
         if apply {
             self.restore(&snapshot)?;
@@ -454,6 +410,39 @@ impl Model for SliderCrankFmu {
         Ok(())
     }
 
+    /// fmi2GetString (slider.forceTable).
+    fn get_string(&mut self, vars: &[Var<Vr>], value: &mut Vec<String>) -> Result<(), FmuError> {
+        for &v in vars {
+            match string_parameter(&self.parameters, v.vr) {
+                Some(text) => value.push(text.to_string()),
+                None => return unreachable_type(v),
+            }
+        }
+        Ok(())
+    }
+
+    /// fmi2SetString (slider.forceTable); the file is read when the model is built.
+    fn set_string(
+        &mut self,
+        _state: State,
+        vars: &[Var<Vr>],
+        values: &[&str],
+    ) -> Result<(), FmuError> {
+        for (&v, &value) in vars.iter().zip(values) {
+            if !set_string_parameter(&mut self.parameters, v.vr, value) {
+                return unreachable_type(v);
+            }
+            self.simulation = None;
+        }
+        Ok(())
+    }
+
+    /// The FMU's resources, where a relative slider.forceTable is looked up after the working
+    /// directory.
+    fn set_resource_directory(&mut self, directory: Option<std::path::PathBuf>) {
+        self.parameters.resource_directory = directory;
+    }
+
     /// fmi2GetBoolean.
     fn get_boolean(
         &mut self,
@@ -532,6 +521,9 @@ mod tests {
                 Kind::Integer { start: Some(s), .. } | Kind::Enumeration { start: s, .. } => {
                     assert_eq!(Some(s), integer_parameter(&p, v.vr), "{}", v.name);
                 }
+                Kind::String { start } => {
+                    assert_eq!(Some(start), string_parameter(&p, v.vr), "{}", v.name);
+                }
                 _ => panic!("{} has no start value", v.name),
             }
         }
@@ -564,6 +556,10 @@ mod tests {
                 Kind::Integer { max, .. } => {
                     assert!(set_integer_parameter(&mut p, v.vr, max));
                     assert_eq!(integer_parameter(&p, v.vr), Some(max), "{}", v.name);
+                }
+                Kind::String { .. } => {
+                    assert!(set_string_parameter(&mut p, v.vr, "a/b c.csv"));
+                    assert_eq!(string_parameter(&p, v.vr), Some("a/b c.csv"), "{}", v.name);
                 }
                 Kind::Boolean => panic!("{} is a Boolean parameter", v.name),
             }

@@ -10,6 +10,7 @@
 //! - Modelica Association (2023), Functional Mock-up Interface 2.0.4.
 
 pub mod instance;
+mod instance_state;
 pub mod model_description;
 pub mod outputs;
 pub mod snapshot;

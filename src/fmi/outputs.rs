@@ -86,6 +86,7 @@ pub fn real_output(o: &Outputs, vr: Vr) -> Option<f64> {
         Vr::SliderPosition => o.slider_position,
         Vr::SliderVelocity => o.slider_velocity,
         Vr::SliderAcceleration => o.slider_acceleration,
+        Vr::SliderAppliedForce => o.slider_applied_force,
         Vr::JointForce => o.joint_force,
         Vr::JointForceX => o.joint_force_x,
         Vr::JointForceY => o.joint_force_y,

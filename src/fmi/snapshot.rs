@@ -2,14 +2,15 @@
 //!
 //! Layout (little-endian, inside the framing of `fmi2-slave`: magic, version, state machine,
 //! checksum): the parameter count of the variable table and nModes (so a state from another build
-//! or model is rejected), every parameter in table order, whether crank.initialSpeed was set,
-//! inputs, clock, the simulation snapshot.
+//! or model is rejected), every parameter in table order (a String as its length and bytes),
+//! whether crank.initialSpeed was set, inputs, clock, the simulation snapshot.
 
 use fmi2_slave::FmuError;
-use fmi2_slave::model::check_real;
+use fmi2_slave::checks::check_real;
 
 use crate::params::{
     Parameters, integer_parameter, real_parameter, set_integer_parameter, set_real_parameter,
+    set_string_parameter, string_parameter,
 };
 use crate::simulation::codec::{ByteReader, ByteWriter, ReadRecords, WriteRecords};
 use crate::simulation::{InputSignal, Snapshot};
@@ -100,6 +101,9 @@ impl FmuSnapshot {
         {
             match v.kind {
                 Kind::Real { .. } => w.f64(real_parameter(&self.parameters, v.vr).unwrap_or(0.0)),
+                Kind::String { .. } => {
+                    w.str(string_parameter(&self.parameters, v.vr).unwrap_or(""))
+                }
                 _ => w.u32(integer_parameter(&self.parameters, v.vr).unwrap_or(0) as u32),
             }
         }
@@ -138,6 +142,7 @@ impl FmuSnapshot {
         {
             let ok = match v.kind {
                 Kind::Real { .. } => set_real_parameter(&mut parameters, v.vr, r.f64()?),
+                Kind::String { .. } => set_string_parameter(&mut parameters, v.vr, &r.str()?),
                 _ => set_integer_parameter(&mut parameters, v.vr, r.u32()? as i32),
             };
             if !ok {

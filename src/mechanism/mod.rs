@@ -32,6 +32,7 @@ pub mod layout;
 mod loads;
 pub mod rod_body;
 mod scales;
+mod schur;
 mod slider_crank;
 mod start;
 

@@ -3,7 +3,7 @@
 
 use nalgebra::{SMatrix, Vector2};
 
-use super::constraints::{Active, ConstraintState, Constraints, S_MAX, Vector6, VectorS};
+use super::constraints::{Active, ConstraintState, Constraints, S_MAX};
 use super::inputs::{InputSignal, Inputs};
 use super::layout::{CRANK_ANGLE, PIN_A, StateLayout, pair};
 use super::rod_body::RodBody;
@@ -12,7 +12,7 @@ use crate::ancf::RodProperties;
 use crate::error::ModelError;
 use crate::integrator::MechanicalSystem;
 use crate::joint::{Contacts, Joint, JointRole};
-use crate::linalg::small;
+use crate::load_table::LoadTable;
 use crate::math;
 use crate::params::{DriveMode, JointModel, Parameters};
 use crate::reduction::RodEnd;
@@ -89,6 +89,8 @@ pub struct SliderCrank {
     pub(super) signal: InputSignal,
     /// The inputs at the time of the last [`SliderCrank::set_time`].
     pub(super) inputs: Inputs,
+    /// The load on the slider tied to the crank angle (`slider.forceTable`), added to the input.
+    pub(super) load: Option<LoadTable>,
     /// dω_in/dt at that time \[rad/s²\] (speed drive).
     pub(super) drive_acceleration: f64,
     pub(super) contacts: Contacts,
@@ -107,6 +109,12 @@ impl SliderCrank {
     /// (they enter the error scales' length as loads, see `scales::position_scale`).
     pub fn with_inputs(p: &Parameters, inputs: Inputs) -> Result<Self, ModelError> {
         p.validate()?;
+        let load = p.load_table()?;
+        // The error scales see the largest slider load the table will apply.
+        let scale_loads = Inputs {
+            slider_force: inputs.slider_force.abs() + load.as_ref().map_or(0.0, LoadTable::largest),
+            ..inputs
+        };
         let rod = RodBody::from_parameters(p)?;
         let n_rod = rod.n_coordinates();
         let b = rod.end_offset();
@@ -183,12 +191,13 @@ impl SliderCrank {
             rod_section: p.rod,
             rod_translation,
             reference_speed: p.start_speed(inputs.drive_speed).abs().max(1.0),
-            position_scale: scales::position_scale(p, &inputs),
+            position_scale: scales::position_scale(p, &scale_loads),
             impact_error_weight: p.impact_error_weight,
             rod_compliance,
             w,
             signal: InputSignal::held(inputs),
             inputs,
+            load,
             drive_acceleration: 0.0,
             contacts: Contacts::default(),
             force: vec![0.0; n_rod],
@@ -264,6 +273,15 @@ impl SliderCrank {
         self.inputs
     }
 
+    /// The total external force on the slider along the guide at the crank angle `theta`: the
+    /// input and the load table's value there \[N\].
+    pub fn slider_force(&self, theta: f64) -> f64 {
+        match &self.load {
+            Some(table) => self.inputs.slider_force + table.at(theta),
+            None => self.inputs.slider_force,
+        }
+    }
+
     /// Quantities of the last right-hand-side evaluation.
     pub fn evaluation(&self) -> &Evaluation {
         &self.evaluation
@@ -313,69 +331,9 @@ impl SliderCrank {
             return None;
         }
         let force = self.joint_force(JointRole::RodSlider, y).0.force;
-        let acceleration = (self.inputs.slider_force - force.x) / self.slider_mass + self.gravity.x;
+        let acceleration =
+            (self.slider_force(y[CRANK_ANGLE]) - force.x) / self.slider_mass + self.gravity.x;
         Some((force, acceleration))
-    }
-
-    /// Solves (C W Cᵀ) x = r on the k active rows (rows of C beyond k are zero; x is zero there).
-    pub(super) fn solve_schur(&self, c: &Constraints, r: Vector6) -> Result<Vector6, ModelError> {
-        let (k, n) = (c.rows, self.active.s_len());
-        let mut cw = [[0.0; S_MAX]; 6];
-        for (i, row) in cw.iter_mut().enumerate().take(k) {
-            for (j, v) in row.iter_mut().enumerate().take(n) {
-                *v = (0..n).map(|m| c.jacobian[(i, m)] * self.w[(m, j)]).sum();
-            }
-        }
-        let mut s = [[0.0; 6]; 6];
-        for (i, row) in s.iter_mut().enumerate().take(k) {
-            for (j, v) in row.iter_mut().enumerate().take(i + 1) {
-                *v = (0..n).map(|m| cw[i][m] * c.jacobian[(j, m)]).sum();
-            }
-        }
-        let mut x = [0.0; 6];
-        x[..k].copy_from_slice(&r.as_slice()[..k]);
-        small::cholesky_solve(
-            &s,
-            k,
-            &mut x,
-            "singular constraint Jacobian (locked configuration)",
-        )?;
-        Ok(Vector6::from(x))
-    }
-
-    /// Adds −G μ to the accelerations (or velocities) `out` for μ on s: M⁻¹ Cᵀλ applied.
-    pub(super) fn subtract_compliance(&self, mu: &VectorS, out: &mut [f64]) {
-        let l = self.layout;
-        let n_rod = l.rod().len();
-        out[CRANK_ANGLE] -= mu[0] / self.crank_inertia;
-        out[l.slider()] -= mu[5] / self.slider_mass;
-        if let Some(g) = l.crank_centre() {
-            out[g] -= mu[6] / self.crank_mass;
-            out[g + 1] -= mu[7] / self.crank_mass;
-        }
-        for j in 0..4 {
-            let column = &self.rod_compliance[j * n_rod..(j + 1) * n_rod];
-            for (o, g) in out[l.rod()].iter_mut().zip(column) {
-                *o -= g * mu[1 + j];
-            }
-        }
-    }
-
-    /// Values of `v` (length n) on s.
-    pub(super) fn on_s(&self, v: &[f64]) -> VectorS {
-        let l = self.layout;
-        let b = l.pin_b();
-        let centre = l.crank_centre().map_or([0.0; 2], |g| [v[g], v[g + 1]]);
-        VectorS::from([
-            v[CRANK_ANGLE],
-            v[PIN_A],
-            v[PIN_A + 1],
-            v[b],
-            v[b + 1],
-            v[l.slider()],
-            centre[0],
-            centre[1],
-        ])
     }
 
     /// Right-hand side; fills [`SliderCrank::evaluation`].
@@ -399,6 +357,7 @@ impl SliderCrank {
         self.force = rod_force;
         let main_bearing = self.main_bearing_load(y);
         let crank_loads = [crank_pin, main_bearing];
+        let slider_force = self.slider_force(q[CRANK_ANGLE]);
         let torque_in = match self.drive {
             DriveMode::Torque => self.inputs.drive_torque,
             DriveMode::Speed => 0.0,
@@ -431,8 +390,7 @@ impl SliderCrank {
         }
         acc[l.rod()].copy_from_slice(&self.force);
         self.rod.solve_mass(&mut acc[l.rod()]);
-        acc[l.slider()] =
-            (self.inputs.slider_force - joint.force.x) / self.slider_mass + self.gravity.x;
+        acc[l.slider()] = (slider_force - joint.force.x) / self.slider_mass + self.gravity.x;
 
         let c = self.constraints(y);
         let lambda = self.solve_schur(&c, c.jacobian * self.on_s(acc) - c.acceleration_rhs())?;
@@ -466,7 +424,7 @@ impl SliderCrank {
             0.0
         };
         dy[l.drive_work()] = crank_torque * v[CRANK_ANGLE];
-        dy[l.external_work()] = self.inputs.slider_force * v[l.slider()];
+        dy[l.external_work()] = slider_force * v[l.slider()];
         if let Some(d) = dy.get_mut(l.material_damping()) {
             *d = damping_power;
         }

@@ -173,8 +173,26 @@ integer_fields! {
             [ContactGeometry::Point, ContactGeometry::Cylinder];
     }
     counts {
+        SliderForceTablePeriod => slider_force_table_period;
         RodNElements => n_elements;
         RodNModes => n_modes;
         SolverMaxStepsPerInterval => max_steps_per_interval;
     }
+}
+
+/// Value of a String parameter, None for other variables.
+pub fn string_parameter(p: &Parameters, vr: Vr) -> Option<&str> {
+    match vr {
+        Vr::SliderForceTable => Some(&p.slider_force_table),
+        _ => None,
+    }
+}
+
+/// Sets a String parameter; false if `vr` is not one.
+pub fn set_string_parameter(p: &mut Parameters, vr: Vr, value: &str) -> bool {
+    match vr {
+        Vr::SliderForceTable => p.slider_force_table = value.to_string(),
+        _ => return false,
+    }
+    true
 }

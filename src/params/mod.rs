@@ -10,7 +10,10 @@ mod validate;
 pub use crate::joint::{
     ContactGeometry, ContactLaw, JointModel, JointParameters, JointRole, JournalStart,
 };
-pub use access::{integer_parameter, real_parameter, set_integer_parameter, set_real_parameter};
+pub use access::{
+    integer_parameter, real_parameter, set_integer_parameter, set_real_parameter,
+    set_string_parameter, string_parameter,
+};
 pub use parameters::{
     BENCHMARK_SPEED, DEFAULT_MAX_STEPS_PER_INTERVAL, DEFAULT_SPECTRAL_RADIUS, DriveMode,
     EXPLICIT_MAX_TOLERANCE, GENERALIZED_ALPHA_MAX_TOLERANCE, InitialState, Parameters,

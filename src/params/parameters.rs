@@ -73,6 +73,14 @@ pub struct Parameters {
     /// The guide line's distance from the crank pivot along +y (cylinder or piston-pin offset)
     /// \[m\].
     pub slider_offset: f64,
+    /// A CSV table of the load on the slider over the crank angle ([`crate::load_table`]): its
+    /// path, empty for none.
+    pub slider_force_table: String,
+    /// The table's period \[deg\]: 360, or 720 for a four-stroke cycle.
+    pub slider_force_table_period: usize,
+    /// Where a relative `slider_force_table` is looked up after the working directory: the FMU's
+    /// resources (not an FMU variable).
+    pub resource_directory: Option<std::path::PathBuf>,
     /// The rod–slider joint (the FMU's `joint.*`).
     pub joint: JointParameters,
     /// The crank pin (`crankPin.*`): the crank's pin in the rod's eye.
@@ -162,6 +170,9 @@ impl Default for Parameters {
             crank_initial_speed: None,
             slider_mass: 0.14,
             slider_offset: 0.0,
+            slider_force_table: String::new(),
+            slider_force_table_period: 360,
+            resource_directory: None,
             joint: JointParameters::benchmark(),
             crank_pin: JointParameters::ideal(),
             main_bearing: JointParameters::ideal(),
@@ -237,6 +248,19 @@ impl Parameters {
     /// jump at the speed drive's first step) \[rad/s\].
     pub fn start_speed(&self, drive_speed: f64) -> f64 {
         self.crank_initial_speed.unwrap_or(drive_speed)
+    }
+
+    /// The load table of `slider_force_table`, read from its file, if one is given.
+    pub fn load_table(&self) -> Result<Option<crate::load_table::LoadTable>, crate::ModelError> {
+        if self.slider_force_table.is_empty() {
+            return Ok(None);
+        }
+        crate::load_table::LoadTable::read(
+            &self.slider_force_table,
+            self.slider_force_table_period as f64,
+            self.resource_directory.as_deref(),
+        )
+        .map(Some)
     }
 
     /// The crank's centre of mass: its distance a from the pivot along the crank \[m\].

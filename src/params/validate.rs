@@ -150,7 +150,7 @@ impl Parameters {
                      crank.length + |slider.offset| < rod.length",
                     Num(self.rod.length),
                     Num(self.crank_length),
-                    gap = Num(self.rod.length - self.crank_length),
+                    gap = Num(((self.rod.length - self.crank_length) * 1e12).round() / 1e12),
                 ),
             ));
         }
@@ -160,6 +160,13 @@ impl Parameters {
         }
         for (role, joint) in self.joints() {
             check_joint(role, joint)?;
+        }
+        if !matches!(self.slider_force_table_period, 360 | 720) {
+            return Err(ModelError::invalid(
+                "slider.forceTablePeriod",
+                self.slider_force_table_period as f64,
+                "{360, 720}: one crank turn, or two for a four-stroke cycle",
+            ));
         }
         let tolerance = self.relative_tolerance;
         if self.method == Method::DormandPrince && tolerance > EXPLICIT_MAX_TOLERANCE {
@@ -237,8 +244,8 @@ impl Parameters {
                     f64::from(max),
                     "",
                 ),
-                // A switch's value is one of its items by type.
-                Kind::Enumeration { .. } | Kind::Boolean => continue,
+                // A switch's value is one of its items by type; a file is checked when read.
+                Kind::Enumeration { .. } | Kind::Boolean | Kind::String { .. } => continue,
             };
             if let Some(value) = value.filter(|x| !(min..=max).contains(x)) {
                 return Err(ModelError::invalid(
@@ -417,7 +424,7 @@ mod tests {
                         beyond(v, f64::from(max + 1));
                     }
                 }
-                Kind::Enumeration { .. } | Kind::Boolean => {}
+                Kind::Enumeration { .. } | Kind::Boolean | Kind::String { .. } => {}
             }
         }
         let elements = VARIABLES.iter().find(|v| v.name == "rod.nElements");
@@ -440,6 +447,13 @@ mod tests {
     fn bad_values_name_the_parameter() {
         let base = Parameters::default();
         let cases: Vec<(&str, Parameters)> = vec![
+            (
+                "slider.forceTablePeriod",
+                Parameters {
+                    slider_force_table_period: 540,
+                    ..base.clone()
+                },
+            ),
             (
                 "rod.length",
                 Parameters {

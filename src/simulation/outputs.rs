@@ -25,6 +25,9 @@ pub struct Outputs {
     pub slider_velocity: f64,
     /// Slider acceleration \[m/s²\].
     pub slider_acceleration: f64,
+    /// The total external force on the slider along the guide: the input and the load table at
+    /// the crank angle \[N\].
+    pub slider_applied_force: f64,
     /// Joint force on the journal, x \[N\].
     pub joint_force_x: f64,
     /// Joint force on the journal, y \[N\].
@@ -172,9 +175,6 @@ pub struct BearingOutputs {
     pub energy_dissipated: f64,
 }
 
-/// The outputs of state `y` at `time` with the mechanism's current inputs and contact state
-/// (one right-hand-side evaluation into `scratch`, no allocation), with the peak-hold values of
-/// `peaks` and the `warnings` count.
 impl Outputs {
     /// The energy account from the outputs alone, energy.kinetic + rod.deformationEnergy +
     /// energy.contact + energy.gravity + energy.dissipated + energy.materialDamping −
@@ -192,6 +192,9 @@ impl Outputs {
     }
 }
 
+/// The outputs of state `y` at `time` with the mechanism's current inputs and contact state
+/// (one right-hand-side evaluation into `scratch`, no allocation), with the peak-hold values of
+/// `peaks` and the `warnings` count.
 pub(super) fn outputs(
     mechanism: &mut SliderCrank,
     time: f64,
@@ -249,6 +252,7 @@ pub(super) fn outputs(
         slider_position: y[l.slider()],
         slider_velocity: y[l.slider_velocity()],
         slider_acceleration: ev.slider_acceleration,
+        slider_applied_force: mechanism.slider_force(y[CRANK_ANGLE]),
         joint_force_x: ev.joint_force.x,
         joint_force_y: ev.joint_force.y,
         joint_force: ev.joint_force.norm(),

@@ -140,11 +140,16 @@ impl Drop for Instance {
 impl Instance {
     /// A co-simulation instance with the correct GUID.
     pub fn new(name: &str) -> Self {
+        Self::with_resources(name, None)
+    }
+
+    /// A co-simulation instance with the correct GUID and the resource location `resources`.
+    pub fn with_resources(name: &str, resources: Option<&str>) -> Self {
         let c = instantiate_raw(
             Some(name),
             fmi2Type_fmi2CoSimulation,
             Some(GUID),
-            None,
+            resources,
             Some(&callbacks()),
         );
         assert!(!c.is_null(), "instantiation failed: {:?}", messages(name));
@@ -210,6 +215,24 @@ impl Instance {
     pub fn set_integer(&self, vr: u32, value: i32) -> fmi2Status {
         // SAFETY: one value reference and one value.
         unsafe { fmu().fmi2SetInteger(self.c, &vr, 1, &value) }
+    }
+    pub fn set_string(&self, vr: u32, value: &str) -> fmi2Status {
+        let value = CString::new(value).unwrap();
+        let pointer = value.as_ptr();
+        // SAFETY: one value reference and one NUL-terminated string.
+        unsafe { fmu().fmi2SetString(self.c, &vr, 1, &pointer) }
+    }
+    /// fmi2GetString of one variable; the text copied before the next call.
+    pub fn get_string(&self, vr: u32) -> (fmi2Status, Option<String>) {
+        let mut value: fmi2String = std::ptr::null();
+        // SAFETY: one value reference and one writable string pointer.
+        let status = unsafe { fmu().fmi2GetString(self.c, &vr, 1, &mut value) };
+        let text = (!value.is_null()).then(|| {
+            // SAFETY: not NULL: a NUL-terminated string the FMU keeps until the next call.
+            let text = unsafe { std::ffi::CStr::from_ptr(value) };
+            text.to_string_lossy().into_owned()
+        });
+        (status, text)
     }
     pub fn get_real(&self, vr: u32) -> (fmi2Status, f64) {
         let mut value = f64::NAN;

@@ -12,6 +12,7 @@ mod crank_pin;
 mod domain;
 mod impacts;
 mod joints;
+mod load_table;
 mod loads;
 mod machine;
 mod motion;

@@ -28,7 +28,7 @@ pub unsafe fn fmi2Instantiate<M: Model>(
     instanceName: fmi2String,
     fmuType: fmi2Type,
     fmuGUID: fmi2String,
-    _fmuResourceLocation: fmi2String,
+    fmuResourceLocation: fmi2String,
     functions: *const fmi2CallbackFunctions,
     _visible: fmi2Boolean,
     loggingOn: fmi2Boolean,
@@ -71,8 +71,16 @@ pub unsafe fn fmi2Instantiate<M: Model>(
             ));
             return std::ptr::null_mut();
         }
-        logger.event(&format!("fmi2Instantiate: instance \"{name}\" created"));
-        Box::into_raw(Box::new(Instance::<M>::new(logger))).cast()
+        // SAFETY: as above (NULL allowed: no resources).
+        let location = unsafe { string(fmuResourceLocation) }.unwrap_or_default();
+        let resources = directory_of_uri(&location).filter(|d| d.is_dir());
+        logger.event(&format!(
+            "fmi2Instantiate: instance \"{name}\" created (resources: {})",
+            resources
+                .as_ref()
+                .map_or_else(|| "none".to_string(), |d| d.display().to_string())
+        ));
+        Box::into_raw(Box::new(Instance::<M>::new(logger, resources))).cast()
     }));
     result.unwrap_or(std::ptr::null_mut())
 }
@@ -161,4 +169,67 @@ pub unsafe fn fmi2Reset<M: Model>(c: fmi2Component) -> fmi2Status {
         inst.reset();
         Ok(OK)
     })
+}
+
+/// The directory a `file:` URI names (fmi2Instantiate's fmuResourceLocation): `file:///a/b`,
+/// `file:/a/b` or `file://localhost/a/b`, percent-escapes decoded; `None` for another scheme or
+/// host, or an undecodable escape.
+fn directory_of_uri(uri: &str) -> Option<std::path::PathBuf> {
+    let rest = uri.strip_prefix("file:")?;
+    let path = match rest.strip_prefix("//") {
+        Some(authority) => {
+            let slash = authority.find('/')?;
+            let host = &authority[..slash];
+            if !(host.is_empty() || host.eq_ignore_ascii_case("localhost")) {
+                return None;
+            }
+            &authority[slash..]
+        }
+        None => rest,
+    };
+    let mut bytes = Vec::with_capacity(path.len());
+    let mut chars = path.bytes();
+    while let Some(b) = chars.next() {
+        if b == b'%' {
+            let hex = [chars.next()?, chars.next()?];
+            let hex = std::str::from_utf8(&hex).ok()?;
+            bytes.push(u8::from_str_radix(hex, 16).ok()?);
+        } else {
+            bytes.push(b);
+        }
+    }
+    let path = String::from_utf8(bytes).ok()?;
+    // A Windows drive letter follows the slash: file:///C:/dir.
+    let path = match path.as_bytes() {
+        [b'/', _, b':', ..] => &path[1..],
+        _ => &path,
+    };
+    Some(std::path::PathBuf::from(path))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::directory_of_uri;
+    use std::path::PathBuf;
+
+    /// The spellings of a local `file:` URI give its path, escapes decoded and a Windows drive
+    /// letter kept; another host, another scheme or a broken escape give none.
+    #[test]
+    fn file_uris_name_their_directory() {
+        let path = |s: &str| Some(PathBuf::from(s));
+        assert_eq!(
+            directory_of_uri("file:///tmp/fmu/resources"),
+            path("/tmp/fmu/resources")
+        );
+        assert_eq!(directory_of_uri("file:/tmp/a%20b"), path("/tmp/a b"));
+        assert_eq!(directory_of_uri("file://localhost/tmp/r/"), path("/tmp/r/"));
+        assert_eq!(
+            directory_of_uri("file:///C:/Temp/fmu%25x"),
+            path("C:/Temp/fmu%x")
+        );
+        assert_eq!(directory_of_uri("file://server/share"), None);
+        assert_eq!(directory_of_uri("http://localhost/tmp"), None);
+        assert_eq!(directory_of_uri("file:///tmp/%2"), None);
+        assert_eq!(directory_of_uri("file:///tmp/%zz"), None);
+    }
 }

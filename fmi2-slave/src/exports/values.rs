@@ -1,15 +1,18 @@
 //! Getting and setting values, their derivatives and directional derivatives.
 #![allow(unsafe_code, non_snake_case, clippy::missing_safety_doc)]
 
+use std::ffi::CString;
+
 use fmi_sys::fmi2::*;
 
 use super::codes::{OK, ok};
-use crate::error::FmuError;
-use crate::ffi::{slice, slice_mut, with_instance};
-use crate::model::{
-    Model, check_causality, check_input_derivatives, check_set_boolean, check_set_integer,
-    check_set_real, no_input_derivatives, resolve,
+use crate::checks::{
+    check_causality, check_input_derivatives, check_set_boolean, check_set_integer, check_set_real,
+    check_set_string, resolve,
 };
+use crate::error::FmuError;
+use crate::ffi::{slice, slice_mut, string, with_instance};
+use crate::model::{Model, no_input_derivatives};
 use crate::number::Num;
 use crate::state::Call;
 use crate::table::Causality;
@@ -65,22 +68,27 @@ pub unsafe fn fmi2GetBoolean<M: Model>(
     })
 }
 
-/// The FMU has no String variables: any value reference is an error.
+/// Reads String variables; the strings stay valid until the next call on the instance.
 pub unsafe fn fmi2GetString<M: Model>(
     c: fmi2Component,
     vr: *const fmi2ValueReference,
     nvr: usize,
     value: *mut fmi2String,
 ) -> fmi2Status {
-    with_instance::<M>(c, Call::GetString, |_| {
+    with_instance::<M>(c, Call::GetString, |inst| {
         // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
-        let (vr, _) = unsafe { (slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?) };
-        match vr.first() {
-            Some(r) => Err(FmuError::Invalid(format!(
-                "value reference {r} is not a String variable"
-            ))),
-            None => Ok(OK),
+        let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?) };
+        resolve::<M>(vr, "String", &mut inst.variables)?;
+        let mut texts = Vec::with_capacity(nvr);
+        inst.model.get_string(&inst.variables, &mut texts)?;
+        inst.strings = texts
+            .into_iter()
+            .map(|t| CString::new(t.replace('\0', "")).unwrap_or_default())
+            .collect();
+        for (v, text) in value.iter_mut().zip(&inst.strings) {
+            *v = text.as_ptr();
         }
+        Ok(OK)
     })
 }
 
@@ -138,22 +146,31 @@ pub unsafe fn fmi2SetBoolean<M: Model>(
     })
 }
 
-/// The FMU has no String variables: any value reference is an error.
+/// Writes String variables (parameters: before fmi2ExitInitializationMode).
 pub unsafe fn fmi2SetString<M: Model>(
     c: fmi2Component,
     vr: *const fmi2ValueReference,
     nvr: usize,
     value: *const fmi2String,
 ) -> fmi2Status {
-    with_instance::<M>(c, Call::SetString, |_| {
+    with_instance::<M>(c, Call::SetString, |inst| {
         // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
-        let (vr, _) = unsafe { (slice(vr, nvr, "vr")?, slice(value, nvr, "value")?) };
-        match vr.first() {
-            Some(r) => Err(FmuError::Invalid(format!(
-                "value reference {r} is not a String variable"
-            ))),
-            None => Ok(OK),
-        }
+        let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice(value, nvr, "value")?) };
+        resolve::<M>(vr, "String", &mut inst.variables)?;
+        check_set_string(inst.state, &inst.variables)?;
+        let texts = value
+            .iter()
+            .zip(inst.variables.iter())
+            .map(|(&p, v)| {
+                // SAFETY: a NUL-terminated string of the master's (FMI 2.0.4 fmi2String).
+                unsafe { string(p) }
+                    .ok_or_else(|| FmuError::Invalid(format!("{}: value is NULL", v.name)))
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        let texts: Vec<&str> = texts.iter().map(String::as_str).collect();
+        inst.model
+            .set_string(inst.state, &inst.variables, &texts)
+            .map(ok)
     })
 }
 

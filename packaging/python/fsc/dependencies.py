@@ -8,6 +8,8 @@ run the same measurement over many configurations and compare it with the `depen
 modelDescription.xml declares under ModelStructure/InitialUnknowns.
 """
 import sys
+import tempfile
+from pathlib import Path
 
 from fmpy import extract, read_model_description
 from fmpy.fmi2 import FMU2Slave, defaultCallbacks, fmi2CallbackFunctions, fmi2CallbackLoggerTYPE
@@ -21,28 +23,42 @@ QUIET.logger = fmi2CallbackLoggerTYPE(lambda *_: None)
 QUIET.allocateMemory = defaultCallbacks.allocateMemory
 QUIET.freeMemory = defaultCallbacks.freeMemory
 
-GETTERS = {"Real": "getReal", "Integer": "getInteger", "Boolean": "getBoolean"}
-SETTERS = {"Real": "setReal", "Integer": "setInteger", "Boolean": "setBoolean"}
+GETTERS = {"Real": "getReal", "Integer": "getInteger", "Boolean": "getBoolean",
+           "String": "getString"}
+SETTERS = {"Real": "setReal", "Integer": "setInteger", "Boolean": "setBoolean",
+           "String": "setString"}
+
+# The file a String known (a load table) is pointed at: a load varying over the crank angle.
+TABLE = Path(tempfile.mkdtemp(prefix="fsc-dependencies-")) / "table.csv"
+TABLE.write_text("0,-100\n180,-300\n")
 
 
 def perturbations(variable, value):
-    """The values a known is moved to: every other item of a switch, one step of an integer, 1 %
-    of a real (into its range), or a millionth of its largest value if it is zero."""
+    """The values a known is moved to, each as a list of alternatives of which the first the FMU
+    accepts counts: every other item of a switch; one step of an integer, or else the far end of
+    its range (a parameter that takes few values of its range, such as a table's period); 1 % of
+    a real (into its range), or a millionth of its largest value if it is zero; a String (a file
+    name) names a load table, or none if it named one."""
+    if variable.type == "String":
+        return [["" if value else str(TABLE)]]
     t = variable.declaredType
     if t is not None and t.max is not None:
-        return [k for k in range(int(t.min), int(t.max) + 1) if k != value]
+        return [[k] for k in range(int(t.min), int(t.max) + 1) if k != value]
     if variable.type == "Integer":
         high = int(variable.max) if variable.max is not None else value + 1
-        return [value + 1 if value < high else value - 1]
+        low = int(variable.min) if variable.min is not None else value - 1
+        step = value + 1 if value < high else value - 1
+        far = high if value - low < high - value else low
+        return [[step] if far in (step, value) else [step, far]]
     if variable.type == "Boolean":
-        return [1 - value]
+        return [[1 - value]]
     high = float(variable.max) if variable.max is not None else 1.0
     y = 1.01 * value if value != 0 else 1e-6 * high
     if y > high:
         y = 0.99 * value
     if variable.min is not None and y < float(variable.min):
         y = 0.5 * (value + float(variable.min))
-    return [y]
+    return [[y]]
 
 
 def changed(a, b):
@@ -84,16 +100,22 @@ def measure(fmu, configurations):
         measured += 1
         for k in knowns:
             x = getattr(s, GETTERS[k.type])([k.valueReference])[0]
-            for y in perturbations(k, x):
-                try:
-                    getattr(s, SETTERS[k.type])([k.valueReference], [y])
-                    after = read(s)
-                except Exception:  # a value this configuration rejects: start afresh
+            if isinstance(x, bytes):  # fmpy reads a String as bytes and sets it from a str
+                x = x.decode()
+            for alternatives in perturbations(k, x):
+                for y in alternatives:
+                    try:
+                        getattr(s, SETTERS[k.type])([k.valueReference], [y])
+                        after = read(s)
+                    except Exception:  # a value this configuration rejects
+                        after = None
+                    # Start afresh rather than set the value back: a parameter left at its start
+                    # value is not the same as one set to it (crank.initialSpeed).
                     s.freeInstance()
                     s = instance(configuration)
-                    continue
-                pairs |= {(u, k.name) for u in after if changed(after[u], before[u])}
-                getattr(s, SETTERS[k.type])([k.valueReference], [x])
+                    if after is not None:
+                        pairs |= {(u, k.name) for u in after if changed(after[u], before[u])}
+                        break
         s.freeInstance()
     return pairs, measured
 

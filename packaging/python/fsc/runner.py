@@ -81,6 +81,8 @@ def unpacked(fmu_bytes: bytes, guid: str):
         atexit.register(shutil.rmtree, directory, True)
         with zipfile.ZipFile(BytesIO(fmu_bytes)) as z:
             z.extractall(directory)
+        # The FMU's resources, where the cases' files go (the FMU looks there when instantiated).
+        os.makedirs(os.path.join(directory, "resources"), exist_ok=True)
         md = read_model_description(directory)
         if md.guid != guid:
             raise ValueError(f"FMU GUID {md.guid}, expected {guid}")
@@ -124,21 +126,40 @@ def metrics(result, start: float = 0.0) -> dict:
     }
 
 
+def input_signals(inputs: dict | None):
+    """The input series {"time": [...], name: [...]} as fmpy's structured array, or None."""
+    if not inputs:
+        return None
+    names = list(inputs)
+    return np.array(list(zip(*(inputs[n] for n in names))), dtype=[(n, float) for n in names])
+
+
 def run_case(fmu_bytes: bytes, guid: str, values: dict, stop_time: float,
-             output_interval: float, series: list, metrics_start: float = 0.0):
-    """Runs one case: (status, message, metrics, series columns or None). Never raises for a
-    failing case: its status is "error" and its message the FMU's logged error (or the
-    exception)."""
+             output_interval: float, series: list, metrics_start: float = 0.0,
+             inputs: dict | None = None, files: dict | None = None):
+    """Runs one case: (status, message, metrics, series columns or None), with the input series
+    `inputs` (interpolated linearly to each output point and held over the interval that starts
+    there) and `files` (name in the FMU's resources: bytes) written where the FMU finds them. Never raises for a failing case:
+    its status is "error" and its message the FMU's logged error (or the exception)."""
     directory, md, have = unpacked(fmu_bytes, guid)
+    for name, data in (files or {}).items():
+        target = os.path.join(directory, "resources", name)
+        if not os.path.exists(target):
+            os.makedirs(os.path.dirname(target), exist_ok=True)
+            with open(target + ".part", "wb") as f:
+                f.write(data)
+            os.replace(target + ".part", target)
     outputs = [n for n in dict.fromkeys(METRIC_OUTPUTS + list(series)) if n in have]
     start = time.perf_counter()
     _install_logger()
     fmu = None
     try:
         fmu = _instance(directory, md)
+        # fmpy interpolates the series at each communication point and holds the value over the
+        # step (its set_input_derivatives sizes the derivative buffer for nine inputs only).
         result = simulate_fmu(directory, model_description=md, start_values=values,
                               stop_time=stop_time, output_interval=output_interval,
-                              output=outputs, fmu_instance=fmu)
+                              output=outputs, fmu_instance=fmu, input=input_signals(inputs))
     except Exception as e:   # noqa: BLE001 - a failing case is a row, never the end of the study
         message = "; ".join(_errors.pop(fmu.instanceName, []) if fmu else []) or str(e)
         if fmu is not None:

@@ -26,9 +26,21 @@ A study is a TOML file:
     [random.uniform]
     "joint.friction" = [0.0, 0.2]
 
-Switches (Integer parameters with named items, such as joint.model) take their item number or name. A case is identified by a hash of its start values,
-the FMU's GUID, the stop time and the output interval.
+    [inputs]                                        # input series of every case (optional):
+    time = [0.0, 0.01, 0.024]                       # a time column and a column per input,
+    "drive.torque" = [0.0, 4.0, 4.0]                # interpolated linearly to each output point
+                                                    # and held over the interval after it; or
+                                                    # file = "inputs.csv" with a header row
+                                                    # time,drive.torque,... instead
+
+Switches (Integer parameters with named items, such as joint.model) take their item number or name.
+A String parameter that names a file (slider.forceTable) takes its path relative to the study file:
+the file is read when the study is loaded and travels with every case into the FMU's resources
+(under a name that holds a hash of its content), so that workers need no shared filesystem. A case
+is identified by a hash of its start values (a file's by its content), the input series, the FMU's
+GUID, the stop time and the output interval.
 """
+import csv
 import hashlib
 import itertools
 import json
@@ -64,12 +76,18 @@ class Study:
     metrics_start: float
     swept: list                     # names of the parameters that vary (grid, then random)
     cases: list = field(default_factory=list)   # list of dict name -> value
+    #: Input series of every case, {"time": [...], input name: [...]}, or None.
+    inputs: dict | None = None
+    #: Files the cases name (String parameters), by their name in the FMU's resources: the bytes.
+    files: dict = field(default_factory=dict)
 
     def case_id(self, values: dict) -> str:
         experiment = {"values": values, "guid": self.guid, "stop_time": self.stop_time,
                       "output_interval": self.output_interval}
         if self.metrics_start:
             experiment["metrics_start"] = self.metrics_start
+        if self.inputs:
+            experiment["inputs"] = self.inputs
         key = json.dumps(experiment, sort_keys=True)
         return hashlib.sha256(key.encode()).hexdigest()[:16]
 
@@ -114,6 +132,10 @@ def _check_value(where: str, name: str, value, variables: dict):
         if not isinstance(value, bool):
             raise StudyError(f"{where}: {name} = {value!r} must be true or false")
         return value
+    elif v.type == "String":
+        if not isinstance(value, str):
+            raise StudyError(f"{where}: {name} = {value!r} must be a string (a file name)")
+        return value
     lo = float(v.min) if v.min is not None else -np.inf
     hi = float(v.max) if v.max is not None else np.inf
     if not (np.isfinite(value) and lo <= value <= hi):
@@ -121,6 +143,63 @@ def _check_value(where: str, name: str, value, variables: dict):
         raise StudyError(f"{where}: {name} = {value!r} is outside the allowed range "
                          f"[{v.min}, {v.max}]{unit}")
     return value
+
+
+def _attach(where: str, name: str, value: str, base: Path, files: dict) -> str:
+    """A file a String parameter names (relative to `base`), read into `files` under its name in
+    the FMU's resources, `study-<hash of its content>/<its name>`; that name is the case's value.
+    An empty value (no file) stays empty."""
+    if not value:
+        return value
+    path = base / value
+    try:
+        data = path.read_bytes()
+    except OSError as e:
+        raise StudyError(f"{where}: {name} = {value!r}: cannot read {path} ({e.strerror})") from e
+    resource = f"study-{hashlib.sha256(data).hexdigest()[:16]}/{path.name}"
+    files[resource] = data
+    return resource
+
+
+def _input_series(spec: dict, base: Path, variables: dict) -> dict:
+    """The [inputs] entry checked: a time column, non-decreasing, and columns of inputs of equal
+    length, every value in its variable's range; from the entry itself or from its CSV `file`."""
+    if "file" in spec:
+        path = base / spec["file"]
+        try:
+            with open(path, newline="") as f:
+                rows = [r for r in csv.reader(f) if r and not r[0].lstrip().startswith("#")]
+        except OSError as e:
+            raise StudyError(f"inputs.file: cannot read {path} ({e.strerror})") from e
+        if len(rows) < 3:
+            raise StudyError(f"inputs.file: {path} needs a header row and at least two rows")
+        header = [h.strip() for h in rows[0]]
+        try:
+            values = [[float(x) for x in r] for r in rows[1:]]
+        except ValueError as e:
+            raise StudyError(f"inputs.file: {path}: {e}") from e
+        if any(len(r) != len(header) for r in values):
+            raise StudyError(f"inputs.file: {path}: every row needs {len(header)} values")
+        columns = {h: [r[k] for r in values] for k, h in enumerate(header)}
+    else:
+        columns = dict(spec)
+    if "time" not in columns:
+        raise StudyError("inputs: needs a time column")
+    lengths = {len(c) if isinstance(c, list) else 0 for c in columns.values()}
+    if len(columns) < 2 or len(lengths) != 1 or min(lengths) < 2:
+        raise StudyError("inputs: a time column and at least one input, equal-length lists of at "
+                         "least two values")
+    time = [float(t) for t in columns.pop("time")]
+    if not all(np.isfinite(time)) or any(b < a for a, b in zip(time, time[1:])):
+        raise StudyError("inputs: time must be finite and non-decreasing")
+    series = {"time": time}
+    for name, column in columns.items():
+        v = variables.get(name)
+        if v is None or v.causality != "input":
+            raise StudyError(f"inputs: {name!r} is not an input of the FMU")
+        series[name] = [_check_value(f"inputs.{name!r}[{k}]", name, x, variables)
+                        for k, x in enumerate(column)]
+    return series
 
 
 def load(path, fmu=None) -> Study:
@@ -131,7 +210,7 @@ def load(path, fmu=None) -> Study:
     except (OSError, tomllib.TOMLDecodeError) as e:
         raise StudyError(f"{path}: {e}") from e
     known = {"fmu", "stop_time", "output_interval", "metrics_start", "series", "fixed", "grid",
-             "cases", "random"}
+             "cases", "random", "inputs"}
     for key in spec:
         if key not in known:
             raise StudyError(f"{path}: unknown entry {key!r} (known: {sorted(known)})")
@@ -200,6 +279,12 @@ def load(path, fmu=None) -> Study:
                 case.update(extra)
                 case.update(sample)
                 cases.append(case)
+    files = {}
+    for case in cases:
+        for n, x in case.items():
+            if variables[n].type == "String":
+                case[n] = _attach(n, n, x, path.parent, files)
+    inputs = _input_series(spec["inputs"], path.parent, variables) if "inputs" in spec else None
     return Study(path=path, fmu=fmu_path, guid=md.guid, stop_time=stop_time,
                  output_interval=interval, series=series, metrics_start=metrics_start,
-                 swept=swept, cases=cases)
+                 swept=swept, cases=cases, inputs=inputs, files=files)

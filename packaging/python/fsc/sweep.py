@@ -33,7 +33,7 @@ def write_row(out: Path, study, case_id: str, values: dict, status: str, message
     row = {"case_id": case_id, "status": status, "message": message,
            "parameters": json.dumps(values, sort_keys=True)}
     for name, value in values.items():
-        row[name] = float(value)
+        row[name] = value if isinstance(value, str) else float(value)
     for name in study_mod.METRICS:
         row[name] = float((metrics or {}).get(name, np.nan))
     table = pa.Table.from_pylist([row])
@@ -87,7 +87,7 @@ def run(study, out, scheduler=None, workers=None, progress=True, on_result=None,
         for case_id, values in todo.items():
             f = client.submit(run_case, fmu, study.guid, values, study.stop_time,
                               study.output_interval, study.series, study.metrics_start,
-                              key=f"case-{case_id}", pure=False)
+                              study.inputs, study.files, key=f"case-{case_id}", pure=False)
             futures[f] = case_id
         bar = tqdm(total=len(futures), disable=not progress, unit="case")
         for future in as_completed(futures):
@@ -107,6 +107,11 @@ def run(study, out, scheduler=None, workers=None, progress=True, on_result=None,
         if cluster:
             cluster.close()
     return len(todo)
+
+
+def _label(value) -> str:
+    """A swept value as a tick label: a number to 3 digits, a file by its name."""
+    return value.rsplit("/", 1)[-1] if isinstance(value, str) else f"{value:.3g}"
 
 
 def report(study, out):
@@ -138,8 +143,8 @@ def report(study, out):
             for r in ok:
                 grid[ys.index(r[swept[1]]), xs.index(r[swept[0]])] = r[metric]
             im = ax.imshow(grid, origin="lower", aspect="auto", cmap="viridis")
-            ax.set_xticks(range(len(xs)), [f"{x:.3g}" for x in xs])
-            ax.set_yticks(range(len(ys)), [f"{y:.3g}" for y in ys])
+            ax.set_xticks(range(len(xs)), [_label(x) for x in xs])
+            ax.set_yticks(range(len(ys)), [_label(y) for y in ys])
             ax.set(xlabel=swept[0], ylabel=swept[1])
             fig.colorbar(im, ax=ax, label=metric)
         elif len(swept) == 1 and ok:

@@ -376,10 +376,11 @@ def test_directional_derivatives_agree_with_central_differences(fmu):
 def start_configurations(n=160, seed=7):
     """Start values covering every drive, joint, rod and start model (each joint's switches drawn
     independently), with gravity, friction, material damping and the inputs switched on at
-    random; half keep crank.initialSpeed at its start value, so that the speed drive starts the
-    crank at drive.speed. Six more put each lubricated joint at either edge of the short-bearing
-    range, and two start every joint dry and settled at a crank speed of 0.05 rad/s, where the
-    journals slip between the friction law's regularisation speeds."""
+    random; half keep crank.initialSpeed at its start value, so that the crank starts at
+    drive.speed; a third load the slider with a table over the crank angle. Six more put each
+    lubricated joint at either edge of the short-bearing range, and two start every joint dry and
+    settled at a crank speed of 0.05 rad/s, where the journals slip between the friction law's
+    regularisation speeds."""
     rng = np.random.default_rng(seed)
 
     def pick(values):
@@ -402,6 +403,8 @@ def start_configurations(n=160, seed=7):
             c |= {"gravity": 9.81, "gravityAngle": rng.uniform(0.0, 6.0)}
         if rng.uniform() < 0.5:
             c["rod.stiffnessDamping"] = 1e-6
+        if i % 3 == 0:
+            c["slider.forceTable"] = str(dependencies.TABLE)
         configurations.append({k: v.item() if hasattr(v, "item") else v for k, v in c.items()})
     radius = 0.0095  # journalRadius: L/D = 0.5 at a bearing length of 2 · 0.5 · radius
     for joint in ("joint", "crankPin", "mainBearing"):

@@ -7,6 +7,7 @@ import sys
 import time
 from pathlib import Path
 
+import numpy as np
 import psutil
 import pytest
 
@@ -49,7 +50,8 @@ def serial(study):
     """The cases run one by one in this process (no Dask)."""
     fmu = study.fmu.read_bytes()
     return {study.case_id(v): run_case(fmu, study.guid, v, study.stop_time, study.output_interval,
-                                       study.series)
+                                       study.series, study.metrics_start, study.inputs,
+                                       study.files)
             for v in study.cases}
 
 
@@ -182,6 +184,14 @@ def test_interrupted_study_resumes(tmp_path):
     ('[fixed]\n"rod.nModes" = 2.5\n', "fixed.'rod.nModes': rod.nModes = 2.5 must be an integer"),
     ('[fixed]\n"joint.model" = "greased"\n', "fixed.'joint.model': joint.model = 'greased' is not one of"),
     ('[fixed]\n"joint.force" = 1.0\n', "joint.force is an output"),
+    ('[fixed]\n"slider.forceTable" = "no_such.csv"\n',
+     "slider.forceTable = 'no_such.csv': cannot read"),
+    ('[fixed]\n"slider.forceTable" = 3\n', "must be a string (a file name)"),
+    ('[inputs]\ntime = [0.0, 1.0]\n"crank.length" = [0.05, 0.05]\n',
+     "inputs: 'crank.length' is not an input"),
+    ('[inputs]\ntime = [1.0, 0.0]\n"drive.torque" = [0.0, 1.0]\n', "non-decreasing"),
+    ('[inputs]\ntime = [0.0, 1.0]\n"drive.torque" = [0.0, 1e9]\n',
+     "inputs.'drive.torque'[1]: drive.torque = 1000000000.0 is outside"),
 ])
 def test_bad_study_fails_before_any_run(tmp_path, entry, expected):
     """An unknown variable, an out-of-range value or a wrong type fails before any
@@ -285,3 +295,60 @@ def test_metrics_leave_out_a_start_window():
     assert everything["contact_onsets"] == 3 and window["contact_onsets"] == 2
     assert everything["energy_dissipated"] == 2.5 and window["energy_dissipated"] == 1.5
     assert window["max_deformation_energy"] == 0.1
+
+
+def half_turn_table(degrees, low, high):
+    """The FMU's monotone periodic interpolant of the two-point table (0°, low), (180°, high): its
+    slopes vanish at both points (the secants change sign), so on each half turn it is the cubic
+    Hermite step low + (3s² − 2s³)(high − low), s the fraction of the half turn."""
+    a = np.mod(degrees, 360.0)
+    s = np.where(a < 180.0, a, a - 180.0) / 180.0
+    step = 3 * s ** 2 - 2 * s ** 3
+    return np.where(a < 180.0, low + step * (high - low), high + step * (low - high))
+
+
+def test_a_study_with_load_tables_and_an_input_series(tmp_path):
+    """A study sweeps two load tables (files next to the study, shipped to the workers in the
+    FMU's resources) under an input series: slider.force ramps from 0 to −200 N and the crank is
+    driven by drive.torque. On a LocalCluster worker each case's slider.appliedForce is, at every
+    output point, the table at crank.angle (the interpolant computed here independently) plus the
+    ramp's value where the interval began (an input is held over the interval), equal to the
+    serial run bit for bit; the file's content names the case, and the report labels the tables by
+    name."""
+    (tmp_path / "gas.csv").write_text("angle,force\n0,-100\n180,-500\n")
+    (tmp_path / "light.csv").write_text("0,-20\n180,-60\n")
+    body = """stop_time = 0.004
+output_interval = 1e-4
+series = ["slider.appliedForce", "crank.angle"]
+[fixed]
+"rod.formulation" = "rigid"
+"drive.mode" = "torque"
+[grid]
+"slider.forceTable" = ["gas.csv", "light.csv"]
+[inputs]
+time = [0.0, 0.004]
+"slider.force" = [0.0, -200.0]
+"drive.torque" = [1.0, 1.0]
+"""
+    study = study_mod.load(write_study(tmp_path, body))
+    assert len(study.cases) == 2 and len(study.files) == 2
+    assert run(study, tmp_path / "out", workers=1, progress=False) == 2
+    import pyarrow.parquet as pq
+    tables = {"gas.csv": (-100.0, -500.0), "light.csv": (-20.0, -60.0)}
+    for case_id, (status, message, _, series) in serial(study).items():
+        assert status == "ok", message
+        kept = pq.read_table(tmp_path / "out" / "series" / f"case={case_id}").to_pydict()
+        assert kept["slider.appliedForce"] == list(series["slider.appliedForce"])
+        name = next(v for v in study.cases if study.case_id(v) == case_id)["slider.forceTable"]
+        low, high = tables[name.rsplit("/", 1)[-1]]
+        ramp = -200.0 * np.maximum(series["time"] - 1e-4, 0.0) / 0.004
+        expected = ramp + half_turn_table(np.degrees(series["crank.angle"]), low, high)
+        assert np.max(np.abs(series["slider.appliedForce"] - expected)) < 1e-9 * 700
+    # Another content under the same file name is another case.
+    (tmp_path / "gas.csv").write_text("angle,force\n0,-100\n180,-501\n")
+    changed = study_mod.load(study.path)
+    assert changed.case_id(changed.cases[0]) != study.case_id(study.cases[0])
+    assert changed.case_id(changed.cases[1]) == study.case_id(study.cases[1])
+    from fsc.sweep import report
+    report(study, tmp_path / "out")
+    assert (tmp_path / "out" / "peak_joint_force.png").is_file()
