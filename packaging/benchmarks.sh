@@ -3,9 +3,9 @@
 # tables. Without arguments every section runs (about an hour and a half on the benchmark machine,
 # the fuzzing half an hour per target of it); with arguments only the named ones:
 #
-#   bash packaging/benchmarks.sh [fmu] [native] [impacts] [weight] [integrators] [accuracy]
-#                                [energy] [criterion] [modes] [bearings] [coupling] [system] [dask]
-#                                [space] [platforms] [fuzz]
+#   bash packaging/benchmarks.sh [fmu] [native] [impacts] [weight] [damping] [integrators]
+#                                [accuracy] [energy] [criterion] [modes] [bearings] [coupling]
+#                                [system] [dask] [space] [platforms] [fuzz]
 #
 # Needs the packaged FMU and the venv (the README's first command makes both). Figures vary with the
 # machine's load: compare ratios within one table, measured in one run.
@@ -13,7 +13,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 py=.venv/bin/python
 fmu=target/fmu/FlexibleSliderCrank.fmu
-all=(fmu native impacts weight integrators accuracy energy criterion modes bearings coupling system dask space platforms fuzz)
+all=(fmu native impacts weight damping integrators accuracy energy criterion modes bearings coupling system dask space platforms fuzz)
 sections=("$@")
 [ ${#sections[@]} -eq 0 ] && sections=("${all[@]}")
 
@@ -32,6 +32,12 @@ for s in "${sections[@]}"; do
       for w in 0 1 2 4; do
         cargo run --release --quiet --example impacts 1e-2 "$w"
         "$py" packaging/python/benchmark.py "$fmu" --quick solver.impactErrorWeight="$w"
+      done ;;
+    damping)
+      cargo run --release --quiet --example damped_rod
+      for zeta in 0.01 0.02; do
+        farm-bench -n 7 --timeout 600 --vs "target/release/examples/damped_rod time 0 20" -- \
+          target/release/examples/damped_rod time "$zeta" 20
       done ;;
     integrators) cargo run --release --quiet --example integrators ;;
     accuracy) cargo run --release --quiet --example accuracy 1e-2 3e-2 ;;

@@ -77,6 +77,11 @@ fn kind_columns<V>(v: &Variable<V>, enumerations: &[Enumeration]) -> (String, St
             format!("[{min}, {max}]"),
         ),
         Kind::Boolean => (String::new(), String::new(), "true/false".into()),
+        Kind::String { start } => (
+            String::new(),
+            format!("\"{}\"", escape(start)),
+            "text".into(),
+        ),
         Kind::Enumeration { start, type_index } => {
             let items = enumerations[type_index].items;
             let names: Vec<String> = items
@@ -202,6 +207,7 @@ pub fn slider_crank(root: &Path) -> Result<(String, Vec<PathBuf>), String> {
         0,
     );
     let behaviour = html(&section("### Behaviour a master can rely on")?, 0);
+    let frame = html(&section("### Frame and signs")?, 0);
     let ranges = html(&section("#### Why the ranges are what they are")?, 0);
     // The README's output table is the variable table's; the notes after it are kept.
     let output_notes = html(
@@ -214,6 +220,12 @@ pub fn slider_crank(root: &Path) -> Result<(String, Vec<PathBuf>), String> {
     );
     let choosing = html(
         &section("### Choosing `rod.nModes`, `rod.boundary`, `rod.quadrature`, `solver.*`")?,
+        0,
+    );
+    let own_machine = html(
+        &section(
+            "### Your own machine: counterweight, offset cylinder, rod eyes, gas load, damping, fatigue stress",
+        )?,
         0,
     );
     let mut sections = |headings: [&str; 3], shift| -> Result<[String; 3], String> {
@@ -239,9 +251,10 @@ pub fn slider_crank(root: &Path) -> Result<(String, Vec<PathBuf>), String> {
 <h1>FlexibleSliderCrank — FMI 2.0 co-simulation FMU</h1>
 {intro}
 <p>GUID <code>{GUID}</code>. Contents: <a href="#quick-start">Quick start</a> ·
-<a href="#behaviour">Behaviour a master can rely on</a> · <a href="#variables">Variables</a> ·
+<a href="#behaviour">Behaviour a master can rely on</a> · <a href="#frame">Frame and signs</a> ·
+<a href="#variables">Variables</a> ·
 <a href="#sizing">Sizing parts</a> · <a href="#clearance">Clearance at every joint</a> ·
-<a href="#bearings">Bearing design</a> ·
+<a href="#bearings">Bearing design</a> · <a href="#own-machine">Your own machine</a> ·
 <a href="#choosing">Choosing the model and solver</a> · <a href="#validation">Validation</a> ·
 <a href="#performance">Performance</a> · <a href="#limits">Current limits</a></p>
 {demo}
@@ -249,6 +262,8 @@ pub fn slider_crank(root: &Path) -> Result<(String, Vec<PathBuf>), String> {
 {quick_start}
 <h2 id="behaviour">Behaviour a master can rely on</h2>
 {behaviour}
+<h2 id="frame">Frame and signs</h2>
+{frame}
 <h2 id="variables">Variables</h2>
 <p>Value references as in modelDescription.xml; the display unit is the one a master shows by default.
 Switches are Integer parameters whose items are listed in the range column.</p>
@@ -264,6 +279,8 @@ Switches are Integer parameters whose items are listed in the range column.</p>
 {clearance}
 <h2 id="bearings">Bearing design: film thickness, film pressure, friction loss</h2>
 {bearings}
+<h2 id="own-machine">Your own machine: counterweight, offset cylinder, rod eyes, gas load, damping, fatigue stress</h2>
+{own_machine}
 <h2 id="choosing">Choosing the model and solver</h2>
 {choosing}
 <h2 id="validation">Validation</h2>
