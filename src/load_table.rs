@@ -19,10 +19,15 @@
 //! - F. N. Fritsch, J. Butland (1984), A method for constructing local monotone piecewise cubic
 //!   interpolants, SIAM J. Sci. Stat. Comput. 5, 300–304.
 
+use std::io::Read;
 use std::path::{Path, PathBuf};
 
 use crate::error::{ModelError, Num};
 use crate::integrator::dense::cubic_hermite;
+
+/// The largest table file read \[bytes\]: a table of a million points is far smaller, and a larger
+/// file named by mistake is refused instead of read into memory.
+const MAX_BYTES: u64 = 64 << 20;
 
 /// A periodic load table of the crank angle, interpolated monotonically.
 #[derive(Clone, Debug, PartialEq)]
@@ -119,8 +124,16 @@ impl LoadTable {
             };
             table_error(path, &format!("no such file (looked in {looked})"))
         })?;
-        let text = std::fs::read_to_string(&file)
+        let mut text = String::new();
+        std::fs::File::open(&file)
+            .and_then(|f| f.take(MAX_BYTES + 1).read_to_string(&mut text))
             .map_err(|e| table_error(path, &format!("cannot be read: {e}")))?;
+        if text.len() as u64 > MAX_BYTES {
+            return Err(table_error(
+                path,
+                &format!("larger than {} MiB: not a load table", MAX_BYTES >> 20),
+            ));
+        }
         let mut points = Vec::new();
         for (number, line) in (1..).zip(text.lines()) {
             let line = line.trim();
@@ -184,8 +197,8 @@ impl LoadTable {
     }
 }
 
-/// The file a table's `path` names: as given if absolute or present in the working directory,
-/// else in `resources`.
+/// The regular file a table's `path` names (a device or a pipe is none): as given if absolute or
+/// present in the working directory, else in `resources`.
 fn locate(path: &str, resources: Option<&Path>) -> Option<PathBuf> {
     let given = PathBuf::from(path);
     if given.is_file() {
@@ -287,6 +300,8 @@ mod tests {
         let m = message(&garbled, 360.0);
         assert!(m.contains("line 4: \"5,x\""), "{m}");
         assert!(m.contains(&garbled), "{m}");
+        // A device is not a table file (nor read until memory runs out).
+        assert!(message("/dev/zero", 360.0).contains("no such file"));
         let missing = message("no/such/table.csv", 360.0);
         assert!(missing.contains("slider.forceTable = \"no/such/table.csv\": no such file"));
         // A relative path is found in the resources directory.

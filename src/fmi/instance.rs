@@ -113,7 +113,7 @@ impl Model for SliderCrankFmu {
     const GUID: &'static str = super::model_description::GUID;
     const LOG_CATEGORIES: &'static [(&'static str, &'static str)] = LOG_CATEGORIES;
     const STATE_MAGIC: [u8; 4] = *b"FSCS";
-    const STATE_VERSION: u32 = 14;
+    const STATE_VERSION: u32 = 15;
     type Vr = Vr;
     const VARIABLES: &'static [Variable] = VARIABLES;
     const ENUMERATIONS: &'static [Enumeration] = ENUMERATIONS;
