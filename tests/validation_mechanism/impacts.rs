@@ -38,69 +38,77 @@ fn every_impact_is_right_at_the_defaults() {
 }
 
 /// The same at the crank's joints: benchmark A's and B's dry clearance moved to the crank pin, to
-/// the main bearing, and worn at all three joints: every significant impact of the first 60° at
-/// each worn crank joint within 2 % in peak and 0.1° in onset of the converged run. Asserted where
-/// the defaults hold it (`ASSERTED`); measured and printed for the others, some of whose later
-/// impacts miss that bound (BENCHMARKS.md, "Load spectrum").
+/// the main bearing, and worn at all three joints: the worst peak and onset errors of the first
+/// 60°'s significant impacts at each worn crank joint, against the converged run, each case held
+/// at its own bound. Where one joint is worn the defaults hold 2 % and 0.1°; where the pins' impact
+/// sequences feed each other (both pins worn; the rigid rod's crank pin with all three worn) the
+/// later impacts drift further, and the bound is the one measured (BENCHMARKS.md, "Load spectrum").
 #[test]
 fn every_crank_joint_impact_is_right_at_the_defaults() {
     use JointModel::{Dry, Ideal};
     use JointRole::{CrankPin, MainBearing};
-    // (case, main bearing, crank pin, rod–slider joint, the joints measured)
-    let cases: [(&str, JointModel, JointModel, JointModel, &[JointRole]); 4] = [
-        ("crank pin", Ideal, Dry, Ideal, &[CrankPin]),
-        ("both pins", Ideal, Dry, Dry, &[CrankPin]),
-        ("main bearing", Dry, Ideal, Ideal, &[MainBearing]),
-        ("all three", Dry, Dry, Dry, &[MainBearing, CrankPin]),
+    // (case, main bearing, crank pin, rod–slider joint)
+    let cases: [(&str, JointModel, JointModel, JointModel); 4] = [
+        ("crank pin", Ideal, Dry, Ideal),
+        ("both pins", Ideal, Dry, Dry),
+        ("main bearing", Dry, Ideal, Ideal),
+        ("all three", Dry, Dry, Dry),
     ];
-    const ASSERTED: &[(&str, &str, JointRole)] = &[
-        ("rigid (A)", "crank pin", CrankPin),
-        ("rigid (A)", "main bearing", MainBearing),
-        ("rigid (A)", "all three", MainBearing),
-        ("4 modes (B)", "crank pin", CrankPin),
-        ("4 modes (B)", "main bearing", MainBearing),
-        ("4 modes (B)", "all three", MainBearing),
-        ("4 modes (B)", "all three", CrankPin),
+    // (benchmark, case, joint measured, worst peak error, worst onset error [°]); the measured
+    // values are in BENCHMARKS.md.
+    const BOUNDS: [(&str, &str, JointRole, f64, f64); 10] = [
+        ("rigid (A)", "crank pin", CrankPin, 0.02, 0.1),
+        ("rigid (A)", "both pins", CrankPin, 0.21, 0.8),
+        ("rigid (A)", "main bearing", MainBearing, 0.02, 0.1),
+        ("rigid (A)", "all three", MainBearing, 0.02, 0.1),
+        ("rigid (A)", "all three", CrankPin, 0.04, 0.3),
+        ("4 modes (B)", "crank pin", CrankPin, 0.02, 0.1),
+        ("4 modes (B)", "both pins", CrankPin, 0.12, 0.1),
+        ("4 modes (B)", "main bearing", MainBearing, 0.02, 0.1),
+        ("4 modes (B)", "all three", MainBearing, 0.02, 0.1),
+        ("4 modes (B)", "all three", CrankPin, 0.02, 0.1),
     ];
-    for (name, base) in benchmarks().into_iter().take(2) {
-        for (case, main_bearing, crank_pin, slider_pin, measured) in cases {
-            let worn = |model| JointParameters {
-                model,
-                ..JointParameters::benchmark()
-            };
-            let p = crate::Parameters {
-                joint: JointParameters {
-                    model: slider_pin,
-                    ..base.joint
-                },
-                crank_pin: worn(crank_pin),
-                main_bearing: worn(main_bearing),
-                ..base.clone()
-            };
-            for &role in measured {
-                let (reference, _) = impacts_at(converged(&p), role).unwrap();
-                let (run, steps) = impacts_at(p.clone(), role).unwrap();
-                let pairs = pair(&reference, &run);
-                let worst = pairs.iter().fold((0.0f64, 0.0f64), |(peak, onset), pair| {
-                    (
-                        peak.max(pair.peak_error()),
-                        onset.max(pair.onset_error_degrees()),
-                    )
-                });
-                println!(
-                    "{name}, {case} worn: {} {} impacts, worst peak error {:.2} %, worst onset \
-                     error {:.2}°, {steps} steps",
-                    pairs.len(),
-                    role.prefix(),
-                    100.0 * worst.0,
-                    worst.1
-                );
-                assert!(pairs.len() >= 2, "{name}, {case}: {} impacts", pairs.len());
-                if ASSERTED.contains(&(name, case, role)) {
-                    assert!(worst.0 <= 0.02 && worst.1 <= 0.1, "{name}: {pairs:?}");
-                }
-            }
-        }
+    let benchmarks = benchmarks();
+    for (name, case, role, peak_bound, onset_bound) in BOUNDS {
+        let (_, base) = benchmarks.iter().find(|(n, _)| *n == name).unwrap();
+        let &(_, main_bearing, crank_pin, slider_pin) =
+            cases.iter().find(|(c, ..)| *c == case).unwrap();
+        let worn = |model| JointParameters {
+            model,
+            ..JointParameters::benchmark()
+        };
+        let p = crate::Parameters {
+            joint: JointParameters {
+                model: slider_pin,
+                ..base.joint
+            },
+            crank_pin: worn(crank_pin),
+            main_bearing: worn(main_bearing),
+            ..base.clone()
+        };
+        let (reference, _) = impacts_at(converged(&p), role).unwrap();
+        let (run, steps) = impacts_at(p, role).unwrap();
+        let pairs = pair(&reference, &run);
+        let worst = pairs.iter().fold((0.0f64, 0.0f64), |(peak, onset), pair| {
+            (
+                peak.max(pair.peak_error()),
+                onset.max(pair.onset_error_degrees()),
+            )
+        });
+        println!(
+            "{name}, {case} worn: {} {} impacts, worst peak error {:.2} %, worst onset error \
+             {:.2}°, {steps} steps",
+            pairs.len(),
+            role.prefix(),
+            100.0 * worst.0,
+            worst.1
+        );
+        assert!(pairs.len() >= 2, "{name}, {case}: {} impacts", pairs.len());
+        assert!(
+            worst.0 <= peak_bound && worst.1 <= onset_bound,
+            "{name}, {case}, {}: {pairs:?}",
+            role.prefix()
+        );
     }
 }
 
