@@ -31,26 +31,44 @@ fn guid_is_the_one_in_the_xml() {
     );
 }
 
-/// Every variable name the source quotes (in messages and docs) exists in the variable table.
+/// Every variable name the source quotes (in messages and docs, between double quotes) and the
+/// user documentation names (between backticks) exists in the variable table: any word under one
+/// of the table's components (`rod.`, `crankPin.`, `energy.`, …, each first segment of a dotted
+/// name) must be a name of the table.
 #[test]
 fn quoted_variable_names_exist() {
     let names: Vec<&str> = VARIABLES.iter().map(|v| v.name).collect();
-    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
-    let mut files = vec![root];
+    let mut components: Vec<String> = names
+        .iter()
+        .filter_map(|n| n.split_once('.').map(|(c, _)| format!("{c}.")))
+        .collect();
+    components.sort();
+    components.dedup();
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut files = vec![root.join("src"), root.join("docs"), root.join("README.md")];
     let mut unknown = Vec::new();
     while let Some(path) = files.pop() {
         if path.is_dir() {
             files.extend(std::fs::read_dir(&path).unwrap().map(|e| e.unwrap().path()));
             continue;
         }
+        let quote = match path.extension().and_then(|e| e.to_str()) {
+            Some("rs") => '"',
+            Some("md") => '`',
+            _ => continue,
+        };
         let text = std::fs::read_to_string(&path).unwrap();
-        for quoted in text.split('"').skip(1).step_by(2) {
-            let prefixes = ["rod.", "crank.", "joint.", "solver.", "drive.", "slider."];
-            for w in quoted.split(|c: char| !(c.is_ascii_alphanumeric() || c == '.')) {
-                let w = w.trim_end_matches('.');
-                let named = prefixes
+        for quoted in text.split(quote).skip(1).step_by(2) {
+            for w in quoted.split(|c: char| !(c.is_ascii_alphanumeric() || "._/".contains(c))) {
+                // A path names a file, not a variable; "x.aX/Y" names x.aX and x.aY.
+                let w = w
+                    .split('/')
+                    .next()
+                    .unwrap_or_default()
+                    .trim_end_matches('.');
+                let named = components
                     .iter()
-                    .any(|p| w.starts_with(p) && w.len() > p.len());
+                    .any(|p| w.starts_with(p.as_str()) && w.len() > p.len());
                 if named && !names.contains(&w) {
                     unknown.push(format!("{}: {w}", path.display()));
                 }
