@@ -284,10 +284,7 @@ fn logging_switch_and_categories() {
         false,
     );
     assert!(!c.is_null());
-    let inst = Instance {
-        c,
-        name: "quiet".into(),
-    };
+    let inst = Instance::adopt(c, "quiet");
     inst.initialize();
     assert!(inst.messages().is_empty(), "{:?}", inst.messages());
     let category = std::ffi::CString::new("logEvents").unwrap();
@@ -322,10 +319,7 @@ fn logging_switch_and_categories() {
         Some(&callbacks()),
         false,
     );
-    let inst = Instance {
-        c,
-        name: "quiet-error".into(),
-    };
+    let inst = Instance::adopt(c, "quiet-error");
     assert_eq!(inst.do_step(0.0, 1e-4), ERROR);
     assert!(
         inst.last_message().contains("Illegal call sequence"),

@@ -9,29 +9,46 @@ use std::sync::{Mutex, OnceLock};
 use flexible_slider_crank::fmi::GUID;
 use fmi_sys::fmi2::*;
 
-/// Path of the release library; built on demand when a plain `cargo test` runs first.
-pub fn library_path() -> PathBuf {
+/// Path of the release library of `package` (`lib<name>.so`); built on demand when a plain
+/// `cargo test` runs first.
+fn library_of(package: &str, name: &str) -> PathBuf {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
-    let path = root.join("target/release/libflexible_slider_crank.so");
-    static BUILT: OnceLock<()> = OnceLock::new();
-    BUILT.get_or_init(|| {
-        let status = std::process::Command::new(env!("CARGO"))
-            .current_dir(&root)
-            .args(["build", "--release", "--lib", "--quiet"])
-            .status()
-            .unwrap();
-        assert!(status.success(), "cargo build --release --lib failed");
-    });
-    path
+    let status = std::process::Command::new(env!("CARGO"))
+        .current_dir(&root)
+        .args(["build", "--release", "--lib", "--quiet", "-p", package])
+        .status()
+        .unwrap();
+    assert!(
+        status.success(),
+        "cargo build --release --lib -p {package} failed"
+    );
+    root.join(format!("target/release/lib{name}.so"))
 }
 
-/// The loaded library (one per test process).
+/// Path of the slider-crank's release library.
+pub fn library_path() -> PathBuf {
+    static PATH: OnceLock<PathBuf> = OnceLock::new();
+    PATH.get_or_init(|| library_of("flexible-slider-crank", "flexible_slider_crank"))
+        .clone()
+}
+
+/// The slider-crank's loaded library (one per test process).
 pub fn fmu() -> &'static Fmi2Binding {
     static FMU: OnceLock<Fmi2Binding> = OnceLock::new();
     FMU.get_or_init(|| {
         init_logging();
         // SAFETY: loading our own FMU library; its initialisers do nothing.
         unsafe { Fmi2Binding::new(library_path()) }.unwrap()
+    })
+}
+
+/// The DC motor's loaded library (one per test process).
+pub fn motor() -> &'static Fmi2Binding {
+    static MOTOR: OnceLock<Fmi2Binding> = OnceLock::new();
+    MOTOR.get_or_init(|| {
+        init_logging();
+        // SAFETY: loading our own FMU library; its initialisers do nothing.
+        unsafe { Fmi2Binding::new(library_of("dc-motor", "dc_motor")) }.unwrap()
     })
 }
 
@@ -125,6 +142,8 @@ pub fn instantiate_with_logging(
 pub struct Instance {
     pub c: fmi2Component,
     pub name: String,
+    /// The library the instance comes from.
+    lib: &'static Fmi2Binding,
 }
 
 // SAFETY: an FMU instance may be used from any thread, one call at a time (docs/fmi.md §1.4).
@@ -133,7 +152,7 @@ unsafe impl Send for Instance {}
 impl Drop for Instance {
     fn drop(&mut self) {
         // SAFETY: c is live and freed once.
-        unsafe { fmu().fmi2FreeInstance(self.c) };
+        unsafe { self.lib.fmi2FreeInstance(self.c) };
     }
 }
 
@@ -153,9 +172,39 @@ impl Instance {
             Some(&callbacks()),
         );
         assert!(!c.is_null(), "instantiation failed: {:?}", messages(name));
+        Self::adopt(c, name)
+    }
+
+    /// The slider-crank instance `c`, instantiated as `name`, freed on drop.
+    pub fn adopt(c: fmi2Component, name: &str) -> Self {
         Self {
             c,
             name: name.to_string(),
+            lib: fmu(),
+        }
+    }
+
+    /// A co-simulation instance of the DC motor.
+    pub fn motor(name: &str) -> Self {
+        let name_c = CString::new(name).unwrap();
+        let guid = CString::new(dc_motor::GUID).unwrap();
+        // SAFETY: NUL-terminated strings and a callbacks struct that outlive the call.
+        let c = unsafe {
+            motor().fmi2Instantiate(
+                name_c.as_ptr(),
+                fmi2Type_fmi2CoSimulation,
+                guid.as_ptr(),
+                std::ptr::null(),
+                &callbacks(),
+                0,
+                1,
+            )
+        };
+        assert!(!c.is_null(), "instantiation failed: {:?}", messages(name));
+        Self {
+            c,
+            name: name.to_string(),
+            lib: motor(),
         }
     }
 
@@ -172,7 +221,7 @@ impl Instance {
     pub fn setup(&self, start: f64, stop: Option<f64>) -> fmi2Status {
         // SAFETY: live instance.
         unsafe {
-            fmu().fmi2SetupExperiment(
+            self.lib.fmi2SetupExperiment(
                 self.c,
                 0,
                 0.0,
@@ -184,11 +233,11 @@ impl Instance {
     }
     pub fn enter(&self) -> fmi2Status {
         // SAFETY: live instance.
-        unsafe { fmu().fmi2EnterInitializationMode(self.c) }
+        unsafe { self.lib.fmi2EnterInitializationMode(self.c) }
     }
     pub fn exit(&self) -> fmi2Status {
         // SAFETY: live instance.
-        unsafe { fmu().fmi2ExitInitializationMode(self.c) }
+        unsafe { self.lib.fmi2ExitInitializationMode(self.c) }
     }
     /// Setup, enter and exit initialization: ready to step.
     pub fn initialize(&self) {
@@ -198,35 +247,35 @@ impl Instance {
     }
     pub fn do_step(&self, t: f64, h: f64) -> fmi2Status {
         // SAFETY: live instance.
-        unsafe { fmu().fmi2DoStep(self.c, t, h, 1) }
+        unsafe { self.lib.fmi2DoStep(self.c, t, h, 1) }
     }
     pub fn terminate(&self) -> fmi2Status {
         // SAFETY: live instance.
-        unsafe { fmu().fmi2Terminate(self.c) }
+        unsafe { self.lib.fmi2Terminate(self.c) }
     }
     pub fn reset(&self) -> fmi2Status {
         // SAFETY: live instance.
-        unsafe { fmu().fmi2Reset(self.c) }
+        unsafe { self.lib.fmi2Reset(self.c) }
     }
     pub fn set_real(&self, vr: u32, value: f64) -> fmi2Status {
         // SAFETY: one value reference and one value.
-        unsafe { fmu().fmi2SetReal(self.c, &vr, 1, &value) }
+        unsafe { self.lib.fmi2SetReal(self.c, &vr, 1, &value) }
     }
     pub fn set_integer(&self, vr: u32, value: i32) -> fmi2Status {
         // SAFETY: one value reference and one value.
-        unsafe { fmu().fmi2SetInteger(self.c, &vr, 1, &value) }
+        unsafe { self.lib.fmi2SetInteger(self.c, &vr, 1, &value) }
     }
     pub fn set_string(&self, vr: u32, value: &str) -> fmi2Status {
         let value = CString::new(value).unwrap();
         let pointer = value.as_ptr();
         // SAFETY: one value reference and one NUL-terminated string.
-        unsafe { fmu().fmi2SetString(self.c, &vr, 1, &pointer) }
+        unsafe { self.lib.fmi2SetString(self.c, &vr, 1, &pointer) }
     }
     /// fmi2GetString of one variable; the text copied before the next call.
     pub fn get_string(&self, vr: u32) -> (fmi2Status, Option<String>) {
         let mut value: fmi2String = std::ptr::null();
         // SAFETY: one value reference and one writable string pointer.
-        let status = unsafe { fmu().fmi2GetString(self.c, &vr, 1, &mut value) };
+        let status = unsafe { self.lib.fmi2GetString(self.c, &vr, 1, &mut value) };
         let text = (!value.is_null()).then(|| {
             // SAFETY: not NULL: a NUL-terminated string the FMU keeps until the next call.
             let text = unsafe { std::ffi::CStr::from_ptr(value) };
@@ -237,50 +286,57 @@ impl Instance {
     pub fn get_real(&self, vr: u32) -> (fmi2Status, f64) {
         let mut value = f64::NAN;
         // SAFETY: one value reference and one writable value.
-        let status = unsafe { fmu().fmi2GetReal(self.c, &vr, 1, &mut value) };
+        let status = unsafe { self.lib.fmi2GetReal(self.c, &vr, 1, &mut value) };
         (status, value)
     }
     pub fn get_reals(&self, vrs: &[u32]) -> Vec<f64> {
         let mut values = vec![f64::NAN; vrs.len()];
         // SAFETY: vrs.len() references and writable values.
-        let status =
-            unsafe { fmu().fmi2GetReal(self.c, vrs.as_ptr(), vrs.len(), values.as_mut_ptr()) };
+        let status = unsafe {
+            self.lib
+                .fmi2GetReal(self.c, vrs.as_ptr(), vrs.len(), values.as_mut_ptr())
+        };
         assert_eq!(status, fmi2Status_fmi2OK, "{:?}", self.messages());
         values
     }
     pub fn get_integer(&self, vr: u32) -> (fmi2Status, i32) {
         let mut value = -1;
         // SAFETY: one value reference and one writable value.
-        let status = unsafe { fmu().fmi2GetInteger(self.c, &vr, 1, &mut value) };
+        let status = unsafe { self.lib.fmi2GetInteger(self.c, &vr, 1, &mut value) };
         (status, value)
     }
     /// fmi2GetFMUstate into a new state.
     pub fn get_state(&self) -> fmi2FMUstate {
         let mut state: fmi2FMUstate = std::ptr::null_mut();
         // SAFETY: writable state pointer.
-        let status = unsafe { fmu().fmi2GetFMUstate(self.c, &mut state) };
+        let status = unsafe { self.lib.fmi2GetFMUstate(self.c, &mut state) };
         assert_eq!(status, fmi2Status_fmi2OK);
         state
     }
     pub fn set_state(&self, state: fmi2FMUstate) -> fmi2Status {
         // SAFETY: a state of this FMU.
-        unsafe { fmu().fmi2SetFMUstate(self.c, state) }
+        unsafe { self.lib.fmi2SetFMUstate(self.c, state) }
     }
     pub fn free_state(&self, mut state: fmi2FMUstate) {
         // SAFETY: a state of this FMU, freed once.
-        let status = unsafe { fmu().fmi2FreeFMUstate(self.c, &mut state) };
+        let status = unsafe { self.lib.fmi2FreeFMUstate(self.c, &mut state) };
         assert_eq!(status, fmi2Status_fmi2OK);
         assert!(state.is_null());
     }
     pub fn serialize(&self, state: fmi2FMUstate) -> Vec<u8> {
         let mut size = 0usize;
         // SAFETY: a state of this FMU; writable size.
-        let status = unsafe { fmu().fmi2SerializedFMUstateSize(self.c, state, &mut size) };
+        let status = unsafe {
+            self.lib
+                .fmi2SerializedFMUstateSize(self.c, state, &mut size)
+        };
         assert_eq!(status, fmi2Status_fmi2OK);
         let mut bytes = vec![0u8; size];
         // SAFETY: `size` writable bytes.
-        let status =
-            unsafe { fmu().fmi2SerializeFMUstate(self.c, state, bytes.as_mut_ptr().cast(), size) };
+        let status = unsafe {
+            self.lib
+                .fmi2SerializeFMUstate(self.c, state, bytes.as_mut_ptr().cast(), size)
+        };
         assert_eq!(status, fmi2Status_fmi2OK);
         bytes
     }
@@ -288,7 +344,8 @@ impl Instance {
         let mut state: fmi2FMUstate = std::ptr::null_mut();
         // SAFETY: `bytes.len()` readable bytes; writable state pointer.
         let status = unsafe {
-            fmu().fmi2DeSerializeFMUstate(self.c, bytes.as_ptr().cast(), bytes.len(), &mut state)
+            self.lib
+                .fmi2DeSerializeFMUstate(self.c, bytes.as_ptr().cast(), bytes.len(), &mut state)
         };
         (status, state)
     }
