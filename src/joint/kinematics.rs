@@ -5,7 +5,7 @@ use nalgebra::Vector2;
 
 use super::role::JointRole;
 
-/// Smallest impact velocity used in the Lankarani–Nikravesh damping term \[m/s\] (docs/model.md §7).
+/// Smallest impact velocity used in the hysteresis-damping term \[m/s\] (docs/model.md §3).
 pub const MIN_IMPACT_VELOCITY: f64 = 1e-4;
 
 /// Relative kinematics of the journal in the bearing.
