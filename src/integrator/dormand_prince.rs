@@ -10,9 +10,9 @@
 //! - Dormand & Prince (1980); Hairer, Nørsett & Wanner (1993), Table II.5.2 and code DOPRI5.
 
 use super::control::{ErrorScales, Stats, Tolerances, initial_step, step_size};
+use super::step_loop::{self, Method, Trial};
 use super::system::OdeSystem;
 use crate::error::ModelError;
-use crate::error::Num;
 
 /// Order q of the error estimate: err = O(h⁵).
 const ORDER: i32 = 5;
@@ -176,10 +176,10 @@ impl DormandPrince {
         Ok(())
     }
 
-    /// Takes one accepted step from (`*t`, `y`), retrying rejected ones, in at most
-    /// `max_attempts` trial steps; with a `limit` the step ends there at the latest (exactly,
-    /// when the proposal reaches it or nearly does). Returns `false` when the attempts ran out
-    /// before a step was accepted (`*t` and `y` unchanged).
+    /// Takes one accepted step from (`*t`, `y`) by the shared loop ([`step_loop::step`]: retried
+    /// when rejected, in at most `max_attempts` trial steps, ending at `limit` at the latest).
+    /// Returns `false` when the attempts ran out before a step was accepted (`*t` and `y`
+    /// unchanged).
     pub fn step<F: OdeSystem>(
         &mut self,
         f: &mut F,
@@ -193,9 +193,6 @@ impl DormandPrince {
             self.stats.evaluations += 1;
             self.fsal = true;
         }
-        let Tolerances {
-            max_step, min_step, ..
-        } = self.tolerances;
         if self.h <= 0.0 {
             let (k0, rest) = self.k.split_at_mut(1);
             self.h = initial_step(
@@ -203,7 +200,7 @@ impl DormandPrince {
                 *t,
                 y,
                 &k0[0],
-                limit.unwrap_or(*t + max_step),
+                limit.unwrap_or(*t + self.tolerances.max_step),
                 &self.tolerances,
                 &self.scales,
                 ORDER,
@@ -212,60 +209,8 @@ impl DormandPrince {
             );
             self.stats.evaluations += 1;
         }
-        let mut rejected_last = false;
-        for _ in 0..max_attempts {
-            let proposal = self.h.min(max_step);
-            // Take the limit exactly when the proposal reaches it or nearly does.
-            let last = limit.is_some_and(|end| 1.01 * proposal >= end - *t);
-            let h = match limit {
-                Some(end) if last => end - *t,
-                _ => proposal,
-            };
-            let err = self.try_step(f, *t, y, h);
-            let t_new = match limit {
-                Some(end) if last => end,
-                _ => *t + h,
-            };
-            let veto = if err <= 1.0 {
-                f.check_step(*t, y, t_new, &self.y_stage)
-            } else {
-                None
-            };
-            if let Some(factor) = veto {
-                self.stats.rejected += 1;
-                rejected_last = true;
-                self.h = h * step_size::vetoed(factor);
-            } else if err <= 1.0 {
-                self.stats.steps += 1;
-                let next_limit = f.accept_step(*t, y, t_new, &self.y_stage);
-                *t = t_new;
-                y.copy_from_slice(&self.y_stage);
-                self.k.swap(0, 6);
-                let factor = step_size::accepted(err, ORDER, rejected_last);
-                // Keep the unclamped proposal when the step was shortened to hit the limit.
-                if !last || h >= self.h {
-                    self.h = h * factor;
-                }
-                if let Some(next_limit) = next_limit {
-                    self.h = self.h.min(next_limit);
-                }
-                return Ok(true);
-            } else {
-                self.stats.rejected += 1;
-                rejected_last = true;
-                self.h = h * step_size::rejected(err, ORDER);
-            }
-            if self.h < min_step {
-                return Err(ModelError::Numerical(format!(
-                    "step size {} s fell below the minimum {} s at t = {} s (error estimate {})",
-                    Num(self.h),
-                    Num(min_step),
-                    Num(*t),
-                    Num(err)
-                )));
-            }
-        }
-        Ok(false)
+        let tolerances = self.tolerances;
+        step_loop::step(self, f, (t, y), limit, &tolerances, max_attempts)
     }
 
     /// One trial step of size `h` from (t, y); the candidate is left in `y_stage` and k[6] holds
@@ -295,6 +240,35 @@ impl DormandPrince {
         } else {
             f64::INFINITY
         }
+    }
+}
+
+impl<F: OdeSystem> Method<F> for DormandPrince {
+    fn proposal(&mut self) -> &mut f64 {
+        &mut self.h
+    }
+
+    fn stats(&mut self) -> &mut Stats {
+        &mut self.stats
+    }
+
+    fn error_order(&self) -> i32 {
+        ORDER
+    }
+
+    fn trial(&mut self, f: &mut F, t: f64, y: &[f64], h: f64) -> Trial {
+        Trial::Error(self.try_step(f, t, y, h))
+    }
+
+    fn candidate(&self) -> &[f64] {
+        &self.y_stage
+    }
+
+    /// The candidate and its derivative (k₇, the next step's k₁: first same as last).
+    fn commit(&mut self, y: &mut [f64], _h: f64, err: f64, rejected_last: bool) -> f64 {
+        y.copy_from_slice(&self.y_stage);
+        self.k.swap(0, 6);
+        step_size::accepted(err, ORDER, rejected_last)
     }
 }
 

@@ -11,7 +11,8 @@
 //!   numerical dissipation as a parameter (spectral radius at infinity ρ∞, 1: none), as in
 //!   structural and multibody codes; the same Newton iteration, one implicit stage per step.
 //!
-//! All measure the local error in one weighted norm: component i is compared with
+//! All run one step-control loop (`step_loop`: propose, try, accept or retry, the step sizes from
+//! one controller) and measure the local error in one weighted norm: component i is compared with
 //! `absolute · sᵢ + relative · rᵢ |yᵢ|` ([`ErrorScales`]), where the scales sᵢ carry each state's
 //! units (positions, slopes, modal amplitudes, velocities and energies differ by orders of
 //! magnitude) and rᵢ says whether a relative tolerance means anything for it (not for positions,
@@ -47,6 +48,7 @@ mod dormand_prince;
 mod esdirk;
 mod generalized_alpha;
 mod implicit;
+mod step_loop;
 mod system;
 
 pub use control::{ErrorScales, Stats, Tolerances};

@@ -38,6 +38,7 @@
 use super::control::{ErrorScales, Stats, Tolerances, initial_step, step_size};
 use super::esdirk::Tableau;
 use super::generalized_alpha::GeneralizedAlpha;
+use super::step_loop::{self, Method, Trial};
 use super::system::MechanicalSystem;
 use crate::error::ModelError;
 use crate::error::Num;
@@ -53,6 +54,8 @@ const NEWTON_TOLERANCE: f64 = 0.3;
 const REUSE_RATE: f64 = 0.1;
 /// Step-size ratios for which the step (and the factorisation) is kept, as RADAU5 does.
 const KEPT_STEP_RATIOS: std::ops::RangeInclusive<f64> = 1.0..=1.2;
+/// A trial step whose Newton iteration failed with a fresh Jacobian is retried this much shorter.
+const NEWTON_FAILURE_FACTOR: f64 = 0.25;
 /// Marks the start of the last accepted step among the predictor's known points.
 const HISTORY: usize = usize::MAX;
 
@@ -294,10 +297,10 @@ impl Implicit {
         (&self.k[self.scheme.stages() - 1], &self.k[0])
     }
 
-    /// Takes one accepted step from (`*t`, `y`), retrying rejected ones, in at most
-    /// `max_attempts` trial steps; with a `limit` the step ends there at the latest (exactly,
-    /// when the proposal reaches it or nearly does). Returns `false` when the attempts ran out
-    /// before a step was accepted; then, as on failure, `*t` and `y` hold the last accepted point.
+    /// Takes one accepted step from (`*t`, `y`) by the shared loop ([`step_loop::step`]: retried
+    /// when rejected, in at most `max_attempts` trial steps, ending at `limit` at the latest).
+    /// Returns `false` when the attempts ran out before a step was accepted; then, as on failure,
+    /// `*t` and `y` hold the last accepted point.
     pub fn step<F: MechanicalSystem>(
         &mut self,
         f: &mut F,
@@ -313,9 +316,6 @@ impl Implicit {
             self.k[0].copy_from_slice(&self.state.derivative);
         }
         self.start_acceleration(false);
-        let Tolerances {
-            max_step, min_step, ..
-        } = self.tolerances;
         if self.state.h <= 0.0 {
             let (k0, rest) = self.k.split_at_mut(1);
             self.state.h = initial_step(
@@ -323,7 +323,7 @@ impl Implicit {
                 *t,
                 y,
                 &k0[0],
-                limit.unwrap_or(*t + max_step),
+                limit.unwrap_or(*t + self.tolerances.max_step),
                 &self.tolerances,
                 &self.scales,
                 self.scheme.error_order(),
@@ -332,55 +332,8 @@ impl Implicit {
             );
             self.state.stats.evaluations += 1;
         }
-        let mut rejected_last = false;
-        for _ in 0..max_attempts {
-            if self.state.jacobian_stale {
-                self.jacobian(f, *t, y);
-            }
-            let proposal = self.state.h.min(max_step);
-            let last = limit.is_some_and(|end| 1.01 * proposal >= end - *t);
-            let (h, t_new) = match limit {
-                Some(end) if last => (end - *t, end),
-                _ => (proposal, *t + proposal),
-            };
-            match self.try_step(f, *t, y, h, true) {
-                Err(failure) => {
-                    self.state.stats.rejected += 1;
-                    rejected_last = true;
-                    if self.jacobian_fresh || matches!(failure, Failure::Singular) {
-                        self.state.h = 0.25 * h;
-                    } else {
-                        self.state.jacobian_stale = true;
-                        self.state.h = h;
-                    }
-                }
-                Ok(err) if err > 1.0 => {
-                    self.state.stats.rejected += 1;
-                    rejected_last = true;
-                    self.state.h = h * step_size::rejected(err, self.scheme.error_order());
-                }
-                Ok(err) => {
-                    if let Some(factor) = f.check_step(*t, y, t_new, &self.y_new) {
-                        self.state.stats.rejected += 1;
-                        rejected_last = true;
-                        self.state.h = h * step_size::vetoed(factor);
-                    } else {
-                        self.accept(f, t, y, t_new, h, err, last, rejected_last);
-                        return Ok(true);
-                    }
-                }
-            }
-            if self.state.h < min_step {
-                return Err(ModelError::Numerical(format!(
-                    "step size {} s fell below the minimum {} s at t = {} s (implicit \
-                     integrator)",
-                    Num(self.state.h),
-                    Num(min_step),
-                    Num(*t)
-                )));
-            }
-        }
-        Ok(false)
+        let tolerances = self.tolerances;
+        step_loop::step(self, f, (t, y), limit, &tolerances, max_attempts)
     }
 
     /// The state at t₀ + Δt inside the last accepted step (t₀, y₀) → (t₁, y₁), written to
@@ -442,28 +395,53 @@ impl Implicit {
         self.state.h_factored = 0.0;
         result
     }
+}
 
-    /// Accepts the step just computed: hooks, state, FSAL, next step size, Jacobian policy.
-    #[allow(clippy::too_many_arguments)]
-    fn accept<F: MechanicalSystem>(
-        &mut self,
-        f: &mut F,
-        t: &mut f64,
-        y: &mut [f64],
-        t_new: f64,
-        h: f64,
-        err: f64,
-        last: bool,
-        rejected_last: bool,
-    ) {
-        self.state.stats.steps += 1;
+impl<F: MechanicalSystem> Method<F> for Implicit {
+    fn proposal(&mut self) -> &mut f64 {
+        &mut self.state.h
+    }
+
+    fn stats(&mut self) -> &mut Stats {
+        &mut self.state.stats
+    }
+
+    fn error_order(&self) -> i32 {
+        self.scheme.error_order()
+    }
+
+    /// The trial step with the Jacobian renewed first if stale. A failed Newton iteration is
+    /// retried with the same step and a fresh Jacobian, or, if the Jacobian was fresh or the
+    /// matrix singular, with [`NEWTON_FAILURE_FACTOR`] times the step.
+    fn trial(&mut self, f: &mut F, t: f64, y: &[f64], h: f64) -> Trial {
+        if self.state.jacobian_stale {
+            self.jacobian(f, t, y);
+        }
+        match self.try_step(f, t, y, h, true) {
+            Ok(err) => Trial::Error(err),
+            Err(failure) if self.jacobian_fresh || matches!(failure, Failure::Singular) => {
+                Trial::Failed(NEWTON_FAILURE_FACTOR)
+            }
+            Err(_) => {
+                self.state.jacobian_stale = true;
+                Trial::Failed(1.0)
+            }
+        }
+    }
+
+    fn candidate(&self) -> &[f64] {
+        &self.y_new
+    }
+
+    /// The candidate, the predictor's history (the step's start), the derivative at the new
+    /// point (first same as last), the Jacobian policy, and the next step's factor, 1 for small
+    /// increases while the Jacobian is kept (the factorisation with it, as RADAU5 does).
+    fn commit(&mut self, y: &mut [f64], h: f64, err: f64, rejected_last: bool) -> f64 {
         let n_q = self.n_q;
         self.state.history.resize(2 * n_q, 0.0);
         self.state.history[..n_q].copy_from_slice(&y[n_q..2 * n_q]);
         self.state.history[n_q..].copy_from_slice(&self.k[0][n_q..2 * n_q]);
         self.state.history_step = h;
-        let next_limit = f.accept_step(*t, y, t_new, &self.y_new);
-        *t = t_new;
         y.copy_from_slice(&self.y_new);
         self.k.swap(0, self.scheme.stages() - 1);
         self.state.derivative.clone_from(&self.k[0]);
@@ -475,17 +453,11 @@ impl Implicit {
         if self.step_rate > REUSE_RATE {
             self.state.jacobian_stale = true;
         }
-        let mut factor = step_size::accepted(err, self.scheme.error_order(), rejected_last);
-        // Keep h (and the factorisation) for small increases, as RADAU5 does.
+        let factor = step_size::accepted(err, self.scheme.error_order(), rejected_last);
         if KEPT_STEP_RATIOS.contains(&factor) && !self.state.jacobian_stale {
-            factor = 1.0;
-        }
-        // Keep the unclamped proposal when the last step was shortened to hit t_end.
-        if !last || h >= self.state.h {
-            self.state.h = h * factor;
-        }
-        if let Some(next_limit) = next_limit {
-            self.state.h = self.state.h.min(next_limit);
+            1.0
+        } else {
+            factor
         }
     }
 }
