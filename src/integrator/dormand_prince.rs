@@ -176,7 +176,7 @@ impl DormandPrince {
         Ok(())
     }
 
-    /// Takes one accepted step from (`*t`, `y`) by the shared loop ([`step_loop::step`]: retried
+    /// Takes one accepted step from (`*t`, `y`) by the shared loop (`step_loop::step`: retried
     /// when rejected, in at most `max_attempts` trial steps, ending at `limit` at the latest).
     /// Returns `false` when the attempts ran out before a step was accepted (`*t` and `y`
     /// unchanged).

@@ -297,7 +297,7 @@ impl Implicit {
         (&self.k[self.scheme.stages() - 1], &self.k[0])
     }
 
-    /// Takes one accepted step from (`*t`, `y`) by the shared loop ([`step_loop::step`]: retried
+    /// Takes one accepted step from (`*t`, `y`) by the shared loop (`step_loop::step`: retried
     /// when rejected, in at most `max_attempts` trial steps, ending at `limit` at the latest).
     /// Returns `false` when the attempts ran out before a step was accepted; then, as on failure,
     /// `*t` and `y` hold the last accepted point.
