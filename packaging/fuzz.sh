@@ -2,9 +2,12 @@
 # Coverage-guided fuzzing (libFuzzer through cargo-fuzz) of the FMU's state deserialization and of
 # fmi2* call sequences, each target for a fixed time (seconds, default 60) from the corpus kept
 # in fuzz/corpus. New inputs go to a scratch directory, so a run leaves the repository as it was;
-# a crash fails the run and leaves its input under fuzz/artifacts/.
+# a crash fails the run and leaves its input under fuzz/artifacts/. With --update-corpus the kept
+# corpus is regenerated instead: the inputs of the run, the kept ones and (for fmu_state) states of
+# the current format from examples/fuzz_seeds.rs, merged into a smallest set with their coverage
+# (libFuzzer's -set_cover_merge=1).
 #
-#   bash packaging/fuzz.sh [seconds]
+#   bash packaging/fuzz.sh [seconds] [--update-corpus]
 #
 # With the nightly toolchain the targets are built with the address sanitizer; without it (a machine
 # with the stable toolchain only) they are built without a sanitizer, still coverage-guided. Installs
@@ -12,6 +15,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
+update=${2:-}
 mkdir -p target
 
 if rustup run nightly rustc --version >/dev/null 2>&1; then
@@ -37,6 +41,18 @@ for target in fmu_state call_sequence; do
   "${fuzz[@]}" run -s "$sanitizer" --fuzz-dir fuzz "$target" "$scratch" "fuzz/corpus/$target" -- \
     -max_total_time="$seconds" -rss_limit_mb=4096 -print_final_stats=1 \
     >"target/fuzz-$target.log" 2>&1 || status=$?
+  if [ "$status" -eq 0 ] && [ "$update" = "--update-corpus" ]; then
+    # FMU states of the current format, so the corpus reaches past the version check.
+    if [ "$target" = fmu_state ]; then
+      cargo run --quiet --release --example fuzz_seeds -- "$scratch"
+    fi
+    merged=$(mktemp -d)
+    "${fuzz[@]}" run -s "$sanitizer" --fuzz-dir fuzz "$target" "$merged" "fuzz/corpus/$target" \
+      "$scratch" -- -set_cover_merge=1 -rss_limit_mb=4096 >"target/fuzz-$target-merge.log" 2>&1
+    rm -rf "fuzz/corpus/$target"
+    mv "$merged" "fuzz/corpus/$target"
+    echo "== fuzz/corpus/$target: $(ls "fuzz/corpus/$target" | wc -l) inputs after the merge"
+  fi
   rm -rf "$scratch"
   grep -E "^(INFO: seed corpus|stat::number_of_executed_units|stat::new_units_added|Done)" \
     "target/fuzz-$target.log" || true
