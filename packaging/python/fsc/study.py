@@ -97,8 +97,8 @@ def _variables(md):
 
 
 def switch_items(v) -> dict:
-    """The items of a switch, {name: value}: an Integer of a declared type whose description names
-    them ("Rod-slider joint model (1 = ideal, 2 = dry, 3 = lubricated)"); empty for other variables."""
+    """The items of a switch, {name: value}: an Integer of a declared type whose description ends
+    by naming them ("... (1 = ideal, 2 = dry, 3 = lubricated)"); empty for other variables."""
     if v.type != "Integer" or v.declaredType is None:
         return {}
     return {name: int(value) for value, name in re.findall(r"(\d+) = (\w+)", v.description or "")}

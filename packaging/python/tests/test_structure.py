@@ -9,8 +9,8 @@ ROOT = Path(__file__).resolve().parents[3]
 CRATES = ["src", "fmi2-slave/src", "dc-motor/src", "packaging/src", "fuzz/src"]
 #: Longest file, in lines before its unit tests.
 MAX_LINES = 520
-#: Data tables: one row per FMI variable.
-TABLES = {"src/variables.rs", "dc-motor/src/variables.rs"}
+#: Data tables: one row per FMI variable (the slider-crank's, by component, in a folder).
+TABLES = ("src/variables/", "dc-motor/src/variables.rs")
 
 
 def modules(crate):
@@ -113,7 +113,7 @@ def test_no_long_source_file():
         for path in (ROOT / crate).rglob("*.rs"):
             name = path.relative_to(ROOT).as_posix()
             lines = path.read_text().split("\n#[cfg(test)]\nmod tests")[0].count("\n")
-            if lines > MAX_LINES and name not in TABLES:
+            if lines > MAX_LINES and not name.startswith(TABLES):
                 long.append(f"{name}: {lines} lines")
     assert not long, "\n".join(long)
 

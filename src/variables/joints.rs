@@ -1,0 +1,562 @@
+//! The three revolute joints' variables — the rod–slider joint (`joint`), the crank pin
+//! (`crankPin`) and the main bearing (`mainBearing`) — from one definition of a joint's rows, and
+//! the loads each carries.
+
+use super::enumerations::{CONTACT_GEOMETRY, CONTACT_LAW, JOINT_MODEL, JOURNAL_START};
+use super::vr::{Variable, Vr};
+use fmi2_slave::table::{Causality, Kind, Variability};
+
+/// Number of rows of each joint ([`joint_rows`]).
+const JOINT_ROWS: usize = 30;
+
+/// Every row of a revolute joint, the same for the three: its model and dry-contact parameters,
+/// its film's parameters, its state and bearing-design outputs. Arguments: the variable-name
+/// prefix, its name starting a description and inside one, what it joins, what its eccentricity
+/// is, its journal, the journal as the film's outputs name it, the parts in contact, the default
+/// joint model, and the 30 value references in the order of the rows.
+macro_rules! joint_rows {
+    (
+        $prefix:literal,
+        $label:literal,
+        $name:literal,
+        $joins:literal,
+        $eccentricity:literal,
+        $journal:literal,
+        $pin:literal,
+        $parts:literal,
+        $model_start:literal,
+        [
+            $model:ident,
+            $clearance:ident,
+            $radius:ident,
+            $youngs:ident,
+            $poisson:ident,
+            $restitution:ident,
+            $law:ident,
+            $friction:ident,
+            $v0:ident,
+            $v1:ident,
+            $viscosity:ident,
+            $length:ident,
+            $switch:ident,
+            $ex:ident,
+            $ey:ident,
+            $penetration:ident,
+            $contact:ident,
+            $onsets:ident,
+            $total:ident,
+            $start:ident,
+            $geometry:ident,
+            $ratio:ident,
+            $thickness:ident,
+            $thickness_min:ident,
+            $thickness_min_start:ident,
+            $pressure:ident,
+            $pressure_start:ident,
+            $torque:ident,
+            $power:ident,
+            $dissipated:ident $(,)?
+        ]
+    ) => {
+        [
+            Variable::enumeration(
+                Vr::$model,
+                concat!($prefix, ".model"),
+                $model_start,
+                JOINT_MODEL,
+                concat!($label, ": joint model (", $joins, ")"),
+            ),
+            Variable::parameter(
+                Vr::$clearance,
+                concat!($prefix, ".clearance"),
+                5e-4,
+                0.0,
+                0.1,
+                "m",
+                concat!(
+                    $label,
+                    ": radial clearance (bearing radius - journal radius)"
+                ),
+            ),
+            Variable::parameter(
+                Vr::$radius,
+                concat!($prefix, ".journalRadius"),
+                9.5e-3,
+                1e-5,
+                1.0,
+                "m",
+                concat!($label, ": ", $journal, " radius"),
+            ),
+            Variable::parameter(
+                Vr::$youngs,
+                concat!($prefix, ".youngsModulus"),
+                207e9,
+                1e6,
+                1e13,
+                "Pa",
+                concat!($label, ": Young's modulus of ", $parts),
+            ),
+            Variable::parameter(
+                Vr::$poisson,
+                concat!($prefix, ".poissonRatio"),
+                0.3,
+                -0.99,
+                0.499,
+                "1",
+                concat!($label, ": Poisson ratio of ", $parts),
+            ),
+            Variable::parameter(
+                Vr::$restitution,
+                concat!($prefix, ".restitution"),
+                0.9,
+                1e-3,
+                1.0,
+                "1",
+                concat!(
+                    $label,
+                    ": coefficient of restitution of the dry contact (see ",
+                    $prefix,
+                    ".contactLaw)"
+                ),
+            ),
+            Variable::enumeration(
+                Vr::$law,
+                concat!($prefix, ".contactLaw"),
+                1,
+                CONTACT_LAW,
+                concat!($label, ": hysteresis-damping law of the dry contact force"),
+            ),
+            Variable::parameter(
+                Vr::$friction,
+                concat!($prefix, ".friction"),
+                0.0,
+                0.0,
+                2.0,
+                "1",
+                concat!($label, ": Coulomb friction coefficient"),
+            ),
+            Variable::parameter(
+                Vr::$v0,
+                concat!($prefix, ".frictionV0"),
+                1e-4,
+                0.0,
+                1.0,
+                "m/s",
+                concat!($label, ": slip speed below which friction vanishes"),
+            ),
+            Variable::parameter(
+                Vr::$v1,
+                concat!($prefix, ".frictionV1"),
+                1e-3,
+                1e-9,
+                10.0,
+                "m/s",
+                concat!(
+                    $label,
+                    ": slip speed above which friction is fully developed"
+                ),
+            ),
+            Variable::parameter(
+                Vr::$viscosity,
+                concat!($prefix, ".viscosity"),
+                0.4,
+                1e-6,
+                100.0,
+                "Pa.s",
+                concat!($label, ": lubricant dynamic viscosity"),
+            ),
+            Variable::parameter(
+                Vr::$length,
+                concat!($prefix, ".bearingLength"),
+                0.04,
+                1e-5,
+                10.0,
+                "m",
+                concat!($label, ": bearing length"),
+            ),
+            Variable::parameter(
+                Vr::$switch,
+                concat!($prefix, ".switchEccentricity"),
+                0.95,
+                0.01,
+                0.99,
+                "1",
+                concat!(
+                    $label,
+                    ": eccentricity ratio above which dry contact takes over"
+                ),
+            ),
+            Variable::output(
+                Vr::$ex,
+                concat!($prefix, ".eccentricityX"),
+                "m",
+                concat!($eccentricity, ", x (0 for the ideal ", $name, ")"),
+            ),
+            Variable::output(
+                Vr::$ey,
+                concat!($prefix, ".eccentricityY"),
+                "m",
+                concat!($eccentricity, ", y"),
+            ),
+            Variable::output(
+                Vr::$penetration,
+                concat!($prefix, ".penetration"),
+                "m",
+                concat!($label, " contact penetration max(|e| - c, 0)"),
+            ),
+            Variable {
+                vr: Vr::$contact,
+                name: concat!($prefix, ".inContact"),
+                causality: Causality::Output,
+                variability: Variability::Discrete,
+                kind: Kind::Boolean,
+                description: concat!($label, ": ", $parts, " in contact"),
+            },
+            Variable::count(
+                Vr::$onsets,
+                concat!($prefix, ".contactOnsets"),
+                concat!(
+                    "Contact onsets at the ",
+                    $name,
+                    " in the last communication interval"
+                ),
+            ),
+            Variable::count(
+                Vr::$total,
+                concat!($prefix, ".contactOnsetsTotal"),
+                concat!("Contact onsets at the ", $name, " since the start"),
+            ),
+            Variable::enumeration(
+                Vr::$start,
+                concat!($prefix, ".initialState"),
+                1,
+                JOURNAL_START,
+                concat!("Where the journal of a clearance ", $name, " starts"),
+            ),
+
+            Variable::enumeration(
+                Vr::$geometry,
+                concat!($prefix, ".contactGeometry"),
+                1,
+                CONTACT_GEOMETRY,
+                concat!(
+                    $label,
+                    ": geometry of the dry contact's elastic law (point: Hertz; cylinder: Johnson's line contact over ",
+                    $prefix,
+                    ".bearingLength); the hysteresis damping, contact energy and settled start follow it"
+                ),
+            ),
+            Variable::output(
+                Vr::$ratio,
+                concat!($prefix, ".eccentricityRatio"),
+                "1",
+                concat!(
+                    $label,
+                    ": eccentricity ratio |e|/c, the actual one (above 1 in metal contact); 0 for the ideal joint"
+                ),
+            ),
+            Variable::output(
+                Vr::$thickness,
+                concat!($prefix, ".filmThickness"),
+                "m",
+                concat!(
+                    $label,
+                    ": minimum oil-film thickness (gap between ",
+                    $pin,
+                    " and bearing) c (1 - |e|/c); 0 in metal contact (see ",
+                    $prefix,
+                    ".penetration) and for the ideal joint"
+                ),
+            ),
+            Variable::peak(
+                Vr::$thickness_min,
+                concat!($prefix, ".filmThicknessMin"),
+                "m",
+                concat!(
+                    "Smallest ",
+                    $prefix,
+                    ".filmThickness over the last communication interval (every internal step's end, and within the steps in contact or with a film)"
+                ),
+            ),
+            Variable::peak(
+                Vr::$thickness_min_start,
+                concat!($prefix, ".filmThicknessMinSinceStart"),
+                "m",
+                concat!("Smallest ", $prefix, ".filmThickness since the start"),
+            ),
+            Variable::peak(
+                Vr::$pressure,
+                concat!($prefix, ".filmPressurePeak"),
+                "Pa",
+                concat!(
+                    $label,
+                    ": largest oil-film pressure over the last communication interval, at mid-length (short-bearing field; every internal step); 0 without a film (dry and ideal joints)"
+                ),
+            ),
+            Variable::peak(
+                Vr::$pressure_start,
+                concat!($prefix, ".filmPressurePeakSinceStart"),
+                "Pa",
+                concat!("Largest ", $prefix, ".filmPressurePeak since the start"),
+            ),
+            Variable::output(
+                Vr::$torque,
+                concat!($prefix, ".frictionTorque"),
+                "N.m",
+                concat!(
+                    $label,
+                    ": friction moment on the ",
+                    $pin,
+                    " about its centre, CCW positive (dry friction and the film's shear); 0 for the ideal joint"
+                ),
+            ),
+            Variable::output(
+                Vr::$power,
+                concat!($prefix, ".frictionPower"),
+                "W",
+                concat!(
+                    $label,
+                    ": rate at which the joint's friction dissipates energy, >= 0 (the oil film's viscous loss in shear and squeeze; dry friction -F_T v_T); 0 for the ideal joint"
+                ),
+            ),
+            Variable::output(
+                Vr::$dissipated,
+                concat!($prefix, ".energyDissipated"),
+                "J",
+                concat!(
+                    $label,
+                    ": energy dissipated in the joint since the start (friction, contact hysteresis, film); the three joints' sum to energy.dissipated; 0 for the ideal joint"
+                ),
+            ),
+        ]
+    };
+}
+
+/// The rod–slider joint (the small end): dry by default, benchmark B's clearance joint.
+const ROD_SLIDER_JOINT: [Variable; JOINT_ROWS] = joint_rows!(
+    "joint",
+    "Rod-slider joint",
+    "rod-slider joint",
+    "the rod's pin in the slider's bearing, the small end",
+    "Rod pin centre - slider bearing centre",
+    "pin",
+    "rod's pin",
+    "pin and bearing",
+    2,
+    [
+        JointModel,
+        JointClearance,
+        JointJournalRadius,
+        JointYoungsModulus,
+        JointPoissonRatio,
+        JointRestitution,
+        JointContactLaw,
+        JointFriction,
+        JointFrictionV0,
+        JointFrictionV1,
+        JointViscosity,
+        JointBearingLength,
+        JointSwitchEccentricity,
+        JointEccentricityX,
+        JointEccentricityY,
+        JointPenetration,
+        JointInContact,
+        JointContactOnsets,
+        JointContactOnsetsTotal,
+        JointInitialState,
+        JointContactGeometry,
+        JointEccentricityRatio,
+        JointFilmThickness,
+        JointFilmThicknessMin,
+        JointFilmThicknessMinSinceStart,
+        JointFilmPressurePeak,
+        JointFilmPressurePeakSinceStart,
+        JointFrictionTorque,
+        JointFrictionPower,
+        JointEnergyDissipated,
+    ]
+);
+
+/// The crank pin (the big end), ideal by default.
+const CRANK_PIN: [Variable; JOINT_ROWS] = joint_rows!(
+    "crankPin",
+    "Crank pin",
+    "crank pin",
+    "the crank's pin in the rod's eye, the big end",
+    "Crank pin centre - rod eye centre",
+    "pin",
+    "crank pin",
+    "pin and eye",
+    1,
+    [
+        CrankPinModel,
+        CrankPinClearance,
+        CrankPinJournalRadius,
+        CrankPinYoungsModulus,
+        CrankPinPoissonRatio,
+        CrankPinRestitution,
+        CrankPinContactLaw,
+        CrankPinFriction,
+        CrankPinFrictionV0,
+        CrankPinFrictionV1,
+        CrankPinViscosity,
+        CrankPinBearingLength,
+        CrankPinSwitchEccentricity,
+        CrankPinEccentricityX,
+        CrankPinEccentricityY,
+        CrankPinPenetration,
+        CrankPinInContact,
+        CrankPinContactOnsets,
+        CrankPinContactOnsetsTotal,
+        CrankPinInitialState,
+        CrankPinContactGeometry,
+        CrankPinEccentricityRatio,
+        CrankPinFilmThickness,
+        CrankPinFilmThicknessMin,
+        CrankPinFilmThicknessMinSinceStart,
+        CrankPinFilmPressurePeak,
+        CrankPinFilmPressurePeakSinceStart,
+        CrankPinFrictionTorque,
+        CrankPinFrictionPower,
+        CrankPinEnergyDissipated,
+    ]
+);
+
+/// The main bearing (the crank's pivot), ideal by default.
+const MAIN_BEARING: [Variable; JOINT_ROWS] = joint_rows!(
+    "mainBearing",
+    "Main bearing",
+    "main bearing",
+    "the crank's pivot in the ground",
+    "Crank pivot centre - main bearing centre",
+    "crank journal",
+    "crank journal",
+    "journal and bearing",
+    1,
+    [
+        MainBearingModel,
+        MainBearingClearance,
+        MainBearingJournalRadius,
+        MainBearingYoungsModulus,
+        MainBearingPoissonRatio,
+        MainBearingRestitution,
+        MainBearingContactLaw,
+        MainBearingFriction,
+        MainBearingFrictionV0,
+        MainBearingFrictionV1,
+        MainBearingViscosity,
+        MainBearingBearingLength,
+        MainBearingSwitchEccentricity,
+        MainBearingEccentricityX,
+        MainBearingEccentricityY,
+        MainBearingPenetration,
+        MainBearingInContact,
+        MainBearingContactOnsets,
+        MainBearingContactOnsetsTotal,
+        MainBearingInitialState,
+        MainBearingContactGeometry,
+        MainBearingEccentricityRatio,
+        MainBearingFilmThickness,
+        MainBearingFilmThicknessMin,
+        MainBearingFilmThicknessMinSinceStart,
+        MainBearingFilmPressurePeak,
+        MainBearingFilmPressurePeakSinceStart,
+        MainBearingFrictionTorque,
+        MainBearingFrictionPower,
+        MainBearingEnergyDissipated,
+    ]
+);
+
+/// The three joints' rows, and their loads and the rod–slider joint's contact stiffness.
+pub(super) const VARIABLES: [&[Variable]; 4] =
+    [&ROD_SLIDER_JOINT, &CRANK_PIN, &MAIN_BEARING, LOADS];
+
+/// The force each joint carries (its components and peak) and the rod–slider joint's contact
+/// stiffness.
+const LOADS: &[Variable] = &[
+    Variable {
+        vr: Vr::JointContactStiffness,
+        name: "joint.contactStiffness",
+        causality: Causality::CalculatedParameter,
+        variability: Variability::Fixed,
+        kind: Kind::Real {
+            start: None,
+            min: 0.0,
+            max: f64::INFINITY,
+            unit: "N/m1.5",
+        },
+        description: "Hertz point-contact stiffness 4/(3(s_i+s_j)) sqrt(Ri Rj/(Ri-Rj)), s = (1-nu^2)/E, of the rod-slider joint (joint.contactGeometry = point; the line contact has no single stiffness: its force is Johnson's law of joint.bearingLength and E/(2(1-nu^2)))",
+    },
+    Variable::output(
+        Vr::JointForce,
+        "joint.force",
+        "N",
+        "Magnitude of the joint force on the journal",
+    ),
+    Variable::output(
+        Vr::JointForceX,
+        "joint.forceX",
+        "N",
+        "Joint force on the journal, x",
+    ),
+    Variable::output(
+        Vr::JointForceY,
+        "joint.forceY",
+        "N",
+        "Joint force on the journal, y",
+    ),
+    Variable::peak(
+        Vr::JointForcePeak,
+        "joint.forcePeak",
+        "N",
+        "Largest joint.force over the last communication interval (every internal step; plot this for peaks)",
+    ),
+    Variable::output(
+        Vr::CrankPinForce,
+        "crankPin.force",
+        "N",
+        "Magnitude of the force of the crank on the rod at the crank pin",
+    ),
+    Variable::output(
+        Vr::CrankPinForceX,
+        "crankPin.forceX",
+        "N",
+        "Force of the crank on the rod at the crank pin, x",
+    ),
+    Variable::output(
+        Vr::CrankPinForceY,
+        "crankPin.forceY",
+        "N",
+        "Force of the crank on the rod at the crank pin, y",
+    ),
+    Variable::peak(
+        Vr::CrankPinForcePeak,
+        "crankPin.forcePeak",
+        "N",
+        "Largest crankPin.force over the last communication interval (every internal step; plot this for peaks)",
+    ),
+    Variable::output(
+        Vr::MainBearingForce,
+        "mainBearing.force",
+        "N",
+        "Magnitude of the force of the ground on the crank at the main bearing (crank pivot)",
+    ),
+    Variable::output(
+        Vr::MainBearingForceX,
+        "mainBearing.forceX",
+        "N",
+        "Force of the ground on the crank at the main bearing, x",
+    ),
+    Variable::output(
+        Vr::MainBearingForceY,
+        "mainBearing.forceY",
+        "N",
+        "Force of the ground on the crank at the main bearing, y",
+    ),
+    Variable::peak(
+        Vr::MainBearingForcePeak,
+        "mainBearing.forcePeak",
+        "N",
+        "Largest mainBearing.force over the last communication interval (every internal step; plot this for peaks)",
+    ),
+];
