@@ -18,7 +18,7 @@ RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps --quiet
 echo "== package the FMU (release build)"
 cargo run --release --quiet -p packaging
 cargo build --release --quiet --example simulate
-echo "== the README's Rust code (doc test, on the packaged FMU)"
+echo "== the user guide's Rust code (doc test, on the packaged FMU)"
 cargo test --doc --quiet -p flexible-slider-crank
 echo "== benches and examples compile"
 cargo test --benches --examples --no-run --quiet

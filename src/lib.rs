@@ -31,7 +31,7 @@ pub use simulation::{Input, InputSignal, Inputs, Outputs, Simulation, Snapshot};
 
 pub use error::ModelError;
 
-/// The README's Rust code, compiled and run by `cargo test --doc` (after the FMU is packaged).
+/// The user guide's Rust code, compiled and run by `cargo test --doc` (after the FMU is packaged).
 #[cfg(doctest)]
-#[doc = include_str!("../README.md")]
-struct ReadmeSnippets;
+#[doc = include_str!("../docs/guide/masters.md")]
+struct GuideSnippets;

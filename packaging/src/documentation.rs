@@ -1,8 +1,8 @@
 //! The user guides inside the FMUs (`documentation/index.html`), for someone who has only the
 //! `.fmu`: generated from the same sources as the repository's documentation — the README's
-//! sections for a user of the FMU (what it is, a quick start in fmpy, libcosim, Rust and other
-//! masters, the behaviour a master can rely on, the choices, the validation, performance and
-//! limits) and the variable tables with value references and display units from the variable
+//! introduction and first studies, every page of the user guide in `docs/guide/` (masters,
+//! variables, sizing and bearings, solver choice, systems, validation, performance, limits,
+//! platforms), and the variable tables with value references and display units from the variable
 //! table. Links are kept only where they resolve inside the FMU: images are packed beside the
 //! page, links into the repository keep their text and lose their target.
 
@@ -104,17 +104,15 @@ fn escape(text: &str) -> String {
         .replace('>', "&gt;")
 }
 
-/// The README's text from the heading `from` (a line starting with it) up to the next heading of
-/// the same or a higher level, without the heading itself; an error if the README has no such
-/// heading (a renamed section would otherwise vanish from the FMU's documentation).
-fn readme_section(readme: &str, from: &str) -> Result<String, String> {
-    let Some(start) = readme.find(&format!("\n{from}")) else {
-        return Err(format!(
-            "README.md has no section \"{from}\" for the FMU's documentation"
-        ));
+/// The text of `markdown` from the heading `from` (a line equal to it) up to the next heading of
+/// the same or a higher level, without the heading itself; an error if there is no such heading
+/// (a renamed section would otherwise vanish from the FMU's documentation).
+fn section(markdown: &str, from: &str) -> Result<String, String> {
+    let Some(start) = markdown.find(&format!("\n{from}\n")) else {
+        return Err(format!("no section \"{from}\" for the FMU's documentation"));
     };
     let level = from.chars().take_while(|&c| c == '#').count();
-    let body = &readme[start + 1..];
+    let body = &markdown[start + 1..];
     let body = &body[body.find('\n').map_or(body.len(), |i| i + 1)..];
     let end = body
         .match_indices("\n#")
@@ -124,6 +122,47 @@ fn readme_section(readme: &str, from: &str) -> Result<String, String> {
         })
         .map_or(body.len(), |(i, _)| i);
     Ok(body[..end].to_string())
+}
+
+/// The user guide's pages (`docs/guide/`), in the order of the FMU's documentation, with their
+/// anchors there.
+const GUIDE: [(&str, &str); 9] = [
+    ("masters.md", "masters"),
+    ("variables.md", "variables"),
+    ("sizing.md", "sizing"),
+    ("solver.md", "solver"),
+    ("systems.md", "systems"),
+    ("validation.md", "validation"),
+    ("performance.md", "performance"),
+    ("limits.md", "limits"),
+    ("platforms.md", "platforms"),
+];
+
+/// The guide's pages as (anchor, title, body), read from `docs/guide/`; an error if a page there
+/// is not in [`GUIDE`] (it would be missing from the FMU's documentation) or one is missing.
+fn guide_pages(root: &Path) -> Result<Vec<(&'static str, String, String)>, String> {
+    let dir = root.join("docs/guide");
+    for entry in std::fs::read_dir(&dir).map_err(|e| format!("{}: {e}", dir.display()))? {
+        let name = entry.map_err(|e| e.to_string())?.file_name();
+        let name = name.to_string_lossy();
+        if name.ends_with(".md") && !GUIDE.iter().any(|(file, _)| *file == name) {
+            return Err(format!(
+                "docs/guide/{name} is not in the FMU's documentation (GUIDE in documentation.rs)"
+            ));
+        }
+    }
+    GUIDE
+        .iter()
+        .map(|&(file, anchor)| {
+            let text = std::fs::read_to_string(dir.join(file))
+                .map_err(|e| format!("docs/guide/{file}: {e}"))?;
+            let (title, body) = text
+                .strip_prefix("# ")
+                .and_then(|t| t.split_once('\n'))
+                .ok_or_else(|| format!("docs/guide/{file} does not start with a title"))?;
+            Ok((anchor, title.to_string(), body.to_string()))
+        })
+        .collect()
 }
 
 /// Markdown to HTML, headings shifted down by `shift` levels; images (files of
@@ -176,10 +215,11 @@ fn to_html(markdown: &str, shift: u8, root: &Path, images: &mut Vec<PathBuf>) ->
 }
 
 /// documentation/index.html of the slider-crank, and the images it shows (files to pack beside
-/// it); an error if the README lacks one of the sections it shows.
+/// it): the README's introduction, demo plot and first studies, then every page of the user guide,
+/// the variable tables with value references and display units from the variable table; an error
+/// if a section it shows is missing.
 pub fn slider_crank(root: &Path) -> Result<(String, Vec<PathBuf>), String> {
     let readme = std::fs::read_to_string(root.join("README.md")).map_err(|e| e.to_string())?;
-    let section = |heading: &str| readme_section(&readme, heading);
     let mut images = Vec::new();
     let intro = readme
         .split("\n## ")
@@ -189,60 +229,36 @@ pub fn slider_crank(root: &Path) -> Result<(String, Vec<PathBuf>), String> {
         .skip_while(|line| line.starts_with("# ") || line.is_empty())
         .collect::<Vec<_>>()
         .join("\n");
-    // The demo plot and its caption (the README shows them before "Using the FMU").
+    // The demo plot and its caption (the README shows them before the first study).
     let demo = readme
         .split("\n\n")
         .skip_while(|paragraph| !paragraph.contains("documentation/demo.png"))
         .take(2)
         .collect::<Vec<_>>()
         .join("\n\n");
+    let quick_start = format!(
+        "{}\n{}",
+        section(&readme, "## A first study in fmpy")?,
+        section(&readme, "## A first study in a system")?
+    );
     let mut html = |markdown: &str, shift| to_html(markdown, shift, root, &mut images);
-    let intro = html(&intro, 0);
-    let demo = html(&demo, 0);
-    let quick_start = html(
-        section("## Using the FMU")?
-            .split("\n### ")
-            .next()
-            .unwrap_or_default(),
-        0,
-    );
-    let behaviour = html(&section("### Behaviour a master can rely on")?, 0);
-    let frame = html(&section("### Frame and signs")?, 0);
-    let ranges = html(&section("#### Why the ranges are what they are")?, 0);
-    // The README's output table is the variable table's; the notes after it are kept.
-    let output_notes = html(
-        &section("#### Outputs")?
-            .lines()
-            .filter(|line| !line.starts_with('|'))
-            .collect::<Vec<_>>()
-            .join("\n"),
-        0,
-    );
-    let choosing = html(
-        &section("### Choosing `rod.nModes`, `rod.boundary`, `rod.quadrature`, `solver.*`")?,
-        0,
-    );
-    let own_machine = html(
-        &section(
-            "### Your own machine: counterweight, offset cylinder, rod eyes, gas load, damping, fatigue stress",
-        )?,
-        0,
-    );
-    let mut sections = |headings: [&str; 3], shift| -> Result<[String; 3], String> {
-        let [a, b, c] = headings.map(&section);
-        Ok([html(&a?, shift), html(&b?, shift), html(&c?, shift)])
-    };
-    let [sizing, clearance, bearings] = sections(
-        [
-            "### Sizing parts: loads at every joint, stress in the rod, clean starts",
-            "### Clearance at every joint",
-            "### Bearing design: film thickness, film pressure, friction loss",
-        ],
-        0,
-    )?;
-    let [validation, performance, limits] =
-        sections(["## Validation", "## Performance", "## Current limits"], 1)?;
-    let rows = |causality| variable_rows(&DESCRIPTION, ENUMERATIONS, causality);
+    let (intro, demo, quick_start) = (html(&intro, 0), html(&demo, 0), html(&quick_start, 1));
+    let mut contents = String::from(r##"<a href="#quick-start">Quick start</a>"##);
+    let mut pages = String::new();
+    for (anchor, title, body) in guide_pages(root)? {
+        let title = html(&title, 0);
+        let title = title
+            .trim()
+            .trim_start_matches("<p>")
+            .trim_end_matches("</p>");
+        let _ = write!(contents, r##" · <a href="#{anchor}">{title}</a>"##);
+        let body = if anchor == "variables" {
+            variable_page(&body, &mut html)?
+        } else {
+            html(&body, 1)
+        };
+        let _ = write!(pages, "<h2 id=\"{anchor}\">{title}</h2>\n{body}");
+    }
     let page = format!(
         r##"<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8"><title>FlexibleSliderCrank</title>
@@ -250,53 +266,53 @@ pub fn slider_crank(root: &Path) -> Result<(String, Vec<PathBuf>), String> {
 <body>
 <h1>FlexibleSliderCrank — FMI 2.0 co-simulation FMU</h1>
 {intro}
-<p>GUID <code>{GUID}</code>. Contents: <a href="#quick-start">Quick start</a> ·
-<a href="#behaviour">Behaviour a master can rely on</a> · <a href="#frame">Frame and signs</a> ·
-<a href="#variables">Variables</a> ·
-<a href="#sizing">Sizing parts</a> · <a href="#clearance">Clearance at every joint</a> ·
-<a href="#bearings">Bearing design</a> · <a href="#own-machine">Your own machine</a> ·
-<a href="#choosing">Choosing the model and solver</a> · <a href="#validation">Validation</a> ·
-<a href="#performance">Performance</a> · <a href="#limits">Current limits</a></p>
+<p>GUID <code>{GUID}</code>. Contents: {contents}</p>
 {demo}
 <h2 id="quick-start">Quick start</h2>
 {quick_start}
-<h2 id="behaviour">Behaviour a master can rely on</h2>
-{behaviour}
-<h2 id="frame">Frame and signs</h2>
-{frame}
-<h2 id="variables">Variables</h2>
-<p>Value references as in modelDescription.xml; the display unit is the one a master shows by default.
-Switches are Integer parameters whose items are listed in the range column.</p>
-<h3>Parameters (fixed: set before fmi2ExitInitializationMode)</h3>{}
-<h4>Why the ranges are what they are</h4>{ranges}
-<h3>Calculated parameter</h3>{}
-<h3>Inputs (continuous, settable at every communication point)</h3>{}
-<h3>Outputs</h3>{}
-{output_notes}
-<h2 id="sizing">Sizing parts: loads at every joint, stress in the rod, clean starts</h2>
-{sizing}
-<h2 id="clearance">Clearance at every joint</h2>
-{clearance}
-<h2 id="bearings">Bearing design: film thickness, film pressure, friction loss</h2>
-{bearings}
-<h2 id="own-machine">Your own machine: counterweight, offset cylinder, rod eyes, gas load, damping, fatigue stress</h2>
-{own_machine}
-<h2 id="choosing">Choosing the model and solver</h2>
-{choosing}
-<h2 id="validation">Validation</h2>
-{validation}
-<h2 id="performance">Performance</h2>
-{performance}
-<h2 id="limits">Current limits</h2>
-{limits}
-</body></html>
-"##,
-        rows(Causality::Parameter),
-        rows(Causality::CalculatedParameter),
-        rows(Causality::Input),
-        rows(Causality::Output)
+{pages}</body></html>
+"##
     );
     Ok((page, images))
+}
+
+/// The guide's page of the variables in HTML, each Markdown table replaced by the variable
+/// table's own, with value references and display units.
+fn variable_page(body: &str, html: &mut impl FnMut(&str, u8) -> String) -> Result<String, String> {
+    let tables = [
+        (
+            "## Parameters (fixed: set before fmi2ExitInitializationMode)",
+            Causality::Parameter,
+        ),
+        ("## Calculated parameter", Causality::CalculatedParameter),
+        (
+            "## Inputs (continuous, settable at every communication point)",
+            Causality::Input,
+        ),
+        ("## Outputs", Causality::Output),
+    ];
+    let mut markdown = String::new();
+    for line in body.lines().filter(|line| !line.starts_with('|')) {
+        markdown.push_str(line);
+        markdown.push('\n');
+        if let Some(k) = tables.iter().position(|(heading, _)| line == *heading) {
+            let _ = write!(markdown, "\nVARIABLE-TABLE-{k}\n");
+        }
+    }
+    let mut page = html(&markdown, 1);
+    for (k, &(heading, causality)) in tables.iter().enumerate() {
+        let marker = format!("<p>VARIABLE-TABLE-{k}</p>");
+        if !page.contains(&marker) {
+            return Err(format!(
+                "docs/guide/variables.md has no section \"{heading}\""
+            ));
+        }
+        page = page.replace(
+            &marker,
+            &variable_rows(&DESCRIPTION, ENUMERATIONS, causality),
+        );
+    }
+    Ok(page)
 }
 
 /// documentation/index.html of the DC motor.

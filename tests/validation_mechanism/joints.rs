@@ -121,7 +121,7 @@ fn vanishing_clearance_approaches_the_ideal_joint() {
 /// Benchmark A (rigid rod, 0.5 mm dry clearance, c_e = 0.9, μ = 0, 5000 rpm):
 /// free flight first (the journal starts centred), then impacts; over two revolutions the joint
 /// force and slider acceleration show impact spikes well above the ideal joint's, and periods of
-/// free flight (zero force) and of contact. Figures are printed for the README.
+/// free flight (zero force) and of contact. Figures are printed for the user guide.
 #[test]
 fn benchmark_a_shows_flight_impact_and_contact() {
     let p = Parameters::benchmark_a();

@@ -20,7 +20,7 @@ Each case ends as `rejected` (an error before the first step: the message must n
 `stopped` (fmi2Discard/fmi2Error during the run, with a message) or `ran`, with or without
 validity warnings. A case violates the FMU's promises if the process dies, if it does not end
 within --timeout seconds, if an output is not finite, if the energy balance of the outputs
-(README "Outputs") drifts by more than 10 x solver.relativeTolerance of the largest energy term,
+(docs/guide/variables.md, "Outputs") drifts by more than 10 x solver.relativeTolerance of the largest energy term,
 or if an output leaves a validity-monitor bound without a warning having been logged. The exit
 code is the number of violations (0: all promises held).
 """
@@ -47,7 +47,7 @@ FMU = ROOT / "target" / "fmu" / "FlexibleSliderCrank.fmu"
 STOP_TIME = 4e-3
 STEP = 1e-4
 
-#: The energy account of README "Outputs": sign of each term.
+#: The energy account of docs/guide/variables.md, "Outputs": sign of each term.
 BALANCE = {"energy.kinetic": 1, "rod.deformationEnergy": 1, "energy.contact": 1,
            "energy.gravity": 1, "energy.dissipated": 1, "energy.materialDamping": 1,
            "energy.driveWork": -1, "energy.sliderWork": -1}

@@ -15,7 +15,7 @@ Inputs between communication points are
   the crank's angular acceleration for the motor, the rate of the shaft torque for the crank).
 
 usage: python -m fsc.system [--plot FILE | --stability]
-                      prints the coupling-error table of the README: crank speed at 1 ms against a
+                      prints the coupling-error table of the user guide (docs/guide/systems.md): crank speed at 1 ms against a
                       run with a 2.5e-6 s communication step and second-order inputs, at
                       communication steps 1e-4, 5e-5 and 1e-5 s, the crank integrated at
                       solver.relativeTolerance 1e-6 (so that the table shows the coupling error,

@@ -505,19 +505,30 @@ def test_warnings_are_counted_without_logging(fmu):
 
 def test_the_fmus_documentation_is_a_user_guide(fmu, model_description):
     """documentation/index.html inside the .fmu — all that someone who receives only the .fmu has —
-    is generated from the variable table and the README: a quick start for fmpy and libcosim, the
-    behaviour a master can rely on, every variable with its value reference (and display unit),
-    the validation, performance and limits; HTML, no raw Markdown; every link resolves inside the
-    FMU (an anchor of the page or an image packed beside it), none points outside."""
+    is generated from the README's first studies, every page of the user guide (docs/guide/, each
+    of its headings) and the variable table (every variable with its value reference and display
+    unit); HTML, no raw Markdown; every link resolves inside the FMU (an anchor of the page or an
+    image packed beside it), none points outside."""
+    import html
     import re
     import zipfile
 
     with zipfile.ZipFile(fmu) as archive:
         page = archive.read("documentation/index.html").decode()
         names = set(archive.namelist())
-    for heading in ("Quick start", "Behaviour a master can rely on", "Variables", "Validation",
-                    "Performance", "Current limits"):
+    for heading in ("Quick start", "Parameters, inputs and outputs", "Validation", "Performance",
+                    "Current limits"):
         assert f">{heading}</h2>" in page, heading
+    assert ">Behaviour a master can rely on</h3>" in page
+    text = html.unescape(re.sub(r"<[^>]+>", "", page))
+    guide = ROOT / "docs" / "guide"
+    for markdown in sorted(guide.glob("*.md")):
+        fence = False
+        for line in markdown.read_text().splitlines():
+            fence ^= line.startswith("```")
+            if not fence and re.match(r"#+ ", line):
+                heading = line.lstrip("#").strip().replace("`", "")
+                assert heading in text, f"{markdown.name}: {heading}"
     for phrase in ("simulate_fmu", "libcosimpy", "ESDIRK", "Lankarani", "Flores",
                    "joint.forcePeak", "crankPin.forcePeak", "rod.stressPeak"):
         assert phrase in page, phrase
@@ -534,7 +545,7 @@ def test_the_fmus_documentation_is_a_user_guide(fmu, model_description):
         assert f"documentation/{image}" in names, image
 
 
-#: Other parameters a bound needs to be a valid model: the rules between parameters (README "Why the
+#: Other parameters a bound needs to be a valid model: the rules between parameters (docs/guide/variables.md, "Why the
 #: ranges are what they are") are checked when the model is built, each naming its parameters.
 BOUND_COMPANIONS = {
     ("rod.nElements", "min"): {"rod.nModes": 0},

@@ -1,7 +1,8 @@
-"""The README's parameter, input and output tables, generated from modelDescription.xml.
+"""The user guide's parameter, input and output tables, generated from modelDescription.xml.
 
-`python -m fsc.readme_tables` prints them (`--write`: into README.md); tests/test_readme.py checks that the README's
-tables are exactly these, so documentation and FMU cannot disagree.
+`python -m fsc.variable_tables` prints them (`--write`: into docs/guide/variables.md); tests/test_docs.py
+checks that the guide's tables are exactly these, and that every row the README quotes is one of them, so
+documentation and FMU cannot disagree.
 """
 import re
 import sys
@@ -10,12 +11,14 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[3]
 XML = ROOT / "modelDescription" / "modelDescription.xml"
-#: README heading of each table, by causality.
+#: The user guide's page of the variables.
+GUIDE = ROOT / "docs" / "guide" / "variables.md"
+#: Heading of each table in the guide, by causality.
 HEADINGS = {
-    "parameter": "#### Parameters (fixed: set before fmi2ExitInitializationMode)",
-    "calculatedParameter": "#### Calculated parameter",
-    "input": "#### Inputs (continuous, settable at every communication point)",
-    "output": "#### Outputs",
+    "parameter": "## Parameters (fixed: set before fmi2ExitInitializationMode)",
+    "calculatedParameter": "## Calculated parameter",
+    "input": "## Inputs (continuous, settable at every communication point)",
+    "output": "## Outputs",
 }
 
 
@@ -51,9 +54,9 @@ def tables(xml=XML) -> dict:
     return rows
 
 
-def readme_rows(readme: str, heading: str) -> list:
-    """The table rows under `heading` in the README (without header and separator)."""
-    lines = readme[readme.index(heading):].splitlines()[1:]
+def rows_under(page: str, heading: str) -> list:
+    """The table rows under `heading` in a Markdown page (without header and separator)."""
+    lines = page[page.index(heading):].splitlines()[1:]
     table = []
     for line in lines:
         if line.startswith("|"):
@@ -63,19 +66,19 @@ def readme_rows(readme: str, heading: str) -> list:
     return table[2:]
 
 
-def write_readme(readme_path=ROOT / "README.md", xml=XML):
-    """Replaces the rows of each table in the README by the generated ones."""
-    readme = readme_path.read_text()
+def write_guide(path=GUIDE, xml=XML):
+    """Replaces the rows of each table in the guide's page by the generated ones."""
+    page = path.read_text()
     for causality, rows in tables(xml).items():
-        old = readme_rows(readme, HEADINGS[causality])
-        start = readme.index("\n".join(old), readme.index(HEADINGS[causality]))
-        readme = readme[:start] + "\n".join(rows) + readme[start + len("\n".join(old)):]
-    readme_path.write_text(readme)
+        old = rows_under(page, HEADINGS[causality])
+        start = page.index("\n".join(old), page.index(HEADINGS[causality]))
+        page = page[:start] + "\n".join(rows) + page[start + len("\n".join(old)):]
+    path.write_text(page)
 
 
 if __name__ == "__main__":
     if sys.argv[1:] == ["--write"]:
-        write_readme()
+        write_guide()
         sys.exit()
     for causality, rows in tables(sys.argv[1] if len(sys.argv) > 1 else XML).items():
         print(HEADINGS[causality])
