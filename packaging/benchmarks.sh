@@ -22,7 +22,7 @@ for s in "${sections[@]}"; do
   echo
   echo "== $s ($(date -u +%F))"
   case "$s" in
-    fmu) "$py" packaging/python/benchmark.py "$fmu" ;;
+    fmu) "$py" -m fsc.benchmark "$fmu" ;;
     native) cargo run --release --quiet --example fmu_loop ;;
     impacts)
       cargo run --release --quiet --example impacts
@@ -31,7 +31,7 @@ for s in "${sections[@]}"; do
     weight)
       for w in 0 1 2 4; do
         cargo run --release --quiet --example impacts 1e-2 "$w"
-        "$py" packaging/python/benchmark.py "$fmu" --quick solver.impactErrorWeight="$w"
+        "$py" -m fsc.benchmark "$fmu" --quick solver.impactErrorWeight="$w"
       done ;;
     damping)
       cargo run --release --quiet --example damped_rod
@@ -50,9 +50,9 @@ for s in "${sections[@]}"; do
     bearings)
       cargo test --release --quiet --test validation_mechanism bearings -- --nocapture
       cargo run --release --quiet --example bearing_design ;;
-    coupling) "$py" packaging/python/coupling_benchmark.py "$fmu" ;;
+    coupling) "$py" -m fsc.coupling_benchmark "$fmu" ;;
     system) "$py" -m fsc.system ;;
-    dask) "$py" packaging/python/sweep_benchmark.py "$fmu" ;;
+    dask) "$py" -m fsc.sweep_benchmark "$fmu" ;;
     space)
       "$py" -m fsc.parameter_space
       "$py" -m fsc.parameter_space --listed ;;

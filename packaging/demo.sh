@@ -5,4 +5,4 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash packaging/bootstrap.sh
 cargo run --release -p packaging
-.venv/bin/python packaging/python/demo.py target/fmu/FlexibleSliderCrank.fmu target/demo
+.venv/bin/python -m fsc.demo target/fmu/FlexibleSliderCrank.fmu target/demo

@@ -12,21 +12,11 @@ import tempfile
 from pathlib import Path
 
 from fmpy import extract, read_model_description
-from fmpy.fmi2 import FMU2Slave, defaultCallbacks, fmi2CallbackFunctions, fmi2CallbackLoggerTYPE
+
+from .session import GETTERS, SETTERS, instantiate
 
 # A change smaller than this (relative) is round-off, not a dependency.
 ROUND_OFF = 1e-9
-
-# The measurement tries values that some configurations reject: their errors are expected.
-QUIET = fmi2CallbackFunctions()
-QUIET.logger = fmi2CallbackLoggerTYPE(lambda *_: None)
-QUIET.allocateMemory = defaultCallbacks.allocateMemory
-QUIET.freeMemory = defaultCallbacks.freeMemory
-
-GETTERS = {"Real": "getReal", "Integer": "getInteger", "Boolean": "getBoolean",
-           "String": "getString"}
-SETTERS = {"Real": "setReal", "Integer": "setInteger", "Boolean": "setBoolean",
-           "String": "setString"}
 
 # The file a String known (a load table) is pointed at: a load varying over the crank angle.
 TABLE = Path(tempfile.mkdtemp(prefix="fsc-dependencies-")) / "table.csv"
@@ -76,9 +66,9 @@ def measure(fmu, configurations):
     unknowns = [u.variable for u in md.initialUnknowns]
 
     def instance(configuration):
-        s = FMU2Slave(guid=md.guid, unzipDirectory=unzipdir,
-                      modelIdentifier=md.coSimulation.modelIdentifier, instanceName="dependencies")
-        s.instantiate(callbacks=QUIET)
+        # The measurement tries values that some configurations reject: their errors are expected
+        # and stay in the package's logger.
+        s = instantiate(unzipdir, md, "dependencies")
         s.setupExperiment(startTime=0.0)
         for name, value in configuration.items():
             v = by_name[name]

@@ -1,9 +1,9 @@
 """Random parameter sets through the FMU: does every set the modelDescription accepts
 give a physical answer in bounded time, or a clear error?
 
-    python packaging/python/parameter_space.py [--near 200] [--ranges 200] [--seed 2026]
+    python -m fsc.parameter_space [--near 200] [--ranges 200] [--seed 2026]
                                                [--jobs 2] [--fmu PATH] [--json FILE]
-    python packaging/python/parameter_space.py --listed      # the documented edge cases
+    python -m fsc.parameter_space --listed      # the documented edge cases
 
 Each case runs through fmpy in its own process (a crash of the FMU would be seen as a dead
 process, not end the study), with logging on, a 0.1 ms communication step and 4 ms of simulated
@@ -36,14 +36,11 @@ import time
 from pathlib import Path
 
 from fmpy import extract, read_model_description
-from fmpy.fmi2 import FMU2Slave, fmi2CallbackFunctions, fmi2CallbackLoggerTYPE, \
-    fmi2CallbackAllocateMemoryTYPE, fmi2CallbackFreeMemoryTYPE
-from fmpy.fmi2 import calloc, free
-from fmpy.logging import addLoggerProxy
-from ctypes import byref
 
-ROOT = Path(__file__).resolve().parents[3]
-FMU = ROOT / "target" / "fmu" / "FlexibleSliderCrank.fmu"
+from . import session
+
+#: The packaging step's FMU, from a clone's root (`--fmu PATH` names another).
+FMU = Path("target") / "fmu" / "FlexibleSliderCrank.fmu"
 STOP_TIME = 4e-3
 STEP = 1e-4
 
@@ -128,17 +125,7 @@ def across_ranges(rng, md, count=3):
 
 def run_case(unzipdir, md, values, stop_time, queue):
     """Runs one case in this (child) process and puts its record on `queue`."""
-    messages = []
-
-    def log(_env, _instance, status, category, message):
-        messages.append((status, category.decode(errors="replace"),
-                         message.decode(errors="replace")))
-
-    callbacks = fmi2CallbackFunctions()
-    callbacks.logger = fmi2CallbackLoggerTYPE(log)
-    callbacks.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
-    callbacks.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
-    addLoggerProxy(byref(callbacks))   # formats the FMU's "%s" messages for the Python logger
+    messages = session.messages("case")
     vars_ = {v.name: v for v in md.modelVariables}
     outputs = [v for v in md.modelVariables if v.causality == "output" and v.type == "Real"]
     reals = ["joint.journalRadius", "rod.length", "crank.length", "joint.clearance",
@@ -146,12 +133,11 @@ def run_case(unzipdir, md, values, stop_time, queue):
     reals += [f"{joint}.{name}" for joint in CRANK_JOINTS for name in ("journalRadius", "clearance")]
     record = {"values": values, "outcome": "ran", "message": "", "warnings": [],
               "violations": [], "max_step_wall": 0.0, "time_reached": 0.0, "wall": 0.0}
-    fmu = FMU2Slave(guid=md.guid, unzipDirectory=unzipdir,
-                    modelIdentifier=md.coSimulation.modelIdentifier, instanceName="case")
     start = time.perf_counter()
     stage = "setup"
+    fmu = None
     try:
-        fmu.instantiate(callbacks=callbacks, loggingOn=True)
+        fmu = session.instantiate(unzipdir, md, "case", logging_on=True)
         fmu.setupExperiment(startTime=0.0, stopTime=stop_time)
         fmu.enterInitializationMode()
         for name, value in values.items():
@@ -191,11 +177,12 @@ def run_case(unzipdir, md, values, stop_time, queue):
             record["violations"].append(f"{stage}: {e} without a logged message")
     record["wall"] = time.perf_counter() - start
     record["warnings"] = [m for s, _, m in messages if s == 1]
-    try:
-        fmu.terminate()
-    except Exception:  # noqa: BLE001 - a failed instance may refuse fmi2Terminate
-        pass
-    fmu.freeInstance()
+    if fmu is not None:
+        try:
+            fmu.terminate()
+        except Exception:  # noqa: BLE001 - a failed instance may refuse fmi2Terminate
+            pass
+        fmu.freeInstance()
     queue.put(record)
 
 

@@ -14,15 +14,13 @@ import shutil
 import tempfile
 import time
 import zipfile
-from ctypes import byref
 from io import BytesIO
 
 import numpy as np
 
-from fmpy import calloc, free, read_model_description, simulate_fmu
-from fmpy.fmi2 import (FMU2Slave, fmi2CallbackAllocateMemoryTYPE, fmi2CallbackFreeMemoryTYPE,
-                       fmi2CallbackFunctions, fmi2CallbackLoggerTYPE)
-from fmpy.logging import addLoggerProxy
+from fmpy import read_model_description, simulate_fmu
+
+from . import session
 
 #: Outputs the metrics are computed from (those the FMU does not have are skipped).
 METRIC_OUTPUTS = ["joint.force", "joint.forcePeak", "joint.contactOnsetsTotal", "slider.acceleration",
@@ -32,30 +30,7 @@ METRIC_OUTPUTS = ["joint.force", "joint.forcePeak", "joint.contactOnsetsTotal", 
 
 _unpacked = {}   # GUID -> (directory, model description), per worker process
 _idle = {}       # GUID -> FMU instances not running a case, per worker process
-_errors = {}     # instance name -> errors (discard, error, fatal) it logged in its current case
 _names = itertools.count()
-
-
-def _log(_env, instance, status, _category, message):
-    if status >= 2:
-        text = message.decode(errors="replace") if isinstance(message, bytes) else str(message)
-        _errors.setdefault(instance.decode(errors="replace"), []).append(text)
-
-
-# One logger for every instance of this process, alive as long as the process: fmpy's native proxy
-# (which formats the variadic message) keeps the Python logger in one process-wide slot, so a
-# logger that dies with its instance would leave that slot dangling for the other instances.
-_LOGGER = fmi2CallbackLoggerTYPE(_log)
-_CALLBACKS = fmi2CallbackFunctions()
-_CALLBACKS.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
-_CALLBACKS.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
-
-
-def _install_logger():
-    """Points fmpy's logger proxy (the process-wide slot) at this module's logger; anything else in
-    the process that passed its own logger to fmpy may have pointed it elsewhere."""
-    _CALLBACKS.logger = _LOGGER
-    addLoggerProxy(byref(_CALLBACKS))
 
 
 def _instance(directory, md):
@@ -66,11 +41,7 @@ def _instance(directory, md):
         fmu = idle.pop()
         fmu.reset()
         return fmu
-    fmu = FMU2Slave(guid=md.guid, unzipDirectory=directory,
-                    modelIdentifier=md.coSimulation.modelIdentifier,
-                    instanceName=f"fsc-{os.getpid()}-{next(_names)}")
-    fmu.instantiate(callbacks=_CALLBACKS)
-    return fmu
+    return session.instantiate(directory, md, f"fsc-{os.getpid()}-{next(_names)}")
 
 
 def unpacked(fmu_bytes: bytes, guid: str):
@@ -151,7 +122,7 @@ def run_case(fmu_bytes: bytes, guid: str, values: dict, stop_time: float,
             os.replace(target + ".part", target)
     outputs = [n for n in dict.fromkeys(METRIC_OUTPUTS + list(series)) if n in have]
     start = time.perf_counter()
-    _install_logger()
+    session.install_logger()
     fmu = None
     try:
         fmu = _instance(directory, md)
@@ -161,14 +132,16 @@ def run_case(fmu_bytes: bytes, guid: str, values: dict, stop_time: float,
                               stop_time=stop_time, output_interval=output_interval,
                               output=outputs, fmu_instance=fmu, input=input_signals(inputs))
     except Exception as e:   # noqa: BLE001 - a failing case is a row, never the end of the study
-        message = "; ".join(_errors.pop(fmu.instanceName, []) if fmu else []) or str(e)
+        message = "; ".join(session.errors(fmu.instanceName) if fmu else []) or str(e)
+        if fmu is not None:
+            session.forget(fmu.instanceName)
         if fmu is not None:
             try:
                 fmu.freeInstance()
             except Exception:   # noqa: BLE001 - the instance is discarded either way
                 pass
         return "error", message, None, None
-    _errors.pop(fmu.instanceName, None)
+    session.forget(fmu.instanceName)
     _idle[md.guid].append(fmu)
     wall = time.perf_counter() - start
     m = metrics(result, metrics_start)

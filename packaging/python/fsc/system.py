@@ -14,7 +14,7 @@ Inputs between communication points are
 - "extrapolated": first derivatives the other FMU computes itself (fmi2GetRealOutputDerivatives:
   the crank's angular acceleration for the motor, the rate of the shaft torque for the crank).
 
-usage: python -m fsc.system [--plot FILE | --stability]
+usage: python -m fsc.system [--fmus DIR] [--plot FILE | --stability]
                       prints the coupling-error table of the user guide (docs/guide/systems.md): crank speed at 1 ms against a
                       run with a 2.5e-6 s communication step and second-order inputs, at
                       communication steps 1e-4, 5e-5 and 1e-5 s, the crank integrated at
@@ -29,48 +29,17 @@ import math
 import sys
 from pathlib import Path
 
-from fmpy import extract, read_model_description
-from fmpy.fmi2 import FMU2Slave
+from .session import Session
 
-ROOT = Path(__file__).resolve().parents[3]
-CRANK_FMU = ROOT / "target" / "fmu" / "FlexibleSliderCrank.fmu"
-MOTOR_FMU = ROOT / "target" / "fmu" / "DcMotor.fmu"
-SSP = ROOT / "target" / "fmu" / "MotorCrank.ssp"
-SSD = ROOT / "systems" / "motor-crank" / "SystemStructure.ssd"
-OSP = ROOT / "target" / "fmu" / "motor-crank" / "OspSystemStructure.xml"
+#: The folder of both FMUs: the packaging step's `target/fmu`, from a clone's root (`--fmus DIR`
+#: names another).
+FMU_DIR = Path("target") / "fmu"
+CRANK = "FlexibleSliderCrank.fmu"
+MOTOR = "DcMotor.fmu"
 # The crank's and the motor's parameters in the system (as bound in the SSP and the OSP file).
 CRANK_PARAMETERS = {"drive.mode": 2, "crank.inertia": 0.02}
 MOTOR_PARAMETERS = {"shaft.loadInertia": 0.0205}
 SCHEMES = ("held", "order 1", "order 2", "extrapolated")
-
-
-class Slave:
-    """One FMU under fmpy, its variables by name."""
-
-    def __init__(self, path, name):
-        md = read_model_description(str(path))
-        self.vr = {v.name: v.valueReference for v in md.modelVariables}
-        self.types = {v.name: v.type for v in md.modelVariables}
-        self.fmu = FMU2Slave(guid=md.guid, unzipDirectory=extract(str(path)),
-                             modelIdentifier=md.coSimulation.modelIdentifier, instanceName=name)
-        self.fmu.instantiate()
-        self.fmu.setupExperiment(startTime=0.0)
-
-    def set(self, values):
-        for name, value in values.items():
-            if self.types[name] == "Real":
-                self.fmu.setReal([self.vr[name]], [float(value)])
-            else:
-                self.fmu.setInteger([self.vr[name]], [int(value)])
-
-    def get(self, name):
-        if self.types[name] == "Integer":
-            return self.fmu.getInteger([self.vr[name]])[0]
-        return self.fmu.getReal([self.vr[name]])[0]
-
-    def free(self):
-        self.fmu.terminate()
-        self.fmu.freeInstance()
 
 
 def run(step, stop, scheme="held", outputs=("crank.speed",), zero_start=False, crank_parameters=None,
@@ -80,7 +49,7 @@ def run(step, stop, scheme="held", outputs=("crank.speed",), zero_start=False, c
     connection to 0 before the first step instead of exchanging the initial outputs (the scheme of
     fmpy's simulate_ssp); `crank_parameters` are set on top of the system's; `coupling` is
     "jacobi" or "gauss-seidel" (held inputs only: the motor steps first)."""
-    motor, crank = Slave(MOTOR_FMU, "motor"), Slave(CRANK_FMU, "crank")
+    motor, crank = Session(FMU_DIR / MOTOR, "motor"), Session(FMU_DIR / CRANK, "crank")
     crank.set({**CRANK_PARAMETERS, **(crank_parameters or {})})
     motor.set(MOTOR_PARAMETERS)
     for s in (motor, crank):
@@ -222,6 +191,10 @@ def plot(path):
 
 
 def main():
+    global FMU_DIR
+    if sys.argv[1:2] == ["--fmus"]:
+        FMU_DIR = Path(sys.argv[2])
+        del sys.argv[1:3]
     if sys.argv[1:2] == ["--stability"]:
         print("| communication step [s] | Jacobi: crank speed [rad/s] | max current [A] | "
               "Gauss-Seidel: crank speed [rad/s] | max current [A] |")

@@ -9,10 +9,10 @@ import sys
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[3]
-XML = ROOT / "modelDescription" / "modelDescription.xml"
-#: The user guide's page of the variables.
-GUIDE = ROOT / "docs" / "guide" / "variables.md"
+#: The committed model description and the user guide's page of the variables, from a clone's root
+#: (where `python -m fsc.variable_tables` runs).
+XML = Path("modelDescription") / "modelDescription.xml"
+GUIDE = Path("docs") / "guide" / "variables.md"
 #: Heading of each table in the guide, by causality.
 HEADINGS = {
     "parameter": "## Parameters (fixed: set before fmi2ExitInitializationMode)",

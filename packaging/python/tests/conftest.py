@@ -30,3 +30,10 @@ def model_description(fmu):
 def value_references(model_description) -> dict:
     """Value reference of every variable, by name."""
     return {v.name: v.valueReference for v in model_description.modelVariables}
+
+
+@pytest.fixture(autouse=True, scope="session")
+def packaged_fmus():
+    """Points the motor-crank master at this clone's packaged FMUs, wherever pytest runs from."""
+    from fsc import system
+    system.FMU_DIR = ROOT / "target" / "fmu"

@@ -3,9 +3,9 @@ fsc.parameter_space's study, small enough for CI), and the study's checks can fa
 from fsc import parameter_space as ps
 
 
-def test_a_fixed_seed_sample_keeps_every_promise():
-    md = ps.read_model_description(str(ps.FMU))
-    records = ps.run_all(ps.sample(8, 8, 11, md), jobs=2, timeout=300, progress=False)
+def test_a_fixed_seed_sample_keeps_every_promise(fmu):
+    md = ps.read_model_description(fmu)
+    records = ps.run_all(ps.sample(8, 8, 11, md), fmu, jobs=2, timeout=300, progress=False)
     assert len(records) == 16
     assert [(r["label"], r["violations"]) for r in records if r["violations"]] == []
     assert {r["outcome"] for r in records} <= {"rejected", "stopped", "ran"}

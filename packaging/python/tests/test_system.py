@@ -10,19 +10,29 @@ from fmpy.ssp.ssd import Parameter, ParameterSet, find_components, read_ssd
 from fmpy.validation import validate_fmu
 
 from fsc import dependencies, system
+from fsc.session import Session
+
+from conftest import ROOT
+
+FMUS = ROOT / "target" / "fmu"
+CRANK_FMU = FMUS / system.CRANK
+MOTOR_FMU = FMUS / system.MOTOR
+SSP = FMUS / "MotorCrank.ssp"
+OSP = FMUS / "motor-crank" / "OspSystemStructure.xml"
+SSD = ROOT / "systems" / "motor-crank" / "SystemStructure.ssd"
 
 STOP, STEP = 0.024, 1e-4
 NS = 100_000  # STEP in libcosim's nanoseconds
 
 
 def test_both_fmus_pass_fmpy_validation():
-    assert validate_fmu(str(system.MOTOR_FMU)) == []
-    assert validate_fmu(str(system.CRANK_FMU)) == []
+    assert validate_fmu(str(MOTOR_FMU)) == []
+    assert validate_fmu(str(CRANK_FMU)) == []
 
 
 def initialized_motor(parameters=None):
     """A motor instance with `parameters` set, after initialization."""
-    motor = system.Slave(system.MOTOR_FMU, "motor")
+    motor = Session(MOTOR_FMU, "motor")
     motor.set(parameters or {})
     motor.fmu.enterInitializationMode()
     motor.fmu.exitInitializationMode()
@@ -52,9 +62,9 @@ def test_motor_declared_initial_dependencies_are_the_measured_ones():
                       {"shaft.initialTorque": 5.0, "controller.integralGain": 0.0},
                       {"shaft.initialTorque": 5.0, "supply.voltageLimit": 10.0},
                       {"shaft.initialTorque": -3.0, "shaft.speed": 300.0}]
-    measured, n = dependencies.measure(str(system.MOTOR_FMU), configurations)
+    measured, n = dependencies.measure(str(MOTOR_FMU), configurations)
     assert n == len(configurations)
-    assert measured == dependencies.declared(str(system.MOTOR_FMU))
+    assert measured == dependencies.declared(str(MOTOR_FMU))
 
 
 def test_motor_directional_derivatives_are_its_gains():
@@ -117,7 +127,7 @@ def test_motor_state_round_trips_and_an_old_format_is_rejected():
 
 
 def test_motor_start_follows_the_set_point_until_initialization_ends():
-    motor = system.Slave(system.MOTOR_FMU, "motor")
+    motor = Session(MOTOR_FMU, "motor")
     motor.fmu.enterInitializationMode()
     assert motor.get("motor.speed") == motor.get("speed.setPoint")
     motor.set({"speed.setPoint": 300.0})
@@ -133,7 +143,7 @@ def libcosim_run(execution):
     from libcosimpy.CosimObserver import CosimObserver
 
     index = {info.name.decode(): info.index for info in execution.slave_infos()}
-    vr = system.Slave(system.CRANK_FMU, "names").vr
+    vr = Session(CRANK_FMU, "names").vr
     observer = CosimObserver.create_last_value()
     execution.add_observer(observer)
     rows = []
@@ -159,8 +169,8 @@ def test_libcosim_from_ssp_and_osp_and_the_fmpy_master_run_the_system_alike():
 
     log_output_level(CosimLogLevel.ERROR)
     runs = {
-        "libcosim OSP": libcosim_run(CosimExecution.from_osp_config_file(str(system.OSP))),
-        "libcosim SSP": libcosim_run(CosimExecution.from_ssp_file(str(system.SSP), step_size=NS)),
+        "libcosim OSP": libcosim_run(CosimExecution.from_osp_config_file(str(OSP))),
+        "libcosim SSP": libcosim_run(CosimExecution.from_ssp_file(str(SSP), step_size=NS)),
         "fmpy master": fmpy_run(),
     }
     reference = runs["fmpy master"]
@@ -177,7 +187,7 @@ def test_fmpy_ssp_simulation_runs_the_system_with_connections_starting_at_zero()
     """fmpy's simulate_ssp starts every connection at 0 (not at the initial outputs) and applies
     no parameter bindings itself: given the SSP's bindings, it runs exactly the fmpy master with
     that start."""
-    ssd = read_ssd(str(system.SSP))
+    ssd = read_ssd(str(SSP))
     bound = ParameterSet(name="bindings")
     for component in find_components(ssd.system):
         for binding in component.parameterBindings:
@@ -185,7 +195,7 @@ def test_fmpy_ssp_simulation_runs_the_system_with_connections_starting_at_zero()
                 for p in values.parameters:
                     bound.parameters.append(Parameter(name=f"{component.name}.{p.name}",
                                                       type=p.type, value=p.value))
-    result = simulate_ssp(str(system.SSP), stop_time=STOP, step_size=STEP, parameter_set=bound)
+    result = simulate_ssp(str(SSP), stop_time=STOP, step_size=STEP, parameter_set=bound)
     expected = fmpy_run(zero_start=True)
     # (fmpy accumulates time in floating point: its loop takes one step past the stop time)
     n = len(expected)
@@ -201,12 +211,12 @@ def test_the_ssp_carries_what_omsimulator_needs():
     strips such a prefix from binding names), and the OSP file names its simulators alike."""
     from lxml import etree
 
-    read_ssd(str(system.SSP))
+    read_ssd(str(SSP))
     ns = {"ssd": "http://ssp-standard.org/SSP1/SystemStructureDescription",
           "ssc": "http://ssp-standard.org/SSP1/SystemStructureCommon",
           "ssv": "http://ssp-standard.org/SSP1/SystemStructureParameterValues",
           "oms": "https://raw.githubusercontent.com/OpenModelica/OMSimulator/master/schema/oms.xsd"}
-    root = etree.parse(str(system.SSD)).getroot()
+    root = etree.parse(str(SSD)).getroot()
     masters = root.findall("ssd:System/ssd:Annotations/ssc:Annotation[@type='org.openmodelica']"
                            "/oms:Annotations/oms:SimulationInformation/oms:FixedStepMaster", ns)
     assert [float(m.get("stepSize")) for m in masters] == [STEP]
@@ -218,7 +228,7 @@ def test_the_ssp_carries_what_omsimulator_needs():
         names = [p.get("name") for p in c.findall(".//ssv:Parameter", ns)]
         names += [k.get("name") for k in c.findall("ssd:Connectors/ssd:Connector", ns)]
         assert names and not [n for n in names if n.startswith(c.get("name") + ".")], names
-    osp = etree.parse(str(system.OSP)).getroot()
+    osp = etree.parse(str(OSP)).getroot()
     assert {s.get("name") for s in osp.iter("{*}Simulator")} == {"dcMotor", "sliderCrank"}
 
 
@@ -253,7 +263,7 @@ def test_first_order_input_derivatives_cut_the_coupling_error():
 def test_input_derivatives_are_part_of_the_fmu_state():
     """A state taken after fmi2SetRealInputDerivatives and restored later continues with the
     same interpolated input."""
-    crank = system.Slave(system.CRANK_FMU, "crank")
+    crank = Session(CRANK_FMU, "crank")
     crank.set(system.CRANK_PARAMETERS)
     crank.fmu.enterInitializationMode()
     crank.fmu.exitInitializationMode()

@@ -6,7 +6,7 @@ This runs both FMUs alternately over 20 clearances (0.5 mm × (1 + 0.02 k), k = 
 times, and prints each FMU's total wall time and evaluations and the ratio of wall time per
 evaluation (B / A).
 
-usage: ensemble_benchmark.py A.fmu B.fmu [NAME=VALUE ...]   (start values added to every case)
+usage: python -m fsc.ensemble_benchmark A.fmu B.fmu [NAME=VALUE ...]   (start values added to every case)
 """
 import sys
 import time

@@ -4,7 +4,7 @@ unpacked FMU, (b) with `fsc.sweep.run` on a running LocalCluster of 1 worker (th
 and (c) of 2 workers (the speed-up), in round-robin rounds (best round each). The clusters'
 start-up, paid once per study, is printed apart.
 
-usage: sweep_benchmark.py FMU
+usage: python -m fsc.sweep_benchmark FMU
 """
 import sys
 import tempfile

@@ -7,34 +7,27 @@ point to +-1e-9 N m alternately (a change the motion cannot see, which restarts 
 sequence as a coupled motor model does). Prints the integrator's right-hand-side evaluations of
 both and their ratio.
 
-usage: coupling_benchmark.py FMU
+usage: python -m fsc.coupling_benchmark FMU
 """
 import sys
 
-from fmpy import extract, read_model_description
-from fmpy.fmi2 import FMU2Slave
+from .session import Session
 
 STOP = 0.024
 
 
 def evaluations(fmu, step, coupled):
-    md = read_model_description(fmu)
-    vr = {v.name: v.valueReference for v in md.modelVariables}
-    s = FMU2Slave(guid=md.guid, unzipDirectory=extract(fmu),
-                  modelIdentifier=md.coSimulation.modelIdentifier, instanceName="coupling")
-    s.instantiate()
-    s.setupExperiment(startTime=0.0, stopTime=STOP)
-    s.setInteger([vr["drive.mode"]], [2])
-    s.enterInitializationMode()
-    s.exitInitializationMode()
+    s = Session(fmu, "coupling", stop_time=STOP)
+    s.set({"drive.mode": 2})
+    s.fmu.enterInitializationMode()
+    s.fmu.exitInitializationMode()
     n = round(STOP / step)
     for k in range(n):
         if coupled:
-            s.setReal([vr["drive.torque"]], [1e-9 if k % 2 else -1e-9])
-        s.doStep(k * step, step)
-    count = s.getInteger([vr["solver.evaluations"]])[0]
-    s.terminate()
-    s.freeInstance()
+            s.set({"drive.torque": 1e-9 if k % 2 else -1e-9})
+        s.fmu.doStep(k * step, step)
+    count = s.get("solver.evaluations")
+    s.free()
     return count
 
 

@@ -1,7 +1,7 @@
 """Simulates the FMU's DefaultExperiment (two crank revolutions of benchmark B at 5000 rpm) through
 fmpy and writes a CSV of the outputs and a PNG: slider acceleration, joint force, journal orbit.
 
-usage: demo.py FMU OUTPUT_DIR
+usage: python -m fsc.demo FMU OUTPUT_DIR
 """
 import sys
 from pathlib import Path

@@ -4,7 +4,7 @@ and lubricated joints, all in one run. Prints a Markdown table of wall time (bes
 running every case once), the ratio to the rigid rod with the same joint, and the integrator's steps and
 right-hand-side evaluations.
 
-usage: benchmark.py FMU [--quick] [--baseline=OTHER_FMU] [NAME=VALUE ...]   (start values applied to every case)
+usage: python -m fsc.benchmark FMU [--quick] [--baseline=OTHER_FMU] [NAME=VALUE ...]   (start values applied to every case)
 
 With --baseline every case also runs with OTHER_FMU (another build) in the same rounds, right after the
 FMU under test, and the table adds its best wall time and the ratio of the two (a case whose parameters
