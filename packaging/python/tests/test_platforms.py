@@ -27,11 +27,17 @@ OLD_DEBIAN = "bullseye"
 FMI2_FUNCTIONS = 34
 SAVE_AT = 120
 
-md = read_model_description(str(RELEASE_FMU))
-GUID = md.guid
-REAL_OUTPUTS = ",".join(str(v.valueReference) for v in md.modelVariables
-                        if v.causality == "output" and v.type == "Real")
-EXPERIMENT = ["0.024", "1e-4", REAL_OUTPUTS]
+
+
+@pytest.fixture(scope="module")
+def release():
+    """The release FMU's model description, read when a test needs it (a missing release build
+    fails that test, not the collection of every test), its GUID and the C master's experiment:
+    24 ms in 1e-4 s steps, recording every Real output."""
+    md = read_model_description(str(RELEASE_FMU))
+    outputs = [v for v in md.modelVariables if v.causality == "output" and v.type == "Real"]
+    experiment = ["0.024", "1e-4", ",".join(str(v.valueReference) for v in outputs)]
+    return md.guid, experiment, [v.name for v in outputs]
 
 
 def run(args, **kwargs):
@@ -51,12 +57,13 @@ def work():
 
 
 @pytest.fixture(scope="module")
-def linux_run(work):
+def linux_run(work, release):
     """The release linux64 binary's run, and the FMU state it serialized at point SAVE_AT."""
     master = work / "fmu_run"
     run(["gcc", "-O2", "-Wall", "-Werror", str(MASTER / "fmu_run.c"), "-o", str(master), "-ldl"])
     out, state = work / "linux64.txt", work / "linux64.state"
-    run([str(master), str(BINARIES / "linux64" / "FlexibleSliderCrank.so"), GUID, *EXPERIMENT,
+    guid, experiment, _ = release
+    run([str(master), str(BINARIES / "linux64" / "FlexibleSliderCrank.so"), guid, *experiment,
          str(out), "--save-at", str(SAVE_AT), str(state)])
     return out.read_text(), state
 
@@ -98,15 +105,16 @@ def test_linux64_needs_glibc_2_28_at_most(model):
     assert len(set(re.findall(r"\bfmi2\w+", symbols))) == FMI2_FUNCTIONS
 
 
-def test_linux64_equals_the_host_build(linux_run, work):
+def test_linux64_equals_the_host_build(linux_run, work, release):
+    guid, experiment, _ = release
     host = read_model_description(str(ROOT / "target" / "fmu" / "FlexibleSliderCrank.fmu"))
-    assert host.guid == GUID, "the host FMU is from other sources: run cargo run --release -p packaging"
+    assert host.guid == guid, "the host FMU is from other sources: run cargo run --release -p packaging"
     out = work / "host.txt"
-    run([str(work / "fmu_run"), str(HOST_LIBRARY), GUID, *EXPERIMENT, str(out)])
+    run([str(work / "fmu_run"), str(HOST_LIBRARY), guid, *experiment, str(out)])
     assert lines_differing(out.read_text(), linux_run[0]) == []
 
 
-def test_the_reference_results_in_the_release_fmu_are_its_linux64_run(linux_run):
+def test_the_reference_results_in_the_release_fmu_are_its_linux64_run(linux_run, release):
     """The reference results the release FMU carries (extra/org.fmi-standard.fmi-ls-ref/) are the
     release linux64 binary's DefaultExperiment at every communication point, to the bit; the win64
     run equals that one (below), so the reference holds for it too."""
@@ -117,8 +125,7 @@ def test_the_reference_results_in_the_release_fmu_are_its_linux64_run(linux_run)
         lines = fmu.read("extra/org.fmi-standard.fmi-ls-ref/FlexibleSliderCrank_ref.csv")
     header, *rows = lines.decode().splitlines()
     names = [n.strip('"') for n in header.split(",")[1:]]
-    assert names == [v.name for v in md.modelVariables
-                     if v.causality == "output" and v.type == "Real"]
+    assert names == release[2]
     def bits(x):
         return struct.pack(">d", float(x)).hex()
     expected = [" ".join([str(k)] + [bits(x) for x in row.split(",")[1:]])
@@ -127,7 +134,8 @@ def test_the_reference_results_in_the_release_fmu_are_its_linux64_run(linux_run)
 
 
 @pytest.mark.skipif(os.geteuid() != 0, reason="debootstrap and chroot need root")
-def test_linux64_runs_on_an_older_debian_bit_identically(linux_run, work):
+def test_linux64_runs_on_an_older_debian_bit_identically(linux_run, work, release):
+    guid, experiment, _ = release
     root = work / OLD_DEBIAN
     if not (root / "usr" / "bin" / "ldd").exists():
         shutil.rmtree(root, ignore_errors=True)
@@ -140,12 +148,12 @@ def test_linux64_runs_on_an_older_debian_bit_identically(linux_run, work):
     run([str(zig / "zig"), "cc", "-target", "x86_64-linux-gnu.2.28", "-O2",
          str(MASTER / "fmu_run.c"), "-o", str(root / "fmu_run")])
     shutil.copy(BINARIES / "linux64" / "FlexibleSliderCrank.so", root / "FlexibleSliderCrank.so")
-    run(["chroot", str(root), "/fmu_run", "/FlexibleSliderCrank.so", GUID, *EXPERIMENT, "/out.txt"])
+    run(["chroot", str(root), "/fmu_run", "/FlexibleSliderCrank.so", guid, *experiment, "/out.txt"])
     assert lines_differing((root / "out.txt").read_text(), linux_run[0]) == []
 
 
 @pytest.fixture(scope="module")
-def wine(work):
+def wine(work, release):
     """A directory with the win64 DLL, the C master built for Windows and the test-only
     bcryptprimitives.dll that wine 8 lacks; and a function running the master there under wine."""
     win = work / "win64"
@@ -162,7 +170,8 @@ def wine(work):
     run(["wineserver", "--wait"], env=env)
 
     def master(*args):
-        return run(["wine", "fmu_run.exe", "FlexibleSliderCrank.dll", GUID, *EXPERIMENT, *args],
+        guid, experiment, _ = release
+        return run(["wine", "fmu_run.exe", "FlexibleSliderCrank.dll", guid, *experiment, *args],
                    cwd=win, env=env)
     return win, master
 
