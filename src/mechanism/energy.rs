@@ -82,9 +82,9 @@ impl SliderCrank {
             .sum();
         let (crank, slider) = (y[l.crank_speed()], y[l.slider_velocity()]);
         let kinetic =
-            0.5 * (self.crank_inertia * crank * crank + rod + self.slider_mass * slider * slider);
+            0.5 * (self.crank.inertia * crank * crank + rod + self.slider.mass * slider * slider);
         match self.crank_reference(y) {
-            Some((_, v_g)) => kinetic + 0.5 * self.crank_mass * v_g.norm_squared(),
+            Some((_, v_g)) => kinetic + 0.5 * self.crank.mass * v_g.norm_squared(),
             None => kinetic,
         }
     }
@@ -97,18 +97,18 @@ impl SliderCrank {
             return 0.0;
         }
         let crank = match self.crank_reference(y) {
-            Some((r_g, _)) => -self.crank_mass * self.gravity.dot(&r_g),
+            Some((r_g, _)) => -self.crank.mass * self.gravity.dot(&r_g),
             None => {
                 let (sin, cos) = math::sin_cos(y[CRANK_ANGLE]);
-                -self.crank_mass
-                    * self.crank_centre_ratio
-                    * self.crank_length
+                -self.crank.mass
+                    * self.crank.centre_ratio
+                    * self.crank.length
                     * (self.gravity.x * cos + self.gravity.y * sin)
             }
         };
         crank
-            - self.slider_mass * self.gravity.x * y[self.layout.slider()]
-            - self.slider_mass * self.gravity.y * self.slider_offset
+            - self.slider.mass * self.gravity.x * y[self.layout.slider()]
+            - self.slider.mass * self.gravity.y * self.slider.offset
     }
 
     /// Energies of a state (evaluates the joint forces for the stored contact energy).

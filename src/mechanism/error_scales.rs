@@ -6,6 +6,17 @@ use super::slider_crank::SliderCrank;
 use crate::integrator::ErrorScales;
 use crate::joint::{Joint, JointRole, normal_rate_error};
 
+/// What the error control weighs the state by, fixed when the mechanism is built.
+#[derive(Clone, Debug)]
+pub(super) struct ErrorControl {
+    /// Reference crank speed of the error scales (the initial speed, at least 1 rad/s).
+    pub reference_speed: f64,
+    /// Length scale ℓ of the error scales \[m\].
+    pub position_scale: f64,
+    /// Weight of a dry journal's normal velocity in the error control (0: not held).
+    pub impact_error_weight: f64,
+}
+
 impl SliderCrank {
     /// Error weights of each state component ([`ErrorScales`]): the integrators compare its
     /// local error with `rtol · sᵢ` for coordinates and velocities (absolute only: positions and
@@ -35,20 +46,20 @@ impl SliderCrank {
     /// with friction it is stiff while the journal sticks.)
     pub fn error_scales(&self) -> ErrorScales {
         let l = self.layout;
-        let length = self.position_scale;
-        let speed = self.reference_speed * length;
-        let pin_speed = self.reference_speed * self.crank_length;
+        let length = self.error_control.position_scale;
+        let speed = self.error_control.reference_speed * length;
+        let pin_speed = self.error_control.reference_speed * self.crank.length;
         let free_crank_inertia = if self.active.free_crank {
-            self.crank_mass * self.crank_centre * self.crank_centre
+            self.crank.mass * self.crank.centre * self.crank.centre
         } else {
             0.0
         };
-        let mass = (self.crank_inertia + free_crank_inertia) / self.crank_length.powi(2)
+        let mass = (self.crank.inertia + free_crank_inertia) / self.crank.length.powi(2)
             + self.rod_mass
-            + self.slider_mass;
+            + self.slider.mass;
         let mut scales = vec![0.0; l.n_states()];
-        scales[CRANK_ANGLE] = length / self.crank_length;
-        scales[l.crank_speed()] = speed / self.crank_length;
+        scales[CRANK_ANGLE] = length / self.crank.length;
+        scales[l.crank_speed()] = speed / self.crank.length;
         for (j, d) in self.rod.displacement_scales().into_iter().enumerate() {
             scales[l.rod_coordinate(j)] = length / d;
             scales[l.rod_rate(j)] = speed / d;
@@ -62,14 +73,14 @@ impl SliderCrank {
         }
         scales[l.drive_angle()] = scales[CRANK_ANGLE];
         for s in &mut scales[l.integrals()] {
-            *s = 0.5 * mass * pin_speed * pin_speed * length / self.crank_length;
+            *s = 0.5 * mass * pin_speed * pin_speed * length / self.crank.length;
         }
         let relative = (0..scales.len())
             .map(|i| if l.integrals().contains(&i) { 1.0 } else { 0.0 })
             .collect();
         let held = self
             .held_joints()
-            .map(|_| speed / self.impact_error_weight)
+            .map(|_| speed / self.error_control.impact_error_weight)
             .collect();
         ErrorScales {
             absolute: scales,
@@ -82,7 +93,8 @@ impl SliderCrank {
     /// the slider: the order of [`ErrorScales::held`].
     fn held_joints(&self) -> impl Iterator<Item = JointRole> + '_ {
         JointRole::ALL.into_iter().filter(|&role| {
-            self.impact_error_weight > 0.0 && matches!(self.joint(role), Joint::Dry(_))
+            self.error_control.impact_error_weight > 0.0
+                && matches!(self.joint(role), Joint::Dry(_))
         })
     }
 
@@ -100,7 +112,7 @@ impl SliderCrank {
                 JointRole::RodSlider => {
                     let (b, rate) = (l.pin_b(), l.rate_of(l.pin_b()));
                     normal_rate_error(
-                        (y[b] - y[l.slider()], y[b + 1] - self.slider_offset),
+                        (y[b] - y[l.slider()], y[b + 1] - self.slider.offset),
                         (err[rate] - err[l.slider_velocity()], err[rate + 1]),
                     )
                 }
@@ -113,13 +125,13 @@ impl SliderCrank {
                         .crank_centre()
                         .map_or((0.0, 0.0), |g| (err[l.rate_of(g)], err[l.rate_of(g) + 1]));
                     let (x, y) = if role == JointRole::CrankPin {
-                        let (d, rate) = (self.crank_arm, l.rate_of(PIN_A));
+                        let (d, rate) = (self.crank.arm, l.rate_of(PIN_A));
                         (
                             -d * sin * d_speed - d * omega * cos * d_angle - err[rate],
                             d * cos * d_speed - d * omega * sin * d_angle - err[rate + 1],
                         )
                     } else {
-                        let a = self.crank_centre;
+                        let a = self.crank.centre;
                         (
                             a * sin * d_speed + a * omega * cos * d_angle,
                             -a * cos * d_speed + a * omega * sin * d_angle,

@@ -114,3 +114,18 @@ impl InputSignal {
             })
     }
 }
+
+/// What loads the mechanism: the inputs as functions of time, their values at the current time,
+/// the load on the slider tied to the crank angle (`slider.forceTable`, added to the input), and
+/// the speed drive's acceleration at the current time.
+#[derive(Clone, Debug)]
+pub(super) struct Loading {
+    /// The inputs as functions of time.
+    pub signal: InputSignal,
+    /// The inputs at the time of the last `SliderCrank::set_time`.
+    pub inputs: Inputs,
+    /// The crank-angle load table, if any.
+    pub table: Option<crate::load_table::LoadTable>,
+    /// dω_in/dt at that time \[rad/s²\] (speed drive).
+    pub drive_acceleration: f64,
+}

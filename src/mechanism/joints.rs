@@ -73,7 +73,7 @@ impl SliderCrank {
                 let (e, e_dot) = match self.crank_reference(y) {
                     Some((r_g, v_g)) => {
                         let (sin, cos) = math::sin_cos(theta);
-                        let a = self.crank_centre;
+                        let a = self.crank.centre;
                         (
                             r_g - a * Vector2::new(cos, sin),
                             v_g + a * omega * Vector2::new(sin, -cos),
@@ -90,7 +90,7 @@ impl SliderCrank {
             }
             JointRole::CrankPin => {
                 let (sin, cos) = math::sin_cos(theta);
-                let d = self.crank_arm;
+                let d = self.crank.arm;
                 let mut e = d * Vector2::new(cos, sin) - pair(y, PIN_A);
                 let mut e_dot = d * omega * Vector2::new(-sin, cos) - pair(y, l.rate_of(PIN_A));
                 if let Some((r_o, v_o)) = self.crank_reference(y) {
@@ -107,7 +107,7 @@ impl SliderCrank {
             JointRole::RodSlider => {
                 let (b, b_rate) = (l.pin_b(), l.rate_of(l.pin_b()));
                 JointKinematics {
-                    e: Vector2::new(y[b] - y[l.slider()], y[b + 1] - self.slider_offset),
+                    e: Vector2::new(y[b] - y[l.slider()], y[b + 1] - self.slider.offset),
                     e_dot: Vector2::new(y[b_rate] - y[l.slider_velocity()], y[b_rate + 1]),
                     omega_journal: self.rod.end_angular_velocity(RodEnd::SliderPin, p, p_dot),
                     omega_bearing: 0.0,
@@ -139,7 +139,7 @@ impl SliderCrank {
         let p = &y[self.layout.rod()];
         self.rod
             .add_end_moment(RodEnd::CrankPin, p, f.bearing_moment, rod_force);
-        Some(self.crank_load(y, self.crank_arm, &f, &kin))
+        Some(self.crank_load(y, self.crank.arm, &f, &kin))
     }
 
     /// The main bearing's clearance-joint load on the free crank in state `y`; `None` for the ideal
@@ -149,7 +149,7 @@ impl SliderCrank {
             return None;
         }
         let (f, kin) = self.joint_force(JointRole::MainBearing, y);
-        Some(self.crank_load(y, -self.crank_centre, &f, &kin))
+        Some(self.crank_load(y, -self.crank.centre, &f, &kin))
     }
 
     /// The load on the crank of the joint force `f` whose journal lies at `arm` from the crank's

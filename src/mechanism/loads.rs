@@ -82,14 +82,14 @@ impl SliderCrank {
                 let (theta, omega) = (y[CRANK_ANGLE], y[l.crank_speed()]);
                 let alpha = dy[l.crank_speed()];
                 let (sin, cos) = math::sin_cos(theta);
-                self.crank_centre
+                self.crank.centre
                     * (alpha * Vector2::new(-sin, cos) - omega * omega * Vector2::new(cos, sin))
             }
         };
         let main_bearing = if self.has_clearance(JointRole::MainBearing) {
             self.joint_force(JointRole::MainBearing, y).0.force
         } else {
-            self.crank_mass * crank_centre_acceleration + crank_pin - self.crank_mass * self.gravity
+            self.crank.mass * crank_centre_acceleration + crank_pin - self.crank.mass * self.gravity
         };
         let deformation = match &mut self.rod {
             RodBody::Rigid { .. } => {
@@ -116,7 +116,7 @@ impl SliderCrank {
         Loads {
             crank_pin,
             main_bearing,
-            guide: joint_force.y - self.slider_mass * self.gravity.y,
+            guide: joint_force.y - self.slider.mass * self.gravity.y,
             axial: [-shank_a.dot(&t_a), shank_b.dot(&t_b)],
             stress: deformation.stresses,
             deformation_energy: deformation.energy,

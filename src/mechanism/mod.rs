@@ -30,6 +30,7 @@ mod inputs;
 mod joints;
 pub mod layout;
 mod loads;
+mod parts;
 pub mod rod_body;
 mod scales;
 mod schur;

@@ -39,11 +39,11 @@ impl SliderCrank {
     pub(super) fn subtract_compliance(&self, mu: &VectorS, out: &mut [f64]) {
         let l = self.layout;
         let n_rod = l.rod().len();
-        out[CRANK_ANGLE] -= mu[0] / self.crank_inertia;
-        out[l.slider()] -= mu[5] / self.slider_mass;
+        out[CRANK_ANGLE] -= mu[0] / self.crank.inertia;
+        out[l.slider()] -= mu[5] / self.slider.mass;
         if let Some(g) = l.crank_centre() {
-            out[g] -= mu[6] / self.crank_mass;
-            out[g + 1] -= mu[7] / self.crank_mass;
+            out[g] -= mu[6] / self.crank.mass;
+            out[g + 1] -= mu[7] / self.crank.mass;
         }
         for j in 0..4 {
             let column = &self.rod_compliance[j * n_rod..(j + 1) * n_rod];

@@ -4,8 +4,10 @@
 use nalgebra::{SMatrix, Vector2};
 
 use super::constraints::{Active, ConstraintState, Constraints, S_MAX};
-use super::inputs::{InputSignal, Inputs};
+use super::error_scales::ErrorControl;
+use super::inputs::{InputSignal, Inputs, Loading};
 use super::layout::{CRANK_ANGLE, PIN_A, StateLayout, pair};
+use super::parts::{Crank, Slider};
 use super::rod_body::RodBody;
 use super::scales;
 use crate::ancf::RodProperties;
@@ -43,22 +45,10 @@ pub struct SliderCrank {
     pub(super) joints: [Joint; 3],
     pub(super) drive: DriveMode,
     pub(super) active: Active,
-    pub(super) crank_length: f64,
-    /// Distance a from the crank's pivot to its centre of mass along the crank (towards the pin;
-    /// negative beyond the pivot) \[m\].
-    pub(super) crank_centre: f64,
-    /// That distance as a fraction of the crank length.
-    pub(super) crank_centre_ratio: f64,
-    /// The guide line's distance from the crank pivot along +y \[m\].
-    pub(super) slider_offset: f64,
-    /// The crank pin's distance d from the crank's reference point: r_c from the fixed pivot,
-    /// r_c − a from the free crank's centre of mass \[m\].
-    pub(super) crank_arm: f64,
-    pub(super) crank_mass: f64,
-    /// The crank's inertia in its rotation θ: about the fixed pivot, or about the free crank's
-    /// centre of mass \[kg m²\].
-    pub(super) crank_inertia: f64,
-    pub(super) slider_mass: f64,
+    /// The crank's geometry and inertia.
+    pub(super) crank: Crank,
+    /// The slider's mass and its guide's offset.
+    pub(super) slider: Slider,
     /// Gravitational acceleration \[m/s²\].
     pub(super) gravity: Vector2<f64>,
     pub(super) rod_length: f64,
@@ -69,12 +59,8 @@ pub struct SliderCrank {
     /// M t for the rigid translations t along x and y of the rod's coordinates: m a_G = (M t)ᵀ p̈
     /// is the rate of the rod's linear momentum (see [`super::loads`]).
     pub(super) rod_translation: [Vec<f64>; 2],
-    /// Reference crank speed for the error scales (the initial speed, at least 1 rad/s).
-    pub(super) reference_speed: f64,
-    /// Length scale ℓ of the error scales \[m\].
-    pub(super) position_scale: f64,
-    /// Weight of the dry journal's normal velocity in the error control (0: not held).
-    pub(super) impact_error_weight: f64,
+    /// What the error control weighs the state by.
+    pub(super) error_control: ErrorControl,
     /// M_rod⁻¹ e_j for j ∈ {A_x, A_y, B_x, B_y}, column-major (n_rod × 4).
     pub(super) rod_compliance: Vec<f64>,
     /// W = E_sᵀ M⁻¹ E_s.
@@ -85,14 +71,8 @@ pub struct SliderCrank {
     /// The state position of each joint's work integral, by [`JointRole`] (none for an ideal
     /// joint; [`StateLayout::joint_works`]).
     pub(super) joint_work: [Option<usize>; 3],
-    /// The inputs as functions of time.
-    pub(super) signal: InputSignal,
-    /// The inputs at the time of the last [`SliderCrank::set_time`].
-    pub(super) inputs: Inputs,
-    /// The load on the slider tied to the crank angle (`slider.forceTable`), added to the input.
-    pub(super) load: Option<LoadTable>,
-    /// dω_in/dt at that time \[rad/s²\] (speed drive).
-    pub(super) drive_acceleration: f64,
+    /// The inputs and the load table, and their values at the current time.
+    pub(super) loading: Loading,
     pub(super) contacts: Contacts,
     pub(super) force: Vec<f64>,
     pub(super) evaluation: Evaluation,
@@ -177,28 +157,36 @@ impl SliderCrank {
             joints: p.joints().map(|(_, joint)| Joint::new(joint)),
             drive: p.drive_mode,
             active,
-            crank_length: p.crank_length,
-            crank_centre,
-            crank_centre_ratio: p.crank_centre_of_mass_ratio,
-            slider_offset: p.slider_offset,
-            crank_arm,
-            crank_mass: p.crank_mass,
-            crank_inertia,
-            slider_mass: p.slider_mass,
+            crank: Crank {
+                length: p.crank_length,
+                centre: crank_centre,
+                centre_ratio: p.crank_centre_of_mass_ratio,
+                arm: crank_arm,
+                mass: p.crank_mass,
+                inertia: crank_inertia,
+            },
+            slider: Slider {
+                mass: p.slider_mass,
+                offset: p.slider_offset,
+            },
             gravity: p.gravity_vector(),
             rod_length: p.rod.length,
             rod_mass: p.rod.total_mass(),
             rod_section: p.rod,
             rod_translation,
-            reference_speed: p.start_speed(inputs.drive_speed).abs().max(1.0),
-            position_scale: scales::position_scale(p, &scale_loads),
-            impact_error_weight: p.impact_error_weight,
+            error_control: ErrorControl {
+                reference_speed: p.start_speed(inputs.drive_speed).abs().max(1.0),
+                position_scale: scales::position_scale(p, &scale_loads),
+                impact_error_weight: p.impact_error_weight,
+            },
             rod_compliance,
             w,
-            signal: InputSignal::held(inputs),
-            inputs,
-            load,
-            drive_acceleration: 0.0,
+            loading: Loading {
+                signal: InputSignal::held(inputs),
+                inputs,
+                table: load,
+                drive_acceleration: 0.0,
+            },
             contacts: Contacts::default(),
             force: vec![0.0; n_rod],
             evaluation: Evaluation::default(),
@@ -251,34 +239,34 @@ impl SliderCrank {
 
     /// The inputs as functions of time.
     pub fn input_signal(&self) -> &InputSignal {
-        &self.signal
+        &self.loading.signal
     }
 
     /// Sets the inputs as functions of time; evaluations from now on use them at the current
     /// time of [`SliderCrank::set_time`] (the integrator's stage time for its evaluations).
     pub fn set_input_signal(&mut self, signal: InputSignal, t: f64) {
-        self.signal = signal;
+        self.loading.signal = signal;
         self.set_time(t);
     }
 
     /// The inputs at `t`: evaluations outside the integrator (outputs, peaks) use them.
     pub fn set_time(&mut self, t: f64) {
-        let (inputs, rates) = self.signal.at(t);
-        self.inputs = inputs;
-        self.drive_acceleration = rates.drive_speed;
+        let (inputs, rates) = self.loading.signal.at(t);
+        self.loading.inputs = inputs;
+        self.loading.drive_acceleration = rates.drive_speed;
     }
 
     /// The inputs at the time of the last [`SliderCrank::set_time`].
     pub fn inputs(&self) -> Inputs {
-        self.inputs
+        self.loading.inputs
     }
 
     /// The total external force on the slider along the guide at the crank angle `theta`: the
     /// input and the load table's value there \[N\].
     pub fn slider_force(&self, theta: f64) -> f64 {
-        match &self.load {
-            Some(table) => self.inputs.slider_force + table.at(theta),
-            None => self.inputs.slider_force,
+        match &self.loading.table {
+            Some(table) => self.loading.inputs.slider_force + table.at(theta),
+            None => self.loading.inputs.slider_force,
         }
     }
 
@@ -293,14 +281,14 @@ impl SliderCrank {
             theta: y[CRANK_ANGLE],
             theta_dot: y[l.crank_speed()],
             theta_drive: y[l.drive_angle()],
-            drive_speed: self.inputs.drive_speed,
-            drive_acceleration: self.drive_acceleration,
+            drive_speed: self.loading.inputs.drive_speed,
+            drive_acceleration: self.loading.drive_acceleration,
             r_a: pair(y, PIN_A),
             v_a: pair(y, l.rate_of(PIN_A)),
             r_b: pair(y, l.pin_b()),
             v_b: pair(y, l.rate_of(l.pin_b())),
             x_s: y[l.slider()],
-            guide: self.slider_offset,
+            guide: self.slider.offset,
             v_s: y[l.slider_velocity()],
             r_o: l.crank_centre().map_or(Vector2::zeros(), |g| pair(y, g)),
             v_o: l
@@ -312,7 +300,7 @@ impl SliderCrank {
     pub(super) fn constraints(&self, y: &[f64]) -> Constraints {
         Constraints::evaluate(
             self.active,
-            self.crank_arm,
+            self.crank.arm,
             self.rod_length,
             &self.constraint_state(y),
         )
@@ -332,7 +320,7 @@ impl SliderCrank {
         }
         let force = self.joint_force(JointRole::RodSlider, y).0.force;
         let acceleration =
-            (self.slider_force(y[CRANK_ANGLE]) - force.x) / self.slider_mass + self.gravity.x;
+            (self.slider_force(y[CRANK_ANGLE]) - force.x) / self.slider.mass + self.gravity.x;
         Some((force, acceleration))
     }
 
@@ -359,7 +347,7 @@ impl SliderCrank {
         let crank_loads = [crank_pin, main_bearing];
         let slider_force = self.slider_force(q[CRANK_ANGLE]);
         let torque_in = match self.drive {
-            DriveMode::Torque => self.inputs.drive_torque,
+            DriveMode::Torque => self.loading.inputs.drive_torque,
             DriveMode::Speed => 0.0,
         };
         // No sine or cosine per evaluation without gravity (the common case); gravity acts at the
@@ -369,9 +357,9 @@ impl SliderCrank {
         } else {
             // r_G × m_c g with r_G = a (cos θ, sin θ).
             let (sin, cos) = math::sin_cos(q[CRANK_ANGLE]);
-            self.crank_mass
-                * self.crank_centre_ratio
-                * self.crank_length
+            self.crank.mass
+                * self.crank.centre_ratio
+                * self.crank.length
                 * (cos * self.gravity.y - sin * self.gravity.x)
         };
 
@@ -382,15 +370,15 @@ impl SliderCrank {
             .iter()
             .flatten()
             .fold(torque_in + gravity_torque, |sum, load| sum + load.torque);
-        acc[CRANK_ANGLE] = crank_torque_sum / self.crank_inertia;
+        acc[CRANK_ANGLE] = crank_torque_sum / self.crank.inertia;
         if let Some(g) = l.crank_centre() {
             let force: Vector2<f64> = crank_loads.iter().flatten().map(|load| load.force).sum();
-            acc[g] = force.x / self.crank_mass + self.gravity.x;
-            acc[g + 1] = force.y / self.crank_mass + self.gravity.y;
+            acc[g] = force.x / self.crank.mass + self.gravity.x;
+            acc[g + 1] = force.y / self.crank.mass + self.gravity.y;
         }
         acc[l.rod()].copy_from_slice(&self.force);
         self.rod.solve_mass(&mut acc[l.rod()]);
-        acc[l.slider()] = (slider_force - joint.force.x) / self.slider_mass + self.gravity.x;
+        acc[l.slider()] = (slider_force - joint.force.x) / self.slider.mass + self.gravity.x;
 
         let c = self.constraints(y);
         let lambda = self.solve_schur(&c, c.jacobian * self.on_s(acc) - c.acceleration_rhs())?;
@@ -419,7 +407,7 @@ impl SliderCrank {
             }
         }
         dy[l.drive_angle()] = if self.active.speed_drive {
-            self.inputs.drive_speed
+            self.loading.inputs.drive_speed
         } else {
             0.0
         };
@@ -474,164 +462,4 @@ impl MechanicalSystem for SliderCrank {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::params::{JointModel, JointParameters, RodFormulation};
-
-    /// The dry journal's normal velocity is held to rtol · V / w on its own, with
-    /// w = `solver.impactErrorWeight`: its scale falls as 1/w, w = 0 leaves it to the RMS, and the
-    /// lubricated and ideal joints hold nothing.
-    #[test]
-    fn the_impact_error_weight_sets_the_held_journal_velocity() {
-        let held = |joint_model, impact_error_weight| {
-            let p = Parameters {
-                joint: JointParameters {
-                    model: joint_model,
-                    ..Parameters::default().joint
-                },
-                impact_error_weight,
-                ..Parameters::default()
-            };
-            SliderCrank::new(&p)
-                .expect("valid parameters")
-                .error_scales()
-                .held
-        };
-        let (strict, loose) = (held(JointModel::Dry, 4.0), held(JointModel::Dry, 1.0));
-        assert_eq!((strict.len(), loose.len()), (1, 1));
-        assert!(strict[0] > 0.0);
-        assert_eq!(4.0 * strict[0], loose[0]);
-        assert!(held(JointModel::Dry, 0.0).is_empty());
-        for joint_model in [JointModel::Lubricated, JointModel::Ideal] {
-            assert!(held(joint_model, 4.0).is_empty());
-        }
-    }
-
-    /// The held error is that of the journal's velocity relative to the slider along the
-    /// eccentricity's direction, its magnitude when the journal is centred.
-    #[test]
-    fn the_held_error_is_the_journals_normal_velocity_error() {
-        let m = SliderCrank::new(&Parameters::default()).expect("default parameters build");
-        let l = m.layout();
-        let mut y = m.initial_state(0.3, 400.0);
-        // e = (3, 4) µm: direction (0.6, 0.8); ė error (1 − 0.5, 2) = (0.5, 2).
-        y[l.slider()] = y[l.pin_b()] - 3e-6;
-        y[l.pin_b() + 1] = 4e-6;
-        let mut err = vec![0.0; y.len()];
-        err[l.rate_of(l.pin_b())] = 1.0;
-        err[l.rate_of(l.pin_b()) + 1] = 2.0;
-        err[l.slider_velocity()] = 0.5;
-        let mut out = [0.0];
-        m.held_errors(&y, &err, &mut out);
-        assert!(
-            (out[0] - (0.6 * 0.5 + 0.8 * 2.0)).abs() < 1e-12,
-            "{}",
-            out[0]
-        );
-        y[l.slider()] = y[l.pin_b()];
-        y[l.pin_b() + 1] = 0.0;
-        m.held_errors(&y, &err, &mut out);
-        assert!(
-            (out[0] - (0.25f64 + 4.0).sqrt()).abs() < 1e-12,
-            "{}",
-            out[0]
-        );
-    }
-
-    /// The crank joints' held errors are the errors of their journals' normal velocities: for a
-    /// small error δ in θ, θ̇, ṙ_A and ṙ_G they equal |n · (ė(y + δ) − ė(y))| (the free crank,
-    /// both crank joints dry and off centre).
-    #[test]
-    fn the_crank_joints_held_errors_are_their_normal_velocity_errors() {
-        let worn = JointParameters {
-            model: JointModel::Dry,
-            ..JointParameters::benchmark()
-        };
-        let p = Parameters {
-            crank_pin: worn,
-            main_bearing: worn,
-            ..Parameters::default()
-        };
-        let m = SliderCrank::new(&p).expect("worn crank joints build");
-        let l = m.layout();
-        let g = l.crank_centre().expect("a free crank");
-        let mut y = m.initial_state(0.3, 400.0);
-        y[g] += 3e-6;
-        y[g + 1] -= 4e-6;
-        y[PIN_A] += 2e-6;
-        let mut err = vec![0.0; y.len()];
-        err[CRANK_ANGLE] = 1e-7;
-        err[l.crank_speed()] = 2e-3;
-        for (at, e) in [
-            (l.rate_of(PIN_A), [1e-4, -2e-4]),
-            (l.rate_of(g), [3e-4, 1e-4]),
-        ] {
-            err[at..at + 2].copy_from_slice(&e);
-        }
-        let mut out = [0.0; 3];
-        m.held_errors(&y, &err, &mut out);
-        let shifted: Vec<f64> = y.iter().zip(&err).map(|(a, b)| a + b).collect();
-        for (held, role) in out
-            .iter()
-            .zip([JointRole::MainBearing, JointRole::CrankPin])
-        {
-            let kin = m.joint_kinematics(role, &y);
-            let change = m.joint_kinematics(role, &shifted).e_dot - kin.e_dot;
-            let expected = kin.normal().dot(&change).abs();
-            assert!(expected > 1e-6, "{role:?}: {expected}");
-            assert!(
-                (held - expected).abs() < 1e-6 * expected,
-                "{role:?}: {held} vs {expected}"
-            );
-        }
-    }
-
-    /// The joint load from the kinematics alone equals the full right-hand side's, for every
-    /// clearance joint and rod, in contact (inside and at the start of an event) and with a
-    /// slider force; the ideal joint has none.
-    #[test]
-    fn clearance_joint_load_equals_the_right_hand_side() {
-        for joint_model in [JointModel::Dry, JointModel::Lubricated, JointModel::Ideal] {
-            for rod_formulation in [RodFormulation::Rigid, RodFormulation::CraigBampton] {
-                let p = Parameters {
-                    joint: JointParameters {
-                        model: joint_model,
-                        ..Parameters::default().joint
-                    },
-                    rod_formulation,
-                    ..Parameters::default()
-                };
-                let mut m = SliderCrank::new(&p).expect("default parameters build");
-                let inputs = Inputs {
-                    slider_force: -150.0,
-                    ..m.inputs()
-                };
-                m.set_input_signal(InputSignal::held(inputs), 0.0);
-                let mut y = m.initial_state(0.3, 400.0);
-                let l = m.layout();
-                // Journal 20 µm into the wall, moving into it.
-                y[l.slider()] -= p.joint.clearance + 2e-5;
-                y[l.slider_velocity()] -= 0.5;
-                let mut dy = vec![0.0; y.len()];
-                let mut in_contact = m.contact_state();
-                in_contact[JointRole::RodSlider] = crate::joint::ContactState {
-                    in_contact: true,
-                    impact_velocity: 0.8,
-                };
-                for contact in [m.contact_state(), in_contact] {
-                    m.set_contact_state(contact);
-                    let load = m.clearance_joint_load(&y);
-                    let ev = *m.evaluate(&y, &mut dy).expect("regular configuration");
-                    match load {
-                        None => assert_eq!(joint_model, JointModel::Ideal),
-                        Some((force, acceleration)) => {
-                            assert!(force.norm() > 100.0, "{joint_model:?}: {force} N");
-                            assert_eq!(force, ev.joint_force);
-                            assert_eq!(acceleration, ev.slider_acceleration);
-                        }
-                    }
-                }
-            }
-        }
-    }
-}
+mod tests;

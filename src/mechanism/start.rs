@@ -40,10 +40,10 @@ impl SliderCrank {
         e: [Vector2<f64>; 3],
     ) -> Vec<f64> {
         let [pivot, crank_pin, rod_slider] = e;
-        let (r_c, l) = (self.crank_length, self.rod_length);
+        let (r_c, l) = (self.crank.length, self.rod_length);
         let (sin, cos) = math::sin_cos(angle);
         let a = r_c * Vector2::new(cos, sin) + (pivot - crank_pin);
-        let sin_beta = (self.slider_offset + rod_slider.y - a.y) / l;
+        let sin_beta = (self.slider.offset + rod_slider.y - a.y) / l;
         let cos_beta = (1.0 - sin_beta * sin_beta).sqrt();
         let b = a + l * Vector2::new(cos_beta, sin_beta);
         let v_a = r_c * speed * Vector2::new(-sin, cos);
@@ -60,7 +60,7 @@ impl SliderCrank {
         y[l.slider_velocity()] = v_b.x;
         if let Some(g) = l.crank_centre() {
             // A free crank turning about its pivot, at rest in the main bearing.
-            let a = self.crank_centre;
+            let a = self.crank.centre;
             y[g] = pivot.x + a * cos;
             y[g + 1] = pivot.y + a * sin;
             y[l.rate_of(g)] = -a * speed * sin;
@@ -133,9 +133,9 @@ impl SliderCrank {
             // start's first impact; the floor instead would make its hysteresis damping some
             // fifty times critical and the force hypersensitive to the normal velocity.
             let mass = match role {
-                JointRole::RodSlider => self.slider_mass,
+                JointRole::RodSlider => self.slider.mass,
                 JointRole::CrankPin => self.rod_mass,
-                JointRole::MainBearing => self.crank_mass,
+                JointRole::MainBearing => self.crank.mass,
             };
             let crossing = (2.0 * reaction.force.norm() * dry.clearance / mass).sqrt();
             self.contacts[role] = ContactState {
@@ -202,7 +202,7 @@ impl SliderCrank {
                 let scale = unit(j);
                 // At least 1e-4 of the rod's own scale: a tiny clearance (joint length scale
                 // below 1e-4 of the rod length) must not shrink the differences to round-off.
-                let floor = (1e-4 * self.rod_length / self.position_scale).max(1.0);
+                let floor = (1e-4 * self.rod_length / self.error_control.position_scale).max(1.0);
                 let delta = 1e-7 * (u[j].abs() + scale * floor);
                 let mut perturbed = u.clone();
                 perturbed[j] += delta;

@@ -1,0 +1,174 @@
+//! Unit tests of the ANCF rod.
+
+use super::*;
+
+/// The patch weights are the least-squares quadratic's values at 0, 1/2 and 1 (in element
+/// lengths) from its four Gauss points, and each set sums to 1 (a constant is recovered).
+#[test]
+fn patch_weights_are_the_least_squares_quadratic() {
+    let (a, b) = (0.5 - 0.5 / 3f64.sqrt(), 0.5 + 0.5 / 3f64.sqrt());
+    let x = [a, b, 1.0 + a, 1.0 + b];
+    let v = nalgebra::Matrix4x3::from_fn(|i, k| x[i].powi(k as i32));
+    let fit = (v.transpose() * v).try_inverse().expect("regular") * v.transpose();
+    for (at, weights) in [
+        (0.0, PATCH_AT_END),
+        (0.5, PATCH_AT_HALF),
+        (1.0, PATCH_AT_NODE),
+    ] {
+        let row = nalgebra::RowVector3::new(1.0, at, at * at) * fit;
+        for (w, expected) in weights.iter().zip(row.iter()) {
+            assert!((w - expected).abs() < 1e-14, "at {at}: {w} vs {expected}");
+        }
+        assert!((weights.iter().sum::<f64>() - 1.0).abs() < 1e-14);
+    }
+}
+
+/// Uniform stretch ε: σ = E ε, for one element and for several.
+#[test]
+fn a_stretched_rod_carries_e_times_the_strain() {
+    let p = RodProperties::benchmark_b();
+    for n in [1, 3, 8] {
+        let rod = Rod::new(p, n).unwrap();
+        let strain = 1e-4;
+        let mut e = rod.straight_configuration(Vector2::new(0.1, -0.2), 0.3);
+        for k in 0..=n {
+            for d in 0..4 {
+                e[4 * k + d] = if d < 2 {
+                    let origin = [0.1, -0.2][d];
+                    origin + (1.0 + strain) * (e[4 * k + d] - origin)
+                } else {
+                    (1.0 + strain) * e[4 * k + d]
+                };
+            }
+        }
+        let sigma = rod.normal_stresses(&e).largest;
+        let expected = p.youngs_modulus * strain;
+        assert!((sigma - expected).abs() < 1e-9 * expected, "{n}: {sigma}");
+    }
+}
+
+/// A pinned beam under a uniform load q (small deflection, exact nodal values w(x) =
+/// q x (L³ − 2Lx² + x³)/(24 EI)): the largest stress is the mid-span moment's,
+/// σ = (q L²/8) c/I, whether mid-span is a node (even n) or inside an element (odd n), and
+/// the recovered nodal moments are exact (a quadratic moment); the end moments are zero. The
+/// signed field: the mid-span moment and both fibres' stresses, where the largest lies.
+#[test]
+fn a_pinned_beam_under_a_uniform_load_has_the_midspan_stress() {
+    let p = RodProperties::benchmark_b();
+    let (l, ei) = (p.length, p.youngs_modulus * p.second_moment_of_area);
+    let q = 1e-5 * 8.0 * ei / (l * l);
+    let w = |x: f64| q * x * (l.powi(3) - 2.0 * l * x * x + x.powi(3)) / (24.0 * ei);
+    let slope = |x: f64| q * (l.powi(3) - 6.0 * l * x * x + 4.0 * x.powi(3)) / (24.0 * ei);
+    let expected = q * l * l / 8.0 * p.outer_fibre_distance / p.second_moment_of_area;
+    for n in 2..=9 {
+        let rod = Rod::new(p, n).unwrap();
+        let e: Vec<f64> = (0..=n)
+            .flat_map(|k| {
+                let x = l * k as f64 / n as f64;
+                [x, w(x), 1.0, slope(x)]
+            })
+            .collect();
+        let stresses = rod.normal_stresses(&e);
+        let sigma = stresses.largest;
+        assert!(
+            (sigma - expected).abs() < 1e-6 * expected,
+            "{n} elements: {sigma} vs {expected}"
+        );
+        // Bulging up (w > 0) the rod turns right: the moment −q L²/8 at mid-span, its fibres
+        // at ±σ, no axial force; the largest stress at mid-span.
+        let moment = q * l * l / 8.0;
+        assert!(
+            (stresses.midspan_moment + moment).abs() < 1e-6 * moment,
+            "{n}: {stresses:?}"
+        );
+        assert!((stresses.max - expected).abs() < 1e-6 * expected);
+        assert!((stresses.min + expected).abs() < 1e-6 * expected);
+        assert!(
+            stresses.midspan_axial_force.abs() < 1e-3 * q * l,
+            "{n}: {stresses:?}"
+        );
+        assert!(
+            (stresses.location - 0.5).abs() < 0.5 / n as f64,
+            "{n}: {stresses:?}"
+        );
+    }
+}
+
+#[test]
+fn invalid_input_names_the_parameter() {
+    let p = RodProperties::benchmark_b();
+    let err = Rod::new(p, 0).unwrap_err();
+    assert_eq!(
+        err.to_string(),
+        "rod.nElements = 0 is outside the allowed range [1, 64]"
+    );
+    let err = Rod::new(
+        RodProperties {
+            youngs_modulus: -1.0,
+            ..p
+        },
+        4,
+    )
+    .unwrap_err();
+    assert!(err.to_string().starts_with("rod.youngsModulus = -1"));
+    for (name, bad) in [
+        ("rod.length", RodProperties { length: 0.0, ..p }),
+        (
+            "rod.density",
+            RodProperties {
+                density: f64::NAN,
+                ..p
+            },
+        ),
+        ("rod.area", RodProperties { area: -1e-4, ..p }),
+        (
+            "rod.secondMomentOfArea",
+            RodProperties {
+                second_moment_of_area: 0.0,
+                ..p
+            },
+        ),
+        (
+            "rod.stiffnessDamping",
+            RodProperties {
+                stiffness_damping: -1.0,
+                ..p
+            },
+        ),
+    ] {
+        match Rod::new(bad, 4) {
+            Err(ModelError::InvalidParameter { name: n, .. }) => assert_eq!(n, name),
+            other => panic!("{name}: expected an invalid-parameter error, got {other:?}"),
+        }
+    }
+    assert!(Rod::new(p, 65).is_err());
+}
+
+/// Total mass from the assembled matrix: 1ᵀ M_x 1 = ρ A L.
+#[test]
+fn assembled_mass_is_total_mass() {
+    let rod = Rod::new(RodProperties::benchmark_b(), 8).unwrap();
+    let m = rod.mass_matrix();
+    let mut total = 0.0;
+    for i in (0..rod.n_coordinates()).step_by(4) {
+        for j in (0..rod.n_coordinates()).step_by(4) {
+            total += m[(i, j)];
+        }
+    }
+    let expected = rod.properties().mass();
+    assert!(
+        (total - expected).abs() < 1e-14 * expected * 10.0,
+        "{total} vs {expected}"
+    );
+}
+
+#[test]
+fn position_interpolates_the_straight_rod() {
+    let rod = Rod::new(RodProperties::benchmark_b(), 3).unwrap();
+    let e = rod.straight_configuration(Vector2::new(1.0, 2.0), 0.5);
+    for x in [0.0, 0.013, 0.06, 0.119, 0.12] {
+        let r = rod.position(&e, x);
+        let expected = Vector2::new(1.0 + x * math::cos(0.5), 2.0 + x * math::sin(0.5));
+        assert!((r - expected).norm() < 1e-15 * 10.0);
+    }
+}
