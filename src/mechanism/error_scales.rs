@@ -6,17 +6,6 @@ use super::slider_crank::SliderCrank;
 use crate::integrator::ErrorScales;
 use crate::joint::{Joint, JointRole, normal_rate_error};
 
-/// What the error control weighs the state by, fixed when the mechanism is built.
-#[derive(Clone, Debug)]
-pub(super) struct ErrorControl {
-    /// Reference crank speed of the error scales (the initial speed, at least 1 rad/s).
-    pub reference_speed: f64,
-    /// Length scale ℓ of the error scales \[m\].
-    pub position_scale: f64,
-    /// Weight of a dry journal's normal velocity in the error control (0: not held).
-    pub impact_error_weight: f64,
-}
-
 impl SliderCrank {
     /// Error weights of each state component ([`ErrorScales`]): the integrators compare its
     /// local error with `rtol · sᵢ` for coordinates and velocities (absolute only: positions and

@@ -1,9 +1,20 @@
-//! The length scale of the mechanism's error control: the length at which the joint's force law
+//! The mechanism's error control: its weights, and the length scale at which the joint's force law
 //! changes, in which the integrators measure every coordinate's error
 //! ([`super::SliderCrank::error_scales`]).
 
 use super::inputs::Inputs;
 use crate::params::{JointModel, Parameters, RodFormulation};
+
+/// What the error control weighs the state by, fixed when the mechanism is built.
+#[derive(Clone, Debug)]
+pub(super) struct ErrorControl {
+    /// Reference crank speed of the error scales (the initial speed, at least 1 rad/s).
+    pub reference_speed: f64,
+    /// Length scale ℓ of the error scales \[m\].
+    pub position_scale: f64,
+    /// Weight of a dry journal's normal velocity in the error control (0: not held).
+    pub impact_error_weight: f64,
+}
 
 /// Round-off floor of the length scale, in units of ε_mach (r_c + l) / rtol: the error control
 /// never asks for a position error below 100 units in the last place of the mechanism's

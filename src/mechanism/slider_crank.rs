@@ -4,12 +4,11 @@
 use nalgebra::{SMatrix, Vector2};
 
 use super::constraints::{Active, ConstraintState, Constraints, S_MAX};
-use super::error_scales::ErrorControl;
 use super::inputs::{InputSignal, Inputs, Loading};
 use super::layout::{CRANK_ANGLE, PIN_A, StateLayout, pair};
 use super::parts::{Crank, Slider};
 use super::rod_body::RodBody;
-use super::scales;
+use super::scales::{self, ErrorControl};
 use crate::ancf::RodProperties;
 use crate::error::ModelError;
 use crate::integrator::MechanicalSystem;
