@@ -115,7 +115,13 @@ impl SliderCrank {
     pub fn energies(&mut self, y: &[f64]) -> Energies {
         let l = self.layout;
         let p = &y[l.rod()];
-        let rod_gravity: f64 = self.rod_gravity.iter().zip(p).map(|(g, x)| g * x).sum();
+        let rod_gravity: f64 = self
+            .rod_data
+            .gravity
+            .iter()
+            .zip(p)
+            .map(|(g, x)| g * x)
+            .sum();
         let joints = JointRole::ALL.map(|role| match self.joint_work[role as usize] {
             Some(i) => JointEnergy {
                 work: y[i],

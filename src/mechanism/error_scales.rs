@@ -44,7 +44,7 @@ impl SliderCrank {
             0.0
         };
         let mass = (self.crank.inertia + free_crank_inertia) / self.crank.length.powi(2)
-            + self.rod_mass
+            + self.rod_data.mass
             + self.slider.mass;
         let mut scales = vec![0.0; l.n_states()];
         scales[CRANK_ANGLE] = length / self.crank.length;

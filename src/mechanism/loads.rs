@@ -60,12 +60,12 @@ impl SliderCrank {
         let l = self.layout;
         let p_ddot = &dy[l.rod_rates()];
         let momentum_rate = Vector2::new(
-            self.rod_translation[0]
+            self.rod_data.translation[0]
                 .iter()
                 .zip(p_ddot)
                 .map(|(u, a)| u * a)
                 .sum(),
-            self.rod_translation[1]
+            self.rod_data.translation[1]
                 .iter()
                 .zip(p_ddot)
                 .map(|(u, a)| u * a)
@@ -74,7 +74,7 @@ impl SliderCrank {
         let crank_pin = if self.has_clearance(JointRole::CrankPin) {
             -self.joint_force(JointRole::CrankPin, y).0.force
         } else {
-            momentum_rate - joint_force - self.rod_mass * self.gravity
+            momentum_rate - joint_force - self.rod_data.mass * self.gravity
         };
         let crank_centre_acceleration = match l.crank_centre() {
             Some(g) => pair(dy, l.rate_of(g)),
@@ -100,7 +100,7 @@ impl SliderCrank {
                 Deformation {
                     energy: 0.0,
                     stresses: rigid_rod_stress(
-                        &self.rod_section,
+                        &self.rod_data.section,
                         t,
                         accelerations,
                         shank_a,
@@ -135,7 +135,7 @@ impl SliderCrank {
         joint_force: Vector2<f64>,
     ) -> [Vector2<f64>; 2] {
         let l = self.layout;
-        let [m_a, m_b] = self.rod_section.end_masses();
+        let [m_a, m_b] = self.rod_data.section.end_masses();
         let (a_a, a_b) = (pair(dy, l.rate_of(PIN_A)), pair(dy, l.rate_of(l.pin_b())));
         [
             crank_pin - m_a * (a_a - self.gravity),

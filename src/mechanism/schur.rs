@@ -46,7 +46,7 @@ impl SliderCrank {
             out[g + 1] -= mu[7] / self.crank.mass;
         }
         for j in 0..4 {
-            let column = &self.rod_compliance[j * n_rod..(j + 1) * n_rod];
+            let column = &self.rod_data.compliance[j * n_rod..(j + 1) * n_rod];
             for (o, g) in out[l.rod()].iter_mut().zip(column) {
                 *o -= g * mu[1 + j];
             }

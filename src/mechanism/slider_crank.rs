@@ -6,10 +6,9 @@ use nalgebra::{SMatrix, Vector2};
 use super::constraints::{Active, ConstraintState, Constraints, S_MAX};
 use super::inputs::{InputSignal, Inputs, Loading};
 use super::layout::{CRANK_ANGLE, PIN_A, StateLayout, pair};
-use super::parts::{Crank, Slider};
+use super::parts::{Crank, RodData, Slider};
 use super::rod_body::RodBody;
 use super::scales::{self, ErrorControl};
-use crate::ancf::RodProperties;
 use crate::error::ModelError;
 use crate::integrator::MechanicalSystem;
 use crate::joint::{Contacts, Joint, JointRole};
@@ -50,21 +49,12 @@ pub struct SliderCrank {
     pub(super) slider: Slider,
     /// Gravitational acceleration \[m/s²\].
     pub(super) gravity: Vector2<f64>,
-    pub(super) rod_length: f64,
-    /// The rod's whole mass, its end masses included \[kg\].
-    pub(super) rod_mass: f64,
-    /// The rod's material and section (the rigid rod's stress).
-    pub(super) rod_section: RodProperties,
-    /// M t for the rigid translations t along x and y of the rod's coordinates: m a_G = (M t)ᵀ p̈
-    /// is the rate of the rod's linear momentum (see [`super::loads`]).
-    pub(super) rod_translation: [Vec<f64>; 2],
+    /// What the equations use of the rod besides its body.
+    pub(super) rod_data: RodData,
     /// What the error control weighs the state by.
     pub(super) error_control: ErrorControl,
-    /// M_rod⁻¹ e_j for j ∈ {A_x, A_y, B_x, B_y}, column-major (n_rod × 4).
-    pub(super) rod_compliance: Vec<f64>,
     /// W = E_sᵀ M⁻¹ E_s.
     pub(super) w: SMatrix<f64, S_MAX, S_MAX>,
-    pub(super) rod_gravity: Vec<f64>,
     /// Where each quantity sits in the state vector.
     pub(super) layout: StateLayout,
     /// The state position of each joint's work integral, by [`JointRole`] (none for an ideal
@@ -150,7 +140,6 @@ impl SliderCrank {
             free_crank,
         };
         Ok(Self {
-            rod_gravity: rod.gravity_force(p.gravity_vector()),
             layout,
             joint_work,
             joints: p.joints().map(|(_, joint)| Joint::new(joint)),
@@ -169,16 +158,19 @@ impl SliderCrank {
                 offset: p.slider_offset,
             },
             gravity: p.gravity_vector(),
-            rod_length: p.rod.length,
-            rod_mass: p.rod.total_mass(),
-            rod_section: p.rod,
-            rod_translation,
+            rod_data: RodData {
+                length: p.rod.length,
+                mass: p.rod.total_mass(),
+                section: p.rod,
+                translation: rod_translation,
+                compliance: rod_compliance,
+                gravity: rod.gravity_force(p.gravity_vector()),
+            },
             error_control: ErrorControl {
                 reference_speed: p.start_speed(inputs.drive_speed).abs().max(1.0),
                 position_scale: scales::position_scale(p, &scale_loads),
                 impact_error_weight: p.impact_error_weight,
             },
-            rod_compliance,
             w,
             loading: Loading {
                 signal: InputSignal::held(inputs),
@@ -300,7 +292,7 @@ impl SliderCrank {
         Constraints::evaluate(
             self.active,
             self.crank.arm,
-            self.rod_length,
+            self.rod_data.length,
             &self.constraint_state(y),
         )
     }
@@ -331,7 +323,7 @@ impl SliderCrank {
         let (p, p_dot) = (&q[l.rod()], &v[l.rod()]);
 
         let damping_power = self.rod.internal_force(p, p_dot, &mut self.force);
-        for (f, g) in self.force.iter_mut().zip(&self.rod_gravity) {
+        for (f, g) in self.force.iter_mut().zip(&self.rod_data.gravity) {
             *f = g - *f;
         }
         let (joint, kin) = self.joint_force(JointRole::RodSlider, y);

@@ -40,7 +40,7 @@ impl SliderCrank {
         e: [Vector2<f64>; 3],
     ) -> Vec<f64> {
         let [pivot, crank_pin, rod_slider] = e;
-        let (r_c, l) = (self.crank.length, self.rod_length);
+        let (r_c, l) = (self.crank.length, self.rod_data.length);
         let (sin, cos) = math::sin_cos(angle);
         let a = r_c * Vector2::new(cos, sin) + (pivot - crank_pin);
         let sin_beta = (self.slider.offset + rod_slider.y - a.y) / l;
@@ -134,7 +134,7 @@ impl SliderCrank {
             // fifty times critical and the force hypersensitive to the normal velocity.
             let mass = match role {
                 JointRole::RodSlider => self.slider.mass,
-                JointRole::CrankPin => self.rod_mass,
+                JointRole::CrankPin => self.rod_data.mass,
                 JointRole::MainBearing => self.crank.mass,
             };
             let crossing = (2.0 * reaction.force.norm() * dry.clearance / mass).sqrt();
@@ -202,7 +202,8 @@ impl SliderCrank {
                 let scale = unit(j);
                 // At least 1e-4 of the rod's own scale: a tiny clearance (joint length scale
                 // below 1e-4 of the rod length) must not shrink the differences to round-off.
-                let floor = (1e-4 * self.rod_length / self.error_control.position_scale).max(1.0);
+                let floor =
+                    (1e-4 * self.rod_data.length / self.error_control.position_scale).max(1.0);
                 let delta = 1e-7 * (u[j].abs() + scale * floor);
                 let mut perturbed = u.clone();
                 perturbed[j] += delta;
