@@ -96,6 +96,49 @@ fn stepping_does_not_allocate() {
     }
 }
 
+/// A machine of the user's own with every option on the hot path: all three joints worn (a
+/// lubricated crank pin, a dry main bearing, a rod–slider joint in line contact), a counterweight,
+/// an offset cylinder, heavy rod eyes, a damped rod and a crank-angle load table: stepping still
+/// allocates nothing.
+#[test]
+fn stepping_a_machine_with_every_option_does_not_allocate() {
+    use flexible_slider_crank::params::ContactGeometry;
+    let table = std::env::temp_dir().join(format!("alloc-free-{}.csv", std::process::id()));
+    std::fs::write(&table, "0,0\n30,-2000\n90,-500\n180,0\n").unwrap();
+    let base = Parameters::default();
+    let worn = |model| JointParameters {
+        model,
+        ..base.joint
+    };
+    let mut p = Parameters {
+        joint: JointParameters {
+            contact_geometry: ContactGeometry::Cylinder,
+            ..base.joint
+        },
+        crank_pin: worn(JointModel::Lubricated),
+        main_bearing: worn(JointModel::Dry),
+        crank_centre_of_mass_ratio: -0.2,
+        slider_offset: 0.005,
+        slider_force_table: table.display().to_string(),
+        ..base.clone()
+    };
+    p.rod.damping_ratio = 0.01;
+    p.rod.crank_end_mass = 0.05;
+    p.rod.slider_end_mass = 0.02;
+    let mut sim = Simulation::new(p).unwrap();
+    std::fs::remove_file(&table).unwrap();
+    sim.advance_to(1e-4).unwrap();
+    sim.outputs().unwrap();
+    let n = allocations_in(|| {
+        for i in 1..=40 {
+            sim.set_input(Input::SliderForce, -10.0 * f64::from(i));
+            sim.advance_to(1e-4 + 5e-5 * f64::from(i)).unwrap();
+            sim.outputs().unwrap();
+        }
+    });
+    assert_eq!(n, 0, "{n} allocations in 40 steps");
+}
+
 /// Through the FMI layer, in process: after a first step and read, fmi2SetReal of an input,
 /// fmi2DoStep and fmi2GetReal of every Real output (the variables of each call resolved into the
 /// buffer the instance keeps) allocate nothing, for the default model.
