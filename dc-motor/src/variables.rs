@@ -5,10 +5,16 @@
 //! [`Vr`], so the code and the XML cannot disagree.
 
 pub use fmi2_slave::description::Description;
+pub use fmi2_slave::fmi3::description::Capabilities;
 pub use fmi2_slave::table::{Causality, Kind, ValueReference};
 
 /// One variable of this FMU.
 pub type Variable = fmi2_slave::table::Variable<Vr>;
+
+/// FMI 3 capabilities beyond FMI 2's: the motor has no events to return early at.
+pub const FMI3: Capabilities = Capabilities {
+    might_return_early: false,
+};
 
 /// Everything modelDescription.xml says.
 pub const DESCRIPTION: Description<Vr> = Description {

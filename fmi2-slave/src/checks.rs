@@ -10,8 +10,9 @@ use crate::number::Num;
 use crate::state::State;
 use crate::table::{Causality, Kind, ValueReference, Variable};
 
-/// The variable of value reference `vr` in `table`, if it exists and is of FMI type `base`
-/// ("Real", "Integer" — switches included — or "Boolean").
+/// The variable of value reference `vr` in `table`, if it exists and is of FMI type `base`: FMI 2's
+/// "Real", "Integer" (switches included), "Boolean" or "String", or FMI 3's "Float64", "Int32"
+/// and "Int64" (the switches, FMI 3 Enumerations).
 pub fn lookup<V: ValueReference>(
     table: &'static [Variable<V>],
     vr: u32,
@@ -22,8 +23,10 @@ pub fn lookup<V: ValueReference>(
         .ok_or_else(|| FmuError::Invalid(format!("unknown value reference {vr}")))?;
     let matches = matches!(
         (v.kind, base),
-        (Kind::Real { .. }, "Real")
+        (Kind::Real { .. }, "Real" | "Float64")
             | (Kind::Integer { .. } | Kind::Enumeration { .. }, "Integer")
+            | (Kind::Integer { .. }, "Int32")
+            | (Kind::Enumeration { .. }, "Int64")
             | (Kind::Boolean, "Boolean")
             | (Kind::String { .. }, "String")
     );

@@ -178,11 +178,11 @@ pub fn check<V: ValueReference>(d: &Description<V>) -> Result<(), String> {
     Ok(())
 }
 
-fn real(x: f64) -> String {
+pub(crate) fn real(x: f64) -> String {
     format!("{x:?}")
 }
 
-fn escape(s: &str) -> String {
+pub(crate) fn escape(s: &str) -> String {
     s.replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;")
@@ -214,38 +214,7 @@ fn render<V: ValueReference>(d: &Description<V>) -> String {
         d.max_output_derivative_order,
         d.provides_directional_derivative
     );
-    x.push_str("  <UnitDefinitions>\n");
-    for (name, base) in d.units {
-        let displays: String = d
-            .display_units
-            .iter()
-            .filter(|(unit, _, _)| unit == name)
-            .map(|(_, display, factor)| {
-                format!(
-                    r#"<DisplayUnit name="{display}" factor="{}"/>"#,
-                    real(*factor)
-                )
-            })
-            .collect();
-        let base = match base {
-            Some(e) => {
-                let attrs: String = ["kg", "m", "s", "A", "rad"]
-                    .iter()
-                    .zip(e)
-                    .filter(|(_, v)| **v != 0)
-                    .map(|(k, v)| format!(r#" {k}="{v}""#))
-                    .collect();
-                format!("<BaseUnit{attrs}/>")
-            }
-            None => String::new(),
-        };
-        if base.is_empty() && displays.is_empty() {
-            let _ = writeln!(x, r#"    <Unit name="{name}"/>"#);
-        } else {
-            let _ = writeln!(x, r#"    <Unit name="{name}">{base}{displays}</Unit>"#);
-        }
-    }
-    x.push_str("  </UnitDefinitions>\n");
+    x.push_str(&unit_definitions(d));
     if !d.enumerations.is_empty() {
         x.push_str("  <TypeDefinitions>\n");
     }
@@ -272,24 +241,8 @@ fn render<V: ValueReference>(d: &Description<V>) -> String {
     if !d.enumerations.is_empty() {
         x.push_str("  </TypeDefinitions>\n");
     }
-    x.push_str("  <LogCategories>\n");
-    for (name, description) in d.log_categories {
-        let _ = writeln!(
-            x,
-            r#"    <Category name="{name}" description="{description}"/>"#
-        );
-    }
-    let (start, stop, tolerance, step) = d.default_experiment;
-    let _ = writeln!(
-        x,
-        r#"  </LogCategories>
-  <DefaultExperiment startTime="{}" stopTime="{}" tolerance="{}" stepSize="{}"/>
-  <ModelVariables>"#,
-        real(start),
-        real(stop),
-        real(tolerance),
-        real(step)
-    );
+    x.push_str(&log_categories_and_experiment(d));
+    x.push_str("  <ModelVariables>\n");
     for (i, v) in d.variables.iter().enumerate() {
         let causality = match v.causality {
             Causality::Parameter => "parameter",
@@ -408,6 +361,66 @@ fn render<V: ValueReference>(d: &Description<V>) -> String {
     x
 }
 
+/// UnitDefinitions, the same in FMI 2 and FMI 3: each unit with its base-unit exponents and
+/// display units.
+pub(crate) fn unit_definitions<V>(d: &Description<V>) -> String {
+    let mut x = String::from("  <UnitDefinitions>\n");
+    for (name, base) in d.units {
+        let displays: String = d
+            .display_units
+            .iter()
+            .filter(|(unit, _, _)| unit == name)
+            .map(|(_, display, factor)| {
+                format!(
+                    r#"<DisplayUnit name="{display}" factor="{}"/>"#,
+                    real(*factor)
+                )
+            })
+            .collect();
+        let base = match base {
+            Some(e) => {
+                let attrs: String = ["kg", "m", "s", "A", "rad"]
+                    .iter()
+                    .zip(e)
+                    .filter(|(_, v)| **v != 0)
+                    .map(|(k, v)| format!(r#" {k}="{v}""#))
+                    .collect();
+                format!("<BaseUnit{attrs}/>")
+            }
+            None => String::new(),
+        };
+        if base.is_empty() && displays.is_empty() {
+            let _ = writeln!(x, r#"    <Unit name="{name}"/>"#);
+        } else {
+            let _ = writeln!(x, r#"    <Unit name="{name}">{base}{displays}</Unit>"#);
+        }
+    }
+    x.push_str("  </UnitDefinitions>\n");
+    x
+}
+
+/// LogCategories and DefaultExperiment, the same in FMI 2 and FMI 3.
+pub(crate) fn log_categories_and_experiment<V>(d: &Description<V>) -> String {
+    let mut x = String::from("  <LogCategories>\n");
+    for (name, description) in d.log_categories {
+        let _ = writeln!(
+            x,
+            r#"    <Category name="{name}" description="{description}"/>"#
+        );
+    }
+    let (start, stop, tolerance, step) = d.default_experiment;
+    let _ = writeln!(
+        x,
+        r#"  </LogCategories>
+  <DefaultExperiment startTime="{}" stopTime="{}" tolerance="{}" stepSize="{}"/>"#,
+        real(start),
+        real(stop),
+        real(tolerance),
+        real(step)
+    );
+    x
+}
+
 /// FNV-1a, 128 bits, written as a braced GUID.
 fn guid(text: &str) -> String {
     let mut h: u128 = 0x6c62_272e_07bb_0142_62b8_2175_6295_c58d;
@@ -426,16 +439,21 @@ fn guid(text: &str) -> String {
     )
 }
 
-/// The work of a model's build script: renders modelDescription.xml and its GUID into `OUT_DIR`
-/// (`modelDescription.xml`, `guid.txt`, for `include_str!`) and, for a macOS target, gives the
+/// The work of a model's build script: renders the FMI 2 modelDescription.xml and its GUID into
+/// `OUT_DIR` (`modelDescription.xml`, `guid.txt`, for `include_str!`) and the FMI 3 one with the
+/// model's `fmi3` capabilities (`fmi3/modelDescription.xml`), and, for a macOS target, gives the
 /// dylib the FMU's name as its install name (not the build path: reproducible builds).
 pub fn build_script<V: ValueReference>(
     d: &Description<V>,
+    fmi3: crate::fmi3::description::Capabilities,
 ) -> Result<(), Box<dyn std::error::Error>> {
     let (xml, guid) = model_description(d).map_err(|e| format!("variable table: {e}"))?;
+    let xml3 = crate::fmi3::description::model_description(d, fmi3, &guid)?;
     let out = std::path::PathBuf::from(std::env::var("OUT_DIR")?);
     std::fs::write(out.join("modelDescription.xml"), xml)?;
     std::fs::write(out.join("guid.txt"), guid)?;
+    std::fs::create_dir_all(out.join("fmi3"))?;
+    std::fs::write(out.join("fmi3/modelDescription.xml"), xml3)?;
     if std::env::var("CARGO_CFG_TARGET_OS").as_deref() == Ok("macos") {
         println!(
             "cargo::rustc-cdylib-link-arg=-Wl,-install_name,@rpath/{}.dylib",

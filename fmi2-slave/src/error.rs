@@ -2,13 +2,11 @@
 
 use std::fmt;
 
-use super::state::Call;
-
 /// Why an FMI call failed.
 #[derive(Clone, Debug, PartialEq)]
 pub enum FmuError {
-    /// The call is not allowed in the current state.
-    IllegalCall(Call),
+    /// The call (named) is not allowed in the current state.
+    IllegalCall(String),
     /// A pointer argument is NULL.
     Null(&'static str),
     /// Any other invalid argument or request; the message says which and why.
@@ -27,7 +25,7 @@ pub enum FmuError {
 impl fmt::Display for FmuError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Self::IllegalCall(call) => write!(f, "{}: Illegal call sequence.", call.name()),
+            Self::IllegalCall(call) => write!(f, "{call}: Illegal call sequence."),
             Self::Null(argument) => write!(f, "Argument {argument} must not be NULL."),
             Self::Invalid(message) => f.write_str(message),
             Self::Model(message) => f.write_str(message),

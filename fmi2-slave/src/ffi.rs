@@ -89,11 +89,14 @@ pub fn with_instance<M: Model>(
     // SAFETY: a non-NULL component is one returned by fmi2Instantiate (Box::into_raw) and not yet
     // freed, and the master calls one instance's functions one at a time (FMI 2.0.4 §2.1.5).
     let instance = unsafe { &mut *c.cast::<Instance<M>>() };
+    let version = instance.version;
+    let name = || call.name(version);
     let result = catch_unwind(AssertUnwindSafe(|| {
         if instance.poisoned && call != Call::Reset {
             return Err(FmuError::Invalid(format!(
-                "{}: the instance is unusable after an internal error; call fmi2Reset or fmi2FreeInstance",
-                call.name()
+                "{}: the instance is unusable after an internal error; call {p}Reset or {p}FreeInstance",
+                name(),
+                p = version.prefix()
             )));
         }
         if !call.allowed().contains(&instance.state) {
@@ -102,7 +105,7 @@ pub fn with_instance<M: Model>(
                     "Illegal call sequence. The instance is in the {:?} state since: {cause}",
                     instance.state
                 )),
-                None => FmuError::IllegalCall(call),
+                None => FmuError::IllegalCall(name()),
             });
         }
         f(instance)
@@ -115,7 +118,7 @@ pub fn with_instance<M: Model>(
             status
         }
         Ok(Err(e @ FmuError::Discard { .. })) => {
-            let message = format!("{}: {e}", call.name());
+            let message = format!("{}: {e}", name());
             instance.logger.discard(&message);
             instance.cause = Some(message);
             instance.state = State::StepFailed;
@@ -124,7 +127,7 @@ pub fn with_instance<M: Model>(
         Ok(Err(e)) => {
             let message = match e {
                 FmuError::IllegalCall(_) => e.to_string(),
-                _ => format!("{}: {e}", call.name()),
+                _ => format!("{}: {e}", name()),
             };
             instance.logger.error(&message);
             if instance.state != State::Error {
@@ -136,11 +139,11 @@ pub fn with_instance<M: Model>(
         Err(payload) => {
             instance.logger.error(&format!(
                 "{}: internal error: {}",
-                call.name(),
+                name(),
                 panic_text(&*payload)
             ));
             instance.poisoned = true;
-            instance.cause = Some(format!("{}: internal error", call.name()));
+            instance.cause = Some(format!("{}: internal error", name()));
             instance.state = State::Error;
             fmi2Status_fmi2Error
         }

@@ -13,6 +13,7 @@
 pub mod clock;
 pub mod codec;
 pub mod description;
+pub mod fmi3;
 pub mod number;
 pub mod signal;
 pub mod table;
@@ -43,4 +44,4 @@ pub use logger::Logger;
 #[cfg(feature = "slave")]
 pub use model::{Instance, Model};
 #[cfg(feature = "slave")]
-pub use state::{Call, State};
+pub use state::{Call, State, Version};

@@ -1,23 +1,39 @@
 //! The master's logger, with categories and the debug-logging switch.
 //!
-//! Messages go through `"%s"` (never as the format string), with `#` doubled because `#r12#` is the
-//! FMI 2 value-reference macro (FMI 2.0.4 §2.1.5). Error and fatal messages are always logged.
+//! FMI 2 messages go through `"%s"` (never as the format string), with `#` doubled because `#r12#`
+//! is the FMI 2 value-reference macro (FMI 2.0.4 §2.1.5); FMI 3's callback takes the message as it
+//! is (FMI 3.0 §2.3.1). Error and fatal messages are always logged.
 
 use std::ffi::CString;
 
-use super::callback::call_logger;
+use super::callback::{call_logger, call_logger3};
 
 use fmi_sys::fmi2::{
     fmi2CallbackLogger, fmi2ComponentEnvironment, fmi2Status, fmi2Status_fmi2Discard,
     fmi2Status_fmi2Error, fmi2Status_fmi2OK, fmi2Status_fmi2Warning,
 };
+use fmi_sys::fmi3::{fmi3InstanceEnvironment, fmi3LogMessageCallback};
+
+/// Where an instance's messages go: the callback of the FMI version it was instantiated by.
+#[derive(Debug)]
+enum Sink {
+    /// fmi2CallbackLogger, with the instance's name as its second argument.
+    Fmi2 {
+        callback: fmi2CallbackLogger,
+        environment: fmi2ComponentEnvironment,
+        instance_name: CString,
+    },
+    /// fmi3LogMessageCallback.
+    Fmi3 {
+        callback: fmi3LogMessageCallback,
+        environment: fmi3InstanceEnvironment,
+    },
+}
 
 /// The logger callback of one instance.
 #[derive(Debug)]
 pub struct Logger {
-    callback: fmi2CallbackLogger,
-    environment: fmi2ComponentEnvironment,
-    instance_name: CString,
+    sink: Sink,
     debug: bool,
     /// The model's log categories (name, description).
     categories: &'static [(&'static str, &'static str)],
@@ -34,9 +50,29 @@ impl Logger {
         categories: &'static [(&'static str, &'static str)],
     ) -> Self {
         Self {
-            callback,
-            environment,
-            instance_name: CString::new(instance_name.replace('\0', "")).unwrap_or_default(),
+            sink: Sink::Fmi2 {
+                callback,
+                environment,
+                instance_name: CString::new(instance_name.replace('\0', "")).unwrap_or_default(),
+            },
+            debug,
+            categories,
+            enabled: vec![true; categories.len()],
+        }
+    }
+
+    /// A logger calling FMI 3's `callback(environment, …)`.
+    pub fn fmi3(
+        callback: fmi3LogMessageCallback,
+        environment: fmi3InstanceEnvironment,
+        debug: bool,
+        categories: &'static [(&'static str, &'static str)],
+    ) -> Self {
+        Self {
+            sink: Sink::Fmi3 {
+                callback,
+                environment,
+            },
             debug,
             categories,
             enabled: vec![true; categories.len()],
@@ -63,17 +99,34 @@ impl Logger {
         Ok(())
     }
 
+    /// Sends one message; the status codes of FMI 2 and FMI 3 are the same numbers.
     fn emit(&self, status: fmi2Status, category: &str, message: &str) {
-        let text = CString::new(message.replace('#', "##").replace('\0', "")).unwrap_or_default();
         let category = CString::new(category).unwrap_or_default();
-        call_logger(
-            self.callback,
-            self.environment,
-            &self.instance_name,
-            status,
-            &category,
-            &text,
-        );
+        match &self.sink {
+            Sink::Fmi2 {
+                callback,
+                environment,
+                instance_name,
+            } => {
+                let text =
+                    CString::new(message.replace('#', "##").replace('\0', "")).unwrap_or_default();
+                call_logger(
+                    *callback,
+                    *environment,
+                    instance_name,
+                    status,
+                    &category,
+                    &text,
+                );
+            }
+            Sink::Fmi3 {
+                callback,
+                environment,
+            } => {
+                let text = CString::new(message.replace('\0', "")).unwrap_or_default();
+                call_logger3(*callback, *environment, status, &category, &text);
+            }
+        }
     }
 
     /// Logs an error (always, whatever the debug switch).

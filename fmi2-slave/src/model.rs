@@ -3,7 +3,7 @@
 
 use crate::error::FmuError;
 use crate::logger::Logger;
-use crate::state::State;
+use crate::state::{State, Version};
 use crate::table::{Enumeration, ValueReference, Variable};
 
 /// A co-simulation model behind the FMI functions. The generic layer resolves every value
@@ -225,6 +225,13 @@ pub struct Instance<M: Model> {
     pub strings: Vec<std::ffi::CString>,
     /// The FMU's resources directory, from fmi2Instantiate (given to every new model).
     pub resources: Option<std::path::PathBuf>,
+    /// The FMI version it was instantiated through.
+    pub version: Version,
+    /// FMI 3: whether the master allows fmi3DoStep to return early (earlyReturnAllowed).
+    pub early_return_allowed: bool,
+    /// Integers of the current call in the model's representation (FMI 3's Int64 switches and
+    /// Booleans); its capacity is reused.
+    pub integers: Vec<i32>,
 }
 
 /// The states in the order of their byte in a serialized state.
@@ -258,6 +265,9 @@ impl<M: Model> Instance<M> {
             variables: Vec::new(),
             strings: Vec::new(),
             resources,
+            version: Version::Fmi2,
+            early_return_allowed: false,
+            integers: Vec::new(),
         }
     }
 

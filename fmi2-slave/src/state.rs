@@ -19,6 +19,25 @@ pub enum State {
     Error,
 }
 
+/// The FMI version an instance was created through (the names of its calls in messages).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Version {
+    /// fmi2Instantiate.
+    Fmi2,
+    /// fmi3InstantiateCoSimulation.
+    Fmi3,
+}
+
+impl Version {
+    /// The prefix of its C function names.
+    pub fn prefix(self) -> &'static str {
+        match self {
+            Version::Fmi2 => "fmi2",
+            Version::Fmi3 => "fmi3",
+        }
+    }
+}
+
 /// The instance-bound FMI functions (GetTypesPlatform, GetVersion and Instantiate need none).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[allow(missing_docs)]
@@ -53,6 +72,13 @@ pub enum Call {
     GetIntegerStatus,
     GetBooleanStatus,
     GetStringStatus,
+    /// fmi3GetInt64: the switches, FMI 3 Enumerations.
+    GetInt64,
+    /// fmi3SetInt64.
+    SetInt64,
+    /// A call with no state rule of its own, named for messages: FMI 3's functions of the types
+    /// and capabilities the FMU does not have, which refuse every non-empty request.
+    Other(&'static str),
 }
 
 use State::{Error, InitializationMode, Instantiated, StepComplete, StepFailed, Terminated};
@@ -70,7 +96,7 @@ impl Call {
     /// The states in which the call is legal (FMI 2.0.4 table in §4.2.4; docs/fmi.md §1.3).
     pub fn allowed(self) -> &'static [State] {
         match self {
-            Call::SetDebugLogging => ALL,
+            Call::SetDebugLogging | Call::Other(_) => ALL,
             Call::SetupExperiment | Call::EnterInitializationMode => &[Instantiated],
             Call::ExitInitializationMode => &[InitializationMode],
             Call::DoStep => &[StepComplete],
@@ -87,6 +113,7 @@ impl Call {
             | Call::GetInteger
             | Call::GetBoolean
             | Call::GetString
+            | Call::GetInt64
             | Call::GetDirectionalDerivative => &[
                 InitializationMode,
                 StepComplete,
@@ -98,6 +125,7 @@ impl Call {
             | Call::SetInteger
             | Call::SetBoolean
             | Call::SetString
+            | Call::SetInt64
             | Call::SetRealInputDerivatives => &[Instantiated, InitializationMode, StepComplete],
             Call::GetRealOutputDerivatives => &[StepComplete, StepFailed, Terminated, Error],
             Call::GetStatus
@@ -108,10 +136,23 @@ impl Call {
         }
     }
 
-    /// The C function name, for messages.
-    pub fn name(self) -> String {
+    /// The C function name in FMI `version`, for messages.
+    pub fn name(self, version: Version) -> String {
         let debug = format!("{self:?}");
-        format!("fmi2{}", debug.replace("FmuState", "FMUstate"))
+        match (version, self) {
+            (_, Call::Other(name)) => name.to_string(),
+            (Version::Fmi2, _) => format!("fmi2{}", debug.replace("FmuState", "FMUstate")),
+            (Version::Fmi3, Call::SetupExperiment) => "fmi3EnterInitializationMode".into(),
+            (Version::Fmi3, Call::GetRealOutputDerivatives) => "fmi3GetOutputDerivatives".into(),
+            (Version::Fmi3, _) => format!(
+                "fmi3{}",
+                debug
+                    .replace("Real", "Float64")
+                    .replace("Integer", "Int32")
+                    .replace("FmuState", "FMUState")
+                    .replace("DeSerialize", "Deserialize")
+            ),
+        }
     }
 }
 
@@ -121,9 +162,16 @@ mod tests {
 
     #[test]
     fn names_follow_the_c_api() {
-        assert_eq!(Call::DoStep.name(), "fmi2DoStep");
-        assert_eq!(Call::DeSerializeFmuState.name(), "fmi2DeSerializeFMUstate");
-        assert_eq!(Call::GetFmuState.name(), "fmi2GetFMUstate");
+        let fmi2 = |call: Call| call.name(Version::Fmi2);
+        assert_eq!(fmi2(Call::DoStep), "fmi2DoStep");
+        assert_eq!(fmi2(Call::DeSerializeFmuState), "fmi2DeSerializeFMUstate");
+        assert_eq!(fmi2(Call::GetFmuState), "fmi2GetFMUstate");
+        let fmi3 = |call: Call| call.name(Version::Fmi3);
+        assert_eq!(fmi3(Call::GetReal), "fmi3GetFloat64");
+        assert_eq!(fmi3(Call::SetInteger), "fmi3SetInt32");
+        assert_eq!(fmi3(Call::DeSerializeFmuState), "fmi3DeserializeFMUState");
+        assert_eq!(fmi3(Call::SetupExperiment), "fmi3EnterInitializationMode");
+        assert_eq!(fmi3(Call::Other("fmi3SetClock")), "fmi3SetClock");
     }
 
     #[test]

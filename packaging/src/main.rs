@@ -13,6 +13,10 @@
 //!   for every FMI platform folder present (linux64, win64, darwin64), and writes the same files
 //!   under `target/fmu/release/`.
 //!
+//! Beside each FMI 2 FMU goes its FMI 3.0 twin under `fmi3/` (`target/fmu/fmi3/`,
+//! `target/fmu/release/fmi3/`): the same libraries, which export both `fmi2*` and `fmi3*`, in FMI
+//! 3's platform folders ([`fmi3_platforms`]), with the FMI 3 modelDescription.xml.
+//!
 //! The archive is reproducible: its entries come in a fixed order with a fixed time stamp.
 
 mod compatibility;
@@ -23,7 +27,7 @@ use std::io::{BufRead, BufReader, Write};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
-use flexible_slider_crank::fmi::{MODEL_DESCRIPTION, MODEL_IDENTIFIER};
+use flexible_slider_crank::fmi::{MODEL_DESCRIPTION, MODEL_DESCRIPTION_FMI3, MODEL_IDENTIFIER};
 use zip::write::SimpleFileOptions;
 
 /// Builds the cdylib of `package` in release mode and returns the path of the `.so` cargo reports.
@@ -64,6 +68,29 @@ fn build_library(root: &Path, package: &str) -> Result<PathBuf, Box<dyn Error>> 
 
 /// FMI 2.0 platform folders and the file extension of their shared libraries.
 const PLATFORMS: [(&str, &str); 3] = [("linux64", "so"), ("win64", "dll"), ("darwin64", "dylib")];
+
+/// The FMI 3.0 platform tuples (FMI 3.0 §2.5.1.4) of an FMI 2 platform folder's library: the
+/// macOS one is a universal binary of both architectures.
+fn fmi3_platforms(fmi2: &str) -> &'static [&'static str] {
+    match fmi2 {
+        "linux64" => &["x86_64-linux"],
+        "win64" => &["x86_64-windows"],
+        "darwin64" => &["x86_64-darwin", "aarch64-darwin"],
+        _ => &[],
+    }
+}
+
+/// The binaries of an FMI 2 FMU in FMI 3's platform folders.
+fn fmi3_binaries(binaries: &[(&str, PathBuf)]) -> Vec<(&'static str, PathBuf)> {
+    binaries
+        .iter()
+        .flat_map(|(platform, path)| {
+            fmi3_platforms(platform)
+                .iter()
+                .map(move |tuple| (*tuple, path.clone()))
+        })
+        .collect()
+}
 
 /// The release binaries of `identifier` under `dir/<platform>/`: (platform folder, path).
 fn release_binaries(
@@ -251,6 +278,26 @@ fn package(
     )?;
     crank_references.write_cross_check(out_dir, &crank_fmu, crank_binaries)?;
     motor_references.write_cross_check(out_dir, &motor_fmu, motor_binaries)?;
+    let fmi3 = out_dir.join("fmi3");
+    std::fs::create_dir_all(&fmi3)?;
+    let crank_fmu3 = fmi3.join(format!("{MODEL_IDENTIFIER}.fmu"));
+    write_fmu(
+        &crank_fmu3,
+        (MODEL_IDENTIFIER, MODEL_DESCRIPTION_FMI3),
+        &fmi3_binaries(crank_binaries),
+        &guide,
+        &images,
+        &crank_references.fmu_entries(),
+    )?;
+    let motor_fmu3 = fmi3.join(format!("{}.fmu", motor.0));
+    write_fmu(
+        &motor_fmu3,
+        (motor.0, dc_motor::MODEL_DESCRIPTION_FMI3),
+        &fmi3_binaries(motor_binaries),
+        &documentation::motor(),
+        &[],
+        &motor_references.fmu_entries(),
+    )?;
     let system = root.join("systems/motor-crank");
     let ssp = out_dir.join("MotorCrank.ssp");
     let fmus = [&motor_fmu, &crank_fmu];
@@ -281,6 +328,8 @@ fn package(
     Ok(vec![
         crank_fmu,
         motor_fmu,
+        crank_fmu3,
+        motor_fmu3,
         ssp,
         osp,
         out_dir.join("compatibility"),

@@ -1,6 +1,7 @@
-//! The FMI 2.0 co-simulation FMU of the slider-crank: [`instance::SliderCrankFmu`] implements the
-//! [`fmi2_slave::Model`] of the model-independent FMI layer around [`crate::Simulation`], which
-//! supplies the exported functions, the state machine and the checks at the boundary.
+//! The FMI 2.0 and FMI 3.0 co-simulation FMU of the slider-crank: [`instance::SliderCrankFmu`]
+//! implements the [`fmi2_slave::Model`] of the model-independent FMI layer around
+//! [`crate::Simulation`], which supplies the exported functions of both versions (one library
+//! exports `fmi2*` and `fmi3*`), their state machine and the checks at the boundary.
 //!
 //! `fmi/` sees only `Simulation`, `Parameters`, `Outputs` and the variable table
 //! ([`crate::variables`]), and no other module sees `fmi/`; there is no
@@ -8,6 +9,7 @@
 //!
 //! # References
 //! - Modelica Association (2023), Functional Mock-up Interface 2.0.4.
+//! - Modelica Association (2024), Functional Mock-up Interface 3.0.2.
 
 pub mod instance;
 mod instance_state;
@@ -15,6 +17,7 @@ pub mod model_description;
 pub mod outputs;
 pub mod snapshot;
 
-pub use model_description::{GUID, MODEL_DESCRIPTION, MODEL_IDENTIFIER};
+pub use model_description::{GUID, MODEL_DESCRIPTION, MODEL_DESCRIPTION_FMI3, MODEL_IDENTIFIER};
 
 fmi2_slave::export_fmi2!(instance::SliderCrankFmu);
+fmi2_slave::export_fmi3!(instance::SliderCrankFmu);

@@ -9,6 +9,7 @@
 //! code and the XML cannot disagree.
 
 pub use fmi2_slave::description::Description;
+pub use fmi2_slave::fmi3::description::Capabilities;
 pub use fmi2_slave::table::{Causality, Kind, ValueReference, Variability};
 
 mod crank;
@@ -24,6 +25,11 @@ mod vr;
 
 pub use enumerations::*;
 pub use vr::{Variable, Vr};
+
+/// FMI 3 capabilities beyond FMI 2's.
+pub const FMI3: Capabilities = Capabilities {
+    might_return_early: false,
+};
 
 /// Everything modelDescription.xml says.
 pub const DESCRIPTION: Description<Vr> = Description {

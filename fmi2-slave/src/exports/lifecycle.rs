@@ -11,7 +11,7 @@ use crate::error::FmuError;
 use crate::ffi::{slice, string, with_instance};
 use crate::logger::Logger;
 use crate::model::{Instance, Model};
-use crate::state::{Call, State};
+use crate::state::{Call, State, Version};
 
 /// Returns "default".
 pub fn fmi2GetTypesPlatform() -> *const c_char {
@@ -52,10 +52,6 @@ pub unsafe fn fmi2Instantiate<M: Model>(
             loggingOn != 0,
             M::LOG_CATEGORIES,
         );
-        if name.is_empty() {
-            logger.error("fmi2Instantiate: instanceName must not be NULL or empty.");
-            return std::ptr::null_mut();
-        }
         if fmuType != fmi2Type_fmi2CoSimulation {
             logger.error(&format!(
                 "fmi2Instantiate: fmuType = {fmuType}: this FMU supports co-simulation (fmi2CoSimulation = 1) only."
@@ -64,25 +60,51 @@ pub unsafe fn fmi2Instantiate<M: Model>(
         }
         // SAFETY: as above.
         let guid = unsafe { string(fmuGUID) }.unwrap_or_default();
-        if guid != M::GUID {
-            logger.error(&format!(
-                "fmi2Instantiate: Wrong GUID: expected {}, got \"{guid}\".",
-                M::GUID
-            ));
-            return std::ptr::null_mut();
-        }
         // SAFETY: as above (NULL allowed: no resources).
         let location = unsafe { string(fmuResourceLocation) }.unwrap_or_default();
         let resources = directory_of_uri(&location).filter(|d| d.is_dir());
-        logger.event(&format!(
-            "fmi2Instantiate: instance \"{name}\" created (resources: {})",
-            resources
-                .as_ref()
-                .map_or_else(|| "none".to_string(), |d| d.display().to_string())
-        ));
-        Box::into_raw(Box::new(Instance::<M>::new(logger, resources))).cast()
+        create::<M>(logger, &name, &guid, resources, Version::Fmi2)
     }));
     result.unwrap_or(std::ptr::null_mut())
+}
+
+/// A new instance of `M` named `name`, after checking the name and the GUID (FMI 3: the
+/// instantiation token) against the model's; NULL, the reason logged, if either is wrong.
+pub(crate) fn create<M: Model>(
+    logger: Logger,
+    name: &str,
+    guid: &str,
+    resources: Option<std::path::PathBuf>,
+    version: Version,
+) -> fmi2Component {
+    let call = match version {
+        Version::Fmi2 => "fmi2Instantiate",
+        Version::Fmi3 => "fmi3InstantiateCoSimulation",
+    };
+    let token = match version {
+        Version::Fmi2 => "GUID",
+        Version::Fmi3 => "instantiationToken",
+    };
+    if name.is_empty() {
+        logger.error(&format!("{call}: instanceName must not be NULL or empty."));
+        return std::ptr::null_mut();
+    }
+    if guid != M::GUID {
+        logger.error(&format!(
+            "{call}: Wrong {token}: expected {}, got \"{guid}\".",
+            M::GUID
+        ));
+        return std::ptr::null_mut();
+    }
+    logger.event(&format!(
+        "{call}: instance \"{name}\" created (resources: {})",
+        resources
+            .as_ref()
+            .map_or_else(|| "none".to_string(), |d| d.display().to_string())
+    ));
+    let mut instance = Instance::<M>::new(logger, resources);
+    instance.version = version;
+    Box::into_raw(Box::new(instance)).cast()
 }
 
 /// Frees an instance (NULL is a no-op); legal in every state.

@@ -8,10 +8,10 @@ pub mod sys {
     pub use fmi_sys::fmi2::*;
 }
 
-mod codes;
+pub(crate) mod codes;
 mod export_macro;
 mod fmu_state;
-mod lifecycle;
+pub(crate) mod lifecycle;
 mod step;
 mod values;
 

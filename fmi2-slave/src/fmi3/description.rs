@@ -1,0 +1,195 @@
+//! FMI 3.0 modelDescription.xml from the same variable table as FMI 2's ([`crate::description`]):
+//! Float64, Int32, Boolean and String variables, the switches as FMI 3 Enumerations, the
+//! independent variable `time`, and ModelStructure by value reference (FMI 3.0 §2.4).
+//!
+//! The instantiation token is the FMI 2 GUID: both descriptions come from one table, so they
+//! change together.
+
+use std::fmt::Write as _;
+
+use crate::description::{
+    Description, check, escape, log_categories_and_experiment, real, unit_definitions,
+};
+use crate::table::{Causality, Kind, ValueReference, Variability, Variable};
+
+/// The value reference of the independent variable `time` (FMI 3.0 requires one; the table's
+/// own value references are dense from 0, so this one stays clear of any it will ever have).
+pub const TIME_VALUE_REFERENCE: u32 = 1_000_000;
+
+/// The FMI 3 co-simulation capabilities a model declares beyond FMI 2's.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Capabilities {
+    /// mightReturnEarlyFromDoStep: fmi3DoStep may end before the communication point (at an event
+    /// of the model) when the master allows it.
+    pub might_return_early: bool,
+}
+
+/// The FMI 3.0 modelDescription.xml of `d`, with `token` as its instantiationToken.
+pub fn model_description<V: ValueReference>(
+    d: &Description<V>,
+    capabilities: Capabilities,
+    token: &str,
+) -> Result<String, String> {
+    check(d)?;
+    let mut x = String::new();
+    let _ = writeln!(x, r#"<?xml version="1.0" encoding="UTF-8"?>"#);
+    let _ = writeln!(
+        x,
+        r#"<fmiModelDescription fmiVersion="3.0" modelName="{}" instantiationToken="{token}"
+  description="{}"
+  author="{}" version="{}" copyright="{}" license="{}"
+  generationTool="{}" variableNamingConvention="structured">"#,
+        d.model_identifier,
+        escape(d.description),
+        escape(d.author),
+        d.version,
+        escape(d.copyright),
+        escape(d.license),
+        escape(d.generation_tool),
+    );
+    let _ = writeln!(
+        x,
+        r#"  <CoSimulation modelIdentifier="{}" canHandleVariableCommunicationStepSize="true" canGetAndSetFMUState="true" canSerializeFMUState="true" providesDirectionalDerivatives="{}" maxOutputDerivativeOrder="{}" hasEventMode="false" mightReturnEarlyFromDoStep="{}" providesIntermediateUpdate="false" canReturnEarlyAfterIntermediateUpdate="false"/>"#,
+        d.model_identifier,
+        d.provides_directional_derivative,
+        d.max_output_derivative_order,
+        capabilities.might_return_early,
+    );
+    x.push_str(&unit_definitions(d));
+    if !d.enumerations.is_empty() {
+        x.push_str("  <TypeDefinitions>\n");
+        for e in d.enumerations {
+            let _ = writeln!(x, r#"    <EnumerationType name="{}">"#, e.name);
+            for (i, (item, description)) in (1..).zip(e.items) {
+                let _ = writeln!(
+                    x,
+                    r#"      <Item name="{item}" value="{i}" description="{}"/>"#,
+                    escape(description)
+                );
+            }
+            x.push_str("    </EnumerationType>\n");
+        }
+        x.push_str("  </TypeDefinitions>\n");
+    }
+    x.push_str(&log_categories_and_experiment(d));
+    x.push_str("  <ModelVariables>\n");
+    let time_unit = if d.units.iter().any(|(u, _)| *u == "s") {
+        r#" unit="s""#
+    } else {
+        ""
+    };
+    let _ = writeln!(
+        x,
+        r#"    <Float64 name="time" valueReference="{TIME_VALUE_REFERENCE}" causality="independent" variability="continuous" description="Simulation time"{time_unit}/>"#
+    );
+    for v in d.variables {
+        x.push_str(&variable(d, v));
+    }
+    x.push_str("  </ModelVariables>\n  <ModelStructure>\n");
+    let vrs = |f: &dyn Fn(&Variable<V>) -> bool| -> Vec<V> {
+        d.variables.iter().filter(|v| f(v)).map(|v| v.vr).collect()
+    };
+    let list = |vrs: &[V]| -> String {
+        let numbers: Vec<String> = vrs.iter().map(|vr| vr.index().to_string()).collect();
+        numbers.join(" ")
+    };
+    for output in vrs(&|v| v.causality == Causality::Output) {
+        let inputs = d
+            .feedthrough
+            .iter()
+            .find(|(o, _)| *o == output)
+            .map_or(&[][..], |(_, inputs)| inputs);
+        let _ = writeln!(
+            x,
+            r#"    <Output valueReference="{}" dependencies="{}"/>"#,
+            output.index(),
+            list(inputs)
+        );
+    }
+    for unknown in vrs(&|v| {
+        matches!(
+            v.causality,
+            Causality::Output | Causality::CalculatedParameter
+        )
+    }) {
+        let knowns = vrs(&|v| {
+            matches!(v.causality, Causality::Input | Causality::Parameter)
+                && (d.initial_dependency)(unknown, v.vr)
+        });
+        let _ = writeln!(
+            x,
+            r#"    <InitialUnknown valueReference="{}" dependencies="{}"/>"#,
+            unknown.index(),
+            list(&knowns)
+        );
+    }
+    x.push_str("  </ModelStructure>\n</fmiModelDescription>\n");
+    Ok(x)
+}
+
+/// One variable's element.
+fn variable<V: ValueReference>(d: &Description<V>, v: &Variable<V>) -> String {
+    let causality = match v.causality {
+        Causality::Parameter => "parameter",
+        Causality::CalculatedParameter => "calculatedParameter",
+        Causality::Input => "input",
+        Causality::Output => "output",
+    };
+    let variability = match v.variability {
+        Variability::Fixed => "fixed",
+        Variability::Discrete => "discrete",
+        Variability::Continuous => "continuous",
+    };
+    let initial = match v.causality {
+        Causality::Parameter => r#" initial="exact""#,
+        Causality::CalculatedParameter | Causality::Output => r#" initial="calculated""#,
+        Causality::Input => "",
+    };
+    let common = format!(
+        r#"name="{}" valueReference="{}" description="{}" causality="{causality}" variability="{variability}"{initial}"#,
+        v.name,
+        v.vr.index(),
+        escape(v.description)
+    );
+    match v.kind {
+        Kind::Real {
+            start,
+            min,
+            max,
+            unit,
+        } => {
+            let mut a = format!(r#"    <Float64 {common} unit="{unit}""#);
+            if let Some((_, display)) = d.variable_display_units.iter().find(|(vr, _)| *vr == v.vr)
+            {
+                let _ = write!(a, r#" displayUnit="{display}""#);
+            }
+            if min.is_finite() {
+                let _ = write!(a, r#" min="{}""#, real(min));
+            }
+            if max.is_finite() {
+                let _ = write!(a, r#" max="{}""#, real(max));
+            }
+            if let Some(s) = start {
+                let _ = write!(a, r#" start="{}""#, real(s));
+            }
+            a + "/>\n"
+        }
+        Kind::Integer { start, min, max } => match start {
+            Some(s) => {
+                format!(r#"    <Int32 {common} min="{min}" max="{max}" start="{s}"/>"#) + "\n"
+            }
+            None => format!("    <Int32 {common}/>\n"),
+        },
+        Kind::Boolean => format!("    <Boolean {common}/>\n"),
+        Kind::String { start } => format!(
+            "    <String {common}>\n      <Start value=\"{}\"/>\n    </String>\n",
+            escape(start)
+        ),
+        Kind::Enumeration { start, type_index } => {
+            format!(
+                r#"    <Enumeration {common} declaredType="{}" start="{start}"/>"#,
+                d.enumerations[type_index].name
+            ) + "\n"
+        }
+    }
+}

@@ -1,0 +1,161 @@
+//! Creating, initialising, terminating, resetting and freeing an instance (FMI 3.0 §2.3.1–§2.3.5,
+//! §4.2): co-simulation without event mode, so Initialization Mode leads straight to Step Mode.
+#![allow(unsafe_code, non_snake_case, clippy::missing_safety_doc)]
+// The signatures are the C API's.
+#![allow(clippy::too_many_arguments)]
+
+use std::ffi::c_char;
+use std::panic::{AssertUnwindSafe, catch_unwind};
+
+use fmi_sys::fmi3::*;
+
+use crate::error::FmuError;
+use crate::exports::codes::OK;
+use crate::exports::lifecycle::create;
+use crate::ffi::{string, with_instance};
+use crate::logger::Logger;
+use crate::model::Model;
+use crate::state::{Call, State, Version};
+
+/// Returns "3.0".
+pub fn fmi3GetVersion() -> *const c_char {
+    c"3.0".as_ptr()
+}
+
+/// Creates a co-simulation instance; NULL (after logging, if a logger was given) on any invalid
+/// argument. Event mode is refused (hasEventMode = false); `earlyReturnAllowed` is kept for
+/// fmi3DoStep.
+pub unsafe fn fmi3InstantiateCoSimulation<M: Model>(
+    instanceName: fmi3String,
+    instantiationToken: fmi3String,
+    resourcePath: fmi3String,
+    _visible: fmi3Boolean,
+    loggingOn: fmi3Boolean,
+    eventModeUsed: fmi3Boolean,
+    earlyReturnAllowed: fmi3Boolean,
+    _requiredIntermediateVariables: *const fmi3ValueReference,
+    _nRequiredIntermediateVariables: usize,
+    instanceEnvironment: fmi3InstanceEnvironment,
+    logMessage: fmi3LogMessageCallback,
+    _intermediateUpdate: fmi3IntermediateUpdateCallback,
+) -> fmi3Instance {
+    let result = catch_unwind(AssertUnwindSafe(|| {
+        let logger = Logger::fmi3(
+            logMessage,
+            instanceEnvironment,
+            loggingOn,
+            M::LOG_CATEGORIES,
+        );
+        if eventModeUsed {
+            logger.error(
+                "fmi3InstantiateCoSimulation: eventModeUsed = true, but this FMU has no event \
+                 mode (hasEventMode = false): it handles its events inside fmi3DoStep.",
+            );
+            return std::ptr::null_mut();
+        }
+        // SAFETY: NUL-terminated strings from the master (FMI 3.0 §2.3.1), copied here; NULL
+        // is allowed for the resource path (no resources).
+        let (name, token, path) = unsafe {
+            (
+                string(instanceName).unwrap_or_default(),
+                string(instantiationToken).unwrap_or_default(),
+                string(resourcePath),
+            )
+        };
+        let resources = path.map(std::path::PathBuf::from).filter(|d| d.is_dir());
+        let instance = create::<M>(logger, &name, &token, resources, Version::Fmi3);
+        if !instance.is_null() {
+            // SAFETY: just created by `create`, a Box<Instance<M>> no one else holds yet.
+            unsafe {
+                (*instance.cast::<crate::Instance<M>>()).early_return_allowed = earlyReturnAllowed
+            };
+        }
+        instance
+    }));
+    result.unwrap_or(std::ptr::null_mut())
+}
+
+/// Model exchange and scheduled execution are not provided: logs why and returns NULL.
+pub fn instantiate_other(
+    call: &str,
+    instanceEnvironment: fmi3InstanceEnvironment,
+    logMessage: fmi3LogMessageCallback,
+) -> fmi3Instance {
+    let logger = Logger::fmi3(logMessage, instanceEnvironment, false, &[]);
+    logger.error(&format!(
+        "{call}: this FMU supports co-simulation only (fmi3InstantiateCoSimulation)."
+    ));
+    std::ptr::null_mut()
+}
+
+/// Frees an instance (NULL is a no-op); legal in every state.
+pub unsafe fn fmi3FreeInstance<M: Model>(instance: fmi3Instance) {
+    // SAFETY: the same contract as FMI 2's (an instance of this FMU, freed once).
+    unsafe { crate::exports::fmi2FreeInstance::<M>(instance) }
+}
+
+/// Switches debug logging and its categories (FMI 3.0 §2.3.2).
+pub unsafe fn fmi3SetDebugLogging<M: Model>(
+    instance: fmi3Instance,
+    loggingOn: fmi3Boolean,
+    nCategories: usize,
+    categories: *const fmi3String,
+) -> fmi3Status {
+    // SAFETY: the same contract as FMI 2's; the strings have the same type.
+    unsafe {
+        crate::exports::fmi2SetDebugLogging::<M>(
+            instance,
+            i32::from(loggingOn),
+            nCategories,
+            categories,
+        )
+    }
+}
+
+/// Stores the tolerance, start and stop time and enters Initialization Mode.
+pub unsafe fn fmi3EnterInitializationMode<M: Model>(
+    instance: fmi3Instance,
+    toleranceDefined: fmi3Boolean,
+    tolerance: fmi3Float64,
+    startTime: fmi3Float64,
+    stopTimeDefined: fmi3Boolean,
+    stopTime: fmi3Float64,
+) -> fmi3Status {
+    with_instance::<M>(instance, Call::EnterInitializationMode, |inst| {
+        inst.model.setup_experiment(
+            &inst.logger,
+            toleranceDefined.then_some(tolerance),
+            startTime,
+            stopTimeDefined.then_some(stopTime),
+        )?;
+        inst.state = State::InitializationMode;
+        Ok(OK)
+    })
+}
+
+/// Builds the model from the parameters and enters Step Mode; outputs are valid afterwards.
+pub unsafe fn fmi3ExitInitializationMode<M: Model>(instance: fmi3Instance) -> fmi3Status {
+    // SAFETY: the same contract as FMI 2's; without event mode the transitions are the same.
+    unsafe { crate::exports::fmi2ExitInitializationMode::<M>(instance) }
+}
+
+/// Ends the simulation; outputs stay readable.
+pub unsafe fn fmi3Terminate<M: Model>(instance: fmi3Instance) -> fmi3Status {
+    // SAFETY: the same contract as FMI 2's.
+    unsafe { crate::exports::fmi2Terminate::<M>(instance) }
+}
+
+/// Back to Instantiated with every start value.
+pub unsafe fn fmi3Reset<M: Model>(instance: fmi3Instance) -> fmi3Status {
+    // SAFETY: the same contract as FMI 2's.
+    unsafe { crate::exports::fmi2Reset::<M>(instance) }
+}
+
+/// A function of a capability the FMU does not declare (event mode, configuration mode, clocks,
+/// model exchange, scheduled execution, adjoint derivatives, variable dependencies): logs that
+/// and returns fmi3Error.
+pub fn unsupported<M: Model>(instance: fmi3Instance, call: &'static str, why: &str) -> fmi3Status {
+    with_instance::<M>(instance, Call::Other(call), |_| {
+        Err(FmuError::Invalid(format!("not supported: {why}")))
+    })
+}
