@@ -7,7 +7,7 @@ use fmi2_slave::codec::{ByteReader, ByteWriter};
 use fmi2_slave::model::Var;
 use fmi2_slave::number::Num;
 use fmi2_slave::signal::Polynomial;
-use fmi2_slave::{FmuError, Logger, Model, State};
+use fmi2_slave::{FmuError, Logger, Model, State, StepOutcome};
 
 use crate::coupling::{self, Exchange};
 use crate::motor::{MotorInputs, MotorOutputs, MotorParameters, MotorState, substeps};
@@ -200,7 +200,14 @@ impl Model for DcMotorFmu {
         Ok(())
     }
 
-    fn do_step(&mut self, log: &Logger, t: f64, h: f64) -> Result<(), FmuError> {
+    /// The motor has no events: every step reaches the communication point.
+    fn do_step(
+        &mut self,
+        log: &Logger,
+        t: f64,
+        h: f64,
+        _early_return: bool,
+    ) -> Result<StepOutcome, FmuError> {
         check_step(self.time, t, h, self.stop_time)?;
         // On the clock grid, every master's representation of the same points gives the same
         // step.
@@ -231,7 +238,7 @@ impl Model for DcMotorFmu {
             value: signal.at(self.time),
             derivatives: [[0.0; 2]; 2],
         };
-        Ok(())
+        Ok(StepOutcome::Completed)
     }
 
     fn last_successful_time(&self) -> f64 {

@@ -42,6 +42,6 @@ pub use error::FmuError;
 #[cfg(feature = "slave")]
 pub use logger::Logger;
 #[cfg(feature = "slave")]
-pub use model::{Instance, Model};
+pub use model::{Instance, Model, StepOutcome};
 #[cfg(feature = "slave")]
 pub use state::{Call, State, Version};

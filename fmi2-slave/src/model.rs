@@ -44,8 +44,16 @@ pub trait Model: Sized + 'static {
     /// fmi2ExitInitializationMode: every parameter check happens here at the latest.
     fn exit_initialization(&mut self, log: &Logger) -> Result<(), FmuError>;
 
-    /// fmi2DoStep from `t` over `h`; [`FmuError::Discard`] if the step stopped early.
-    fn do_step(&mut self, log: &Logger, t: f64, h: f64) -> Result<(), FmuError>;
+    /// fmi2DoStep and fmi3DoStep from `t` over `h`; [`FmuError::Discard`] if the step failed.
+    /// With `early_return` (FMI 3's earlyReturnAllowed) it may stop before `t + h` at an event of
+    /// the model, on the clock grid ([`crate::clock`]), and say so.
+    fn do_step(
+        &mut self,
+        log: &Logger,
+        t: f64,
+        h: f64,
+        early_return: bool,
+    ) -> Result<StepOutcome, FmuError>;
 
     /// The time up to which the last step succeeded (fmi2LastSuccessfulTime).
     fn last_successful_time(&self) -> f64;
@@ -185,6 +193,20 @@ pub trait Model: Sized + 'static {
     /// Parses and checks bytes written by [`Model::save`] and, if `apply`, resumes from them.
     /// Nothing changes when they are rejected.
     fn load(&mut self, log: &Logger, bytes: &[u8], apply: bool) -> Result<(), FmuError>;
+}
+
+/// How a step that succeeded ended.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum StepOutcome {
+    /// At the communication point.
+    Completed,
+    /// Before it, at an event of the model (FMI 3 early return).
+    ReturnedEarly {
+        /// The time reached \[s\], on the clock grid.
+        time: f64,
+        /// What happened there, for the log ("contact onset in crankPin").
+        event: &'static str,
+    },
 }
 
 /// The refusal of input derivatives by a model that takes none.

@@ -183,7 +183,7 @@ impl<M: Model> Slave<M> {
 
     /// fmi2DoStep from `t` over `h`.
     pub fn step(&mut self, t: f64, h: f64) -> Result<(), FmuError> {
-        self.model.do_step(&self.log, t, h)
+        self.model.do_step(&self.log, t, h, false).map(|_| ())
     }
 }
 

@@ -6,11 +6,12 @@
 use fmi2_slave::checks::check_step;
 use fmi2_slave::model::Var;
 use fmi2_slave::table::Enumeration;
-use fmi2_slave::{FmuError, Logger, Model, State};
+use fmi2_slave::{FmuError, Logger, Model, State, StepOutcome};
 
 use super::outputs::{count_output, real_output, sensitivity};
 use super::snapshot::FmuSnapshot;
 use crate::error::{ModelError, Num};
+use crate::joint::JointRole;
 use crate::params::{
     Parameters, integer_parameter, real_parameter, set_integer_parameter, set_real_parameter,
     set_string_parameter, string_parameter,
@@ -212,12 +213,24 @@ impl Model for SliderCrankFmu {
     }
 
     /// fmi2DoStep from `t` over `h`.
-    fn do_step(&mut self, log: &Logger, t: f64, h: f64) -> Result<(), FmuError> {
+    /// With `early_return`, the step stops at the end of the first internal step in which a joint
+    /// comes into contact ([`crate::Simulation::advance_to_onset`]).
+    fn do_step(
+        &mut self,
+        log: &Logger,
+        t: f64,
+        h: f64,
+        early_return: bool,
+    ) -> Result<StepOutcome, FmuError> {
         check_step(self.time, t, h, self.stop_time)?;
         let end = t + h;
         let sim = self.simulation(log)?;
         sim.set_time(t);
-        let result = sim.advance_to(end);
+        let result = if early_return {
+            sim.advance_to_onset(end)
+        } else {
+            sim.advance_to(end).map(|()| None)
+        };
         let (time, warnings) = (sim.time(), sim.take_warnings());
         // Input derivatives hold for one communication step: the inputs are then held at the
         // values their polynomials reached.
@@ -226,10 +239,20 @@ impl Model for SliderCrankFmu {
             log.warning(warning);
         }
         match result {
-            Ok(()) => {
+            Ok(None) => {
                 self.time = end;
                 self.last_successful_time = end;
-                Ok(())
+                Ok(StepOutcome::Completed)
+            }
+            Ok(Some((joint, time))) => {
+                self.time = time;
+                self.last_successful_time = time;
+                let event = match joint {
+                    JointRole::MainBearing => "contact onset in mainBearing",
+                    JointRole::CrankPin => "contact onset in crankPin",
+                    JointRole::RodSlider => "contact onset in joint",
+                };
+                Ok(StepOutcome::ReturnedEarly { time, event })
             }
             Err(e) => {
                 self.time = time;

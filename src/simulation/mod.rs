@@ -26,6 +26,11 @@ use crate::params::{DriveMode, InitialState, JointModel, JournalStart, Parameter
 
 pub use fmi2_slave::clock::{CLOCK_RESOLUTION, on_clock_grid};
 
+/// The largest time on the clock grid that is not after `t`.
+fn on_clock_grid_below(t: f64) -> f64 {
+    (t / CLOCK_RESOLUTION).floor() * CLOCK_RESOLUTION
+}
+
 /// The slider-crank simulation.
 ///
 /// The integrator runs on its own step sequence: `advance_to(t)` takes accepted steps until one
@@ -253,6 +258,25 @@ impl Simulation {
     /// Integrates to `t_end` (rounded to the clock grid). On failure the simulation stays at the
     /// last accepted point ([`Simulation::time`]) and the error says why.
     pub fn advance_to(&mut self, t_end: f64) -> Result<(), ModelError> {
+        self.advance(t_end, false).map(|_| ())
+    }
+
+    /// Integrates towards `t_end` as [`Simulation::advance_to`] does, but stops early at the end
+    /// of the first internal step in which a joint comes into contact (where the contact law
+    /// switches on), if that is before `t_end`: returns the joint and the time reached, the step's
+    /// end rounded down to the clock grid (at most one clock tick earlier; the step's extremes and
+    /// onset belong to the interval that ends there). The step sequence is the one
+    /// [`Simulation::advance_to`] takes: continuing from the time reached loses nothing.
+    pub fn advance_to_onset(&mut self, t_end: f64) -> Result<Option<(JointRole, f64)>, ModelError> {
+        self.advance(t_end, true)
+    }
+
+    /// [`Simulation::advance_to`], or [`Simulation::advance_to_onset`] if `stop_at_onset`.
+    fn advance(
+        &mut self,
+        t_end: f64,
+        stop_at_onset: bool,
+    ) -> Result<Option<(JointRole, f64)>, ModelError> {
         let t_end = on_clock_grid(t_end);
         if !(t_end.is_finite() && t_end >= self.time) {
             return Err(ModelError::Numerical(format!(
@@ -263,8 +287,9 @@ impl Simulation {
         }
         let t_start = self.time;
         let limit = self.apply_next_inputs(t_start, t_end)?;
-        self.step_through(t_start, t_end, limit)?;
-        self.finish_interval(t_end)
+        let onset = self.step_through(t_start, t_end, limit, stop_at_onset)?;
+        self.finish_interval(onset.map_or(t_end, |(_, t)| t))?;
+        Ok(onset)
     }
 
     /// Makes the inputs set for the interval [`t_start`, `t_end`] the mechanism's: a change that
@@ -312,16 +337,23 @@ impl Simulation {
     }
 
     /// Steps until the integrator's point reaches `t_end` (at most at `limit`), recording each
-    /// accepted step's peaks; on failure the simulation stops at the last accepted step.
+    /// accepted step's peaks; on failure the simulation stops at the last accepted step. If
+    /// `stop_at_onset`, it stops after the first step before `t_end` in which a joint comes into
+    /// contact, and returns that joint and the step's end on the clock grid (rounded down, after
+    /// `t_start`).
     fn step_through(
         &mut self,
         t_start: f64,
         t_end: f64,
         limit: Option<f64>,
-    ) -> Result<(), ModelError> {
+        stop_at_onset: bool,
+    ) -> Result<Option<(JointRole, f64)>, ModelError> {
         self.peaks.interval = Peaks::default();
         if self.peaks.pending && self.end.time <= t_end {
             self.peaks.take_step_end();
+            if let Some(onset) = self.onset_before(t_start, t_end, stop_at_onset) {
+                return Ok(Some(onset));
+            }
         }
         let work_start = self.work();
         while self.end.time < t_end {
@@ -359,8 +391,32 @@ impl Simulation {
             if self.end.time <= t_end {
                 self.peaks.take_step_end();
             }
+            if let Some(onset) = self.onset_before(t_start, t_end, stop_at_onset) {
+                return Ok(Some(onset));
+            }
         }
-        Ok(())
+        Ok(None)
+    }
+
+    /// If `stop_at_onset` and a joint came into contact in the last accepted step, which ends
+    /// after `t_start` and before `t_end`: the joint and the step's end rounded down to the clock
+    /// grid (a time after `t_start`).
+    fn onset_before(
+        &self,
+        t_start: f64,
+        t_end: f64,
+        stop_at_onset: bool,
+    ) -> Option<(JointRole, f64)> {
+        if !(stop_at_onset && self.end.time < t_end) {
+            return None;
+        }
+        let reached = on_clock_grid_below(self.end.time);
+        let onsets = self.peaks.step_end.contact_onsets;
+        JointRole::ALL
+            .into_iter()
+            .find(|&role| onsets[role as usize] > 0)
+            .filter(|_| t_start < reached)
+            .map(|role| (role, reached))
     }
 
     /// Ends the interval at `t_end`: the state there (the dense output of the last step when it

@@ -26,9 +26,10 @@ mod vr;
 pub use enumerations::*;
 pub use vr::{Variable, Vr};
 
-/// FMI 3 capabilities beyond FMI 2's.
+/// FMI 3 capabilities beyond FMI 2's: with the master's consent a step returns early at the end
+/// of the internal step in which a joint comes into contact.
 pub const FMI3: Capabilities = Capabilities {
-    might_return_early: false,
+    might_return_early: true,
 };
 
 /// Everything modelDescription.xml says.

@@ -8,6 +8,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, unsafe_code)]
 
 mod conformance;
+mod fmi3;
 mod harness;
 mod instances;
 mod motor;

@@ -3,7 +3,7 @@
 
 use fmi_sys::fmi2::*;
 
-use super::codes::{DISCARD, OK, ok};
+use super::codes::{DISCARD, OK};
 use crate::ffi::{slice_mut, with_instance};
 use crate::model::Model;
 use crate::state::Call;
@@ -21,8 +21,9 @@ pub unsafe fn fmi2DoStep<M: Model>(
                 &inst.logger,
                 currentCommunicationPoint,
                 communicationStepSize,
+                false,
             )
-            .map(ok)
+            .map(|_| OK)
     })
 }
 

@@ -7,8 +7,10 @@ use fmi_sys::fmi3::*;
 
 use super::values::{refuse, scalars};
 use crate::error::FmuError;
+use crate::exports::codes::OK;
 use crate::ffi::{slice_mut, with_instance};
-use crate::model::Model;
+use crate::model::{Model, StepOutcome};
+use crate::number::Num;
 use crate::state::Call;
 
 /// Integrates from the communication point over the step size (error-controlled sub-steps). The
@@ -39,12 +41,19 @@ pub unsafe fn fmi3DoStep<M: Model>(
             &inst.logger,
             currentCommunicationPoint,
             communicationStepSize,
+            inst.early_return_allowed,
         );
         event[0] = false;
         terminate[0] = false;
-        early[0] = false;
+        early[0] = matches!(result, Ok(StepOutcome::ReturnedEarly { .. }));
         last[0] = inst.model.last_successful_time();
-        result.map(crate::exports::codes::ok)
+        if let Ok(StepOutcome::ReturnedEarly { time, event }) = result {
+            inst.logger.event(&format!(
+                "fmi3DoStep: returned early at t = {} s: {event}",
+                Num(time)
+            ));
+        }
+        result.map(|_| OK)
     })
 }
 
