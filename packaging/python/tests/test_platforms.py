@@ -25,6 +25,8 @@ MASTER = ROOT / "packaging" / "master"
 # The oldest Debian release the package mirrors still serve: glibc 2.31, older than this machine's.
 OLD_DEBIAN = "bullseye"
 FMI2_FUNCTIONS = 34
+# Every function of the FMI 3.0 headers (those of capabilities the FMU lacks refuse their calls).
+FMI3_FUNCTIONS = 75
 SAVE_AT = 120
 
 
@@ -78,6 +80,25 @@ MODELS = ["FlexibleSliderCrank", "DcMotor"]
 
 
 @pytest.mark.parametrize("model", MODELS)
+def test_release_fmi3_fmu_validates_holds_every_platform_and_equals_fmi2(model):
+    """The release FMI 3.0 FMU carries the same libraries in FMI 3's platform folders (the macOS
+    universal binary in both of its architectures' folders) and, on this machine, runs its
+    DefaultExperiment through fmpy bit for bit as the release FMI 2.0 FMU does."""
+    from fmpy import simulate_fmu
+    import numpy as np
+
+    fmu3 = str(RELEASE_FMU.parent / "fmi3" / f"{model}.fmu")
+    assert validate_fmu(fmu3) == []
+    platforms = supported_platforms(fmu3)
+    for platform in ["x86_64-linux", "x86_64-windows", "x86_64-darwin", "aarch64-darwin"]:
+        assert platform in platforms, platforms
+    r2 = simulate_fmu(str(RELEASE_FMU.parent / f"{model}.fmu"))
+    r3 = simulate_fmu(fmu3)
+    for name in r2.dtype.names:
+        assert np.array_equal(r2[name], r3[name]), name
+
+
+@pytest.mark.parametrize("model", MODELS)
 def test_release_fmu_validates_and_holds_every_platform(model):
     fmu = str(RELEASE_FMU.parent / f"{model}.fmu")
     assert validate_fmu(fmu) == []
@@ -103,6 +124,7 @@ def test_linux64_needs_glibc_2_28_at_most(model):
     versions = {tuple(int(x) for x in v.split(".")) for v in re.findall(r"GLIBC_([0-9.]+)", symbols)}
     assert versions and max(versions) <= (2, 28), sorted(versions)
     assert len(set(re.findall(r"\bfmi2\w+", symbols))) == FMI2_FUNCTIONS
+    assert len(set(re.findall(r"\bfmi3\w+", symbols))) == FMI3_FUNCTIONS
 
 
 def test_linux64_equals_the_host_build(linux_run, work, release):
@@ -195,6 +217,7 @@ def test_win64_exports_fmi2_and_imports_system_dlls_only(model):
     headers = run(["x86_64-w64-mingw32-objdump", "-p",
                    str(BINARIES / "win64" / f"{model}.dll")]).stdout
     assert len(set(re.findall(r"\]\s+(fmi2\w+)", headers))) == FMI2_FUNCTIONS
+    assert len(set(re.findall(r"\]\s+(fmi3\w+)", headers))) == FMI3_FUNCTIONS
     imports = {name.lower() for name in re.findall(r"DLL Name: (\S+)", headers)}
     system = {"kernel32.dll", "ntdll.dll", "msvcrt.dll", "userenv.dll", "ws2_32.dll",
               "bcryptprimitives.dll", "advapi32.dll", "api-ms-win-core-synch-l1-2-0.dll"}
@@ -214,3 +237,4 @@ def test_darwin64_is_universal_for_macos_11_with_the_fmi2_exports(model):
         assert re.search(rf"cmd LC_ID_DYLIB.*?name @rpath/{model}\.dylib", headers, re.S)
         exports = run(["llvm-nm-14", f"--arch={arch}", "-gU", dylib]).stdout
         assert len(set(re.findall(r"\b_(fmi2\w+)", exports))) == FMI2_FUNCTIONS
+        assert len(set(re.findall(r"\b_(fmi3\w+)", exports))) == FMI3_FUNCTIONS
