@@ -4,13 +4,16 @@
 #   binaries/linux64   x86_64 Linux, glibc 2.28 or later (RHEL/Rocky 8, Ubuntu 18.10, Debian 10 on)
 #   binaries/win64     x86_64 Windows 10 or later
 #   binaries/darwin64  macOS 11 or later, universal (x86_64 and arm64), ad-hoc signed
+# and the FMI 3.0 twins in target/fmu/release/fmi3/ with the same libraries in FMI 3's platform folders,
+# plus binaries/aarch64-linux (ARM64 Linux, glibc 2.28 or later), which FMI 2.0 cannot name,
 # from this workspace, with only Debian packages, crates and PyPI packages:
 #   - linux64: this machine's Rust toolchain, linked by zig (PyPI `ziglang`) through cargo-zigbuild
 #     against glibc 2.28's symbol versions;
-#   - win64 and darwin64: Debian's rustc-web/cargo-web and the standard library's sources
+#   - win64, darwin64 and aarch64-linux: Debian's rustc-web/cargo-web and the standard library's sources
 #     (rust-web-src), unpacked into ~/.cache/flexible-slider-crank, since no prebuilt Rust standard library for
 #     those targets can be installed here; std is compiled with the FMU (-Zbuild-std), linked by
-#     mingw-w64 (Windows) and zig (macOS), the two macOS slices merged by llvm-lipo.
+#     mingw-w64 (Windows) and zig (macOS, ARM64 Linux against glibc 2.28's symbol versions), the two
+#     macOS slices merged by llvm-lipo.
 # Set-up needs the package registries; the builds then run offline. Paths are remapped, the DLL has
 # no link time stamps and the zip's entries have fixed time stamps, so the same sources give the same
 # bytes.
@@ -78,9 +81,9 @@ echo "== fetching the crates of this workspace and of the standard library into 
 CARGO_HOME=$cargo_home cargo fetch --locked --quiet
 CARGO_HOME=$cargo_home debian cargo fetch --locked --quiet --manifest-path "$std_workspace"
 
-# --- builds: three jobs in parallel (each is mostly one serial chain of crates) ---------------
+# --- builds: four jobs in parallel (each is mostly one serial chain of crates) ---------------
 bin=$out/binaries
-mkdir -p "$bin/linux64" "$bin/win64" "$bin/darwin64" "$out/logs"
+mkdir -p "$bin/linux64" "$bin/win64" "$bin/darwin64" "$bin/aarch64-linux" "$out/logs"
 export CARGO_HOME=$cargo_home
 remap="--remap-path-prefix=$root=/build --remap-path-prefix=$cargo_home=/cargo"
 remap="$remap --remap-path-prefix=$toolchain/usr/lib/rustlib/src/rust=/rustc/$rust_web"
@@ -124,16 +127,31 @@ darwin64() {
   done
 }
 
+# The same as linux64 for ARM64, with the standard library built from source (no prebuilt one for
+# the target here) and bindgen reading zig's glibc headers for it.
+aarch64_linux() {
+  local glibc="-I$clang_include -I$zig_dir/lib/libc/include/aarch64-linux-gnu"
+  glibc="$glibc -I$zig_dir/lib/libc/include/generic-glibc -I$zig_dir/lib/libc/include/any-linux-any"
+  debian env CARGO_PROFILE_RELEASE_STRIP=symbols RUSTFLAGS="$remap" \
+    "BINDGEN_EXTRA_CLANG_ARGS_aarch64-unknown-linux-gnu=$glibc" \
+    cargo zigbuild "${build_std[@]}" "${lib[@]}" --target aarch64-unknown-linux-gnu.2.28 \
+    --target-dir "$out/aarch64-linux"
+  cp "$out/aarch64-linux/aarch64-unknown-linux-gnu/release/libflexible_slider_crank.so" \
+    "$bin/aarch64-linux/FlexibleSliderCrank.so"
+  cp "$out/aarch64-linux/aarch64-unknown-linux-gnu/release/libdc_motor.so" "$bin/aarch64-linux/DcMotor.so"
+}
+
+jobs=(linux64 win64 darwin64 aarch64_linux)
 pids=()
-for job in linux64 win64 darwin64; do
+for job in "${jobs[@]}"; do
   echo "== building $job (log: target/cross/logs/$job.log)"
   (time $job) >"$out/logs/$job.log" 2>&1 &
   pids+=($!)
 done
 failed=0
-for i in 0 1 2; do
+for i in "${!jobs[@]}"; do
   if ! wait "${pids[$i]}"; then
-    job=$(echo linux64 win64 darwin64 | cut -d' ' -f$((i + 1)))
+    job=${jobs[$i]}
     echo "== $job failed:" >&2
     cat "$out/logs/$job.log" >&2
     failed=1

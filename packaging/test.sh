@@ -2,7 +2,8 @@
 # The README's second command: runs every test of the project — formatting, lints, documentation,
 # unit and validation tests, FMI conformance through the built library, the Python tests of the
 # packaged FMU through fmpy and libcosimpy, and the release FMU's binaries for every platform
-# (packaging/release.sh; win64 under wine, linux64 on an older Debian, darwin64 inspected).
+# (packaging/release.sh; win64 under wine, linux64 on an older Debian, aarch64-linux under qemu-user,
+# darwin64 inspected).
 # Installs what it needs itself (packaging/bootstrap.sh, packaging/release.sh), so it works on a
 # fresh Debian machine with Rust.
 set -euo pipefail
@@ -26,9 +27,10 @@ echo "== cargo test (unit, validation and FMI tests)"
 cargo test --workspace --lib --tests
 echo "== fuzzing: state deserialization and fmi2* call sequences, 60 s each"
 bash packaging/fuzz.sh 60
-echo "== platform test tools: wine (win64 DLL), debootstrap (an older Debian for linux64)"
+echo "== platform test tools: wine (win64 DLL), debootstrap (an older Debian for linux64), qemu-user and"
+echo "   Debian's ARM64 C library (aarch64-linux)"
 need=()
-for p in wine wine64 debootstrap; do dpkg -s "$p" >/dev/null 2>&1 || need+=("$p"); done
+for p in wine wine64 debootstrap qemu-user libc6-arm64-cross libgcc-s1-arm64-cross; do dpkg -s "$p" >/dev/null 2>&1 || need+=("$p"); done
 if [ ${#need[@]} -gt 0 ]; then
   sudo=""
   [ "$(id -u)" -ne 0 ] && sudo=sudo
@@ -45,7 +47,7 @@ if [ "$(id -u)" -eq 0 ] && [ ! -x "$old_debian/usr/bin/ldd" ]; then
     >target/platform-tests/debootstrap.log 2>&1 &
   root_pid=$!
 fi
-echo "== release FMU: linux64 (glibc 2.28), win64, darwin64"
+echo "== release FMU: linux64 (glibc 2.28), win64, darwin64; FMI 3 adds aarch64-linux"
 bash packaging/release.sh
 if [ -n "$root_pid" ] && ! wait "$root_pid"; then
   cat target/platform-tests/debootstrap.log >&2

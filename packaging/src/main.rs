@@ -66,21 +66,37 @@ fn build_library(root: &Path, package: &str) -> Result<PathBuf, Box<dyn Error>> 
     library.ok_or_else(|| "cargo reported no .so for the cdylib".into())
 }
 
-/// FMI 2.0 platform folders and the file extension of their shared libraries.
-const PLATFORMS: [(&str, &str); 3] = [("linux64", "so"), ("win64", "dll"), ("darwin64", "dylib")];
+/// The release build's platform folders and the file extension of their shared libraries: FMI
+/// 2.0's, and `aarch64-linux`, which only FMI 3.0 can name.
+const PLATFORMS: [(&str, &str); 4] = [
+    ("linux64", "so"),
+    ("win64", "dll"),
+    ("darwin64", "dylib"),
+    ("aarch64-linux", "so"),
+];
 
-/// The FMI 3.0 platform tuples (FMI 3.0 §2.5.1.4) of an FMI 2 platform folder's library: the
-/// macOS one is a universal binary of both architectures.
+/// The FMI 3.0 platform tuples (FMI 3.0 §2.5.1.4) of a platform folder's library: the macOS one is
+/// a universal binary of both architectures.
 fn fmi3_platforms(fmi2: &str) -> &'static [&'static str] {
     match fmi2 {
         "linux64" => &["x86_64-linux"],
         "win64" => &["x86_64-windows"],
         "darwin64" => &["x86_64-darwin", "aarch64-darwin"],
+        "aarch64-linux" => &["aarch64-linux"],
         _ => &[],
     }
 }
 
-/// The binaries of an FMI 2 FMU in FMI 3's platform folders.
+/// The binaries an FMI 2.0 FMU can carry: those of FMI 2's platform folders.
+fn fmi2_binaries(binaries: &[(&'static str, PathBuf)]) -> Vec<(&'static str, PathBuf)> {
+    binaries
+        .iter()
+        .filter(|(platform, _)| ["linux64", "win64", "darwin64"].contains(platform))
+        .cloned()
+        .collect()
+}
+
+/// The binaries of every platform folder in FMI 3's platform folders.
 fn fmi3_binaries(binaries: &[(&str, PathBuf)]) -> Vec<(&'static str, PathBuf)> {
     binaries
         .iter()
@@ -244,16 +260,19 @@ fn write_zip(path: &Path, entries: &[(String, PathBuf)]) -> Result<(), Box<dyn E
     Ok(())
 }
 
-/// Writes both FMUs with their binaries into `out_dir`, and the motor-crank system made of them:
-/// `MotorCrank.ssp` and `motor-crank/` (OSP system structure beside both FMUs). Returns the
-/// paths written.
+/// Writes both FMUs into `out_dir` with the libraries of FMI 2's platform folders among
+/// `binaries` (the slider-crank's) and `motor_libraries`, their FMI 3.0 twins into `out_dir/fmi3/`
+/// with every library, and the motor-crank system made of the FMI 2 FMUs: `MotorCrank.ssp` and
+/// `motor-crank/` (OSP system structure beside both FMUs). Returns the paths written.
 fn package(
     root: &Path,
     out_dir: &Path,
-    crank_binaries: &[(&str, PathBuf)],
-    motor_binaries: &[(&str, PathBuf)],
+    binaries: &[(&'static str, PathBuf)],
+    motor_libraries: &[(&'static str, PathBuf)],
 ) -> Result<Vec<PathBuf>, Box<dyn Error>> {
     std::fs::create_dir_all(out_dir)?;
+    let crank_binaries = &fmi2_binaries(binaries);
+    let motor_binaries = &fmi2_binaries(motor_libraries);
     let (guide, images) = documentation::slider_crank(root)?;
     let crank_references = compatibility::slider_crank()?;
     let crank_fmu = out_dir.join(format!("{MODEL_IDENTIFIER}.fmu"));
@@ -284,7 +303,7 @@ fn package(
     write_fmu(
         &crank_fmu3,
         (MODEL_IDENTIFIER, MODEL_DESCRIPTION_FMI3),
-        &fmi3_binaries(crank_binaries),
+        &fmi3_binaries(binaries),
         &guide,
         &images,
         &crank_references.fmu_entries(),
@@ -293,7 +312,7 @@ fn package(
     write_fmu(
         &motor_fmu3,
         (motor.0, dc_motor::MODEL_DESCRIPTION_FMI3),
-        &fmi3_binaries(motor_binaries),
+        &fmi3_binaries(motor_libraries),
         &documentation::motor(),
         &[],
         &motor_references.fmu_entries(),

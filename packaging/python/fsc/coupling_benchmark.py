@@ -19,8 +19,7 @@ STOP = 0.024
 def evaluations(fmu, step, coupled):
     s = Session(fmu, "coupling", stop_time=STOP)
     s.set({"drive.mode": 2})
-    s.fmu.enterInitializationMode()
-    s.fmu.exitInitializationMode()
+    s.initialize()
     n = round(STOP / step)
     for k in range(n):
         if coupled:

@@ -1,11 +1,12 @@
 """One FMU under fmpy, the way every tool of the package opens it: unpacked, instantiated with the
-package's one logger, its variables set and got by name.
+package's one logger, its variables set and got by name; an FMI 2.0 or an FMI 3.0 one.
 
 fmpy's native logger proxy (which formats an FMU's variadic messages) keeps one Python logger in a
 process-wide slot, so the package installs one logger per process, alive as long as the process,
 and files each message under the name of the instance that logged it: `messages(name)`. Messages of
 instances the package did not make go on to fmpy's default logger, which prints them, as they
-would without the package.
+would without the package. An FMI 3.0 instance has a logger of its own (its callback takes no
+instance name), which files its messages the same way.
 """
 from ctypes import byref
 
@@ -13,6 +14,7 @@ from fmpy import extract, read_model_description
 from fmpy.fmi2 import (FMU2Slave, calloc, fmi2CallbackAllocateMemoryTYPE,
                        fmi2CallbackFreeMemoryTYPE, fmi2CallbackFunctions, fmi2CallbackLoggerTYPE,
                        free, printLogMessage)
+from fmpy.fmi3 import FMU3Slave
 from fmpy.logging import addLoggerProxy
 
 #: (status, category, message) of every message since the instance of that name was made.
@@ -61,22 +63,36 @@ def forget(name: str):
     _MESSAGES.pop(name, None)
 
 
-def instantiate(unzipdir, md, name: str, logging_on: bool = False) -> FMU2Slave:
+def instantiate(unzipdir, md, name: str, logging_on: bool = False):
     """A new co-simulation instance called `name` of the FMU unpacked in `unzipdir` (with model
-    description `md`), logging through the package's logger, its earlier messages forgotten."""
+    description `md`), logging through the package's logger, its earlier messages forgotten: an
+    FMU2Slave or, for an FMI 3.0 FMU, an FMU3Slave."""
     install_logger()
     _OURS.add(name)
     messages(name).clear()
+    if md.fmiVersion.startswith("3."):
+        fmu = FMU3Slave(guid=md.instantiationToken, unzipDirectory=unzipdir,
+                        modelIdentifier=md.coSimulation.modelIdentifier, instanceName=name)
+
+        def log(env, status, category, message):
+            messages(name).append((status, _text(category), _text(message)))
+        fmu.instantiate(loggingOn=logging_on, logMessage=log)
+        return fmu
     fmu = FMU2Slave(guid=md.guid, unzipDirectory=unzipdir,
                     modelIdentifier=md.coSimulation.modelIdentifier, instanceName=name)
     fmu.instantiate(callbacks=_CALLBACKS, loggingOn=logging_on)
     return fmu
 
 
+#: The fmpy getter and setter of each variable type (FMI 2's and FMI 3's; an FMI 3 Enumeration is
+#: exchanged as an Int64).
 GETTERS = {"Real": "getReal", "Integer": "getInteger", "Boolean": "getBoolean",
-           "String": "getString"}
-SETTERS = {"Real": "setReal", "Integer": "setInteger", "Boolean": "setBoolean",
-           "String": "setString"}
+           "String": "getString", "Float64": "getFloat64", "Int32": "getInt32",
+           "Enumeration": "getInt64"}
+SETTERS = {name: "s" + getter[1:] for name, getter in GETTERS.items()}
+#: The Python type of each variable type's values.
+PYTHON_TYPES = {"Real": float, "Float64": float, "Integer": int, "Int32": int, "Enumeration": int,
+                "Boolean": bool}
 
 
 class Session:
@@ -88,13 +104,24 @@ class Session:
         self.vr = {v.name: v.valueReference for v in self.md.modelVariables}
         self.types = {v.name: v.type for v in self.md.modelVariables}
         self.fmu = instantiate(extract(str(path)), self.md, name)
-        self.fmu.setupExperiment(startTime=0.0, stopTime=stop_time)
+        self.stop_time = stop_time
+        self.fmi3 = self.md.fmiVersion.startswith("3.")
+        if not self.fmi3:
+            self.fmu.setupExperiment(startTime=0.0, stopTime=stop_time)
+
+    def initialize(self):
+        """Enters and exits initialization mode (FMI 3: with the start and stop time)."""
+        if self.fmi3:
+            self.fmu.enterInitializationMode(startTime=0.0, stopTime=self.stop_time)
+        else:
+            self.fmu.enterInitializationMode()
+        self.fmu.exitInitializationMode()
 
     def set(self, values):
         """Sets {name: value}, each through the setter of its type."""
         for name, value in values.items():
             kind = self.types[name]
-            value = {"Real": float, "Integer": int, "Boolean": bool}.get(kind, str)(value)
+            value = PYTHON_TYPES.get(kind, str)(value)
             getattr(self.fmu, SETTERS[kind])([self.vr[name]], [value])
 
     def get(self, name):

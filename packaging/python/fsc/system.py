@@ -43,18 +43,21 @@ SCHEMES = ("held", "order 1", "order 2", "extrapolated")
 
 
 def run(step, stop, scheme="held", outputs=("crank.speed",), zero_start=False, crank_parameters=None,
-        coupling="jacobi"):
+        coupling="jacobi", fmi3=False):
     """The system over [0, stop] with communication step `step`: a list of (t, {name: value}) per
     communication point, names from both FMUs (crank's first). `zero_start` sets every
     connection to 0 before the first step instead of exchanging the initial outputs (the scheme of
     fmpy's simulate_ssp); `crank_parameters` are set on top of the system's; `coupling` is
-    "jacobi" or "gauss-seidel" (held inputs only: the motor steps first)."""
-    motor, crank = Session(FMU_DIR / MOTOR, "motor"), Session(FMU_DIR / CRANK, "crank")
+    "jacobi" or "gauss-seidel" (held inputs only: the motor steps first); `fmi3` runs the FMI 3.0
+    FMUs (`fmi3/` beside the FMI 2.0 ones; FMI 3 has no input derivatives: held inputs only)."""
+    if fmi3 and scheme != "held":
+        raise ValueError(f"scheme {scheme!r}: FMI 3.0 has no input derivatives")
+    folder = FMU_DIR / "fmi3" if fmi3 else FMU_DIR
+    motor, crank = Session(folder / MOTOR, "motor"), Session(folder / CRANK, "crank")
     crank.set({**CRANK_PARAMETERS, **(crank_parameters or {})})
     motor.set(MOTOR_PARAMETERS)
     for s in (motor, crank):
-        s.fmu.enterInitializationMode()
-        s.fmu.exitInitializationMode()
+        s.initialize()
     torques, speeds = [], []
     rows, n = [], round(stop / step)
     for k in range(n):

@@ -90,7 +90,8 @@ def test_release_fmi3_fmu_validates_holds_every_platform_and_equals_fmi2(model):
     fmu3 = str(RELEASE_FMU.parent / "fmi3" / f"{model}.fmu")
     assert validate_fmu(fmu3) == []
     platforms = supported_platforms(fmu3)
-    for platform in ["x86_64-linux", "x86_64-windows", "x86_64-darwin", "aarch64-darwin"]:
+    for platform in ["x86_64-linux", "aarch64-linux", "x86_64-windows", "x86_64-darwin",
+                     "aarch64-darwin"]:
         assert platform in platforms, platforms
     r2 = simulate_fmu(str(RELEASE_FMU.parent / f"{model}.fmu"))
     r3 = simulate_fmu(fmu3)
@@ -202,6 +203,51 @@ def test_win64_under_wine_equals_linux64_at_every_communication_point(linux_run,
     win, master = wine
     master("win64.txt")
     assert lines_differing((win / "win64.txt").read_text(), linux_run[0]) == []
+
+
+def zig():
+    """The zig compiler of the venv (PyPI ziglang)."""
+    return Path(run([str(ROOT / ".venv" / "bin" / "python"), "-c",
+                     "import ziglang, os; print(os.path.dirname(ziglang.__file__))"]
+                    ).stdout.strip()) / "zig"
+
+
+@pytest.fixture(scope="module")
+def aarch64_master(work, release):
+    """The C master built for ARM64 Linux (glibc 2.28), and a function running it on the
+    aarch64-linux library under qemu-user with Debian's ARM64 C library (libc6-arm64-cross)."""
+    master = work / "fmu_run_aarch64"
+    run([str(zig()), "cc", "-target", "aarch64-linux-gnu.2.28", "-O2", "-Wall", "-Werror",
+         str(MASTER / "fmu_run.c"), "-o", str(master), "-ldl"])
+
+    def master_run(*args):
+        guid, experiment, _ = release
+        return run(["qemu-aarch64", "-L", "/usr/aarch64-linux-gnu", str(master),
+                    str(BINARIES / "aarch64-linux" / "FlexibleSliderCrank.so"), guid, *experiment,
+                    *args])
+    return master_run
+
+
+def test_aarch64_linux_under_qemu_equals_linux64_at_every_communication_point(
+        linux_run, aarch64_master, work):
+    """The ARM64 Linux library, run by the C master under qemu-user, gives the x86_64 Linux
+    library's results bit for bit at every communication point (its fmi2 functions: the same
+    library serves the FMI 3 FMU)."""
+    out = work / "aarch64-linux.txt"
+    aarch64_master(str(out))
+    assert lines_differing(out.read_text(), linux_run[0]) == []
+
+
+def test_aarch64_linux_exports_both_versions_against_glibc_2_28():
+    for model in MODELS:
+        library = str(BINARIES / "aarch64-linux" / f"{model}.so")
+        symbols = run(["llvm-objdump-14", "-f", "-T", library]).stdout
+        assert "file format elf64-littleaarch64" in symbols
+        versions = {tuple(int(x) for x in v.split("."))
+                    for v in re.findall(r"GLIBC_([0-9.]+)", symbols)}
+        assert versions and max(versions) <= (2, 28), sorted(versions)
+        assert len(set(re.findall(r"\bfmi2\w+", symbols))) == FMI2_FUNCTIONS
+        assert len(set(re.findall(r"\bfmi3\w+", symbols))) == FMI3_FUNCTIONS
 
 
 def test_state_saved_on_linux64_continues_bit_identically_on_win64(linux_run, wine):
