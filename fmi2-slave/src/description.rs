@@ -244,22 +244,7 @@ fn render<V: ValueReference>(d: &Description<V>) -> String {
     x.push_str(&log_categories_and_experiment(d));
     x.push_str("  <ModelVariables>\n");
     for (i, v) in d.variables.iter().enumerate() {
-        let causality = match v.causality {
-            Causality::Parameter => "parameter",
-            Causality::CalculatedParameter => "calculatedParameter",
-            Causality::Input => "input",
-            Causality::Output => "output",
-        };
-        let variability = match v.variability {
-            Variability::Fixed => "fixed",
-            Variability::Discrete => "discrete",
-            Variability::Continuous => "continuous",
-        };
-        let initial = match v.causality {
-            Causality::Parameter => r#" initial="exact""#,
-            Causality::CalculatedParameter | Causality::Output => r#" initial="calculated""#,
-            _ => "",
-        };
+        let (causality, variability, initial) = attributes(v);
         let description = match v.kind {
             Kind::Enumeration { type_index, .. } => format!(
                 "{} ({})",
@@ -359,6 +344,29 @@ fn render<V: ValueReference>(d: &Description<V>) -> String {
     }
     x.push_str("    </InitialUnknowns>\n  </ModelStructure>\n</fmiModelDescription>\n");
     x
+}
+
+/// The causality, the variability and the initial attribute (with its leading space, or empty) of
+/// a variable, the same in FMI 2 and FMI 3: parameters are exact, outputs and calculated
+/// parameters calculated.
+pub(crate) fn attributes<V>(v: &Variable<V>) -> (&'static str, &'static str, &'static str) {
+    let causality = match v.causality {
+        Causality::Parameter => "parameter",
+        Causality::CalculatedParameter => "calculatedParameter",
+        Causality::Input => "input",
+        Causality::Output => "output",
+    };
+    let variability = match v.variability {
+        Variability::Fixed => "fixed",
+        Variability::Discrete => "discrete",
+        Variability::Continuous => "continuous",
+    };
+    let initial = match v.causality {
+        Causality::Parameter => r#" initial="exact""#,
+        Causality::CalculatedParameter | Causality::Output => r#" initial="calculated""#,
+        Causality::Input => "",
+    };
+    (causality, variability, initial)
 }
 
 /// UnitDefinitions, the same in FMI 2 and FMI 3: each unit with its base-unit exponents and

@@ -8,9 +8,9 @@
 use std::fmt::Write as _;
 
 use crate::description::{
-    Description, check, escape, log_categories_and_experiment, real, unit_definitions,
+    Description, attributes, check, escape, log_categories_and_experiment, real, unit_definitions,
 };
-use crate::table::{Causality, Kind, ValueReference, Variability, Variable};
+use crate::table::{Causality, Kind, ValueReference, Variable};
 
 /// The value reference of the independent variable `time` (FMI 3.0 requires one; the table's
 /// own value references are dense from 0, so this one stays clear of any it will ever have).
@@ -129,22 +129,7 @@ pub fn model_description<V: ValueReference>(
 
 /// One variable's element.
 fn variable<V: ValueReference>(d: &Description<V>, v: &Variable<V>) -> String {
-    let causality = match v.causality {
-        Causality::Parameter => "parameter",
-        Causality::CalculatedParameter => "calculatedParameter",
-        Causality::Input => "input",
-        Causality::Output => "output",
-    };
-    let variability = match v.variability {
-        Variability::Fixed => "fixed",
-        Variability::Discrete => "discrete",
-        Variability::Continuous => "continuous",
-    };
-    let initial = match v.causality {
-        Causality::Parameter => r#" initial="exact""#,
-        Causality::CalculatedParameter | Causality::Output => r#" initial="calculated""#,
-        Causality::Input => "",
-    };
+    let (causality, variability, initial) = attributes(v);
     let common = format!(
         r#"name="{}" valueReference="{}" description="{}" causality="{causality}" variability="{variability}"{initial}"#,
         v.name,

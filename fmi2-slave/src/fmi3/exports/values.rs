@@ -10,7 +10,8 @@ use crate::error::FmuError;
 use crate::exports::codes::{OK, ok};
 use crate::ffi::{slice, slice_mut, with_instance};
 use crate::fmi3::description::TIME_VALUE_REFERENCE;
-use crate::model::Model;
+use crate::logger::Logger;
+use crate::model::{Instance, Model, Var};
 use crate::state::Call;
 
 /// Checks that a call gives one value per value reference: every variable of the FMU is a
@@ -161,6 +162,34 @@ pub unsafe fn fmi3SetInt32<M: Model>(
     })
 }
 
+/// The model's callback that reads variables as the i32 of FMI 2 (Integer, Boolean).
+type ReadI32<M> = fn(&mut M, &Logger, &[Var<<M as Model>::Vr>], &mut [i32]) -> Result<(), FmuError>;
+
+/// Reads the variables `vr` of type `base` through the model's i32 callback `read`, each value
+/// converted to the FMI 3 type by `convert`.
+fn read_as<M: Model, T>(
+    inst: &mut Instance<M>,
+    vr: &[u32],
+    values: &mut [T],
+    base: &str,
+    read: ReadI32<M>,
+    convert: fn(i32) -> T,
+) -> Result<fmi3Status, FmuError> {
+    resolve::<M>(vr, base, &mut inst.variables)?;
+    inst.integers.clear();
+    inst.integers.resize(values.len(), 0);
+    read(
+        &mut inst.model,
+        &inst.logger,
+        &inst.variables,
+        &mut inst.integers,
+    )?;
+    for (value, &x) in values.iter_mut().zip(&inst.integers) {
+        *value = convert(x);
+    }
+    Ok(OK)
+}
+
 /// Reads the switches (FMI 3 Enumerations, exchanged as Int64).
 pub unsafe fn fmi3GetInt64<M: Model>(
     instance: fmi3Instance,
@@ -172,15 +201,7 @@ pub unsafe fn fmi3GetInt64<M: Model>(
     with_instance::<M>(instance, Call::GetInt64, |inst| {
         // SAFETY: nValueReferences and nValues elements (FMI 3.0 §2.3.6).
         let (vr, values) = unsafe { get_args(valueReferences, nValueReferences, values, nValues) }?;
-        resolve::<M>(vr, "Int64", &mut inst.variables)?;
-        inst.integers.clear();
-        inst.integers.resize(values.len(), 0);
-        inst.model
-            .get_integer(&inst.logger, &inst.variables, &mut inst.integers)?;
-        for (value, &item) in values.iter_mut().zip(&inst.integers) {
-            *value = i64::from(item);
-        }
-        Ok(OK)
+        read_as(inst, vr, values, "Int64", M::get_integer, i64::from)
     })
 }
 
@@ -221,15 +242,9 @@ pub unsafe fn fmi3GetBoolean<M: Model>(
     with_instance::<M>(instance, Call::GetBoolean, |inst| {
         // SAFETY: nValueReferences and nValues elements (FMI 3.0 §2.3.6).
         let (vr, values) = unsafe { get_args(valueReferences, nValueReferences, values, nValues) }?;
-        resolve::<M>(vr, "Boolean", &mut inst.variables)?;
-        inst.integers.clear();
-        inst.integers.resize(values.len(), 0);
-        inst.model
-            .get_boolean(&inst.logger, &inst.variables, &mut inst.integers)?;
-        for (value, &flag) in values.iter_mut().zip(&inst.integers) {
-            *value = flag != 0;
-        }
-        Ok(OK)
+        read_as(inst, vr, values, "Boolean", M::get_boolean, |flag| {
+            flag != 0
+        })
     })
 }
 
