@@ -268,22 +268,10 @@ fn render<V: ValueReference>(d: &Description<V>) -> String {
                 max,
                 unit,
             } => {
-                let mut a = format!(r#"<Real unit="{unit}""#);
-                if let Some((_, display)) =
-                    d.variable_display_units.iter().find(|(vr, _)| *vr == v.vr)
-                {
-                    let _ = write!(a, r#" displayUnit="{display}""#);
-                }
-                if min.is_finite() {
-                    let _ = write!(a, r#" min="{}""#, real(min));
-                }
-                if max.is_finite() {
-                    let _ = write!(a, r#" max="{}""#, real(max));
-                }
-                if let Some(s) = start {
-                    let _ = write!(a, r#" start="{}""#, real(s));
-                }
-                a + "/>"
+                format!(
+                    r#"<Real unit="{unit}"{}/>"#,
+                    real_attributes(d, v.vr, start, min, max)
+                )
             }
             Kind::Integer { start, min, max } => match start {
                 Some(s) => format!(r#"<Integer min="{min}" max="{max}" start="{s}"/>"#),
@@ -367,6 +355,31 @@ pub(crate) fn attributes<V>(v: &Variable<V>) -> (&'static str, &'static str, &'s
         Causality::Input => "",
     };
     (causality, variability, initial)
+}
+
+/// The attributes of a Real variable after its unit, the same in FMI 2 and FMI 3: its display unit,
+/// a finite min and max, its start.
+pub(crate) fn real_attributes<V: ValueReference>(
+    d: &Description<V>,
+    vr: V,
+    start: Option<f64>,
+    min: f64,
+    max: f64,
+) -> String {
+    let mut a = String::new();
+    if let Some((_, display)) = d.variable_display_units.iter().find(|(v, _)| *v == vr) {
+        let _ = write!(a, r#" displayUnit="{display}""#);
+    }
+    if min.is_finite() {
+        let _ = write!(a, r#" min="{}""#, real(min));
+    }
+    if max.is_finite() {
+        let _ = write!(a, r#" max="{}""#, real(max));
+    }
+    if let Some(s) = start {
+        let _ = write!(a, r#" start="{}""#, real(s));
+    }
+    a
 }
 
 /// UnitDefinitions, the same in FMI 2 and FMI 3: each unit with its base-unit exponents and

@@ -8,7 +8,8 @@
 use std::fmt::Write as _;
 
 use crate::description::{
-    Description, attributes, check, escape, log_categories_and_experiment, real, unit_definitions,
+    Description, attributes, check, escape, log_categories_and_experiment, real_attributes,
+    unit_definitions,
 };
 use crate::table::{Causality, Kind, ValueReference, Variable};
 
@@ -143,21 +144,8 @@ fn variable<V: ValueReference>(d: &Description<V>, v: &Variable<V>) -> String {
             max,
             unit,
         } => {
-            let mut a = format!(r#"    <Float64 {common} unit="{unit}""#);
-            if let Some((_, display)) = d.variable_display_units.iter().find(|(vr, _)| *vr == v.vr)
-            {
-                let _ = write!(a, r#" displayUnit="{display}""#);
-            }
-            if min.is_finite() {
-                let _ = write!(a, r#" min="{}""#, real(min));
-            }
-            if max.is_finite() {
-                let _ = write!(a, r#" max="{}""#, real(max));
-            }
-            if let Some(s) = start {
-                let _ = write!(a, r#" start="{}""#, real(s));
-            }
-            a + "/>\n"
+            let attributes = real_attributes(d, v.vr, start, min, max);
+            format!("    <Float64 {common} unit=\"{unit}\"{attributes}/>\n")
         }
         Kind::Integer { start, min, max } => match start {
             Some(s) => {
