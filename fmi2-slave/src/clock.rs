@@ -14,3 +14,8 @@ pub const CLOCK_RESOLUTION: f64 = 1.0 / (1u64 << 40) as f64;
 pub fn on_clock_grid(t: f64) -> f64 {
     (t / CLOCK_RESOLUTION).round() * CLOCK_RESOLUTION
 }
+
+/// The largest time on the clock grid ([`CLOCK_RESOLUTION`]) that is not after `t`.
+pub fn on_clock_grid_below(t: f64) -> f64 {
+    (t / CLOCK_RESOLUTION).floor() * CLOCK_RESOLUTION
+}

@@ -459,27 +459,3 @@ fn guid(text: &str) -> String {
         &s[20..32]
     )
 }
-
-/// The work of a model's build script: renders the FMI 2 modelDescription.xml and its GUID into
-/// `OUT_DIR` (`modelDescription.xml`, `guid.txt`, for `include_str!`) and the FMI 3 one with the
-/// model's `fmi3` capabilities (`fmi3/modelDescription.xml`), and, for a macOS target, gives the
-/// dylib the FMU's name as its install name (not the build path: reproducible builds).
-pub fn build_script<V: ValueReference>(
-    d: &Description<V>,
-    fmi3: crate::fmi3::description::Capabilities,
-) -> Result<(), Box<dyn std::error::Error>> {
-    let (xml, guid) = model_description(d).map_err(|e| format!("variable table: {e}"))?;
-    let xml3 = crate::fmi3::description::model_description(d, fmi3, &guid)?;
-    let out = std::path::PathBuf::from(std::env::var("OUT_DIR")?);
-    std::fs::write(out.join("modelDescription.xml"), xml)?;
-    std::fs::write(out.join("guid.txt"), guid)?;
-    std::fs::create_dir_all(out.join("fmi3"))?;
-    std::fs::write(out.join("fmi3/modelDescription.xml"), xml3)?;
-    if std::env::var("CARGO_CFG_TARGET_OS").as_deref() == Ok("macos") {
-        println!(
-            "cargo::rustc-cdylib-link-arg=-Wl,-install_name,@rpath/{}.dylib",
-            d.model_identifier
-        );
-    }
-    Ok(())
-}

@@ -10,6 +10,7 @@
 //! # References
 //! - Modelica Association (2023), Functional Mock-up Interface 2.0.4.
 
+pub mod build;
 pub mod clock;
 pub mod codec;
 pub mod description;

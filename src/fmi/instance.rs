@@ -11,7 +11,6 @@ use fmi2_slave::{FmuError, Logger, Model, State, StepOutcome};
 use super::outputs::{count_output, real_output, sensitivity};
 use super::snapshot::FmuSnapshot;
 use crate::error::{ModelError, Num};
-use crate::joint::JointRole;
 use crate::params::{
     Parameters, integer_parameter, real_parameter, set_integer_parameter, set_real_parameter,
     set_string_parameter, string_parameter,
@@ -244,15 +243,14 @@ impl Model for SliderCrankFmu {
                 self.last_successful_time = end;
                 Ok(StepOutcome::Completed)
             }
-            Ok(Some((joint, time))) => {
-                self.time = time;
-                self.last_successful_time = time;
-                let event = match joint {
-                    JointRole::MainBearing => "contact onset in mainBearing",
-                    JointRole::CrankPin => "contact onset in crankPin",
-                    JointRole::RodSlider => "contact onset in joint",
-                };
-                Ok(StepOutcome::ReturnedEarly { time, event })
+            Ok(Some(onset)) => {
+                self.time = onset.time;
+                self.last_successful_time = onset.time;
+                let event = onset.event();
+                Ok(StepOutcome::ReturnedEarly {
+                    time: onset.time,
+                    event,
+                })
             }
             Err(e) => {
                 self.time = time;

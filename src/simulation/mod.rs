@@ -3,6 +3,7 @@
 
 pub mod codec;
 mod failure;
+mod onset;
 mod outputs;
 mod peaks;
 mod reading;
@@ -15,7 +16,7 @@ pub mod validity;
 pub use self::outputs::{BearingOutputs, Outputs};
 pub use self::peaks::{PeakHold, Peaks};
 pub use self::snapshot::Snapshot;
-pub use self::step::StepPoint;
+pub use self::step::{Onset, StepPoint};
 use self::validity::Monitor;
 use crate::error::{ModelError, Num};
 use crate::integrator::{Integrator, Stats};
@@ -25,11 +26,6 @@ pub use crate::mechanism::{Input, InputSignal, Inputs};
 use crate::params::{DriveMode, InitialState, JointModel, JournalStart, Parameters};
 
 pub use fmi2_slave::clock::{CLOCK_RESOLUTION, on_clock_grid};
-
-/// The largest time on the clock grid that is not after `t`.
-fn on_clock_grid_below(t: f64) -> f64 {
-    (t / CLOCK_RESOLUTION).floor() * CLOCK_RESOLUTION
-}
 
 /// The slider-crank simulation.
 ///
@@ -267,16 +263,12 @@ impl Simulation {
     /// end rounded down to the clock grid (at most one clock tick earlier; the step's extremes and
     /// onset belong to the interval that ends there). The step sequence is the one
     /// [`Simulation::advance_to`] takes: continuing from the time reached loses nothing.
-    pub fn advance_to_onset(&mut self, t_end: f64) -> Result<Option<(JointRole, f64)>, ModelError> {
+    pub fn advance_to_onset(&mut self, t_end: f64) -> Result<Option<Onset>, ModelError> {
         self.advance(t_end, true)
     }
 
     /// [`Simulation::advance_to`], or [`Simulation::advance_to_onset`] if `stop_at_onset`.
-    fn advance(
-        &mut self,
-        t_end: f64,
-        stop_at_onset: bool,
-    ) -> Result<Option<(JointRole, f64)>, ModelError> {
+    fn advance(&mut self, t_end: f64, stop_at_onset: bool) -> Result<Option<Onset>, ModelError> {
         let t_end = on_clock_grid(t_end);
         if !(t_end.is_finite() && t_end >= self.time) {
             return Err(ModelError::Numerical(format!(
@@ -288,7 +280,7 @@ impl Simulation {
         let t_start = self.time;
         let limit = self.apply_next_inputs(t_start, t_end)?;
         let onset = self.step_through(t_start, t_end, limit, stop_at_onset)?;
-        self.finish_interval(onset.map_or(t_end, |(_, t)| t))?;
+        self.finish_interval(onset.map_or(t_end, |o| o.time))?;
         Ok(onset)
     }
 
@@ -347,7 +339,7 @@ impl Simulation {
         t_end: f64,
         limit: Option<f64>,
         stop_at_onset: bool,
-    ) -> Result<Option<(JointRole, f64)>, ModelError> {
+    ) -> Result<Option<Onset>, ModelError> {
         self.peaks.interval = Peaks::default();
         if self.peaks.pending && self.end.time <= t_end {
             self.peaks.take_step_end();
@@ -396,27 +388,6 @@ impl Simulation {
             }
         }
         Ok(None)
-    }
-
-    /// If `stop_at_onset` and a joint came into contact in the last accepted step, which ends
-    /// after `t_start` and before `t_end`: the joint and the step's end rounded down to the clock
-    /// grid (a time after `t_start`).
-    fn onset_before(
-        &self,
-        t_start: f64,
-        t_end: f64,
-        stop_at_onset: bool,
-    ) -> Option<(JointRole, f64)> {
-        if !(stop_at_onset && self.end.time < t_end) {
-            return None;
-        }
-        let reached = on_clock_grid_below(self.end.time);
-        let onsets = self.peaks.step_end.contact_onsets;
-        JointRole::ALL
-            .into_iter()
-            .find(|&role| onsets[role as usize] > 0)
-            .filter(|_| t_start < reached)
-            .map(|role| (role, reached))
     }
 
     /// Ends the interval at `t_end`: the state there (the dense output of the last step when it

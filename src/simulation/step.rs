@@ -1,5 +1,8 @@
 //! The points of the integrator's step sequence the simulation keeps: the start and the end of
-//! the last accepted step.
+//! the last accepted step; and the end of a step in which a joint came into contact, where an
+//! early return stops ([`Onset`]).
+
+use crate::joint::JointRole;
 
 /// A point of the integrator's step sequence: its time, the state there and the state's
 /// derivative (what the dense output between two points is made of).
@@ -33,5 +36,25 @@ impl StepPoint {
         self.time = other.time;
         self.y.copy_from_slice(&other.y);
         self.f.copy_from_slice(&other.f);
+    }
+}
+
+/// A contact onset an early return stopped at ([`super::Simulation::advance_to_onset`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Onset {
+    /// The joint that came into contact.
+    pub joint: JointRole,
+    /// The time reached \[s\], on the clock grid.
+    pub time: f64,
+}
+
+impl Onset {
+    /// What happened, for a log: "contact onset in crankPin".
+    pub fn event(&self) -> &'static str {
+        match self.joint {
+            JointRole::MainBearing => "contact onset in mainBearing",
+            JointRole::CrankPin => "contact onset in crankPin",
+            JointRole::RodSlider => "contact onset in joint",
+        }
     }
 }

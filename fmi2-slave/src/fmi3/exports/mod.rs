@@ -9,6 +9,9 @@ pub mod sys {
 }
 
 mod export_macro;
+mod export_other_types;
+mod export_unsupported;
+mod export_values;
 mod lifecycle;
 mod step;
 mod values;
