@@ -64,19 +64,22 @@ pub unsafe fn fmi2Instantiate<M: Model>(
         let location = unsafe { string(fmuResourceLocation) }.unwrap_or_default();
         let resources = directory_of_uri(&location).filter(|d| d.is_dir());
         create::<M>(logger, &name, &guid, resources, Version::Fmi2)
+            .map_or(std::ptr::null_mut(), |instance| {
+                Box::into_raw(instance).cast()
+            })
     }));
     result.unwrap_or(std::ptr::null_mut())
 }
 
 /// A new instance of `M` named `name`, after checking the name and the GUID (FMI 3: the
-/// instantiation token) against the model's; NULL, the reason logged, if either is wrong.
+/// instantiation token) against the model's; None, the reason logged, if either is wrong.
 pub(crate) fn create<M: Model>(
     logger: Logger,
     name: &str,
     guid: &str,
     resources: Option<std::path::PathBuf>,
     version: Version,
-) -> fmi2Component {
+) -> Option<Box<Instance<M>>> {
     let call = match version {
         Version::Fmi2 => "fmi2Instantiate",
         Version::Fmi3 => "fmi3InstantiateCoSimulation",
@@ -87,14 +90,14 @@ pub(crate) fn create<M: Model>(
     };
     if name.is_empty() {
         logger.error(&format!("{call}: instanceName must not be NULL or empty."));
-        return std::ptr::null_mut();
+        return None;
     }
     if guid != M::GUID {
         logger.error(&format!(
             "{call}: Wrong {token}: expected {}, got \"{guid}\".",
             M::GUID
         ));
-        return std::ptr::null_mut();
+        return None;
     }
     logger.event(&format!(
         "{call}: instance \"{name}\" created (resources: {})",
@@ -104,7 +107,7 @@ pub(crate) fn create<M: Model>(
     ));
     let mut instance = Instance::<M>::new(logger, resources);
     instance.version = version;
-    Box::into_raw(Box::new(instance)).cast()
+    Some(Box::new(instance))
 }
 
 /// Frees an instance (NULL is a no-op); legal in every state.

@@ -51,7 +51,7 @@ pub unsafe fn fmi3InstantiateCoSimulation<M: Model>(
                 "fmi3InstantiateCoSimulation: eventModeUsed = true, but this FMU has no event \
                  mode (hasEventMode = false): it handles its events inside fmi3DoStep.",
             );
-            return std::ptr::null_mut();
+            return None;
         }
         // SAFETY: NUL-terminated strings from the master (FMI 3.0 §2.3.1), copied here; NULL
         // is allowed for the resource path (no resources).
@@ -63,16 +63,11 @@ pub unsafe fn fmi3InstantiateCoSimulation<M: Model>(
             )
         };
         let resources = path.map(std::path::PathBuf::from).filter(|d| d.is_dir());
-        let instance = create::<M>(logger, &name, &token, resources, Version::Fmi3);
-        if !instance.is_null() {
-            // SAFETY: just created by `create`, a Box<Instance<M>> no one else holds yet.
-            unsafe {
-                (*instance.cast::<crate::Instance<M>>()).early_return_allowed = earlyReturnAllowed
-            };
-        }
-        instance
+        let mut instance = create::<M>(logger, &name, &token, resources, Version::Fmi3)?;
+        instance.early_return_allowed = earlyReturnAllowed;
+        Some(Box::into_raw(instance).cast())
     }));
-    result.unwrap_or(std::ptr::null_mut())
+    result.ok().flatten().unwrap_or(std::ptr::null_mut())
 }
 
 /// Model exchange and scheduled execution are not provided: logs why and returns NULL.
