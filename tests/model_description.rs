@@ -5,7 +5,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use flexible_slider_crank::fmi::{GUID, MODEL_DESCRIPTION};
-use flexible_slider_crank::variables::VARIABLES;
+use flexible_slider_crank::variables::{FMI3, VARIABLES};
 
 #[test]
 fn committed_snapshot_is_current() {
@@ -37,7 +37,13 @@ fn guid_is_the_one_in_the_xml() {
 /// name) must be a name of the table.
 #[test]
 fn quoted_variable_names_exist() {
-    let names: Vec<&str> = VARIABLES.iter().map(|v| v.name).collect();
+    let fmi3 = FMI3.structural_parameters.iter().map(|p| p.name);
+    let names: Vec<&str> = VARIABLES
+        .iter()
+        .map(|v| v.name)
+        .chain(fmi3)
+        .chain(FMI3.arrays.iter().map(|a| a.name))
+        .collect();
     let mut components: Vec<String> = names
         .iter()
         .filter_map(|n| n.split_once('.').map(|(c, _)| format!("{c}.")))

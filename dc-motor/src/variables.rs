@@ -5,16 +5,14 @@
 //! [`Vr`], so the code and the XML cannot disagree.
 
 pub use fmi2_slave::description::Description;
-pub use fmi2_slave::fmi3::description::Capabilities;
+pub use fmi2_slave::fmi3::interface::Fmi3Interface;
 pub use fmi2_slave::table::{Causality, Kind, ValueReference};
 
 /// One variable of this FMU.
 pub type Variable = fmi2_slave::table::Variable<Vr>;
 
-/// FMI 3 capabilities beyond FMI 2's: the motor has no events to return early at.
-pub const FMI3: Capabilities = Capabilities {
-    might_return_early: false,
-};
+/// FMI 3 additions: none (the motor has no events to return early at, no arrays).
+pub const FMI3: Fmi3Interface = Fmi3Interface::NONE;
 
 /// Everything modelDescription.xml says.
 pub const DESCRIPTION: Description<Vr> = Description {

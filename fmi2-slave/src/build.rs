@@ -6,11 +6,11 @@ use crate::table::ValueReference;
 
 /// The work of a model's build script: renders the FMI 2 modelDescription.xml and its GUID into
 /// `OUT_DIR` (`modelDescription.xml`, `guid.txt`, for `include_str!`) and the FMI 3 one with the
-/// model's `fmi3` capabilities (`fmi3/modelDescription.xml`), and, for a macOS target, gives the
+/// model's FMI 3 additions `fmi3` (`fmi3/modelDescription.xml`), and, for a macOS target, gives the
 /// dylib the FMU's name as its install name (not the build path: reproducible builds).
 pub fn build_script<V: ValueReference>(
     d: &Description<V>,
-    fmi3: fmi3::description::Capabilities,
+    fmi3: fmi3::interface::Fmi3Interface,
 ) -> Result<(), Box<dyn std::error::Error>> {
     let (xml, guid) =
         description::model_description(d).map_err(|e| format!("variable table: {e}"))?;

@@ -2,6 +2,7 @@
 //! master's logger and the state machine — and the framing of its serialized states.
 
 use crate::error::FmuError;
+use crate::fmi3::interface::Fmi3Interface;
 use crate::logger::Logger;
 use crate::state::{State, Version};
 use crate::table::{Enumeration, ValueReference, Variable};
@@ -28,6 +29,8 @@ pub trait Model: Sized + 'static {
     const ENUMERATIONS: &'static [Enumeration] = &[];
     /// The highest order of input derivatives it takes (0: canInterpolateInputs = false).
     const MAX_INPUT_DERIVATIVE_ORDER: u32 = 0;
+    /// What its FMI 3 interface adds to the table: capabilities, structural parameters, arrays.
+    const FMI3: Fmi3Interface = Fmi3Interface::NONE;
 
     /// A model with every start value (fmi2Instantiate, fmi2Reset).
     fn new() -> Self;
@@ -73,6 +76,18 @@ pub trait Model: Sized + 'static {
         vars: &[Var<Self::Vr>],
         value: &[f64],
     ) -> Result<(), FmuError>;
+
+    /// fmi3GetFloat64 of the array `array` (its index in [`Model::FMI3`]'s arrays) at the current
+    /// point: `value` has the length its structural parameter gives. A model with arrays
+    /// implements it; the generic layer calls it for no other.
+    fn get_array(
+        &mut self,
+        _log: &Logger,
+        array: usize,
+        _value: &mut [f64],
+    ) -> Result<(), FmuError> {
+        Err(FmuError::Invalid(format!("array {array} cannot be read")))
+    }
 
     /// fmi2GetInteger.
     fn get_integer(
@@ -254,6 +269,9 @@ pub struct Instance<M: Model> {
     /// Integers of the current call in the model's representation (FMI 3's Int64 switches and
     /// Booleans); its capacity is reused.
     pub integers: Vec<i32>,
+    /// FMI 3: the values of the model's structural parameters ([`Model::FMI3`]), set in
+    /// Configuration Mode; they size its arrays.
+    pub structural: Vec<u64>,
 }
 
 /// The states in the order of their byte in a serialized state.
@@ -290,7 +308,17 @@ impl<M: Model> Instance<M> {
             version: Version::Fmi2,
             early_return_allowed: false,
             integers: Vec::new(),
+            structural: Self::structural_starts(),
         }
+    }
+
+    /// The start values of the structural parameters.
+    fn structural_starts() -> Vec<u64> {
+        M::FMI3
+            .structural_parameters
+            .iter()
+            .map(|p| p.start)
+            .collect()
     }
 
     /// fmi2Reset: back to Instantiated with every start value.
@@ -300,6 +328,7 @@ impl<M: Model> Instance<M> {
         self.cause = None;
         self.model = M::new();
         self.model.set_resource_directory(self.resources.clone());
+        self.structural = Self::structural_starts();
     }
 
     /// The serialized state: magic, version, state machine, the model's bytes, and an FNV-1a 64

@@ -7,6 +7,8 @@
 pub enum State {
     /// After fmi2Instantiate or fmi2Reset.
     Instantiated,
+    /// FMI 3: between Enter- and ExitConfigurationMode, where structural parameters are set.
+    ConfigurationMode,
     /// Between Enter- and ExitInitializationMode.
     InitializationMode,
     /// Ready for fmi2DoStep.
@@ -76,14 +78,37 @@ pub enum Call {
     GetInt64,
     /// fmi3SetInt64.
     SetInt64,
+    /// fmi3EnterConfigurationMode.
+    EnterConfigurationMode,
+    /// fmi3ExitConfigurationMode.
+    ExitConfigurationMode,
+    /// fmi3GetUInt64: the structural parameters.
+    GetUInt64,
+    /// fmi3SetUInt64.
+    SetUInt64,
     /// A call with no state rule of its own, named for messages: FMI 3's functions of the types
     /// and capabilities the FMU does not have, which refuse every non-empty request.
     Other(&'static str),
 }
 
-use State::{Error, InitializationMode, Instantiated, StepComplete, StepFailed, Terminated};
+use State::{
+    ConfigurationMode, Error, InitializationMode, Instantiated, StepComplete, StepFailed,
+    Terminated,
+};
 
 const ALL: &[State] = &[
+    Instantiated,
+    ConfigurationMode,
+    InitializationMode,
+    StepComplete,
+    StepFailed,
+    Terminated,
+    Error,
+];
+
+/// Where an FMU state may be got, set and serialized: everywhere but Configuration Mode (whose
+/// structural parameters are not a run's state).
+const FMU_STATE: &[State] = &[
     Instantiated,
     InitializationMode,
     StepComplete,
@@ -102,13 +127,23 @@ impl Call {
             Call::DoStep => &[StepComplete],
             Call::CancelStep => &[],
             Call::Terminate => &[StepComplete, StepFailed],
-            Call::Reset
-            | Call::GetFmuState
+            Call::Reset => ALL,
+            Call::EnterConfigurationMode => &[Instantiated],
+            Call::ExitConfigurationMode | Call::SetUInt64 => &[ConfigurationMode],
+            Call::GetUInt64 => &[
+                ConfigurationMode,
+                InitializationMode,
+                StepComplete,
+                StepFailed,
+                Terminated,
+                Error,
+            ],
+            Call::GetFmuState
             | Call::SetFmuState
             | Call::FreeFmuState
             | Call::SerializedFmuStateSize
             | Call::SerializeFmuState
-            | Call::DeSerializeFmuState => ALL,
+            | Call::DeSerializeFmuState => FMU_STATE,
             Call::GetReal
             | Call::GetInteger
             | Call::GetBoolean

@@ -16,8 +16,9 @@ use fmi_sys::fmi3::{fmi3InstanceEnvironment, fmi3Status, fmi3String};
 use fmi2_slave::clock::{CLOCK_RESOLUTION, on_clock_grid};
 use fmi2_slave::codec::{ByteReader, ByteWriter};
 use fmi2_slave::fmi3::description::TIME_VALUE_REFERENCE;
+use fmi2_slave::fmi3::interface::{ArrayVariable, Fmi3Interface, StructuralParameter};
 use fmi2_slave::model::Var;
-use fmi2_slave::table::{ValueReference, Variable};
+use fmi2_slave::table::{Causality, ValueReference, Variable};
 use fmi2_slave::{FmuError, Logger, Model, State, StepOutcome};
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -55,6 +56,29 @@ const VARIABLES: &[Variable<Vr>] = &[
     ),
 ];
 
+/// FMI 3: the powers y, y², …, yⁿ of the output as an array, n a structural parameter.
+const POWERS: u32 = TIME_VALUE_REFERENCE + 2;
+const N_POWERS: u32 = TIME_VALUE_REFERENCE + 1;
+const FMI3: Fmi3Interface = Fmi3Interface {
+    might_return_early: true,
+    structural_parameters: &[StructuralParameter {
+        vr: N_POWERS,
+        name: "lag.nPowers",
+        description: "number of powers",
+        start: 2,
+        min: 1,
+        max: 4,
+    }],
+    arrays: &[ArrayVariable {
+        vr: POWERS,
+        name: "lag.powers",
+        description: "y, y², …",
+        causality: Causality::Output,
+        unit: "1",
+        dimension: 0,
+    }],
+};
+
 /// The lag's state; y(0) = 0.
 #[derive(Debug, Default)]
 struct Lag {
@@ -76,6 +100,7 @@ impl Model for Lag {
     const STATE_VERSION: u32 = 1;
     type Vr = Vr;
     const VARIABLES: &'static [Variable<Vr>] = VARIABLES;
+    const FMI3: Fmi3Interface = FMI3;
 
     fn new() -> Self {
         Self {
@@ -152,6 +177,19 @@ impl Model for Lag {
         Ok(())
     }
 
+    fn get_array(
+        &mut self,
+        _log: &Logger,
+        array: usize,
+        value: &mut [f64],
+    ) -> Result<(), FmuError> {
+        assert_eq!(array, 0);
+        for (k, x) in (1..).zip(value) {
+            *x = self.y.powi(k);
+        }
+        Ok(())
+    }
+
     fn set_real(&mut self, _state: State, vars: &[Var<Vr>], value: &[f64]) -> Result<(), FmuError> {
         for (v, &x) in vars.iter().zip(value) {
             match v.vr {
@@ -213,6 +251,11 @@ unsafe extern "C" fn log3(
 
 fn last_message() -> String {
     MESSAGES.lock().unwrap().last().cloned().unwrap_or_default()
+}
+
+/// Whether any message so far contains `text` (robust against the other tests' messages).
+fn logged(text: &str) -> bool {
+    MESSAGES.lock().unwrap().iter().any(|m| m.contains(text))
 }
 
 const OK: u32 = 0;
@@ -307,8 +350,8 @@ fn fmi3_returns_early_at_the_models_event() {
                 "{last}"
             );
             assert_eq!(last % CLOCK_RESOLUTION, 0.0);
-            assert!(last_message().contains("fmi3DoStep: returned early at t = "));
-            assert!(last_message().contains("threshold crossed"));
+            assert!(logged("fmi3DoStep: returned early at t = "));
+            assert!(logged("threshold crossed"));
         }
     }
     assert_eq!(returns, 1);
@@ -345,23 +388,23 @@ fn the_layer_refuses_before_the_model_in_each_versions_names() {
     // SAFETY: a live instance; every pointer is valid for the counts given.
     unsafe {
         assert_eq!(fmi3GetInt32(c, &y, 1, &mut 0, 1), ERROR);
-        assert!(
-            last_message().contains("fmi3GetInt32: value reference 3 (lag.y) is not of type Int32")
-        );
+        assert!(logged(
+            "fmi3GetInt32: value reference 3 (lag.y) is not of type Int32"
+        ));
         assert_eq!(fmi3Reset(c), OK);
         assert_eq!(
             fmi3EnterInitializationMode(c, false, 0.0, 0.0, false, 0.0),
             OK
         );
         assert_eq!(fmi3GetFloat64(c, &y, 1, x.as_mut_ptr(), 2), ERROR);
-        assert!(last_message().contains("nValues = 2 but nValueReferences = 1"));
+        assert!(logged("nValues = 2 but the variables named have 1 element"));
         assert_eq!(fmi3Reset(c), OK);
         assert_eq!(
             fmi3EnterInitializationMode(c, false, 0.0, 0.0, false, 0.0),
             OK
         );
         assert_eq!(fmi3GetInt64(c, &count, 1, &mut n, 1), ERROR);
-        assert!(last_message().contains("(lag.crossings) is not of type Int64"));
+        assert!(logged("(lag.crossings) is not of type Int64"));
         assert_eq!(fmi3Reset(c), OK);
         assert_eq!(
             fmi3EnterInitializationMode(c, false, 0.0, 0.0, false, 0.0),
@@ -369,15 +412,15 @@ fn the_layer_refuses_before_the_model_in_each_versions_names() {
         );
         assert_eq!(fmi3ExitInitializationMode(c), OK);
         assert_eq!(fmi3SetFloat64(c, &tau, 1, &0.5, 1), ERROR);
-        assert!(
-            last_message().contains("fmi3SetFloat64: variable lag.tau (Parameter) cannot be set")
-        );
+        assert!(logged(
+            "fmi3SetFloat64: variable lag.tau (Parameter) cannot be set"
+        ));
         assert_eq!(fmi3Reset(c), OK);
         assert_eq!(fmi3SetFloat64(c, &TIME_VALUE_REFERENCE, 1, &1.0, 1), ERROR);
-        assert!(last_message().contains("time is the independent variable"));
+        assert!(logged("time is the independent variable"));
         assert_eq!(fmi3Reset(c), OK);
         assert_eq!(step3(c, 0.0, 0.1).0, ERROR);
-        assert!(last_message().contains("fmi3DoStep: Illegal call sequence."));
+        assert!(logged("fmi3DoStep: Illegal call sequence."));
         fmi3FreeInstance(c);
     }
 
@@ -413,5 +456,69 @@ fn the_layer_refuses_before_the_model_in_each_versions_names() {
         assert_eq!(fmi2GetReal(c, &(Vr::Y as u32), 1, &mut y), OK);
         assert!((y - (1.0 - (-0.5f64 / 0.2).exp())).abs() < 1e-14);
         fmi2FreeInstance(c);
+    }
+}
+
+/// The layer sizes an array by its structural parameter, set in Configuration Mode only: a get
+/// names scalars and arrays in one call, nValues their total size, each array filled by the
+/// model; a wrong total is refused before the model is called.
+#[test]
+fn fmi3_arrays_are_sized_by_structural_parameters() {
+    let name = CString::new("tiny-arrays").unwrap();
+    let token = CString::new(Lag::GUID).unwrap();
+    // SAFETY: NUL-terminated strings that outlive the calls; the instance is live, every pointer
+    // valid for the counts given.
+    unsafe {
+        let c = fmi3InstantiateCoSimulation(
+            name.as_ptr(),
+            token.as_ptr(),
+            std::ptr::null(),
+            false,
+            true,
+            false,
+            false,
+            std::ptr::null(),
+            0,
+            std::ptr::null_mut(),
+            Some(log3),
+            None,
+        );
+        assert_eq!(fmi3SetUInt64(c, &N_POWERS, 1, &3, 1), ERROR);
+        assert!(logged("fmi3SetUInt64: Illegal call sequence."));
+        assert_eq!(fmi3Reset(c), OK);
+        assert_eq!(fmi3EnterConfigurationMode(c), OK);
+        assert_eq!(fmi3SetUInt64(c, &N_POWERS, 1, &5, 1), ERROR);
+        assert!(logged(
+            "lag.nPowers = 5 is outside the allowed range [1, 4]"
+        ));
+        assert_eq!(fmi3Reset(c), OK);
+        assert_eq!(fmi3EnterConfigurationMode(c), OK);
+        assert_eq!(fmi3SetUInt64(c, &N_POWERS, 1, &3, 1), OK);
+        assert_eq!(fmi3ExitConfigurationMode(c), OK);
+        assert_eq!(
+            fmi3EnterInitializationMode(c, false, 0.0, 0.0, false, 0.0),
+            OK
+        );
+        assert_eq!(fmi3ExitInitializationMode(c), OK);
+        assert_eq!(step3(c, 0.0, 0.1).0, OK);
+        let refs = [Vr::Y as u32, POWERS, TIME_VALUE_REFERENCE, POWERS];
+        let mut values = [f64::NAN; 8];
+        assert_eq!(
+            fmi3GetFloat64(c, refs.as_ptr(), 4, values.as_mut_ptr(), 8),
+            OK
+        );
+        let y = values[0];
+        assert!(y > 0.3, "{values:?}");
+        assert_eq!(&values[1..4], &[y, y * y, y * y * y]);
+        assert_eq!(values[4], on_clock_grid(0.1));
+        assert_eq!(&values[5..8], &values[1..4]);
+        assert_eq!(
+            fmi3GetFloat64(c, refs.as_ptr(), 4, values.as_mut_ptr(), 7),
+            ERROR
+        );
+        assert!(logged(
+            "nValues = 7 but the variables named have 8 elements"
+        ));
+        fmi3FreeInstance(c);
     }
 }

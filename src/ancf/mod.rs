@@ -15,4 +15,5 @@ pub mod rod;
 pub mod shape;
 
 pub use element::{Element, Section};
+pub use rod::sections::{SectionResult, section_place};
 pub use rod::{NormalStresses, Rod, RodProperties};

@@ -483,5 +483,7 @@ pub fn kron_identity(a: &Mat<f64>) -> Mat<f64> {
     })
 }
 
+pub mod sections;
+
 #[cfg(test)]
 mod tests;

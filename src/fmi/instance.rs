@@ -4,11 +4,12 @@
 //! `fmi2-slave`. Values are read and written by an exhaustive `match` on [`Vr`].
 
 use fmi2_slave::checks::check_step;
+use fmi2_slave::fmi3::interface::Fmi3Interface;
 use fmi2_slave::model::Var;
 use fmi2_slave::table::Enumeration;
 use fmi2_slave::{FmuError, Logger, Model, State, StepOutcome};
 
-use super::outputs::{count_output, real_output, sensitivity};
+use super::outputs::{count_output, real_output, section_array, sensitivity};
 use super::snapshot::FmuSnapshot;
 use crate::error::{ModelError, Num};
 use crate::params::{
@@ -119,6 +120,7 @@ impl Model for SliderCrankFmu {
     const ENUMERATIONS: &'static [Enumeration] = ENUMERATIONS;
     const MAX_INPUT_DERIVATIVE_ORDER: u32 =
         crate::variables::DESCRIPTION.max_input_derivative_order;
+    const FMI3: Fmi3Interface = crate::variables::FMI3;
 
     fn new() -> Self {
         Self {
@@ -261,6 +263,11 @@ impl Model for SliderCrankFmu {
                 })
             }
         }
+    }
+
+    fn get_array(&mut self, log: &Logger, array: usize, value: &mut [f64]) -> Result<(), FmuError> {
+        let rod_length = self.parameters.rod.length;
+        section_array(array, value, rod_length, || self.simulation(log))
     }
 
     /// fmi2GetReal.

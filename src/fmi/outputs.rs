@@ -4,8 +4,33 @@
 use fmi2_slave::FmuError;
 use fmi2_slave::model::Var;
 
-use crate::simulation::{BearingOutputs, Input, Outputs, Simulation};
-use crate::variables::Vr;
+use crate::simulation::{BearingOutputs, Input, Outputs, SectionResult, Simulation, section_place};
+use crate::variables::{SectionArray, Vr};
+
+/// The rod.section array `array` (its index in [`SectionArray::ALL`]) at `value.len()` sections
+/// along a rod of reference length `rod_length` \[m\]; the results other than the positions
+/// come from the current state of `simulation`.
+pub fn section_array<'a>(
+    array: usize,
+    value: &mut [f64],
+    rod_length: f64,
+    simulation: impl FnOnce() -> Result<&'a mut Simulation, FmuError>,
+) -> Result<(), FmuError> {
+    let result = match SectionArray::ALL.get(array) {
+        Some(SectionArray::Position) => {
+            let n = value.len();
+            for (k, v) in value.iter_mut().enumerate() {
+                *v = section_place(k, n) * rod_length;
+            }
+            return Ok(());
+        }
+        Some(SectionArray::Deflection) => SectionResult::Deflection,
+        Some(SectionArray::AxialForce) => SectionResult::AxialForce,
+        Some(SectionArray::BendingMoment) => SectionResult::BendingMoment,
+        None => return Err(FmuError::Invalid(format!("no array {array}"))),
+    };
+    Ok(simulation()?.rod_sections(result, value)?)
+}
 
 /// Relative size of the input steps of [`sensitivity`].
 const INPUT_STEP: f64 = 1e-3;

@@ -29,7 +29,7 @@ use nalgebra::Vector2;
 use super::layout::{CRANK_ANGLE, PIN_A, pair};
 use super::rod_body::RodBody;
 use super::slider_crank::SliderCrank;
-use crate::ancf::{NormalStresses, RodProperties};
+use crate::ancf::{NormalStresses, RodProperties, SectionResult, section_place};
 use crate::joint::JointRole;
 use crate::math;
 use crate::reduction::Deformation;
@@ -58,24 +58,7 @@ impl SliderCrank {
     /// with `joint_force` the rod–slider joint's force on the journal.
     pub fn loads(&mut self, y: &[f64], dy: &[f64], joint_force: Vector2<f64>) -> Loads {
         let l = self.layout;
-        let p_ddot = &dy[l.rod_rates()];
-        let momentum_rate = Vector2::new(
-            self.rod_data.translation[0]
-                .iter()
-                .zip(p_ddot)
-                .map(|(u, a)| u * a)
-                .sum(),
-            self.rod_data.translation[1]
-                .iter()
-                .zip(p_ddot)
-                .map(|(u, a)| u * a)
-                .sum(),
-        );
-        let crank_pin = if self.has_clearance(JointRole::CrankPin) {
-            -self.joint_force(JointRole::CrankPin, y).0.force
-        } else {
-            momentum_rate - joint_force - self.rod_data.mass * self.gravity
-        };
+        let crank_pin = self.crank_pin_force(y, dy, joint_force);
         let crank_centre_acceleration = match l.crank_centre() {
             Some(g) => pair(dy, l.rate_of(g)),
             None => {
@@ -125,6 +108,66 @@ impl SliderCrank {
 }
 
 impl SliderCrank {
+    /// The rod's `result` at `out.len()` evenly spaced sections from the crank pin to the slider
+    /// pin ([`section_place`]) in state `y` whose time derivative is `dy` (only its accelerations
+    /// are read), with `joint_force` the rod–slider joint's force on the journal: for the flexible
+    /// rod from its shape and strains ([`crate::ancf::Rod::section_result`]), for the rigid rod
+    /// from the equilibrium of its parts ([`RigidRodResultants`]; no deflection).
+    pub fn rod_sections(
+        &mut self,
+        y: &[f64],
+        dy: &[f64],
+        joint_force: Vector2<f64>,
+        result: SectionResult,
+        out: &mut [f64],
+    ) {
+        let l = self.layout;
+        if let RodBody::Flexible(model) = &mut self.rod {
+            model.sections(&y[l.rod()], result, out);
+            return;
+        }
+        if result == SectionResult::Deflection {
+            out.fill(0.0);
+            return;
+        }
+        let crank_pin = self.crank_pin_force(y, dy, joint_force);
+        let [shank_a, _] = self.shank_forces(dy, crank_pin, joint_force);
+        let t = (pair(y, l.pin_b()) - pair(y, PIN_A)).normalize();
+        let accelerations = [pair(dy, l.rate_of(PIN_A)), pair(dy, l.rate_of(l.pin_b()))];
+        let section = &self.rod_data.section;
+        let r = RigidRodResultants::new(section, t, accelerations, shank_a, self.gravity);
+        let n = out.len();
+        for (k, value) in out.iter_mut().enumerate() {
+            let s = section_place(k, n) * section.length;
+            *value = match result {
+                SectionResult::AxialForce => r.axial(s),
+                _ => r.moment(s),
+            };
+        }
+    }
+
+    /// The force of the crank on the rod at the crank pin in state `y` with time derivative `dy`:
+    /// from the rod's momentum, or from a worn crank pin's joint law.
+    fn crank_pin_force(
+        &mut self,
+        y: &[f64],
+        dy: &[f64],
+        joint_force: Vector2<f64>,
+    ) -> Vector2<f64> {
+        if self.has_clearance(JointRole::CrankPin) {
+            return -self.joint_force(JointRole::CrankPin, y).0.force;
+        }
+        let p_ddot = &dy[self.layout.rod_rates()];
+        let momentum = |d: usize| -> f64 {
+            self.rod_data.translation[d]
+                .iter()
+                .zip(p_ddot)
+                .map(|(u, a)| u * a)
+                .sum()
+        };
+        Vector2::new(momentum(0), momentum(1)) - joint_force - self.rod_data.mass * self.gravity
+    }
+
     /// The forces on the rod's shank at its ends, the pin forces `crank_pin` (of the crank on the
     /// rod at A) and `joint_force` (on the rod's journal at B) less what accelerates the end masses:
     /// F − m (a − g) at each pin, with the accelerations of `dy`.
@@ -144,7 +187,7 @@ impl SliderCrank {
     }
 }
 
-/// The normal stresses of a rigid uniform rod with unit direction `t` (crank → slider), pin
+/// The section resultants of a rigid uniform rod with unit direction `t` (crank → slider), pin
 /// accelerations `accelerations` = [a_A, a_B], loaded by the force `f_a` of the crank at pin A,
 /// its weight and its inertia (the slider pin's force closes the balance).
 ///
@@ -153,11 +196,56 @@ impl SliderCrank {
 /// t × q = α + βu. The equilibrium of the part [0, s] gives the axial force (tension positive) and
 /// the bending moment (positive where the rod turns left)
 /// ```text
-/// N(s) = −F_A·t − p₀ s − p₁ s²/2,      M(s) = (t × F_A) s + α s²/2 + β s³/6,
+/// N(s) = −F_A·t − p₀ s − p₁ s²/2,      M(s) = (t × F_A) s + α s²/2 + β s³/6.
 /// ```
-/// and the fibres' stresses N/A ± |M| c/I. On each stretch where N and M keep their signs each
-/// is a cubic, so its extremes over [0, l] lie at an end or where ±N'/A ± M' c/I = 0: the roots of
-/// four quadratics are the only candidates besides the ends (exact, no sampling).
+#[derive(Clone, Copy, Debug)]
+pub struct RigidRodResultants {
+    n0: f64,
+    p0: f64,
+    p1: f64,
+    f_perp: f64,
+    alpha: f64,
+    beta: f64,
+}
+
+impl RigidRodResultants {
+    /// The resultants of the rod `section` in the motion and under the loads described above.
+    pub fn new(
+        section: &RodProperties,
+        t: Vector2<f64>,
+        accelerations: [Vector2<f64>; 2],
+        f_a: Vector2<f64>,
+        g: Vector2<f64>,
+    ) -> Self {
+        let cross = |a: Vector2<f64>, b: Vector2<f64>| a.x * b.y - a.y * b.x;
+        let rho_a = section.density * section.area;
+        let [a_a, a_b] = accelerations;
+        let (q0, q1) = (rho_a * (g - a_a), -rho_a * (a_b - a_a) / section.length);
+        Self {
+            n0: -f_a.dot(&t),
+            p0: q0.dot(&t),
+            p1: q1.dot(&t),
+            f_perp: cross(t, f_a),
+            alpha: cross(t, q0),
+            beta: cross(t, q1),
+        }
+    }
+
+    /// N(s) \[N\] at arc length `s` from pin A.
+    pub fn axial(&self, s: f64) -> f64 {
+        self.n0 - self.p0 * s - 0.5 * self.p1 * s * s
+    }
+
+    /// M(s) \[N m\] at arc length `s` from pin A.
+    pub fn moment(&self, s: f64) -> f64 {
+        self.f_perp * s + 0.5 * self.alpha * s * s + self.beta * s * s * s / 6.0
+    }
+}
+
+/// The normal stresses of the rigid rod of [`RigidRodResultants`]: the fibres' stresses
+/// N/A ± |M| c/I. On each stretch where N and M keep their signs each is a cubic, so its extremes
+/// over [0, l] lie at an end or where ±N'/A ± M' c/I = 0: the roots of four quadratics are the
+/// only candidates besides the ends (exact, no sampling).
 pub fn rigid_rod_stress(
     section: &RodProperties,
     t: Vector2<f64>,
@@ -165,17 +253,18 @@ pub fn rigid_rod_stress(
     f_a: Vector2<f64>,
     g: Vector2<f64>,
 ) -> NormalStresses {
-    let cross = |a: Vector2<f64>, b: Vector2<f64>| a.x * b.y - a.y * b.x;
     let (length, area) = (section.length, section.area);
     let bending = section.outer_fibre_distance / section.second_moment_of_area;
-    let rho_a = section.density * area;
-    let [a_a, a_b] = accelerations;
-    let (q0, q1) = (rho_a * (g - a_a), -rho_a * (a_b - a_a) / length);
-    let (p0, p1) = (q0.dot(&t), q1.dot(&t));
-    let (alpha, beta) = (cross(t, q0), cross(t, q1));
-    let (n0, f_perp) = (-f_a.dot(&t), cross(t, f_a));
-    let axial = |s: f64| n0 - p0 * s - 0.5 * p1 * s * s;
-    let moment = |s: f64| f_perp * s + 0.5 * alpha * s * s + beta * s * s * s / 6.0;
+    let r = RigidRodResultants::new(section, t, accelerations, f_a, g);
+    let (axial, moment) = (|s| r.axial(s), |s| r.moment(s));
+    let RigidRodResultants {
+        p0,
+        p1,
+        f_perp,
+        alpha,
+        beta,
+        ..
+    } = r;
     let mut stresses = NormalStresses {
         largest: 0.0,
         max: f64::NEG_INFINITY,

@@ -42,6 +42,6 @@ pub use energy::{Energies, JointEnergy};
 pub use events::CONTACT_ONSET_PENETRATION;
 pub use inputs::{Input, InputSignal, Inputs};
 pub use layout::StateLayout;
-pub use loads::{Loads, rigid_rod_stress};
+pub use loads::{Loads, RigidRodResultants, rigid_rod_stress};
 pub use slider_crank::{Evaluation, SliderCrank};
 pub use start::Reaction;

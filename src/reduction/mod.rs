@@ -19,7 +19,7 @@ pub use sampling::SampledForces;
 
 use nalgebra::Vector2;
 
-use crate::ancf::{NormalStresses, Rod};
+use crate::ancf::{NormalStresses, Rod, SectionResult, section_place};
 use crate::error::ModelError;
 
 /// How the reduced rod integrates its internal forces and strain energy.
@@ -330,13 +330,7 @@ impl RodModel {
     /// The rod's strain energy, largest normal stress and end tangents at `p`, from one expansion
     /// to nodal coordinates.
     pub fn deformation(&mut self, p: &[f64]) -> Deformation {
-        let e: &[f64] = match &self.reduction {
-            Some(cb) => {
-                cb.expand(p, &mut self.e);
-                &self.e
-            }
-            None => p,
-        };
+        let e = nodal(self.reduction.as_ref(), &mut self.e, p);
         let last = self.rod.last_node_offset();
         let unit = |at: usize| Vector2::new(e[at], e[at + 1]).normalize();
         Deformation {
@@ -352,19 +346,18 @@ impl RodModel {
     /// Mid-span deflection: displacement of the point at arc length L/2 perpendicular to the chord
     /// from node 0 to the last node, positive to the left of the chord direction \[m\].
     pub fn midspan_deflection(&mut self, p: &[f64]) -> f64 {
-        let half = 0.5 * self.rod.properties().length;
-        let e: &[f64] = match &self.reduction {
-            Some(cb) => {
-                cb.expand(p, &mut self.e);
-                &self.e
-            }
-            None => p,
-        };
-        let last = e.len() - 4;
-        let a = Vector2::new(e[0], e[1]);
-        let chord = Vector2::new(e[last], e[last + 1]) - a;
-        let r = self.rod.position(e, half) - a;
-        (chord.x * r.y - chord.y * r.x) / chord.norm()
+        let e = nodal(self.reduction.as_ref(), &mut self.e, p);
+        self.rod.deflection(e, 0.5)
+    }
+
+    /// The rod's `result` at `out.len()` evenly spaced sections from its first node to its last
+    /// ([`section_place`]), from one expansion to nodal coordinates.
+    pub fn sections(&mut self, p: &[f64], result: SectionResult, out: &mut [f64]) {
+        let e = nodal(self.reduction.as_ref(), &mut self.e, p);
+        let n = out.len();
+        for (k, value) in out.iter_mut().enumerate() {
+            *value = self.rod.section_result(e, result, section_place(k, n));
+        }
     }
 
     /// For each model coordinate, the largest displacement along the rod \[m\] per unit of it:
@@ -416,5 +409,17 @@ impl RodModel {
         cb.project(&me, &mut p);
         self.solve_mass(&mut p);
         p
+    }
+}
+
+/// The nodal coordinates of the model coordinates `p`: expanded into `buffer` by the
+/// reduction, or `p` itself for the full rod.
+fn nodal<'a>(reduction: Option<&CraigBampton>, buffer: &'a mut [f64], p: &'a [f64]) -> &'a [f64] {
+    match reduction {
+        Some(cb) => {
+            cb.expand(p, buffer);
+            buffer
+        }
+        None => p,
     }
 }

@@ -18,6 +18,7 @@ pub use self::peaks::{PeakHold, Peaks};
 pub use self::snapshot::Snapshot;
 pub use self::step::{Onset, StepPoint};
 use self::validity::Monitor;
+pub use crate::ancf::{SectionResult, section_place};
 use crate::error::{ModelError, Num};
 use crate::integrator::{Integrator, Stats};
 use crate::joint::JointRole;

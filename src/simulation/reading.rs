@@ -2,8 +2,11 @@
 //! one input moved (the differences that give the outputs' derivatives by the inputs).
 
 use super::outputs::{self, Outputs};
+use super::peaks::PeakHold;
 use super::{Input, InputSignal, Simulation};
+use crate::ancf::SectionResult;
 use crate::error::ModelError;
+use crate::mechanism::SliderCrank;
 
 impl Simulation {
     /// Outputs at the current time (one right-hand-side evaluation, no allocation).
@@ -26,7 +29,40 @@ impl Simulation {
         self.outputs_for(Some((input, delta)))
     }
 
+    /// The rod's `result` at `out.len()` evenly spaced sections from the crank pin to the slider
+    /// pin (rod.section.*, [`crate::ancf::section_place`]) at the current time, with the inputs
+    /// [`Simulation::outputs`] sees (one right-hand-side evaluation, no allocation).
+    pub fn rod_sections(
+        &mut self,
+        result: SectionResult,
+        out: &mut [f64],
+    ) -> Result<(), ModelError> {
+        self.read(None, |mechanism, _, y, scratch, _, _| {
+            let joint_force = mechanism.evaluate(y, scratch)?.joint_force;
+            mechanism.rod_sections(y, scratch, joint_force, result, out);
+            Ok(())
+        })
+    }
+
     fn outputs_for(&mut self, moved: Option<(Input, f64)>) -> Result<Outputs, ModelError> {
+        self.read(moved, outputs::outputs)
+    }
+
+    /// `read` of the mechanism in its current state and contact state, at the current time, with
+    /// the inputs of [`Simulation::outputs`] (`moved` by a difference if given) and the peak-hold
+    /// values and warnings count; the mechanism's inputs are restored afterwards.
+    fn read<T>(
+        &mut self,
+        moved: Option<(Input, f64)>,
+        read: impl FnOnce(
+            &mut SliderCrank,
+            f64,
+            &[f64],
+            &mut [f64],
+            &PeakHold,
+            u64,
+        ) -> Result<T, ModelError>,
+    ) -> Result<T, ModelError> {
         let contact = self.contact_now();
         let current = *self.mechanism.input_signal();
         let mut inputs = if self.inputs_set {
@@ -41,8 +77,8 @@ impl Simulation {
             *inputs.value.get_mut(input) += delta;
         }
         self.mechanism.set_input_signal(inputs, self.time);
-        let outputs = self.mechanism.with_contact_state(contact, |mechanism| {
-            outputs::outputs(
+        let value = self.mechanism.with_contact_state(contact, |mechanism| {
+            read(
                 mechanism,
                 self.time,
                 &self.state,
@@ -52,6 +88,6 @@ impl Simulation {
             )
         });
         self.mechanism.set_input_signal(current, self.time);
-        outputs
+        value
     }
 }

@@ -9,7 +9,6 @@
 //! code and the XML cannot disagree.
 
 pub use fmi2_slave::description::Description;
-pub use fmi2_slave::fmi3::description::Capabilities;
 pub use fmi2_slave::table::{Causality, Kind, ValueReference, Variability};
 
 mod crank;
@@ -18,19 +17,15 @@ mod enumerations;
 mod gravity;
 mod joints;
 mod rod;
+mod sections;
 mod slider;
 mod solver;
 mod structure;
 mod vr;
 
 pub use enumerations::*;
+pub use sections::{FMI3, N_SECTIONS, SectionArray};
 pub use vr::{Variable, Vr};
-
-/// FMI 3 capabilities beyond FMI 2's: with the master's consent a step returns early at the end
-/// of the internal step in which a joint comes into contact.
-pub const FMI3: Capabilities = Capabilities {
-    might_return_early: true,
-};
 
 /// Everything modelDescription.xml says.
 pub const DESCRIPTION: Description<Vr> = Description {

@@ -127,7 +127,13 @@ fn invoke(inst: &Instance, call: Call, state: fmi2FMUstate, bytes: &[u8]) -> fmi
             Call::GetStringStatus => {
                 f.fmi2GetStringStatus(c, fmi2StatusKind_fmi2PendingStatus, &mut string)
             }
-            Call::GetInt64 | Call::SetInt64 | Call::Other(_) => {
+            Call::GetInt64
+            | Call::SetInt64
+            | Call::EnterConfigurationMode
+            | Call::ExitConfigurationMode
+            | Call::GetUInt64
+            | Call::SetUInt64
+            | Call::Other(_) => {
                 unreachable!("{call:?} has no FMI 2 function")
             }
         }
@@ -188,6 +194,7 @@ fn in_state(name: &str, state: State) -> Instance {
         }
         State::Error => assert_eq!(inst.do_step(0.0, 1e-4), ERROR),
         State::StepFailed => unreachable!("not constructed by this test"),
+        State::ConfigurationMode => unreachable!("FMI 3 only (tests/fmi/fmi3.rs)"),
     }
     inst
 }

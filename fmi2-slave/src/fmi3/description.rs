@@ -7,6 +7,7 @@
 
 use std::fmt::Write as _;
 
+use super::interface::{ArrayVariable, Fmi3Interface, StructuralParameter};
 use crate::description::{
     Description, attributes, check, escape, log_categories_and_experiment, real_attributes,
     unit_definitions,
@@ -17,21 +18,15 @@ use crate::table::{Causality, Kind, ValueReference, Variable};
 /// own value references are dense from 0, so this one stays clear of any it will ever have).
 pub const TIME_VALUE_REFERENCE: u32 = 1_000_000;
 
-/// The FMI 3 co-simulation capabilities a model declares beyond FMI 2's.
-#[derive(Clone, Copy, Debug, Default)]
-pub struct Capabilities {
-    /// mightReturnEarlyFromDoStep: fmi3DoStep may end before the communication point (at an event
-    /// of the model) when the master allows it.
-    pub might_return_early: bool,
-}
-
-/// The FMI 3.0 modelDescription.xml of `d`, with `token` as its instantiationToken.
+/// The FMI 3.0 modelDescription.xml of `d` with the FMI 3 additions `fmi3`, and `token` as its
+/// instantiationToken.
 pub fn model_description<V: ValueReference>(
     d: &Description<V>,
-    capabilities: Capabilities,
+    fmi3: Fmi3Interface,
     token: &str,
 ) -> Result<String, String> {
     check(d)?;
+    check_interface(d, fmi3)?;
     let mut x = String::new();
     let _ = writeln!(x, r#"<?xml version="1.0" encoding="UTF-8"?>"#);
     let _ = writeln!(
@@ -54,7 +49,7 @@ pub fn model_description<V: ValueReference>(
         d.model_identifier,
         d.provides_directional_derivative,
         d.max_output_derivative_order,
-        capabilities.might_return_early,
+        fmi3.might_return_early,
     );
     x.push_str(&unit_definitions(d));
     if !d.enumerations.is_empty() {
@@ -83,8 +78,14 @@ pub fn model_description<V: ValueReference>(
         x,
         r#"    <Float64 name="time" valueReference="{TIME_VALUE_REFERENCE}" causality="independent" variability="continuous" description="Simulation time"{time_unit}/>"#
     );
+    for p in fmi3.structural_parameters {
+        x.push_str(&structural_parameter(p));
+    }
     for v in d.variables {
         x.push_str(&variable(d, v));
+    }
+    for a in fmi3.arrays {
+        x.push_str(&array(fmi3, a));
     }
     x.push_str("  </ModelVariables>\n  <ModelStructure>\n");
     let vrs = |f: &dyn Fn(&Variable<V>) -> bool| -> Vec<V> {
@@ -107,6 +108,11 @@ pub fn model_description<V: ValueReference>(
             list(inputs)
         );
     }
+    for a in fmi3.arrays {
+        if a.causality == Causality::Output {
+            let _ = writeln!(x, r#"    <Output valueReference="{}"/>"#, a.vr);
+        }
+    }
     for unknown in vrs(&|v| {
         matches!(
             v.causality,
@@ -124,8 +130,82 @@ pub fn model_description<V: ValueReference>(
             list(&knowns)
         );
     }
+    for a in fmi3.arrays {
+        let _ = writeln!(x, r#"    <InitialUnknown valueReference="{}"/>"#, a.vr);
+    }
     x.push_str("  </ModelStructure>\n</fmiModelDescription>\n");
     Ok(x)
+}
+
+/// Checks the FMI 3 additions: value references unique and outside the table's, start values
+/// in range, each array's dimension a structural parameter and its unit defined.
+fn check_interface<V: ValueReference>(
+    d: &Description<V>,
+    fmi3: Fmi3Interface,
+) -> Result<(), String> {
+    let extra = fmi3
+        .structural_parameters
+        .iter()
+        .map(|p| (p.vr, p.name))
+        .chain(fmi3.arrays.iter().map(|a| (a.vr, a.name)));
+    let mut seen = vec![TIME_VALUE_REFERENCE];
+    for (vr, name) in extra {
+        if seen.contains(&vr) || d.variables.iter().any(|v| v.vr.index() == vr) {
+            return Err(format!("{name}: value reference {vr} is taken"));
+        }
+        seen.push(vr);
+    }
+    for p in fmi3.structural_parameters {
+        if !(p.min..=p.max).contains(&p.start) {
+            return Err(format!(
+                "{}: start {} outside [{}, {}]",
+                p.name, p.start, p.min, p.max
+            ));
+        }
+    }
+    for a in fmi3.arrays {
+        if a.dimension >= fmi3.structural_parameters.len() {
+            return Err(format!(
+                "{}: dimension {} is no structural parameter",
+                a.name, a.dimension
+            ));
+        }
+        if !d.units.iter().any(|(u, _)| *u == a.unit) {
+            return Err(format!("{}: unit {} is not defined", a.name, a.unit));
+        }
+    }
+    Ok(())
+}
+
+/// A structural parameter's element.
+fn structural_parameter(p: &StructuralParameter) -> String {
+    format!(
+        r#"    <UInt64 name="{}" valueReference="{}" description="{}" causality="structuralParameter" variability="fixed" start="{}" min="{}" max="{}"/>"#,
+        p.name,
+        p.vr,
+        escape(p.description),
+        p.start,
+        p.min,
+        p.max
+    ) + "\n"
+}
+
+/// An array's element, with its `<Dimension>`.
+fn array(fmi3: Fmi3Interface, a: &ArrayVariable) -> String {
+    let (causality, variability) = match a.causality {
+        Causality::CalculatedParameter => ("calculatedParameter", "fixed"),
+        _ => ("output", "continuous"),
+    };
+    format!(
+        r#"    <Float64 name="{}" valueReference="{}" description="{}" causality="{causality}" variability="{variability}" unit="{}">
+      <Dimension valueReference="{}"/>
+    </Float64>"#,
+        a.name,
+        a.vr,
+        escape(a.description),
+        a.unit,
+        fmi3.structural_parameters[a.dimension].vr,
+    ) + "\n"
 }
 
 /// One variable's element.

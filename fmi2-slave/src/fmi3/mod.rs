@@ -4,3 +4,4 @@
 pub mod description;
 #[cfg(feature = "slave")]
 pub mod exports;
+pub mod interface;

@@ -40,7 +40,12 @@ def test_fmi3_declares_its_capabilities(root, model):
     assert md3.instantiationToken == md2.guid
     (time,) = [v for v in md3.modelVariables if v.causality == "independent"]
     assert time.name == "time" and time.type == "Float64"
-    variables3 = [v for v in md3.modelVariables if v.causality != "independent"]
+    # (the structural parameter and the arrays are FMI 3's own: tests/test_fmi3_arrays.py)
+    variables3 = [
+        v
+        for v in md3.modelVariables
+        if v.causality not in ("independent", "structuralParameter") and not v.dimensions
+    ]
     assert [v.name for v in variables3] == [v.name for v in md2.modelVariables]
     for v2, v3 in zip(md2.modelVariables, variables3):
         assert v3.valueReference == v2.valueReference
@@ -58,10 +63,16 @@ def test_fmi3_declares_its_capabilities(root, model):
 @pytest.mark.parametrize("model", MODELS)
 def test_fmi3_default_experiment_is_bit_identical_to_fmi2(root, model):
     """The DefaultExperiment through fmpy gives the same numbers at every output and every
-    communication point in FMI 3 as in FMI 2."""
+    communication point in FMI 3 as in FMI 2 (whose outputs are FMI 3's but the arrays)."""
     r2 = simulate_fmu(fmi2_fmu(root, model))
     r3 = simulate_fmu(fmi3_fmu(root, model))
-    assert r2.dtype.names == r3.dtype.names
+    arrays = [name for name in r3.dtype.names if r3[name].ndim > 1]
+    assert arrays == (
+        ["rod.section.deflection", "rod.section.axialForce", "rod.section.bendingMoment"]
+        if model == "FlexibleSliderCrank"
+        else []
+    )
+    assert r2.dtype.names == tuple(name for name in r3.dtype.names if name not in arrays)
     for name in r2.dtype.names:
         assert np.array_equal(r2[name], r3[name]), name
 

@@ -1,5 +1,6 @@
 //! Unit tests of the ANCF rod.
 
+use super::sections::{SectionResult, patch_weights, section_place};
 use super::*;
 
 /// The patch weights are the least-squares quadratic's values at 0, 1/2 and 1 (in element
@@ -20,6 +21,99 @@ fn patch_weights_are_the_least_squares_quadratic() {
             assert!((w - expected).abs() < 1e-14, "at {at}: {w} vs {expected}");
         }
         assert!((weights.iter().sum::<f64>() - 1.0).abs() < 1e-14);
+    }
+}
+
+/// The closed form of the patch weights anywhere on the patch is the least-squares quadratic's:
+/// the weights w(u) are those of [1 u u²](VᵀV)⁻¹Vᵀ exactly when Vᵀw = [1 u u²] (a quadratic
+/// through the four points is recovered wherever it is evaluated) and w lies in the range of V
+/// (orthogonal to Vᵀ's null vector z = [a, −b, b, −a] for the points a, b, 1 + a, 1 + b).
+#[test]
+fn patch_weights_anywhere_are_the_least_squares_quadratic() {
+    let (a, b) = (0.5 - 0.5 / 3f64.sqrt(), 0.5 + 0.5 / 3f64.sqrt());
+    let points = [a, b, 1.0 + a, 1.0 + b];
+    let null = [a, -b, b, -a];
+    let dot = |u: &[f64; 4], v: &[f64; 4]| u.iter().zip(v).map(|(x, y)| x * y).sum::<f64>();
+    for k in 0..3 {
+        assert!(dot(&null, &points.map(|x| x.powi(k))).abs() < 1e-15);
+    }
+    let quadratic = |x: f64| 0.7 - 1.3 * x + 2.1 * x * x;
+    for at in [0.0, 0.3, 0.5, 1.0, 1.25, 1.5, 2.0] {
+        let w = patch_weights(at);
+        let value = dot(&w, &points.map(quadratic));
+        assert!((value - quadratic(at)).abs() < 1e-14, "at {at}: {value}");
+        assert!(dot(&w, &null).abs() < 1e-15, "at {at}: {w:?}");
+    }
+}
+
+/// The pinned beam under a uniform load of the test below, at evenly spaced sections: the
+/// recovered moment is the exact −q x (L − x)/2 everywhere (a quadratic), the axial force zero,
+/// and the deflection the exact w(x) to the cubic (Hermite) interpolation's error between the
+/// nodes, at most w (h/2)⁴/4! = q h⁴/(384 EI) for elements of length h.
+#[test]
+fn a_pinned_beam_under_a_uniform_load_has_the_exact_section_moments() {
+    let p = RodProperties::benchmark_b();
+    let (l, ei) = (p.length, p.youngs_modulus * p.second_moment_of_area);
+    let q = 1e-5 * 8.0 * ei / (l * l);
+    let w = |x: f64| q * x * (l.powi(3) - 2.0 * l * x * x + x.powi(3)) / (24.0 * ei);
+    let slope = |x: f64| q * (l.powi(3) - 6.0 * l * x * x + 4.0 * x.powi(3)) / (24.0 * ei);
+    let largest_moment = q * l * l / 8.0;
+    for n in 2..=9 {
+        let interpolation = q * (l / n as f64).powi(4) / (384.0 * ei);
+        let rod = Rod::new(p, n).unwrap();
+        let e: Vec<f64> = (0..=n)
+            .flat_map(|k| {
+                let x = l * k as f64 / n as f64;
+                [x, w(x), 1.0, slope(x)]
+            })
+            .collect();
+        for sections in [2, 7, 11, 20] {
+            for k in 0..sections {
+                let place = section_place(k, sections);
+                let x = place * l;
+                let moment = rod.section_result(&e, SectionResult::BendingMoment, place);
+                let expected = -q * x * (l - x) / 2.0;
+                assert!(
+                    (moment - expected).abs() < 1e-6 * largest_moment,
+                    "{n} elements, section {k}/{sections}: {moment} vs {expected}"
+                );
+                let axial = rod.section_result(&e, SectionResult::AxialForce, place);
+                assert!(axial.abs() < 1e-3 * q * l, "{n}, {k}/{sections}: {axial}");
+                let deflection = rod.section_result(&e, SectionResult::Deflection, place);
+                assert!(
+                    (deflection - w(x)).abs() <= interpolation * (1.0 + 1e-6) + 1e-9 * w(0.5 * l),
+                    "{n}, {k}/{sections}: {deflection} vs {}",
+                    w(x)
+                );
+            }
+        }
+    }
+}
+
+/// In any deformed state, the section at mid-span has the mid-span values of
+/// [`Rod::normal_stresses`] (the same recovery from the same patch), for one element and many,
+/// mid-span a node or inside an element.
+#[test]
+fn the_middle_section_has_the_midspan_resultants() {
+    let p = RodProperties::benchmark_b();
+    for n in 1..=7 {
+        let rod = Rod::new(p, n).unwrap();
+        let mut e = rod.straight_configuration(Vector2::new(0.0, 0.0), 0.2);
+        for (i, value) in e.iter_mut().enumerate() {
+            *value += 1e-4 * ((i * 7 % 11) as f64 - 5.0) / 5.0;
+        }
+        let stresses = rod.normal_stresses(&e);
+        let axial = rod.section_result(&e, SectionResult::AxialForce, 0.5);
+        let moment = rod.section_result(&e, SectionResult::BendingMoment, 0.5);
+        let scale = |x: f64| 1e-12 * x.abs().max(1.0);
+        assert!(
+            (axial - stresses.midspan_axial_force).abs() < scale(stresses.midspan_axial_force),
+            "{n}: {axial} vs {stresses:?}"
+        );
+        assert!(
+            (moment - stresses.midspan_moment).abs() < scale(stresses.midspan_moment),
+            "{n}: {moment} vs {stresses:?}"
+        );
     }
 }
 

@@ -1,5 +1,6 @@
-//! The getters and setters of the FMI 3 types the FMU has no variable of (Float32, the small and
-//! unsigned integers, Binary, Clock) under their C names, for [`crate::export_fmi3!`]: each refuses
+//! The getters and setters of the FMI 3 types beyond the table's, under their C names, for
+//! [`crate::export_fmi3!`]: UInt64, the structural parameters' type, forwards to the layer; those
+//! of the types the FMU has no variable of (Float32, the small integers, Binary, Clock) refuse
 //! every value reference, naming its variable.
 
 /// Part of [`crate::export_fmi3!`], which invokes it.
@@ -133,23 +134,23 @@ macro_rules! export_fmi3_other_types {
             }
         }
         const _: $crate::fmi3::exports::sys::fmi3GetUInt32TYPE = Some(fmi3GetUInt32);
-        /// No variable of this FMU is a UInt64: refuses every value reference.
+        /// Reads the structural parameters (FMI 3's only UInt64 variables).
         #[unsafe(no_mangle)]
         pub unsafe extern "C" fn fmi3GetUInt64(
             instance: $crate::fmi3::exports::sys::fmi3Instance,
             valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
             nValueReferences: usize,
-            _values: *mut $crate::fmi3::exports::sys::fmi3UInt64,
-            _nValues: usize,
+            values: *mut $crate::fmi3::exports::sys::fmi3UInt64,
+            nValues: usize,
         ) -> $crate::fmi3::exports::sys::fmi3Status {
             // SAFETY: the master's arguments, passed on unchanged under the same contract.
             unsafe {
-                $crate::fmi3::exports::no_variable_of_type::<$model>(
+                $crate::fmi3::exports::fmi3GetUInt64::<$model>(
                     instance,
-                    "fmi3GetUInt64",
-                    "UInt64",
                     valueReferences,
                     nValueReferences,
+                    values,
+                    nValues,
                 )
             }
         }
@@ -322,23 +323,23 @@ macro_rules! export_fmi3_other_types {
             }
         }
         const _: $crate::fmi3::exports::sys::fmi3SetUInt32TYPE = Some(fmi3SetUInt32);
-        /// No variable of this FMU is a UInt64: refuses every value reference.
+        /// Sets the structural parameters (FMI 3's only UInt64 variables).
         #[unsafe(no_mangle)]
         pub unsafe extern "C" fn fmi3SetUInt64(
             instance: $crate::fmi3::exports::sys::fmi3Instance,
             valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
             nValueReferences: usize,
-            _values: *const $crate::fmi3::exports::sys::fmi3UInt64,
-            _nValues: usize,
+            values: *const $crate::fmi3::exports::sys::fmi3UInt64,
+            nValues: usize,
         ) -> $crate::fmi3::exports::sys::fmi3Status {
             // SAFETY: the master's arguments, passed on unchanged under the same contract.
             unsafe {
-                $crate::fmi3::exports::no_variable_of_type::<$model>(
+                $crate::fmi3::exports::fmi3SetUInt64::<$model>(
                     instance,
-                    "fmi3SetUInt64",
-                    "UInt64",
                     valueReferences,
                     nValueReferences,
+                    values,
+                    nValues,
                 )
             }
         }

@@ -1,6 +1,8 @@
-//! The FMI 3 functions of capabilities the FMU does not declare (event and configuration mode,
-//! clocks, model exchange, scheduled execution, adjoint derivatives, variable dependencies) under
-//! their C names, for [`crate::export_fmi3!`]: each returns fmi3Error with the reason logged.
+//! The FMI 3 functions of modes and capabilities beyond stepping, under their C names, for
+//! [`crate::export_fmi3!`]: Configuration Mode forwards to the layer (which refuses it for a model
+//! without structural parameters); those the FMU does not declare (event mode, clocks, model
+//! exchange, scheduled execution, adjoint derivatives, variable dependencies) return fmi3Error
+//! with the reason logged.
 
 /// Part of [`crate::export_fmi3!`], which invokes it.
 #[doc(hidden)]
@@ -74,29 +76,23 @@ macro_rules! export_fmi3_unsupported {
         }
         const _: $crate::fmi3::exports::sys::fmi3GetAdjointDerivativeTYPE =
             Some(fmi3GetAdjointDerivative);
-        /// Not supported: the FMU has no structural parameters.
+        /// Enters Configuration Mode (a model with structural parameters).
         #[unsafe(no_mangle)]
         pub unsafe extern "C" fn fmi3EnterConfigurationMode(
             instance: $crate::fmi3::exports::sys::fmi3Instance,
         ) -> $crate::fmi3::exports::sys::fmi3Status {
-            $crate::fmi3::exports::unsupported::<$model>(
-                instance,
-                "fmi3EnterConfigurationMode",
-                "the FMU has no structural parameters",
-            )
+            // SAFETY: the master's argument, passed on unchanged under the same contract.
+            unsafe { $crate::fmi3::exports::fmi3EnterConfigurationMode::<$model>(instance) }
         }
         const _: $crate::fmi3::exports::sys::fmi3EnterConfigurationModeTYPE =
             Some(fmi3EnterConfigurationMode);
-        /// Not supported: the FMU has no structural parameters.
+        /// Leaves Configuration Mode.
         #[unsafe(no_mangle)]
         pub unsafe extern "C" fn fmi3ExitConfigurationMode(
             instance: $crate::fmi3::exports::sys::fmi3Instance,
         ) -> $crate::fmi3::exports::sys::fmi3Status {
-            $crate::fmi3::exports::unsupported::<$model>(
-                instance,
-                "fmi3ExitConfigurationMode",
-                "the FMU has no structural parameters",
-            )
+            // SAFETY: the master's argument, passed on unchanged under the same contract.
+            unsafe { $crate::fmi3::exports::fmi3ExitConfigurationMode::<$model>(instance) }
         }
         const _: $crate::fmi3::exports::sys::fmi3ExitConfigurationModeTYPE =
             Some(fmi3ExitConfigurationMode);

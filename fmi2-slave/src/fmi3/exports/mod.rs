@@ -8,6 +8,7 @@ pub mod sys {
     pub use fmi_sys::fmi3::*;
 }
 
+mod arrays;
 mod export_macro;
 mod export_other_types;
 mod export_unsupported;
@@ -16,6 +17,9 @@ mod lifecycle;
 mod step;
 mod values;
 
+pub use arrays::{
+    fmi3EnterConfigurationMode, fmi3ExitConfigurationMode, fmi3GetUInt64, fmi3SetUInt64,
+};
 pub use lifecycle::{
     fmi3EnterInitializationMode, fmi3ExitInitializationMode, fmi3FreeInstance, fmi3GetVersion,
     fmi3InstantiateCoSimulation, fmi3Reset, fmi3SetDebugLogging, fmi3Terminate, instantiate_other,

@@ -5,7 +5,8 @@
 
 use fmi_sys::fmi3::*;
 
-use super::values::{refuse, scalars};
+use super::arrays::scalars;
+use super::values::refuse;
 use crate::error::FmuError;
 use crate::exports::codes::OK;
 use crate::ffi::{slice_mut, with_instance};

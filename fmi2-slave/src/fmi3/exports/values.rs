@@ -5,6 +5,7 @@
 
 use fmi_sys::fmi3::*;
 
+use super::arrays::{get_float64, refuse_arrays, scalars};
 use crate::checks::{check_set_boolean, check_set_integer, check_set_real, lookup, resolve};
 use crate::error::FmuError;
 use crate::exports::codes::{OK, ok};
@@ -13,19 +14,6 @@ use crate::fmi3::description::TIME_VALUE_REFERENCE;
 use crate::logger::Logger;
 use crate::model::{Instance, Model, Var};
 use crate::state::Call;
-
-/// Checks that a call gives one value per value reference: every variable of the FMU is a
-/// scalar (FMI 3.0 §2.3.6: nValues is the total size of the variables named).
-pub(super) fn scalars(n_value_references: usize, n_values: usize) -> Result<(), FmuError> {
-    if n_values == n_value_references {
-        Ok(())
-    } else {
-        Err(FmuError::Invalid(format!(
-            "nValues = {n_values} but nValueReferences = {n_value_references}: every variable \
-             of this FMU is a scalar"
-        )))
-    }
-}
 
 /// The value references and values of a get call.
 ///
@@ -70,7 +58,7 @@ unsafe fn set_args<'a, T>(
     }
 }
 
-/// Reads Float64 variables; `time` is the time the instance has reached.
+/// Reads Float64 variables and arrays; `time` is the time the instance has reached.
 pub unsafe fn fmi3GetFloat64<M: Model>(
     instance: fmi3Instance,
     valueReferences: *const fmi3ValueReference,
@@ -80,24 +68,13 @@ pub unsafe fn fmi3GetFloat64<M: Model>(
 ) -> fmi3Status {
     with_instance::<M>(instance, Call::GetReal, |inst| {
         // SAFETY: nValueReferences and nValues elements (FMI 3.0 §2.3.6).
-        let (vr, values) = unsafe { get_args(valueReferences, nValueReferences, values, nValues) }?;
-        if !vr.contains(&TIME_VALUE_REFERENCE) {
-            resolve::<M>(vr, "Float64", &mut inst.variables)?;
-            return inst
-                .model
-                .get_real(&inst.logger, &inst.variables, values)
-                .map(ok);
-        }
-        for (&r, value) in vr.iter().zip(values) {
-            if r == TIME_VALUE_REFERENCE {
-                *value = inst.model.last_successful_time();
-            } else {
-                resolve::<M>(&[r], "Float64", &mut inst.variables)?;
-                let one = std::slice::from_mut(value);
-                inst.model.get_real(&inst.logger, &inst.variables, one)?;
-            }
-        }
-        Ok(OK)
+        let (vr, values) = unsafe {
+            (
+                slice(valueReferences, nValueReferences, "valueReferences")?,
+                slice_mut(values, nValues, "values")?,
+            )
+        };
+        get_float64(inst, vr, values).map(ok)
     })
 }
 
@@ -110,6 +87,10 @@ pub unsafe fn fmi3SetFloat64<M: Model>(
     nValues: usize,
 ) -> fmi3Status {
     with_instance::<M>(instance, Call::SetReal, |inst| {
+        // SAFETY: nValueReferences value references (FMI 3.0 §2.3.6).
+        refuse_arrays::<M>(unsafe {
+            slice(valueReferences, nValueReferences, "valueReferences")
+        }?)?;
         // SAFETY: nValueReferences and nValues elements (FMI 3.0 §2.3.6).
         let (vr, values) = unsafe { set_args(valueReferences, nValueReferences, values, nValues) }?;
         if vr.contains(&TIME_VALUE_REFERENCE) {

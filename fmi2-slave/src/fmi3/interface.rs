@@ -1,0 +1,74 @@
+//! What a model's FMI 3 interface declares beyond the variable table it shares with FMI 2: its
+//! co-simulation capabilities, its structural parameters and its arrays (FMI 2 has neither).
+
+use crate::table::Causality;
+
+/// A model's FMI 3 additions: rendered into its FMI 3 modelDescription.xml
+/// ([`super::description`]) and read by the `fmi3*` functions.
+#[derive(Clone, Copy, Debug)]
+pub struct Fmi3Interface {
+    /// mightReturnEarlyFromDoStep: fmi3DoStep may end before the communication point (at an event
+    /// of the model) when the master allows it.
+    pub might_return_early: bool,
+    /// The structural parameters, in the order [`ArrayVariable::dimension`] counts them.
+    pub structural_parameters: &'static [StructuralParameter],
+    /// The Float64 arrays, in the order [`crate::Model::get_array`] counts them.
+    pub arrays: &'static [ArrayVariable],
+}
+
+impl Fmi3Interface {
+    /// No early return, no structural parameter, no array.
+    pub const NONE: Self = Self {
+        might_return_early: false,
+        structural_parameters: &[],
+        arrays: &[],
+    };
+
+    /// The structural parameter with value reference `vr`, with its index.
+    pub fn structural_parameter(&self, vr: u32) -> Option<(usize, &'static StructuralParameter)> {
+        let parameters: &'static [StructuralParameter] = self.structural_parameters;
+        parameters.iter().enumerate().find(|(_, p)| p.vr == vr)
+    }
+
+    /// The array with value reference `vr`, with its index.
+    pub fn array(&self, vr: u32) -> Option<(usize, &'static ArrayVariable)> {
+        let arrays: &'static [ArrayVariable] = self.arrays;
+        arrays.iter().enumerate().find(|(_, a)| a.vr == vr)
+    }
+}
+
+/// A structural parameter: a UInt64 count that sizes arrays (causality structuralParameter,
+/// variability fixed), set only in Configuration Mode (FMI 3.0 §2.3.5).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StructuralParameter {
+    /// Value reference, outside the variable table's.
+    pub vr: u32,
+    /// Structured name.
+    pub name: &'static str,
+    /// Description.
+    pub description: &'static str,
+    /// Start value.
+    pub start: u64,
+    /// Smallest allowed value.
+    pub min: u64,
+    /// Largest allowed value.
+    pub max: u64,
+}
+
+/// A one-dimensional Float64 array whose size is the value of a structural parameter
+/// (`<Dimension valueReference=…>`, FMI 3.0 §2.4.7.2).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ArrayVariable {
+    /// Value reference, outside the variable table's.
+    pub vr: u32,
+    /// Structured name.
+    pub name: &'static str,
+    /// Description.
+    pub description: &'static str,
+    /// Output (continuous) or calculated parameter (fixed).
+    pub causality: Causality,
+    /// Unit name, defined in the table's units.
+    pub unit: &'static str,
+    /// Index of the structural parameter that sizes it.
+    pub dimension: usize,
+}
