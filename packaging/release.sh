@@ -4,8 +4,9 @@
 #   binaries/linux64   x86_64 Linux, glibc 2.28 or later (RHEL/Rocky 8, Ubuntu 18.10, Debian 10 on)
 #   binaries/win64     x86_64 Windows 10 or later
 #   binaries/darwin64  macOS 11 or later, universal (x86_64 and arm64), ad-hoc signed
-# and the FMI 3.0 twins in target/fmu/release/fmi3/ with the same libraries in FMI 3's platform folders,
-# plus binaries/aarch64-linux (ARM64 Linux, glibc 2.28 or later), which FMI 2.0 cannot name,
+# and the FMI 3.0 twins in target/fmu/release/fmi3/ with the same libraries in FMI 3's platform folders
+# (the universal binary's two slices apart: binaries/x86_64-darwin and binaries/aarch64-darwin), plus
+# binaries/aarch64-linux (ARM64 Linux, glibc 2.28 or later), which FMI 2.0 cannot name,
 # from this workspace, with only Debian packages, crates and PyPI packages:
 #   - linux64: this machine's Rust toolchain, linked by zig (PyPI `ziglang`) through cargo-zigbuild
 #     against glibc 2.28's symbol versions;
@@ -83,7 +84,8 @@ CARGO_HOME=$cargo_home debian cargo fetch --locked --quiet --manifest-path "$std
 
 # --- builds: four jobs in parallel (each is mostly one serial chain of crates) ---------------
 bin=$out/binaries
-mkdir -p "$bin/linux64" "$bin/win64" "$bin/darwin64" "$bin/aarch64-linux" "$out/logs"
+mkdir -p "$bin/linux64" "$bin/win64" "$bin/darwin64" "$bin/x86_64-darwin" "$bin/aarch64-darwin" \
+  "$bin/aarch64-linux" "$out/logs"
 export CARGO_HOME=$cargo_home
 remap="--remap-path-prefix=$root=/build --remap-path-prefix=$cargo_home=/cargo"
 remap="$remap --remap-path-prefix=$toolchain/usr/lib/rustlib/src/rust=/rustc/$rust_web"
@@ -124,6 +126,11 @@ darwin64() {
     llvm-lipo-14 -create "$out/darwin/x86_64-apple-darwin/release/lib${lib%%:*}.dylib" \
       "$out/darwin/aarch64-apple-darwin/release/lib${lib%%:*}.dylib" \
       -output "$bin/darwin64/${lib##*:}.dylib"
+    # FMI 3.0 names each architecture: the universal binary's slices, taken back out of it.
+    for arch in x86_64:x86_64 arm64:aarch64; do
+      llvm-lipo-14 "$bin/darwin64/${lib##*:}.dylib" -thin "${arch%%:*}" \
+        -output "$bin/${arch##*:}-darwin/${lib##*:}.dylib"
+    done
   done
 }
 

@@ -266,6 +266,8 @@ pub struct Instance<M: Model> {
     pub version: Version,
     /// FMI 3: whether the master allows fmi3DoStep to return early (earlyReturnAllowed).
     pub early_return_allowed: bool,
+    /// FMI 3: whether the master handles the model's events in Event Mode (eventModeUsed).
+    pub event_mode_used: bool,
     /// Integers of the current call in the model's representation (FMI 3's Int64 switches and
     /// Booleans); its capacity is reused.
     pub integers: Vec<i32>,
@@ -275,13 +277,14 @@ pub struct Instance<M: Model> {
 }
 
 /// The states in the order of their byte in a serialized state.
-const STATES: [State; 6] = [
+const STATES: [State; 7] = [
     State::Instantiated,
     State::InitializationMode,
     State::StepComplete,
     State::StepFailed,
     State::Terminated,
     State::Error,
+    State::EventMode,
 ];
 
 /// The checksum that ends a serialized state: FNV-1a 64 of every byte before it.
@@ -307,6 +310,7 @@ impl<M: Model> Instance<M> {
             resources,
             version: Version::Fmi2,
             early_return_allowed: false,
+            event_mode_used: false,
             integers: Vec::new(),
             structural: Self::structural_starts(),
         }

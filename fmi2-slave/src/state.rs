@@ -19,6 +19,9 @@ pub enum State {
     Terminated,
     /// A call returned fmi2Error.
     Error,
+    /// FMI 3 with eventModeUsed: after an event (and after initialization), until
+    /// fmi3EnterStepMode.
+    EventMode,
 }
 
 /// The FMI version an instance was created through (the names of its calls in messages).
@@ -86,14 +89,20 @@ pub enum Call {
     GetUInt64,
     /// fmi3SetUInt64.
     SetUInt64,
+    /// fmi3EnterEventMode.
+    EnterEventMode,
+    /// fmi3UpdateDiscreteStates.
+    UpdateDiscreteStates,
+    /// fmi3EnterStepMode.
+    EnterStepMode,
     /// A call with no state rule of its own, named for messages: FMI 3's functions of the types
     /// and capabilities the FMU does not have, which refuse every non-empty request.
     Other(&'static str),
 }
 
 use State::{
-    ConfigurationMode, Error, InitializationMode, Instantiated, StepComplete, StepFailed,
-    Terminated,
+    ConfigurationMode, Error, EventMode, InitializationMode, Instantiated, StepComplete,
+    StepFailed, Terminated,
 };
 
 const ALL: &[State] = &[
@@ -104,6 +113,7 @@ const ALL: &[State] = &[
     StepFailed,
     Terminated,
     Error,
+    EventMode,
 ];
 
 /// Where an FMU state may be got, set and serialized: everywhere but Configuration Mode (whose
@@ -115,6 +125,7 @@ const FMU_STATE: &[State] = &[
     StepFailed,
     Terminated,
     Error,
+    EventMode,
 ];
 
 impl Call {
@@ -126,7 +137,7 @@ impl Call {
             Call::ExitInitializationMode => &[InitializationMode],
             Call::DoStep => &[StepComplete],
             Call::CancelStep => &[],
-            Call::Terminate => &[StepComplete, StepFailed],
+            Call::Terminate => &[StepComplete, StepFailed, EventMode],
             Call::Reset => ALL,
             Call::EnterConfigurationMode => &[Instantiated],
             Call::ExitConfigurationMode | Call::SetUInt64 => &[ConfigurationMode],
@@ -137,7 +148,10 @@ impl Call {
                 StepFailed,
                 Terminated,
                 Error,
+                EventMode,
             ],
+            Call::EnterEventMode => &[StepComplete],
+            Call::UpdateDiscreteStates | Call::EnterStepMode => &[EventMode],
             Call::GetFmuState
             | Call::SetFmuState
             | Call::FreeFmuState
@@ -155,13 +169,16 @@ impl Call {
                 StepFailed,
                 Terminated,
                 Error,
+                EventMode,
             ],
             Call::SetReal
             | Call::SetInteger
             | Call::SetBoolean
             | Call::SetString
             | Call::SetInt64
-            | Call::SetRealInputDerivatives => &[Instantiated, InitializationMode, StepComplete],
+            | Call::SetRealInputDerivatives => {
+                &[Instantiated, InitializationMode, StepComplete, EventMode]
+            }
             Call::GetRealOutputDerivatives => &[StepComplete, StepFailed, Terminated, Error],
             Call::GetStatus
             | Call::GetRealStatus

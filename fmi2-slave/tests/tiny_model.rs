@@ -61,6 +61,7 @@ const POWERS: u32 = TIME_VALUE_REFERENCE + 2;
 const N_POWERS: u32 = TIME_VALUE_REFERENCE + 1;
 const FMI3: Fmi3Interface = Fmi3Interface {
     might_return_early: true,
+    has_event_mode: true,
     structural_parameters: &[StructuralParameter {
         vr: N_POWERS,
         name: "lag.nPowers",

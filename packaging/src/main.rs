@@ -10,12 +10,13 @@
 //!   in the FMI cross-check layout under `target/fmu/compatibility/` ([`compatibility`]).
 //! - `cargo run --release -p packaging -- --binaries DIR`: takes the libraries the release build
 //!   (`packaging/release.sh`) made, `DIR/<platform>/<FlexibleSliderCrank|DcMotor>.<so|dll|dylib>`
-//!   for every FMI platform folder present (linux64, win64, darwin64), and writes the same files
-//!   under `target/fmu/release/`.
+//!   for every platform folder present (FMI 2's linux64, win64, darwin64; FMI 3's own aarch64-linux,
+//!   x86_64-darwin, aarch64-darwin), and writes the same files under `target/fmu/release/`.
 //!
 //! Beside each FMI 2 FMU goes its FMI 3.0 twin under `fmi3/` (`target/fmu/fmi3/`,
 //! `target/fmu/release/fmi3/`): the same libraries, which export both `fmi2*` and `fmi3*`, in FMI
-//! 3's platform folders ([`fmi3_platforms`]), with the FMI 3 modelDescription.xml.
+//! 3's platform folders ([`fmi3_platform`]; the macOS universal binary's slices apart), with the FMI 3
+//! modelDescription.xml.
 //!
 //! The archive is reproducible: its entries come in a fixed order with a fixed time stamp.
 
@@ -67,23 +68,27 @@ fn build_library(root: &Path, package: &str) -> Result<PathBuf, Box<dyn Error>> 
 }
 
 /// The release build's platform folders and the file extension of their shared libraries: FMI
-/// 2.0's, and `aarch64-linux`, which only FMI 3.0 can name.
-const PLATFORMS: [(&str, &str); 4] = [
+/// 2.0's (`darwin64` a universal binary), and those only FMI 3.0 can name: `aarch64-linux` and the
+/// universal binary's two slices.
+const PLATFORMS: [(&str, &str); 6] = [
     ("linux64", "so"),
     ("win64", "dll"),
     ("darwin64", "dylib"),
     ("aarch64-linux", "so"),
+    ("x86_64-darwin", "dylib"),
+    ("aarch64-darwin", "dylib"),
 ];
 
-/// The FMI 3.0 platform tuples (FMI 3.0 §2.5.1.4) of a platform folder's library: the macOS one is
-/// a universal binary of both architectures.
-fn fmi3_platforms(fmi2: &str) -> &'static [&'static str] {
-    match fmi2 {
-        "linux64" => &["x86_64-linux"],
-        "win64" => &["x86_64-windows"],
-        "darwin64" => &["x86_64-darwin", "aarch64-darwin"],
-        "aarch64-linux" => &["aarch64-linux"],
-        _ => &[],
+/// The FMI 3.0 platform tuple (FMI 3.0 §2.5.1.4) of a platform folder's library, if FMI 3 takes it
+/// (not the universal binary: its slices have their own folders).
+fn fmi3_platform(folder: &str) -> Option<&'static str> {
+    match folder {
+        "linux64" => Some("x86_64-linux"),
+        "win64" => Some("x86_64-windows"),
+        "x86_64-darwin" => Some("x86_64-darwin"),
+        "aarch64-darwin" => Some("aarch64-darwin"),
+        "aarch64-linux" => Some("aarch64-linux"),
+        _ => None,
     }
 }
 
@@ -96,15 +101,11 @@ fn fmi2_binaries(binaries: &[(&'static str, PathBuf)]) -> Vec<(&'static str, Pat
         .collect()
 }
 
-/// The binaries of every platform folder in FMI 3's platform folders.
+/// The binaries FMI 3 takes, in FMI 3's platform folders.
 fn fmi3_binaries(binaries: &[(&str, PathBuf)]) -> Vec<(&'static str, PathBuf)> {
     binaries
         .iter()
-        .flat_map(|(platform, path)| {
-            fmi3_platforms(platform)
-                .iter()
-                .map(move |tuple| (*tuple, path.clone()))
-        })
+        .filter_map(|(folder, path)| Some((fmi3_platform(folder)?, path.clone())))
         .collect()
 }
 

@@ -91,9 +91,12 @@ pub const SECTION_ARRAYS: &[ArrayVariable] = &[
 ];
 
 /// FMI 3 additions: with the master's consent a step returns early at the end of the internal
-/// step in which a joint comes into contact; the rod's section results are arrays.
+/// step in which a joint comes into contact, and with event mode that onset is an event (the
+/// joints' inContact flags and onset counters change there); the rod's section results are
+/// arrays.
 pub const FMI3: Fmi3Interface = Fmi3Interface {
     might_return_early: true,
+    has_event_mode: true,
     structural_parameters: STRUCTURAL_PARAMETERS,
     arrays: SECTION_ARRAYS,
 };

@@ -50,6 +50,8 @@ unsafe extern "C" fn log_message(
 struct Instance3 {
     c: fmi3Instance,
     id: usize,
+    /// Created with eventModeUsed.
+    event_mode: bool,
 }
 
 impl Instance3 {
@@ -78,7 +80,7 @@ impl Instance3 {
                 None,
             )
         };
-        ((!c.is_null()).then_some(Self { c, id }), id)
+        ((!c.is_null()).then_some(Self { c, id, event_mode }), id)
     }
 
     /// An instance in Step Mode with the default parameters.
@@ -117,9 +119,11 @@ impl Instance3 {
             )
         };
         if status == OK {
-            assert!(
-                !event && !terminate,
-                "no event mode, never a terminate request"
+            assert!(!terminate, "never a terminate request");
+            assert_eq!(
+                event,
+                early && self.event_mode,
+                "events only with event mode"
             );
         }
         (status, early, last)
@@ -310,10 +314,6 @@ fn fmi3_refuses_what_it_does_not_take() {
     let (none, id) = Instance3::try_new("{not-the-token}", false, false);
     assert!(none.is_none());
     assert!(messages(id)[0].contains("fmi3InstantiateCoSimulation: Wrong instantiationToken"));
-    let (none, id) = Instance3::try_new(GUID, true, false);
-    assert!(none.is_none());
-    assert!(messages(id)[0].contains("hasEventMode = false"));
-
     let (inst, _) = Instance3::try_new(GUID, false, false);
     let inst = inst.unwrap();
     let last = |inst: &Instance3| inst.messages().last().cloned().unwrap_or_default();
@@ -379,8 +379,101 @@ fn fmi3_refuses_what_it_does_not_take() {
     unsafe {
         assert_eq!(fmu3().fmi3Reset(inst.c), OK);
         assert_eq!(fmu3().fmi3EnterEventMode(inst.c), ERROR);
+        assert!(last(&inst).contains("fmi3EnterEventMode: Illegal call sequence."));
+        assert_eq!(fmu3().fmi3Reset(inst.c), OK);
+        assert_eq!(
+            fmu3().fmi3EnterInitializationMode(inst.c, false, 0.0, 0.0, false, 0.0),
+            OK
+        );
+        assert_eq!(fmu3().fmi3ExitInitializationMode(inst.c), OK);
+        assert_eq!(fmu3().fmi3EnterEventMode(inst.c), ERROR);
     }
-    assert!(last(&inst).contains("fmi3EnterEventMode: not supported"));
+    assert!(last(&inst).contains("created with eventModeUsed = false"));
+}
+
+/// With event mode (and early return) the instance starts in Event Mode after initialization,
+/// and every early return at a contact onset asks for it: there the joint that came into
+/// contact reads inContact, the discrete states settle at once, and Step Mode continues; the
+/// run is the one with early return alone, bit for bit, and a step in Event Mode is refused.
+#[test]
+fn event_mode_at_each_contact_onset_changes_nothing() {
+    let (inst, id) = Instance3::try_new(GUID, true, true);
+    let events = inst.unwrap_or_else(|| panic!("{:?}", messages(id)));
+    let plain = Instance3::initialized(true);
+    let flags = [
+        vr("joint.inContact"),
+        vr("crankPin.inContact"),
+        vr("mainBearing.inContact"),
+    ];
+    let settle = |inst: &Instance3| {
+        let mut out = [true; 5];
+        let mut next = f64::NAN;
+        let [a, b, c, d, e] = &mut out;
+        // SAFETY: a live instance, one writable value each.
+        let status = unsafe { fmu3().fmi3UpdateDiscreteStates(inst.c, a, b, c, d, e, &mut next) };
+        assert_eq!((status, out), (OK, [false; 5]));
+        // SAFETY: as above.
+        assert_eq!(unsafe { fmu3().fmi3EnterStepMode(inst.c) }, OK);
+    };
+    // SAFETY: a live instance.
+    unsafe {
+        assert_eq!(
+            fmu3().fmi3EnterInitializationMode(events.c, false, 0.0, 0.0, false, 0.0),
+            OK
+        );
+        assert_eq!(fmu3().fmi3ExitInitializationMode(events.c), OK);
+    }
+    assert_eq!(events.do_step(0.0, 1e-4).0, ERROR, "a step in Event Mode");
+    assert!(
+        events
+            .messages()
+            .last()
+            .unwrap()
+            .contains("fmi3DoStep: Illegal call sequence.")
+    );
+    // SAFETY: a live instance (Error state: start again).
+    unsafe {
+        assert_eq!(fmu3().fmi3Reset(events.c), OK);
+        assert_eq!(
+            fmu3().fmi3EnterInitializationMode(events.c, false, 0.0, 0.0, false, 0.0),
+            OK
+        );
+        assert_eq!(fmu3().fmi3ExitInitializationMode(events.c), OK);
+    }
+    settle(&events);
+    let (h, mut t, mut entered) = (1e-4, 0.0, 0);
+    for k in 1..=300 {
+        let point = f64::from(k) * h;
+        loop {
+            let (status, early, last) = events.do_step(t, point - t);
+            assert_eq!(status, OK, "{:?}", events.messages());
+            assert_eq!(plain.do_step(t, point - t), (OK, early, last));
+            t = last;
+            if !early {
+                break;
+            }
+            // SAFETY: a live instance; one value per reference.
+            unsafe { assert_eq!(fmu3().fmi3EnterEventMode(events.c), OK) };
+            entered += 1;
+            let mut in_contact = [false; 3];
+            // SAFETY: as above.
+            let status = unsafe {
+                fmu3().fmi3GetBoolean(events.c, flags.as_ptr(), 3, in_contact.as_mut_ptr(), 3)
+            };
+            assert_eq!(status, OK);
+            assert!(
+                in_contact.contains(&true),
+                "an onset at {t} s: {in_contact:?}"
+            );
+            settle(&events);
+        }
+        let outputs = real_outputs();
+        assert_eq!(
+            events.get_float64(&outputs).1,
+            plain.get_float64(&outputs).1
+        );
+    }
+    assert!(entered > 10, "{entered} events in 30 ms of impacts");
 }
 
 /// The value reference of the FMI 3 array `name`.

@@ -133,6 +133,9 @@ fn invoke(inst: &Instance, call: Call, state: fmi2FMUstate, bytes: &[u8]) -> fmi
             | Call::ExitConfigurationMode
             | Call::GetUInt64
             | Call::SetUInt64
+            | Call::EnterEventMode
+            | Call::UpdateDiscreteStates
+            | Call::EnterStepMode
             | Call::Other(_) => {
                 unreachable!("{call:?} has no FMI 2 function")
             }
@@ -194,7 +197,9 @@ fn in_state(name: &str, state: State) -> Instance {
         }
         State::Error => assert_eq!(inst.do_step(0.0, 1e-4), ERROR),
         State::StepFailed => unreachable!("not constructed by this test"),
-        State::ConfigurationMode => unreachable!("FMI 3 only (tests/fmi/fmi3.rs)"),
+        State::ConfigurationMode | State::EventMode => {
+            unreachable!("FMI 3 only (tests/fmi/fmi3.rs)")
+        }
     }
     inst
 }

@@ -45,10 +45,11 @@ pub fn model_description<V: ValueReference>(
     );
     let _ = writeln!(
         x,
-        r#"  <CoSimulation modelIdentifier="{}" canHandleVariableCommunicationStepSize="true" canGetAndSetFMUState="true" canSerializeFMUState="true" providesDirectionalDerivatives="{}" maxOutputDerivativeOrder="{}" hasEventMode="false" mightReturnEarlyFromDoStep="{}" providesIntermediateUpdate="false" canReturnEarlyAfterIntermediateUpdate="false"/>"#,
+        r#"  <CoSimulation modelIdentifier="{}" canHandleVariableCommunicationStepSize="true" canGetAndSetFMUState="true" canSerializeFMUState="true" providesDirectionalDerivatives="{}" maxOutputDerivativeOrder="{}" hasEventMode="{}" mightReturnEarlyFromDoStep="{}" providesIntermediateUpdate="false" canReturnEarlyAfterIntermediateUpdate="false"/>"#,
         d.model_identifier,
         d.provides_directional_derivative,
         d.max_output_derivative_order,
+        fmi3.has_event_mode,
         fmi3.might_return_early,
     );
     x.push_str(&unit_definitions(d));

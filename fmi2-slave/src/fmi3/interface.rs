@@ -10,6 +10,9 @@ pub struct Fmi3Interface {
     /// mightReturnEarlyFromDoStep: fmi3DoStep may end before the communication point (at an event
     /// of the model) when the master allows it.
     pub might_return_early: bool,
+    /// hasEventMode: with the master's consent (eventModeUsed), an early return at an event asks
+    /// for Event Mode, where the discrete variables that changed there are read.
+    pub has_event_mode: bool,
     /// The structural parameters, in the order [`ArrayVariable::dimension`] counts them.
     pub structural_parameters: &'static [StructuralParameter],
     /// The Float64 arrays, in the order [`crate::Model::get_array`] counts them.
@@ -20,6 +23,7 @@ impl Fmi3Interface {
     /// No early return, no structural parameter, no array.
     pub const NONE: Self = Self {
         might_return_early: false,
+        has_event_mode: false,
         structural_parameters: &[],
         arrays: &[],
     };

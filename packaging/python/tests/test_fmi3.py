@@ -1,6 +1,6 @@
 """The FMI 3.0 FMUs through fmpy's FMI 3 master: valid, bit-identical to their FMI 2 twins at the
-DefaultExperiment and in the motor-crank system, and, with early return allowed, returning at the
-slider-crank's contact onsets without changing what the run computes."""
+DefaultExperiment and in the motor-crank system, and, with early return allowed (and event mode),
+returning at the slider-crank's contact onsets without changing what the run computes."""
 import zipfile
 
 import numpy as np
@@ -27,15 +27,16 @@ def test_fmi3_fmus_are_valid(root, model):
 
 @pytest.mark.parametrize("model", MODELS)
 def test_fmi3_declares_its_capabilities(root, model):
-    """Co-simulation only, without event mode or intermediate update; early return where the
+    """Co-simulation only, without intermediate update; early return and event mode where the
     model has events (the slider-crank's contact onsets); the same variables as FMI 2, the
     switches as Enumerations, and the binary in FMI 3's platform folder."""
     md3 = read_model_description(fmi3_fmu(root, model))
     md2 = read_model_description(fmi2_fmu(root, model))
     assert md3.fmiVersion == "3.0" and md3.modelExchange is None
     cs = md3.coSimulation
-    assert not cs.hasEventMode and not cs.providesIntermediateUpdate
+    assert not cs.providesIntermediateUpdate
     assert cs.mightReturnEarlyFromDoStep == (model == "FlexibleSliderCrank")
+    assert cs.hasEventMode == (model == "FlexibleSliderCrank")
     assert cs.canGetAndSetFMUstate and cs.canSerializeFMUstate
     assert md3.instantiationToken == md2.guid
     (time,) = [v for v in md3.modelVariables if v.causality == "independent"]
@@ -96,6 +97,40 @@ def test_early_return_at_contact_onsets(root):
     for name in ["joint.forcePeak", "slider.accelerationPeak", "rod.stressPeak"]:
         a, b = np.max(grid[name]), np.max(early[name])
         assert abs(b - a) <= 0.005 * a, (name, a, b)
+
+
+def test_event_mode_at_contact_onsets(root):
+    """fmpy's FMI 3 master with event mode and early return enters Event Mode at every contact
+    onset (it records the point before and after); the points after equal those before (the
+    onset is settled where it happens), and without the repeats the run is the one with early
+    return alone, bit for bit, at every output and array."""
+    fmu = fmi3_fmu(root, "FlexibleSliderCrank")
+    early = simulate_fmu(fmu, early_return_allowed=True)
+    events = simulate_fmu(fmu, early_return_allowed=True, use_event_mode=True)
+    onsets = int(early["joint.contactOnsetsTotal"][-1])
+    repeated = events["time"][1:] == events["time"][:-1]
+    assert np.sum(repeated) == onsets > 10
+    first = np.concatenate([[True], ~repeated])
+    for name in early.dtype.names:
+        assert np.array_equal(events[name][first], early[name]), name
+        assert np.array_equal(events[name][1:][repeated], events[name][:-1][repeated]), name
+
+
+def test_motor_has_no_event_mode(root):
+    """The motor has no events: a master that asks for event mode is refused at instantiation,
+    with the reason."""
+    from fmpy import extract
+    from fmpy.fmi3 import FMU3Slave
+
+    fmu = fmi3_fmu(root, "DcMotor")
+    md = read_model_description(fmu)
+    messages = []
+    slave = FMU3Slave(guid=md.guid, unzipDirectory=extract(fmu),
+                      modelIdentifier="DcMotor", instanceName="motor")
+    with pytest.raises(Exception):
+        slave.instantiate(eventModeUsed=True,
+                          logMessage=lambda env, status, category, m: messages.append(m.decode()))
+    assert "hasEventMode = false" in messages[-1]
 
 
 def test_motor_crank_system_in_fmi3_equals_fmi2():

@@ -83,7 +83,7 @@ MODELS = ["FlexibleSliderCrank", "DcMotor"]
 @pytest.mark.parametrize("model", MODELS)
 def test_release_fmi3_fmu_validates_holds_every_platform_and_equals_fmi2(model):
     """The release FMI 3.0 FMU carries the same libraries in FMI 3's platform folders (the macOS
-    universal binary in both of its architectures' folders) and, on this machine, runs its
+    universal binary's slices in their architectures' folders) and, on this machine, runs its
     DefaultExperiment through fmpy bit for bit as the release FMI 2.0 FMU does."""
     from fmpy import simulate_fmu
     import numpy as np
@@ -102,6 +102,23 @@ def test_release_fmi3_fmu_validates_holds_every_platform_and_equals_fmi2(model):
     r3 = simulate_fmu(fmu3)
     for name in r2.dtype.names:
         assert np.array_equal(r2[name], r3[name]), name
+
+
+@pytest.mark.parametrize("model", MODELS)
+def test_fmi3_darwin_folders_hold_the_universal_binarys_slices(model, tmp_path):
+    """FMI 3.0 names each macOS architecture: x86_64-darwin and aarch64-darwin hold one slice each,
+    byte for byte the slice of the universal binary the FMI 2.0 FMU ships in darwin64."""
+    import zipfile
+
+    universal = BINARIES / "darwin64" / f"{model}.dylib"
+    with zipfile.ZipFile(RELEASE_FMU.parent / "fmi3" / f"{model}.fmu") as z:
+        for folder, arch in [("x86_64-darwin", "x86_64"), ("aarch64-darwin", "arm64")]:
+            shipped = tmp_path / f"{folder}.dylib"
+            shipped.write_bytes(z.read(f"binaries/{folder}/{model}.dylib"))
+            assert run(["llvm-lipo-14", "-archs", str(shipped)]).stdout.split() == [arch]
+            thin = tmp_path / f"{arch}.dylib"
+            run(["llvm-lipo-14", str(universal), "-thin", arch, "-output", str(thin)])
+            assert shipped.read_bytes() == thin.read_bytes(), folder
 
 
 @pytest.mark.parametrize("model", MODELS)

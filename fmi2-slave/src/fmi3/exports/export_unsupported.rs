@@ -1,24 +1,21 @@
 //! The FMI 3 functions of modes and capabilities beyond stepping, under their C names, for
-//! [`crate::export_fmi3!`]: Configuration Mode forwards to the layer (which refuses it for a model
-//! without structural parameters); those the FMU does not declare (event mode, clocks, model
-//! exchange, scheduled execution, adjoint derivatives, variable dependencies) return fmi3Error
-//! with the reason logged.
+//! [`crate::export_fmi3!`]: Configuration Mode and Event Mode forward to the layer (which refuses
+//! them for a model without structural parameters or event mode); those the FMU does not declare
+//! (clocks, model exchange, scheduled execution, adjoint derivatives, variable dependencies)
+//! return fmi3Error with the reason logged.
 
 /// Part of [`crate::export_fmi3!`], which invokes it.
 #[doc(hidden)]
 #[macro_export]
 macro_rules! export_fmi3_unsupported {
     ($model:ty) => {
-        /// Not supported: the FMU has no event mode (hasEventMode = false).
+        /// Enters Event Mode (a model with hasEventMode, an instance with eventModeUsed).
         #[unsafe(no_mangle)]
         pub unsafe extern "C" fn fmi3EnterEventMode(
             instance: $crate::fmi3::exports::sys::fmi3Instance,
         ) -> $crate::fmi3::exports::sys::fmi3Status {
-            $crate::fmi3::exports::unsupported::<$model>(
-                instance,
-                "fmi3EnterEventMode",
-                "the FMU has no event mode (hasEventMode = false)",
-            )
+            // SAFETY: the master's argument, passed on unchanged under the same contract.
+            unsafe { $crate::fmi3::exports::fmi3EnterEventMode::<$model>(instance) }
         }
         const _: $crate::fmi3::exports::sys::fmi3EnterEventModeTYPE = Some(fmi3EnterEventMode);
         /// Not supported: the dependencies are those of modelDescription.xml's ModelStructure.
@@ -239,22 +236,29 @@ macro_rules! export_fmi3_unsupported {
         }
         const _: $crate::fmi3::exports::sys::fmi3EvaluateDiscreteStatesTYPE =
             Some(fmi3EvaluateDiscreteStates);
-        /// Not supported: the FMU has no event mode (hasEventMode = false).
+        /// Settles the discrete states in Event Mode.
         #[unsafe(no_mangle)]
         pub unsafe extern "C" fn fmi3UpdateDiscreteStates(
             instance: $crate::fmi3::exports::sys::fmi3Instance,
-            _discreteStatesNeedUpdate: *mut $crate::fmi3::exports::sys::fmi3Boolean,
-            _terminateSimulation: *mut $crate::fmi3::exports::sys::fmi3Boolean,
-            _nominalsOfContinuousStatesChanged: *mut $crate::fmi3::exports::sys::fmi3Boolean,
-            _valuesOfContinuousStatesChanged: *mut $crate::fmi3::exports::sys::fmi3Boolean,
-            _nextEventTimeDefined: *mut $crate::fmi3::exports::sys::fmi3Boolean,
-            _nextEventTime: *mut $crate::fmi3::exports::sys::fmi3Float64,
+            discreteStatesNeedUpdate: *mut $crate::fmi3::exports::sys::fmi3Boolean,
+            terminateSimulation: *mut $crate::fmi3::exports::sys::fmi3Boolean,
+            nominalsOfContinuousStatesChanged: *mut $crate::fmi3::exports::sys::fmi3Boolean,
+            valuesOfContinuousStatesChanged: *mut $crate::fmi3::exports::sys::fmi3Boolean,
+            nextEventTimeDefined: *mut $crate::fmi3::exports::sys::fmi3Boolean,
+            nextEventTime: *mut $crate::fmi3::exports::sys::fmi3Float64,
         ) -> $crate::fmi3::exports::sys::fmi3Status {
-            $crate::fmi3::exports::unsupported::<$model>(
-                instance,
-                "fmi3UpdateDiscreteStates",
-                "the FMU has no event mode (hasEventMode = false)",
-            )
+            // SAFETY: the master's arguments, passed on unchanged under the same contract.
+            unsafe {
+                $crate::fmi3::exports::fmi3UpdateDiscreteStates::<$model>(
+                    instance,
+                    discreteStatesNeedUpdate,
+                    terminateSimulation,
+                    nominalsOfContinuousStatesChanged,
+                    valuesOfContinuousStatesChanged,
+                    nextEventTimeDefined,
+                    nextEventTime,
+                )
+            }
         }
         const _: $crate::fmi3::exports::sys::fmi3UpdateDiscreteStatesTYPE =
             Some(fmi3UpdateDiscreteStates);
@@ -403,16 +407,13 @@ macro_rules! export_fmi3_unsupported {
         }
         const _: $crate::fmi3::exports::sys::fmi3GetNumberOfContinuousStatesTYPE =
             Some(fmi3GetNumberOfContinuousStates);
-        /// Not supported: the FMU has no event mode (hasEventMode = false).
+        /// Leaves Event Mode for Step Mode.
         #[unsafe(no_mangle)]
         pub unsafe extern "C" fn fmi3EnterStepMode(
             instance: $crate::fmi3::exports::sys::fmi3Instance,
         ) -> $crate::fmi3::exports::sys::fmi3Status {
-            $crate::fmi3::exports::unsupported::<$model>(
-                instance,
-                "fmi3EnterStepMode",
-                "the FMU has no event mode (hasEventMode = false)",
-            )
+            // SAFETY: the master's argument, passed on unchanged under the same contract.
+            unsafe { $crate::fmi3::exports::fmi3EnterStepMode::<$model>(instance) }
         }
         const _: $crate::fmi3::exports::sys::fmi3EnterStepModeTYPE = Some(fmi3EnterStepMode);
         /// Not supported: scheduled execution is not provided.

@@ -23,8 +23,8 @@ pub fn fmi3GetVersion() -> *const c_char {
 }
 
 /// Creates a co-simulation instance; NULL (after logging, if a logger was given) on any invalid
-/// argument. Event mode is refused (hasEventMode = false); `earlyReturnAllowed` is kept for
-/// fmi3DoStep.
+/// argument. Event mode is refused for a model without (hasEventMode = false); `eventModeUsed`
+/// and `earlyReturnAllowed` are kept for fmi3DoStep.
 pub unsafe fn fmi3InstantiateCoSimulation<M: Model>(
     instanceName: fmi3String,
     instantiationToken: fmi3String,
@@ -46,7 +46,7 @@ pub unsafe fn fmi3InstantiateCoSimulation<M: Model>(
             loggingOn,
             M::LOG_CATEGORIES,
         );
-        if eventModeUsed {
+        if eventModeUsed && !M::FMI3.has_event_mode {
             logger.error(
                 "fmi3InstantiateCoSimulation: eventModeUsed = true, but this FMU has no event \
                  mode (hasEventMode = false): it handles its events inside fmi3DoStep.",
@@ -65,6 +65,7 @@ pub unsafe fn fmi3InstantiateCoSimulation<M: Model>(
         let resources = path.map(std::path::PathBuf::from).filter(|d| d.is_dir());
         let mut instance = create::<M>(logger, &name, &token, resources, Version::Fmi3)?;
         instance.early_return_allowed = earlyReturnAllowed;
+        instance.event_mode_used = eventModeUsed;
         Some(Box::into_raw(instance).cast())
     }));
     result.ok().flatten().unwrap_or(std::ptr::null_mut())
@@ -128,10 +129,18 @@ pub unsafe fn fmi3EnterInitializationMode<M: Model>(
     })
 }
 
-/// Builds the model from the parameters and enters Step Mode; outputs are valid afterwards.
+/// Builds the model from the parameters and enters Step Mode, or Event Mode if the master uses it;
+/// outputs are valid afterwards.
 pub unsafe fn fmi3ExitInitializationMode<M: Model>(instance: fmi3Instance) -> fmi3Status {
-    // SAFETY: the same contract as FMI 2's; without event mode the transitions are the same.
-    unsafe { crate::exports::fmi2ExitInitializationMode::<M>(instance) }
+    with_instance::<M>(instance, Call::ExitInitializationMode, |inst| {
+        inst.model.exit_initialization(&inst.logger)?;
+        inst.state = if inst.event_mode_used {
+            State::EventMode
+        } else {
+            State::StepComplete
+        };
+        Ok(OK)
+    })
 }
 
 /// Ends the simulation; outputs stay readable.
@@ -146,9 +155,8 @@ pub unsafe fn fmi3Reset<M: Model>(instance: fmi3Instance) -> fmi3Status {
     unsafe { crate::exports::fmi2Reset::<M>(instance) }
 }
 
-/// A function of a capability the FMU does not declare (event mode, configuration mode, clocks,
-/// model exchange, scheduled execution, adjoint derivatives, variable dependencies): logs that
-/// and returns fmi3Error.
+/// A function of a capability the FMU does not declare (clocks, model exchange, scheduled
+/// execution, adjoint derivatives, variable dependencies): logs that and returns fmi3Error.
 pub fn unsupported<M: Model>(instance: fmi3Instance, call: &'static str, why: &str) -> fmi3Status {
     with_instance::<M>(instance, Call::Other(call), |_| {
         Err(FmuError::Invalid(format!("not supported: {why}")))

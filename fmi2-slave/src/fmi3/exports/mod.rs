@@ -9,6 +9,7 @@ pub mod sys {
 }
 
 mod arrays;
+mod events;
 mod export_macro;
 mod export_other_types;
 mod export_unsupported;
@@ -20,6 +21,7 @@ mod values;
 pub use arrays::{
     fmi3EnterConfigurationMode, fmi3ExitConfigurationMode, fmi3GetUInt64, fmi3SetUInt64,
 };
+pub use events::{fmi3EnterEventMode, fmi3EnterStepMode, fmi3UpdateDiscreteStates};
 pub use lifecycle::{
     fmi3EnterInitializationMode, fmi3ExitInitializationMode, fmi3FreeInstance, fmi3GetVersion,
     fmi3InstantiateCoSimulation, fmi3Reset, fmi3SetDebugLogging, fmi3Terminate, instantiate_other,

@@ -15,9 +15,9 @@ use crate::number::Num;
 use crate::state::Call;
 
 /// Integrates from the communication point over the step size (error-controlled sub-steps). The
-/// FMU never asks for event handling or for the simulation to end; it returns early only where
-/// the model does and the master allowed it, and `lastSuccessfulTime` is the time reached (also
-/// after a discarded step).
+/// FMU never asks for the simulation to end; it returns early only where the model does and the
+/// master allowed it, and then asks for event handling if the master uses Event Mode;
+/// `lastSuccessfulTime` is the time reached (also after a discarded step).
 pub unsafe fn fmi3DoStep<M: Model>(
     instance: fmi3Instance,
     currentCommunicationPoint: fmi3Float64,
@@ -44,9 +44,9 @@ pub unsafe fn fmi3DoStep<M: Model>(
             communicationStepSize,
             inst.early_return_allowed,
         );
-        event[0] = false;
         terminate[0] = false;
         early[0] = matches!(result, Ok(StepOutcome::ReturnedEarly { .. }));
+        event[0] = early[0] && inst.event_mode_used;
         last[0] = inst.model.last_successful_time();
         if let Ok(StepOutcome::ReturnedEarly { time, event }) = result {
             inst.logger.event(&format!(
