@@ -5,7 +5,7 @@
 
 use std::fmt;
 
-pub use fmi2_slave::number::Num;
+pub use fmi_core::number::Num;
 
 /// An error of the model library.
 #[derive(Clone, Debug, PartialEq)]

@@ -1,12 +1,12 @@
 //! [`DcMotorFmu`]: the motor as an FMI 2.0 [`Model`] of `fmi2-slave` — parameters, inputs as
 //! polynomials over the communication step, the state, the clock and the state codec.
 
+use fmi_core::clock::on_clock_grid;
+use fmi_core::codec::{ByteReader, ByteWriter};
+use fmi_core::number::Num;
+use fmi_core::signal::Polynomial;
 use fmi2_slave::checks::{check_real, check_step};
-use fmi2_slave::clock::on_clock_grid;
-use fmi2_slave::codec::{ByteReader, ByteWriter};
 use fmi2_slave::model::Var;
-use fmi2_slave::number::Num;
-use fmi2_slave::signal::Polynomial;
 use fmi2_slave::{FmuError, Logger, Model, State, StepOutcome};
 
 use crate::coupling::{self, Exchange};

@@ -4,12 +4,12 @@
 //! from [`DESCRIPTION`], and the FMU reads and writes values through an exhaustive `match` on
 //! [`Vr`], so the code and the XML cannot disagree.
 
-pub use fmi2_slave::description::Description;
-pub use fmi2_slave::fmi3::interface::Fmi3Interface;
-pub use fmi2_slave::table::{Causality, Kind, ValueReference};
+pub use fmi_core::description::Description;
+pub use fmi_core::interface::Fmi3Interface;
+pub use fmi_core::table::{Causality, Kind, ValueReference};
 
 /// One variable of this FMU.
-pub type Variable = fmi2_slave::table::Variable<Vr>;
+pub type Variable = fmi_core::table::Variable<Vr>;
 
 /// FMI 3 additions: none (the motor has no events to return early at, no arrays).
 pub const FMI3: Fmi3Interface = Fmi3Interface::NONE;

@@ -11,13 +11,10 @@
 //! - Modelica Association (2023), Functional Mock-up Interface 2.0.4.
 
 pub mod build;
-pub mod clock;
-pub mod codec;
 pub mod description;
 pub mod fmi3;
-pub mod number;
-pub mod signal;
-pub mod table;
+
+pub use fmi_core::{clock, codec, number, signal, table};
 
 #[cfg(feature = "slave")]
 mod callback;

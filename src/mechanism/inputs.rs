@@ -1,6 +1,6 @@
 //! The mechanism's inputs, as values and as functions of time over a communication interval.
 
-use fmi2_slave::signal;
+use fmi_core::signal;
 
 /// Inputs that the caller may change between steps.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]

@@ -1,8 +1,8 @@
-//! The slider-crank's records in the byte codec of snapshots (`fmi2_slave::codec`): contact
+//! The slider-crank's records in the byte codec of snapshots (`fmi_core::codec`): contact
 //! state, peaks, input signals, integrator statistics, step points. Used by [`super::Snapshot`]
 //! and by the FMU state that wraps it.
 
-pub use fmi2_slave::codec::{ByteReader, ByteWriter, CodecError};
+pub use fmi_core::codec::{ByteReader, ByteWriter, CodecError};
 
 use super::peaks::{Peaks, Sample};
 use super::step::StepPoint;

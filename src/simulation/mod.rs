@@ -26,7 +26,7 @@ use crate::mechanism::{ContactState, Contacts, Energies, SliderCrank};
 pub use crate::mechanism::{Input, InputSignal, Inputs};
 use crate::params::{DriveMode, InitialState, JointModel, JournalStart, Parameters};
 
-pub use fmi2_slave::clock::{CLOCK_RESOLUTION, on_clock_grid};
+pub use fmi_core::clock::{CLOCK_RESOLUTION, on_clock_grid};
 
 /// The slider-crank simulation.
 ///

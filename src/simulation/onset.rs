@@ -1,7 +1,7 @@
 //! Early return at a contact onset: the step in which a joint comes into contact ends an
 //! interval early, at its end on the clock grid ([`Simulation::advance_to_onset`]).
 
-use fmi2_slave::clock::on_clock_grid_below;
+use fmi_core::clock::on_clock_grid_below;
 
 use super::Simulation;
 use super::step::Onset;

@@ -1,6 +1,6 @@
 //! The enumeration types of the FMU's switches, and each type's index, named.
 
-use fmi2_slave::table::Enumeration;
+use fmi_core::table::Enumeration;
 
 /// Index of the `RodFormulation` type in [`ENUMERATIONS`].
 pub const ROD_FORMULATION: usize = 0;

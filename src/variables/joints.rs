@@ -4,7 +4,7 @@
 
 use super::enumerations::{CONTACT_GEOMETRY, CONTACT_LAW, JOINT_MODEL, JOURNAL_START};
 use super::vr::{Variable, Vr};
-use fmi2_slave::table::{Causality, Kind, Variability};
+use fmi_core::table::{Causality, Kind, Variability};
 
 /// Number of rows of each joint ([`joint_rows`]).
 const JOINT_ROWS: usize = 30;

@@ -8,8 +8,8 @@
 //! `params::access`, Real outputs in `fmi::outputs`), each tested to cover exactly its rows, so the
 //! code and the XML cannot disagree.
 
-pub use fmi2_slave::description::Description;
-pub use fmi2_slave::table::{Causality, Kind, ValueReference, Variability};
+pub use fmi_core::description::Description;
+pub use fmi_core::table::{Causality, Kind, ValueReference, Variability};
 
 mod crank;
 mod energy;

@@ -4,8 +4,8 @@
 //! The sections are evenly spaced from the crank pin (k = 0) to the slider pin (k = N − 1), at
 //! s_k = k L/(N − 1) along the rod's reference length L.
 
-use fmi2_slave::fmi3::interface::{ArrayVariable, Fmi3Interface, StructuralParameter};
-use fmi2_slave::table::Causality;
+use fmi_core::interface::{ArrayVariable, Fmi3Interface, StructuralParameter};
+use fmi_core::table::Causality;
 
 /// Value reference of `rod.nSections`, the first after the independent variable `time`'s.
 pub const N_SECTIONS: u32 = 1_000_001;

@@ -1,10 +1,10 @@
 //! The value references: one per variable, dense from 0, in the order of the FMU's variables;
 //! and the type of a row of the table.
 
-use fmi2_slave::table::ValueReference;
+use fmi_core::table::ValueReference;
 
 /// One variable of this FMU.
-pub type Variable = fmi2_slave::table::Variable<Vr>;
+pub type Variable = fmi_core::table::Variable<Vr>;
 
 /// Value references, dense from 0 in table order.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

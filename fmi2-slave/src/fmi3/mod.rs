@@ -4,4 +4,5 @@
 pub mod description;
 #[cfg(feature = "slave")]
 pub mod exports;
-pub mod interface;
+
+pub use fmi_core::interface;

@@ -6,7 +6,7 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parents[3]
-CRATES = ["src", "fmi2-slave/src", "dc-motor/src", "packaging/src", "fuzz/src"]
+CRATES = ["src", "fmi-core/src", "fmi2-slave/src", "dc-motor/src", "packaging/src", "fuzz/src"]
 #: Longest file, in lines before its unit tests.
 MAX_LINES = 520
 #: Data tables: one row per FMI variable (the slider-crank's, by component, in a folder).
@@ -139,3 +139,18 @@ def test_no_module_imports_the_fmi_layer():
              if not (module == "fmi" or module.startswith("fmi::"))
              for t in sorted(targets) if t == "fmi" or t.startswith("fmi::")]
     assert not found, "\n".join(found)
+
+
+def test_only_the_fmi_adapters_import_the_fmi_versions():
+    """The run, the physics and the variable tables import the version-neutral core (`fmi_core`),
+    never the crate with the FMI versions' C API (`fmi2_slave`): only the FMI adapter does
+    (src/fmi/ of the slider-crank, fmu.rs and lib.rs of the motor)."""
+    found = []
+    for crate, adapters in [("src", ("fmi/",)), ("dc-motor/src", ("fmu.rs", "lib.rs"))]:
+        for path in sorted((ROOT / crate).rglob("*.rs")):
+            name = path.relative_to(ROOT / crate).as_posix()
+            text = re.sub(r"//.*", "", path.read_text())
+            if "fmi2_slave" in text and not name.startswith(adapters):
+                found.append(f"{crate}/{name}")
+    assert not found, found
+    assert "fmi2_slave" in (ROOT / "src" / "fmi" / "instance.rs").read_text()

@@ -1,5 +1,5 @@
 //! Variable tables: the types in which a model states its FMI variables once, for the
-//! modelDescription.xml ([`crate::description`]) and for its get/set code alike.
+//! modelDescription.xml ([`crate::description::Description`]) and for its get/set code alike.
 
 /// A model's value references: an enum whose discriminants are the positions in its table.
 pub trait ValueReference: Copy + std::fmt::Debug + PartialEq + 'static {

@@ -3,8 +3,8 @@
 
 use crate::table::Causality;
 
-/// A model's FMI 3 additions: rendered into its FMI 3 modelDescription.xml
-/// ([`super::description`]) and read by the `fmi3*` functions.
+/// A model's FMI 3 additions: rendered into its FMI 3 modelDescription.xml and read by the
+/// `fmi3*` functions (`fmi2-slave`'s `fmi3` module).
 #[derive(Clone, Copy, Debug)]
 pub struct Fmi3Interface {
     /// mightReturnEarlyFromDoStep: fmi3DoStep may end before the communication point (at an event
@@ -15,7 +15,7 @@ pub struct Fmi3Interface {
     pub has_event_mode: bool,
     /// The structural parameters, in the order [`ArrayVariable::dimension`] counts them.
     pub structural_parameters: &'static [StructuralParameter],
-    /// The Float64 arrays, in the order [`crate::Model::get_array`] counts them.
+    /// The Float64 arrays, in the order the model's `Model::get_array` counts them.
     pub arrays: &'static [ArrayVariable],
 }
 
