@@ -13,6 +13,13 @@ pub struct Fmi3Interface {
     /// hasEventMode: with the master's consent (eventModeUsed), an early return at an event asks
     /// for Event Mode, where the discrete variables that changed there are read.
     pub has_event_mode: bool,
+    /// providesIntermediateUpdate: with the master's callback, fmi3DoStep pauses after each
+    /// internal step before the communication point, and the master reads the outputs there
+    /// (no input is set there).
+    pub provides_intermediate_update: bool,
+    /// canReturnEarlyAfterIntermediateUpdate: the master may ask, at such a pause, for the step
+    /// to end there (if it allowed early return).
+    pub can_return_early_after_intermediate_update: bool,
     /// The structural parameters, in the order [`ArrayVariable::dimension`] counts them.
     pub structural_parameters: &'static [StructuralParameter],
     /// The Float64 arrays, in the order the model's `Model::get_array` counts them.
@@ -24,6 +31,8 @@ impl Fmi3Interface {
     pub const NONE: Self = Self {
         might_return_early: false,
         has_event_mode: false,
+        provides_intermediate_update: false,
+        can_return_early_after_intermediate_update: false,
         structural_parameters: &[],
         arrays: &[],
     };

@@ -58,6 +58,26 @@ pub trait Model: Sized + 'static {
         early_return: bool,
     ) -> Result<StepOutcome, FmuError>;
 
+    /// FMI 3 intermediate update: [`Model::do_step`] that may also pause after an internal step
+    /// ending before `t + h` ([`StepOutcome::Paused`]), with its state there the one the getters
+    /// read; called again with the same arguments, it resumes. By default it does not pause.
+    fn do_step_pausing(
+        &mut self,
+        log: &Logger,
+        t: f64,
+        h: f64,
+        early_return: bool,
+    ) -> Result<StepOutcome, FmuError> {
+        self.do_step(log, t, h, early_return)
+    }
+
+    /// Ends a paused step at the pause, as an early return (on the clock grid): the time
+    /// reached, or None where the step cannot end there (it then stays paused). By default no
+    /// step pauses.
+    fn return_at_pause(&mut self, _log: &Logger) -> Result<Option<f64>, FmuError> {
+        Ok(None)
+    }
+
     /// The time up to which the last step succeeded (fmi2LastSuccessfulTime).
     fn last_successful_time(&self) -> f64;
 
@@ -215,6 +235,12 @@ pub trait Model: Sized + 'static {
 pub enum StepOutcome {
     /// At the communication point.
     Completed,
+    /// Paused inside it after an internal step (FMI 3 intermediate update,
+    /// [`Model::do_step_pausing`]).
+    Paused {
+        /// The internal step's end \[s\].
+        time: f64,
+    },
     /// Before it, at an event of the model (FMI 3 early return).
     ReturnedEarly {
         /// The time reached \[s\], on the clock grid.
@@ -268,12 +294,33 @@ pub struct Instance<M: Model> {
     pub early_return_allowed: bool,
     /// FMI 3: whether the master handles the model's events in Event Mode (eventModeUsed).
     pub event_mode_used: bool,
+    /// FMI 3: the master's intermediate-update callback and its environment, for a model that
+    /// provides intermediate update.
+    pub intermediate_update: Option<IntermediateUpdate>,
     /// Integers of the current call in the model's representation (FMI 3's Int64 switches and
     /// Booleans); its capacity is reused.
     pub integers: Vec<i32>,
     /// FMI 3: the values of the model's structural parameters ([`Model::FMI3`]), set in
     /// Configuration Mode; they size its arrays.
     pub structural: Vec<u64>,
+}
+
+/// The master's FMI 3 intermediate-update callback with the environment it is called with.
+#[derive(Clone, Copy, Debug)]
+pub struct IntermediateUpdate {
+    /// The callback.
+    pub callback: unsafe extern "C" fn(
+        fmi_sys::fmi3::fmi3InstanceEnvironment,
+        f64,
+        bool,
+        bool,
+        bool,
+        bool,
+        *mut bool,
+        *mut f64,
+    ),
+    /// The master's instance environment.
+    pub environment: fmi_sys::fmi3::fmi3InstanceEnvironment,
 }
 
 /// The states in the order of their byte in a serialized state.
@@ -311,6 +358,7 @@ impl<M: Model> Instance<M> {
             version: Version::Fmi2,
             early_return_allowed: false,
             event_mode_used: false,
+            intermediate_update: None,
             integers: Vec::new(),
             structural: Self::structural_starts(),
         }

@@ -22,6 +22,8 @@ pub enum State {
     /// FMI 3 with eventModeUsed: after an event (and after initialization), until
     /// fmi3EnterStepMode.
     EventMode,
+    /// FMI 3: inside fmi3DoStep, while the master's intermediate-update callback runs.
+    IntermediateUpdate,
 }
 
 /// The FMI version an instance was created through (the names of its calls in messages).
@@ -95,16 +97,32 @@ pub enum Call {
     UpdateDiscreteStates,
     /// fmi3EnterStepMode.
     EnterStepMode,
+    /// fmi3DoStep going on after the master's intermediate-update callback.
+    ResumeStep,
     /// A call with no state rule of its own, named for messages: FMI 3's functions of the types
     /// and capabilities the FMU does not have, which refuse every non-empty request.
     Other(&'static str),
 }
 
 use State::{
-    ConfigurationMode, Error, EventMode, InitializationMode, Instantiated, StepComplete,
-    StepFailed, Terminated,
+    ConfigurationMode, Error, EventMode, InitializationMode, Instantiated, IntermediateUpdate,
+    StepComplete, StepFailed, Terminated,
 };
 
+/// Every state: the logging switch and the refusals of what the FMU lacks work everywhere.
+const EVERYWHERE: &[State] = &[
+    Instantiated,
+    ConfigurationMode,
+    InitializationMode,
+    StepComplete,
+    StepFailed,
+    Terminated,
+    Error,
+    EventMode,
+    IntermediateUpdate,
+];
+
+/// Every state but Intermediate Update (where fmi3DoStep is under way).
 const ALL: &[State] = &[
     Instantiated,
     ConfigurationMode,
@@ -132,7 +150,7 @@ impl Call {
     /// The states in which the call is legal (FMI 2.0.4 table in §4.2.4; docs/fmi.md §1.3).
     pub fn allowed(self) -> &'static [State] {
         match self {
-            Call::SetDebugLogging | Call::Other(_) => ALL,
+            Call::SetDebugLogging | Call::Other(_) => EVERYWHERE,
             Call::SetupExperiment | Call::EnterInitializationMode => &[Instantiated],
             Call::ExitInitializationMode => &[InitializationMode],
             Call::DoStep => &[StepComplete],
@@ -149,7 +167,9 @@ impl Call {
                 Terminated,
                 Error,
                 EventMode,
+                IntermediateUpdate,
             ],
+            Call::ResumeStep => &[IntermediateUpdate],
             Call::EnterEventMode => &[StepComplete],
             Call::UpdateDiscreteStates | Call::EnterStepMode => &[EventMode],
             Call::GetFmuState
@@ -162,8 +182,16 @@ impl Call {
             | Call::GetInteger
             | Call::GetBoolean
             | Call::GetString
-            | Call::GetInt64
-            | Call::GetDirectionalDerivative => &[
+            | Call::GetInt64 => &[
+                InitializationMode,
+                StepComplete,
+                StepFailed,
+                Terminated,
+                Error,
+                EventMode,
+                IntermediateUpdate,
+            ],
+            Call::GetDirectionalDerivative => &[
                 InitializationMode,
                 StepComplete,
                 StepFailed,
@@ -195,6 +223,7 @@ impl Call {
             (_, Call::Other(name)) => name.to_string(),
             (Version::Fmi2, _) => format!("fmi2{}", debug.replace("FmuState", "FMUstate")),
             (Version::Fmi3, Call::SetupExperiment) => "fmi3EnterInitializationMode".into(),
+            (Version::Fmi3, Call::ResumeStep) => "fmi3DoStep".into(),
             (Version::Fmi3, Call::GetRealOutputDerivatives) => "fmi3GetOutputDerivatives".into(),
             (Version::Fmi3, _) => format!(
                 "fmi3{}",

@@ -62,6 +62,8 @@ const N_POWERS: u32 = TIME_VALUE_REFERENCE + 1;
 const FMI3: Fmi3Interface = Fmi3Interface {
     might_return_early: true,
     has_event_mode: true,
+    provides_intermediate_update: false,
+    can_return_early_after_intermediate_update: false,
     structural_parameters: &[StructuralParameter {
         vr: N_POWERS,
         name: "lag.nPowers",

@@ -3,7 +3,6 @@
 //! the variable table, so every message quotes what the master sees in the XML) come from
 //! `fmi2-slave`. Values are read and written by an exhaustive `match` on [`Vr`].
 
-use fmi2_slave::checks::check_step;
 use fmi2_slave::fmi3::interface::Fmi3Interface;
 use fmi2_slave::model::Var;
 use fmi2_slave::table::Enumeration;
@@ -70,7 +69,7 @@ pub struct SliderCrankFmu {
 
 impl SliderCrankFmu {
     /// The simulation, built from the current parameters if needed.
-    fn simulation(&mut self, log: &Logger) -> Result<&mut Simulation, FmuError> {
+    pub(super) fn simulation(&mut self, log: &Logger) -> Result<&mut Simulation, FmuError> {
         if self.simulation.is_none() {
             let parameters = model_parameters(&self.parameters, self.tolerance);
             if parameters.relative_tolerance != self.parameters.relative_tolerance {
@@ -223,46 +222,23 @@ impl Model for SliderCrankFmu {
         h: f64,
         early_return: bool,
     ) -> Result<StepOutcome, FmuError> {
-        check_step(self.time, t, h, self.stop_time)?;
-        let end = t + h;
-        let sim = self.simulation(log)?;
-        sim.set_time(t);
-        let result = if early_return {
-            sim.advance_to_onset(end)
-        } else {
-            sim.advance_to(end).map(|()| None)
-        };
-        let (time, warnings) = (sim.time(), sim.take_warnings());
-        // Input derivatives hold for one communication step: the inputs are then held at the
-        // values their polynomials reached.
-        self.inputs = *sim.next_inputs();
-        for warning in &warnings {
-            log.warning(warning);
-        }
-        match result {
-            Ok(None) => {
-                self.time = end;
-                self.last_successful_time = end;
-                Ok(StepOutcome::Completed)
-            }
-            Ok(Some(onset)) => {
-                self.time = onset.time;
-                self.last_successful_time = onset.time;
-                let event = onset.event();
-                Ok(StepOutcome::ReturnedEarly {
-                    time: onset.time,
-                    event,
-                })
-            }
-            Err(e) => {
-                self.time = time;
-                self.last_successful_time = time;
-                Err(FmuError::Discard {
-                    time,
-                    reason: e.to_string(),
-                })
-            }
-        }
+        self.step(log, t, h, early_return, false)
+    }
+
+    /// The step of [`Model::do_step`], paused after every internal step before `t + h`
+    /// ([`crate::Simulation::advance_pausing`]).
+    fn do_step_pausing(
+        &mut self,
+        log: &Logger,
+        t: f64,
+        h: f64,
+        early_return: bool,
+    ) -> Result<StepOutcome, FmuError> {
+        self.step(log, t, h, early_return, true)
+    }
+
+    fn return_at_pause(&mut self, log: &Logger) -> Result<Option<f64>, FmuError> {
+        self.end_at_pause(log)
     }
 
     fn get_array(&mut self, log: &Logger, array: usize, value: &mut [f64]) -> Result<(), FmuError> {

@@ -16,6 +16,7 @@ mod instance_state;
 pub mod model_description;
 pub mod outputs;
 pub mod snapshot;
+mod step;
 
 pub use model_description::{GUID, MODEL_DESCRIPTION, MODEL_DESCRIPTION_FMI3, MODEL_IDENTIFIER};
 

@@ -3,6 +3,7 @@
 
 pub mod codec;
 mod failure;
+mod interval;
 mod onset;
 mod outputs;
 mod peaks;
@@ -16,7 +17,7 @@ pub mod validity;
 pub use self::outputs::{BearingOutputs, Outputs};
 pub use self::peaks::{PeakHold, Peaks};
 pub use self::snapshot::Snapshot;
-pub use self::step::{Onset, StepPoint};
+pub use self::step::{Advance, Onset, StepPoint};
 use self::validity::Monitor;
 pub use crate::ancf::{SectionResult, section_place};
 use crate::error::{ModelError, Num};
@@ -56,6 +57,8 @@ pub struct Simulation {
     inputs_set: bool,
     peaks: PeakHold,
     monitor: Monitor,
+    /// The interval paused inside ([`Simulation::advance_pausing`]), if any.
+    paused: Option<step::Interval>,
 }
 
 impl Simulation {
@@ -135,6 +138,7 @@ impl Simulation {
             inputs_set: false,
             peaks: PeakHold::default(),
             monitor,
+            paused: None,
         })
     }
 
@@ -252,39 +256,6 @@ impl Simulation {
         self.integrator.restart();
     }
 
-    /// Integrates to `t_end` (rounded to the clock grid). On failure the simulation stays at the
-    /// last accepted point ([`Simulation::time`]) and the error says why.
-    pub fn advance_to(&mut self, t_end: f64) -> Result<(), ModelError> {
-        self.advance(t_end, false).map(|_| ())
-    }
-
-    /// Integrates towards `t_end` as [`Simulation::advance_to`] does, but stops early at the end
-    /// of the first internal step in which a joint comes into contact (where the contact law
-    /// switches on), if that is before `t_end`: returns the joint and the time reached, the step's
-    /// end rounded down to the clock grid (at most one clock tick earlier; the step's extremes and
-    /// onset belong to the interval that ends there). The step sequence is the one
-    /// [`Simulation::advance_to`] takes: continuing from the time reached loses nothing.
-    pub fn advance_to_onset(&mut self, t_end: f64) -> Result<Option<Onset>, ModelError> {
-        self.advance(t_end, true)
-    }
-
-    /// [`Simulation::advance_to`], or [`Simulation::advance_to_onset`] if `stop_at_onset`.
-    fn advance(&mut self, t_end: f64, stop_at_onset: bool) -> Result<Option<Onset>, ModelError> {
-        let t_end = on_clock_grid(t_end);
-        if !(t_end.is_finite() && t_end >= self.time) {
-            return Err(ModelError::Numerical(format!(
-                "cannot advance from t = {} s to t = {} s",
-                Num(self.time),
-                Num(t_end)
-            )));
-        }
-        let t_start = self.time;
-        let limit = self.apply_next_inputs(t_start, t_end)?;
-        let onset = self.step_through(t_start, t_end, limit, stop_at_onset)?;
-        self.finish_interval(onset.map_or(t_end, |o| o.time))?;
-        Ok(onset)
-    }
-
     /// Makes the inputs set for the interval [`t_start`, `t_end`] the mechanism's: a change that
     /// acts restarts the step sequence here (the steps then end exactly at `t_end`, the returned
     /// limit), a changed prescribed speed jumps the velocities through the constraints.
@@ -327,118 +298,6 @@ impl Simulation {
             self.start.y.copy_from_slice(&self.end.y);
         }
         Ok(limit)
-    }
-
-    /// Steps until the integrator's point reaches `t_end` (at most at `limit`), recording each
-    /// accepted step's peaks; on failure the simulation stops at the last accepted step. If
-    /// `stop_at_onset`, it stops after the first step before `t_end` in which a joint comes into
-    /// contact, and returns that joint and the step's end on the clock grid (rounded down, after
-    /// `t_start`).
-    fn step_through(
-        &mut self,
-        t_start: f64,
-        t_end: f64,
-        limit: Option<f64>,
-        stop_at_onset: bool,
-    ) -> Result<Option<Onset>, ModelError> {
-        self.peaks.interval = Peaks::default();
-        if self.peaks.pending && self.end.time <= t_end {
-            self.peaks.take_step_end();
-            if let Some(onset) = self.onset_before(t_start, t_end, stop_at_onset) {
-                return Ok(Some(onset));
-            }
-        }
-        let work_start = self.work();
-        while self.end.time < t_end {
-            let used = self.work() - work_start;
-            let budget = (self.parameters.max_steps_per_interval as u64).saturating_sub(used);
-            self.start.time = self.end.time;
-            self.start.y.copy_from_slice(&self.end.y);
-            self.contact_start = self.mechanism.contact_state();
-            match self.integrator.step(
-                &mut self.mechanism,
-                &mut self.end.time,
-                &mut self.end.y,
-                limit,
-                budget,
-            ) {
-                Ok(true) => {}
-                Ok(false) => {
-                    let error = failure::work_limit(
-                        &self.parameters,
-                        (t_start, t_end),
-                        self.end.time,
-                        self.integrator.step_size(),
-                    );
-                    return Err(self.stop_at_step_end(error));
-                }
-                Err(e) => {
-                    let error = failure::step_failure(&self.parameters, e);
-                    return Err(self.stop_at_step_end(error));
-                }
-            }
-            let (f0, f1) = self.integrator.derivatives();
-            self.start.f.copy_from_slice(f0);
-            self.end.f.copy_from_slice(f1);
-            self.record_step_end()?;
-            if self.end.time <= t_end {
-                self.peaks.take_step_end();
-            }
-            if let Some(onset) = self.onset_before(t_start, t_end, stop_at_onset) {
-                return Ok(Some(onset));
-            }
-        }
-        Ok(None)
-    }
-
-    /// Ends the interval at `t_end`: the state there (the dense output of the last step when it
-    /// ends beyond), the inputs held from there.
-    fn finish_interval(&mut self, t_end: f64) -> Result<(), ModelError> {
-        self.time = t_end;
-        self.hold_inputs();
-        self.inputs_set = false;
-        if t_end == self.end.time {
-            self.state.copy_from_slice(&self.end.y);
-        } else {
-            let h = self.end.time - self.start.time;
-            self.mechanism
-                .with_contact_state(self.contact_start, |mechanism| {
-                    self.integrator.state_within(
-                        mechanism,
-                        self.start.time,
-                        h,
-                        &self.start.y,
-                        &self.start.f,
-                        &self.end.y,
-                        &self.end.f,
-                        (t_end - self.start.time) / h,
-                        &mut self.state,
-                    )
-                })?;
-            self.check_validity(false);
-        }
-        Ok(())
-    }
-
-    /// After an interval the inputs are held at the values their polynomials reached (the
-    /// derivatives of [`Simulation::set_input_derivative`] hold for one interval).
-    fn hold_inputs(&mut self) {
-        if self.next.derivatives != [Inputs::default(); 2] {
-            self.next = InputSignal {
-                start: self.time,
-                ..InputSignal::held(self.next.at(self.time).0)
-            };
-        }
-    }
-
-    /// Ends a failed interval at the last accepted step (where the simulation stays usable) and
-    /// passes the error on.
-    fn stop_at_step_end(&mut self, error: ModelError) -> ModelError {
-        self.time = self.end.time;
-        self.hold_inputs();
-        self.inputs_set = false;
-        self.state.copy_from_slice(&self.end.y);
-        error
     }
 
     /// Internal step attempts so far (accepted and rejected).

@@ -39,6 +39,7 @@ impl Simulation {
             )));
         }
         self.integrator.set_state(&snapshot.integrator)?;
+        self.paused = None;
         self.time = snapshot.time;
         self.state.copy_from_slice(&snapshot.state);
         self.start.copy_from(&snapshot.step_start);

@@ -58,3 +58,25 @@ impl Onset {
         }
     }
 }
+
+/// An interval under way: where it started and ends, the step limit its inputs set, and the
+/// integrator's work count at its start (its step budget).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct Interval {
+    pub(super) t_start: f64,
+    pub(super) t_end: f64,
+    pub(super) limit: Option<f64>,
+    pub(super) work_start: u64,
+}
+
+/// Where [`super::Simulation::advance_pausing`] stopped.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Advance {
+    /// At the interval's end.
+    Reached,
+    /// Early, at a contact onset ([`super::Simulation::advance_to_onset`]): the interval ends there.
+    Onset(Onset),
+    /// After an accepted step before the interval's end, at its end \[s\] (not on the clock
+    /// grid): the state there is the current one; the interval resumes at the next call.
+    Paused(f64),
+}

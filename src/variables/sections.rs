@@ -92,11 +92,14 @@ pub const SECTION_ARRAYS: &[ArrayVariable] = &[
 
 /// FMI 3 additions: with the master's consent a step returns early at the end of the internal
 /// step in which a joint comes into contact, and with event mode that onset is an event (the
-/// joints' inContact flags and onset counters change there); the rod's section results are
-/// arrays.
+/// joints' inContact flags and onset counters change there); with intermediate update the
+/// master reads the outputs after every internal step (and may end the step there); the rod's
+/// section results are arrays.
 pub const FMI3: Fmi3Interface = Fmi3Interface {
     might_return_early: true,
     has_event_mode: true,
+    provides_intermediate_update: true,
+    can_return_early_after_intermediate_update: true,
     structural_parameters: STRUCTURAL_PARAMETERS,
     arrays: SECTION_ARRAYS,
 };

@@ -136,6 +136,7 @@ fn invoke(inst: &Instance, call: Call, state: fmi2FMUstate, bytes: &[u8]) -> fmi
             | Call::EnterEventMode
             | Call::UpdateDiscreteStates
             | Call::EnterStepMode
+            | Call::ResumeStep
             | Call::Other(_) => {
                 unreachable!("{call:?} has no FMI 2 function")
             }
@@ -197,7 +198,7 @@ fn in_state(name: &str, state: State) -> Instance {
         }
         State::Error => assert_eq!(inst.do_step(0.0, 1e-4), ERROR),
         State::StepFailed => unreachable!("not constructed by this test"),
-        State::ConfigurationMode | State::EventMode => {
+        State::ConfigurationMode | State::EventMode | State::IntermediateUpdate => {
             unreachable!("FMI 3 only (tests/fmi/fmi3.rs)")
         }
     }

@@ -45,12 +45,14 @@ pub fn model_description<V: ValueReference>(
     );
     let _ = writeln!(
         x,
-        r#"  <CoSimulation modelIdentifier="{}" canHandleVariableCommunicationStepSize="true" canGetAndSetFMUState="true" canSerializeFMUState="true" providesDirectionalDerivatives="{}" maxOutputDerivativeOrder="{}" hasEventMode="{}" mightReturnEarlyFromDoStep="{}" providesIntermediateUpdate="false" canReturnEarlyAfterIntermediateUpdate="false"/>"#,
+        r#"  <CoSimulation modelIdentifier="{}" canHandleVariableCommunicationStepSize="true" canGetAndSetFMUState="true" canSerializeFMUState="true" providesDirectionalDerivatives="{}" maxOutputDerivativeOrder="{}" hasEventMode="{}" mightReturnEarlyFromDoStep="{}" providesIntermediateUpdate="{}" canReturnEarlyAfterIntermediateUpdate="{}"/>"#,
         d.model_identifier,
         d.provides_directional_derivative,
         d.max_output_derivative_order,
         fmi3.has_event_mode,
         fmi3.might_return_early,
+        fmi3.provides_intermediate_update,
+        fmi3.can_return_early_after_intermediate_update,
     );
     x.push_str(&unit_definitions(d));
     if !d.enumerations.is_empty() {
@@ -83,7 +85,7 @@ pub fn model_description<V: ValueReference>(
         x.push_str(&structural_parameter(p));
     }
     for v in d.variables {
-        x.push_str(&variable(d, v));
+        x.push_str(&variable(d, v, fmi3.provides_intermediate_update));
     }
     for a in fmi3.arrays {
         x.push_str(&array(fmi3, a));
@@ -193,12 +195,15 @@ fn structural_parameter(p: &StructuralParameter) -> String {
 
 /// An array's element, with its `<Dimension>`.
 fn array(fmi3: Fmi3Interface, a: &ArrayVariable) -> String {
-    let (causality, variability) = match a.causality {
-        Causality::CalculatedParameter => ("calculatedParameter", "fixed"),
-        _ => ("output", "continuous"),
+    let (causality, variability, intermediate) = match a.causality {
+        Causality::CalculatedParameter => ("calculatedParameter", "fixed", ""),
+        _ if fmi3.provides_intermediate_update => {
+            ("output", "continuous", r#" intermediateUpdate="true""#)
+        }
+        _ => ("output", "continuous", ""),
     };
     format!(
-        r#"    <Float64 name="{}" valueReference="{}" description="{}" causality="{causality}" variability="{variability}" unit="{}">
+        r#"    <Float64 name="{}" valueReference="{}" description="{}" causality="{causality}" variability="{variability}"{intermediate} unit="{}">
       <Dimension valueReference="{}"/>
     </Float64>"#,
         a.name,
@@ -209,11 +214,16 @@ fn array(fmi3: Fmi3Interface, a: &ArrayVariable) -> String {
     ) + "\n"
 }
 
-/// One variable's element.
-fn variable<V: ValueReference>(d: &Description<V>, v: &Variable<V>) -> String {
+/// One variable's element; with `intermediate`, an output is readable in intermediate update.
+fn variable<V: ValueReference>(d: &Description<V>, v: &Variable<V>, intermediate: bool) -> String {
     let (causality, variability, initial) = attributes(v);
+    let intermediate = if intermediate && v.causality == Causality::Output {
+        r#" intermediateUpdate="true""#
+    } else {
+        ""
+    };
     let common = format!(
-        r#"name="{}" valueReference="{}" description="{}" causality="{causality}" variability="{variability}"{initial}"#,
+        r#"name="{}" valueReference="{}" description="{}" causality="{causality}" variability="{variability}"{initial}{intermediate}"#,
         v.name,
         v.vr.index(),
         escape(v.description)

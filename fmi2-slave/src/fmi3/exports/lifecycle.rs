@@ -1,5 +1,5 @@
 //! Creating, initialising, terminating, resetting and freeing an instance (FMI 3.0 §2.3.1–§2.3.5,
-//! §4.2): co-simulation without event mode, so Initialization Mode leads straight to Step Mode.
+//! §4.2): Initialization Mode leads to Step Mode, or to Event Mode for a master that uses it.
 #![allow(unsafe_code, non_snake_case, clippy::missing_safety_doc)]
 // The signatures are the C API's.
 #![allow(clippy::too_many_arguments)]
@@ -14,7 +14,7 @@ use crate::exports::codes::OK;
 use crate::exports::lifecycle::create;
 use crate::ffi::{string, with_instance};
 use crate::logger::Logger;
-use crate::model::Model;
+use crate::model::{Instance, IntermediateUpdate, Model};
 use crate::state::{Call, State, Version};
 
 /// Returns "3.0".
@@ -37,7 +37,7 @@ pub unsafe fn fmi3InstantiateCoSimulation<M: Model>(
     _nRequiredIntermediateVariables: usize,
     instanceEnvironment: fmi3InstanceEnvironment,
     logMessage: fmi3LogMessageCallback,
-    _intermediateUpdate: fmi3IntermediateUpdateCallback,
+    intermediateUpdate: fmi3IntermediateUpdateCallback,
 ) -> fmi3Instance {
     let result = catch_unwind(AssertUnwindSafe(|| {
         let logger = Logger::fmi3(
@@ -66,6 +66,12 @@ pub unsafe fn fmi3InstantiateCoSimulation<M: Model>(
         let mut instance = create::<M>(logger, &name, &token, resources, Version::Fmi3)?;
         instance.early_return_allowed = earlyReturnAllowed;
         instance.event_mode_used = eventModeUsed;
+        instance.intermediate_update = intermediateUpdate
+            .filter(|_| M::FMI3.provides_intermediate_update)
+            .map(|callback| IntermediateUpdate {
+                callback,
+                environment: instanceEnvironment,
+            });
         Some(Box::into_raw(instance).cast())
     }));
     result.ok().flatten().unwrap_or(std::ptr::null_mut())
@@ -84,8 +90,21 @@ pub fn instantiate_other(
     std::ptr::null_mut()
 }
 
-/// Frees an instance (NULL is a no-op); legal in every state.
+/// Frees an instance (NULL is a no-op); legal in every state but from inside the step's
+/// intermediate-update callback, where the step still needs the instance (refused, logged).
 pub unsafe fn fmi3FreeInstance<M: Model>(instance: fmi3Instance) {
+    if !instance.is_null() {
+        // SAFETY: an instance of this FMU not yet freed; no reference to it is live (fmi3DoStep
+        // holds none while the callback runs).
+        let inst = unsafe { &*instance.cast::<Instance<M>>() };
+        if inst.state == State::IntermediateUpdate {
+            inst.logger.error(
+                "fmi3FreeInstance: not allowed from inside fmi3DoStep's intermediate-update \
+                 callback; the instance is kept",
+            );
+            return;
+        }
+    }
     // SAFETY: the same contract as FMI 2's (an instance of this FMU, freed once).
     unsafe { crate::exports::fmi2FreeInstance::<M>(instance) }
 }

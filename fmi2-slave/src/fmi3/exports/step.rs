@@ -10,14 +10,22 @@ use super::values::refuse;
 use crate::error::FmuError;
 use crate::exports::codes::OK;
 use crate::ffi::{slice_mut, with_instance};
-use crate::model::{Model, StepOutcome};
+use crate::model::{Instance, IntermediateUpdate, Model, StepOutcome};
 use crate::number::Num;
-use crate::state::Call;
+use crate::state::{Call, State};
 
 /// Integrates from the communication point over the step size (error-controlled sub-steps). The
 /// FMU never asks for the simulation to end; it returns early only where the model does and the
 /// master allowed it, and then asks for event handling if the master uses Event Mode;
 /// `lastSuccessfulTime` is the time reached (also after a discarded step).
+///
+/// With the master's intermediate-update callback (a model that provides it) the step pauses
+/// after every internal step before the communication point: the instance is in Intermediate
+/// Update Mode, no reference to it is held, and the callback may read the outputs there (no input
+/// is set there). If it asks for an early return, and may (`canReturnEarlyAfterIntermediateUpdate`
+/// and `earlyReturnAllowed`), the step ends at that internal step's end, on the clock grid (the
+/// requested `earlyReturnTime` is not waited for: the step ends as soon as it can); else it
+/// goes on.
 pub unsafe fn fmi3DoStep<M: Model>(
     instance: fmi3Instance,
     currentCommunicationPoint: fmi3Float64,
@@ -28,34 +36,128 @@ pub unsafe fn fmi3DoStep<M: Model>(
     earlyReturn: *mut fmi3Boolean,
     lastSuccessfulTime: *mut fmi3Float64,
 ) -> fmi3Status {
-    with_instance::<M>(instance, Call::DoStep, |inst| {
-        // SAFETY: one writable value each (FMI 3.0 §4.2.1).
-        let (event, terminate, early, last) = unsafe {
-            (
-                slice_mut(eventHandlingNeeded, 1, "eventHandlingNeeded")?,
-                slice_mut(terminateSimulation, 1, "terminateSimulation")?,
-                slice_mut(earlyReturn, 1, "earlyReturn")?,
-                slice_mut(lastSuccessfulTime, 1, "lastSuccessfulTime")?,
-            )
-        };
-        let result = inst.model.do_step(
-            &inst.logger,
-            currentCommunicationPoint,
-            communicationStepSize,
-            inst.early_return_allowed,
-        );
-        terminate[0] = false;
-        early[0] = matches!(result, Ok(StepOutcome::ReturnedEarly { .. }));
-        event[0] = early[0] && inst.event_mode_used;
-        last[0] = inst.model.last_successful_time();
-        if let Ok(StepOutcome::ReturnedEarly { time, event }) = result {
-            inst.logger.event(&format!(
-                "fmi3DoStep: returned early at t = {} s: {event}",
-                Num(time)
-            ));
+    let flags = Flags {
+        event: eventHandlingNeeded,
+        terminate: terminateSimulation,
+        early: earlyReturn,
+        last: lastSuccessfulTime,
+    };
+    let (t, h) = (currentCommunicationPoint, communicationStepSize);
+    let mut pause = None;
+    let mut status = with_instance::<M>(instance, Call::DoStep, |inst| {
+        // SAFETY: one writable value each (FMI 3.0 §4.2.1), checked before the step.
+        unsafe { flags.check() }?;
+        // SAFETY: as above.
+        unsafe { step(inst, t, h, flags, &mut pause) }
+    });
+    while let Some((time, update, can_return_early)) = pause.take() {
+        let (mut requested, mut requested_time) = (false, time);
+        // SAFETY: the master's callback with its environment and two writable values; no
+        // reference to the instance is held while it runs (it may call the getters).
+        unsafe {
+            (update.callback)(
+                update.environment,
+                time,
+                false,
+                true,
+                true,
+                can_return_early,
+                &mut requested,
+                &mut requested_time,
+            );
         }
-        result.map(|_| OK)
-    })
+        status = with_instance::<M>(instance, Call::ResumeStep, |inst| {
+            inst.state = State::StepComplete;
+            if requested && can_return_early {
+                if let Some(reached) = inst.model.return_at_pause(&inst.logger)? {
+                    inst.logger.event(&format!(
+                        "fmi3DoStep: returned early at t = {} s: requested by the master",
+                        Num(reached)
+                    ));
+                    // SAFETY: as above.
+                    unsafe { flags.write(false, true, reached) }?;
+                    return Ok(OK);
+                }
+            }
+            // SAFETY: as above.
+            unsafe { step(inst, t, h, flags, &mut pause) }
+        });
+    }
+    status
+}
+
+/// fmi3DoStep's output arguments.
+#[derive(Clone, Copy)]
+struct Flags {
+    event: *mut fmi3Boolean,
+    terminate: *mut fmi3Boolean,
+    early: *mut fmi3Boolean,
+    last: *mut fmi3Float64,
+}
+
+impl Flags {
+    /// Refuses NULL pointers.
+    ///
+    /// # Safety
+    /// Each pointer is NULL or valid for one write.
+    unsafe fn check(self) -> Result<(), FmuError> {
+        // SAFETY: the caller's contract.
+        unsafe { self.write(false, false, f64::NAN) }
+    }
+
+    /// Writes eventHandlingNeeded, earlyReturn and lastSuccessfulTime (terminateSimulation is
+    /// always false).
+    ///
+    /// # Safety
+    /// As [`Flags::check`].
+    unsafe fn write(self, event: bool, early: bool, last: f64) -> Result<(), FmuError> {
+        // SAFETY: the caller's contract.
+        unsafe {
+            slice_mut(self.event, 1, "eventHandlingNeeded")?[0] = event;
+            slice_mut(self.terminate, 1, "terminateSimulation")?[0] = false;
+            slice_mut(self.early, 1, "earlyReturn")?[0] = early;
+            slice_mut(self.last, 1, "lastSuccessfulTime")?[0] = last;
+        }
+        Ok(())
+    }
+}
+
+/// One call of the model's step: complete, early or discarded (the flags written), or paused
+/// (Intermediate Update Mode, `pause` set for the caller to call back the master).
+///
+/// # Safety
+/// As [`Flags::check`].
+unsafe fn step<M: Model>(
+    inst: &mut Instance<M>,
+    t: f64,
+    h: f64,
+    flags: Flags,
+    pause: &mut Option<(f64, IntermediateUpdate, bool)>,
+) -> Result<fmi3Status, FmuError> {
+    let early_allowed = inst.early_return_allowed;
+    let result = match inst.intermediate_update {
+        Some(_) => inst
+            .model
+            .do_step_pausing(&inst.logger, t, h, early_allowed),
+        None => inst.model.do_step(&inst.logger, t, h, early_allowed),
+    };
+    if let (Ok(StepOutcome::Paused { time }), Some(update)) = (&result, inst.intermediate_update) {
+        inst.state = State::IntermediateUpdate;
+        let can_return_early = early_allowed && M::FMI3.can_return_early_after_intermediate_update;
+        *pause = Some((*time, update, can_return_early));
+        return Ok(OK);
+    }
+    let early = matches!(result, Ok(StepOutcome::ReturnedEarly { .. }));
+    let last = inst.model.last_successful_time();
+    // SAFETY: the caller's contract.
+    unsafe { flags.write(early && inst.event_mode_used, early, last) }?;
+    if let Ok(StepOutcome::ReturnedEarly { time, event }) = result {
+        inst.logger.event(&format!(
+            "fmi3DoStep: returned early at t = {} s: {event}",
+            Num(time)
+        ));
+    }
+    result.map(|_| OK)
 }
 
 /// Time derivatives of the outputs at the current communication point.
