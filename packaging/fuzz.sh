@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Coverage-guided fuzzing (libFuzzer through cargo-fuzz) of the FMU's state deserialization and of
-# fmi2* call sequences, each target for a fixed time (seconds, default 60) from the corpus kept
+# fmi2* and fmi3* call sequences, each target for a fixed time (seconds, default 60) from the corpus kept
 # in fuzz/corpus. New inputs go to a scratch directory, so a run leaves the repository as it was;
 # a crash fails the run and leaves its input under fuzz/artifacts/. With --update-corpus the kept
 # corpus is regenerated instead: the inputs of the run, the kept ones and (for fmu_state) states of
@@ -34,7 +34,7 @@ if ! "${fuzz[@]}" build -s "$sanitizer" --fuzz-dir fuzz >target/fuzz-build.log 2
   cat target/fuzz-build.log >&2
   exit 1
 fi
-for target in fmu_state call_sequence; do
+for target in fmu_state call_sequence fmi3_call_sequence; do
   scratch=$(mktemp -d)
   echo "== fuzz $target for ${seconds} s"
   status=0

@@ -1,7 +1,8 @@
-/* fmu_run: a minimal FMI 2.0 co-simulation master in portable C, for comparing the FMU's binaries
- * across platforms bit for bit.
+/* fmu_run: a minimal FMI 2.0 and FMI 3.0 co-simulation master in portable C, for comparing the
+ * FMU's binaries across platforms and FMI versions bit for bit.
  *
  *   fmu_run LIBRARY GUID STOP_TIME STEP REAL_VRS OUT [--save-at K STATE] [--restore-at K STATE]
+ *           [--fmi3]
  *
  * Loads LIBRARY (dlopen, or LoadLibrary on Windows), instantiates it with GUID, runs from 0 to
  * STOP_TIME in communication steps STEP, and writes one line per communication point to OUT:
@@ -9,9 +10,11 @@
  * bits of its value in hexadecimal (so that the files compare bit for bit, whatever the C
  * library's printf). --save-at K STATE serializes the FMU state at point K into the file STATE;
  * --restore-at K STATE starts instead by restoring that state and continues from point K.
+ * --fmi3 drives the library's fmi3* functions instead (GUID is then the instantiation token).
  * Exit status 0 on success; every failing call is reported on stderr with its status.
  */
 #include <stdarg.h>
+#include <stdbool.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -53,6 +56,19 @@ typedef fmi2Status (*Serialize)(fmi2Component, fmi2FMUstate, char *, size_t);
 typedef fmi2Status (*Deserialize)(fmi2Component, const char *, size_t, fmi2FMUstate *);
 typedef fmi2Status (*SetState)(fmi2Component, fmi2FMUstate);
 typedef void (*FreeInstance)(fmi2Component);
+
+/* FMI 3.0: the functions whose signatures differ from FMI 2's. */
+typedef void (*fmi3LogMessage)(void *, int, const char *, const char *);
+typedef fmi2Component (*Instantiate3)(const char *, const char *, const char *, bool, bool, bool, bool,
+                                      const fmi2ValueReference *, size_t, void *, fmi3LogMessage, void *);
+typedef fmi2Status (*EnterInitialization3)(fmi2Component, bool, double, double, bool, double);
+typedef fmi2Status (*GetFloat64)(fmi2Component, const fmi2ValueReference *, size_t, double *, size_t);
+typedef fmi2Status (*DoStep3)(fmi2Component, double, double, bool, bool *, bool *, bool *, double *);
+
+static void logger3(void *env, int status, const char *category, const char *message) {
+    (void)env;
+    fprintf(stderr, "[fmi3] %s (status %d): %s\n", category, status, message);
+}
 
 static void logger(void *env, const char *name, fmi2Status status, const char *category,
                    const char *message, ...) {
@@ -97,11 +113,19 @@ int main(int argc, char **argv) {
         vrs[nvr++] = (fmi2ValueReference)strtoul(p, &p, 10);
         if (*p == ',') p++;
     }
+    bool fmi3 = strcmp(argv[argc - 1], "--fmi3") == 0;
+    if (fmi3) argc--;
     long save_at = -1, restore_at = -1;
     const char *state_file = NULL;
     if (argc == 10 && strcmp(argv[7], "--save-at") == 0) save_at = atol(argv[8]);
     if (argc == 10 && strcmp(argv[7], "--restore-at") == 0) restore_at = atol(argv[8]);
     if (argc == 10) state_file = argv[9];
+    /* The FMU-state functions of either version (FMI 3 renames them, same signatures). */
+    const char *get_state = fmi3 ? "fmi3GetFMUState" : "fmi2GetFMUstate";
+    const char *state_size = fmi3 ? "fmi3SerializedFMUStateSize" : "fmi2SerializedFMUstateSize";
+    const char *serialize = fmi3 ? "fmi3SerializeFMUState" : "fmi2SerializeFMUstate";
+    const char *deserialize = fmi3 ? "fmi3DeserializeFMUState" : "fmi2DeSerializeFMUstate";
+    const char *set_state = fmi3 ? "fmi3SetFMUState" : "fmi2SetFMUstate";
 
     library = LOAD(argv[1]);
     if (!library) {
@@ -109,14 +133,22 @@ int main(int argc, char **argv) {
         return 2;
     }
     fmi2CallbackFunctions callbacks = {logger, calloc, free, NULL, NULL};
-    fmi2Component c = ((Instantiate)symbol("fmi2Instantiate"))("run", 1, guid, "file:///", &callbacks, 0, 0);
+    fmi2Component c = fmi3 ? ((Instantiate3)symbol("fmi3InstantiateCoSimulation"))(
+                                 "run", guid, NULL, false, false, false, false, NULL, 0, NULL, logger3, NULL)
+                           : ((Instantiate)symbol("fmi2Instantiate"))("run", 1, guid, "file:///", &callbacks, 0, 0);
     if (!c) {
-        fprintf(stderr, "fmu_run: fmi2Instantiate failed\n");
+        fprintf(stderr, "fmu_run: instantiation failed\n");
         return 1;
     }
-    check(((SetupExperiment)symbol("fmi2SetupExperiment"))(c, 0, 0.0, 0.0, 1, stop), "fmi2SetupExperiment");
-    check(((OneArg)symbol("fmi2EnterInitializationMode"))(c), "fmi2EnterInitializationMode");
-    check(((OneArg)symbol("fmi2ExitInitializationMode"))(c), "fmi2ExitInitializationMode");
+    if (fmi3) {
+        check(((EnterInitialization3)symbol("fmi3EnterInitializationMode"))(c, false, 0.0, 0.0, true, stop),
+              "fmi3EnterInitializationMode");
+        check(((OneArg)symbol("fmi3ExitInitializationMode"))(c), "fmi3ExitInitializationMode");
+    } else {
+        check(((SetupExperiment)symbol("fmi2SetupExperiment"))(c, 0, 0.0, 0.0, 1, stop), "fmi2SetupExperiment");
+        check(((OneArg)symbol("fmi2EnterInitializationMode"))(c), "fmi2EnterInitializationMode");
+        check(((OneArg)symbol("fmi2ExitInitializationMode"))(c), "fmi2ExitInitializationMode");
+    }
 
     long n = (long)(stop / h + 0.5), first = 0;
     if (restore_at >= 0) {
@@ -129,8 +161,8 @@ int main(int argc, char **argv) {
         size_t size = fread(bytes, 1, sizeof bytes, f);
         fclose(f);
         fmi2FMUstate s = NULL;
-        check(((Deserialize)symbol("fmi2DeSerializeFMUstate"))(c, bytes, size, &s), "fmi2DeSerializeFMUstate");
-        check(((SetState)symbol("fmi2SetFMUstate"))(c, s), "fmi2SetFMUstate");
+        check(((Deserialize)symbol(deserialize))(c, bytes, size, &s), deserialize);
+        check(((SetState)symbol(set_state))(c, s), set_state);
         first = restore_at;
     }
     FILE *out = fopen(argv[6], "w");
@@ -138,11 +170,16 @@ int main(int argc, char **argv) {
         fprintf(stderr, "fmu_run: cannot write %s\n", argv[6]);
         return 2;
     }
-    GetReal get_real = (GetReal)symbol("fmi2GetReal");
-    DoStep do_step = (DoStep)symbol("fmi2DoStep");
+    GetReal get_real = fmi3 ? NULL : (GetReal)symbol("fmi2GetReal");
+    DoStep do_step = fmi3 ? NULL : (DoStep)symbol("fmi2DoStep");
+    GetFloat64 get_float64 = fmi3 ? (GetFloat64)symbol("fmi3GetFloat64") : NULL;
+    DoStep3 do_step3 = fmi3 ? (DoStep3)symbol("fmi3DoStep") : NULL;
     double values[256];
     for (long k = first;; k++) {
-        check(get_real(c, vrs, nvr, values), "fmi2GetReal");
+        if (fmi3)
+            check(get_float64(c, vrs, nvr, values, nvr), "fmi3GetFloat64");
+        else
+            check(get_real(c, vrs, nvr, values), "fmi2GetReal");
         fprintf(out, "%ld", k);
         for (size_t i = 0; i < nvr; i++) {
             uint64_t bits;
@@ -153,10 +190,10 @@ int main(int argc, char **argv) {
         if (k == save_at) {
             fmi2FMUstate s = NULL;
             size_t size = 0;
-            check(((GetState)symbol("fmi2GetFMUstate"))(c, &s), "fmi2GetFMUstate");
-            check(((StateSize)symbol("fmi2SerializedFMUstateSize"))(c, s, &size), "fmi2SerializedFMUstateSize");
+            check(((GetState)symbol(get_state))(c, &s), get_state);
+            check(((StateSize)symbol(state_size))(c, s, &size), state_size);
             char *bytes = malloc(size);
-            check(((Serialize)symbol("fmi2SerializeFMUstate"))(c, s, bytes, size), "fmi2SerializeFMUstate");
+            check(((Serialize)symbol(serialize))(c, s, bytes, size), serialize);
             FILE *f = fopen(state_file, "wb");
             if (!f || fwrite(bytes, 1, size, f) != size) {
                 fprintf(stderr, "fmu_run: cannot write %s\n", state_file);
@@ -167,10 +204,16 @@ int main(int argc, char **argv) {
         }
         if (k == n) break;
         /* The communication points as a master computes them: k h, in floating point. */
-        check(do_step(c, (double)k * h, h, 1), "fmi2DoStep");
+        if (fmi3) {
+            bool event, terminate, early;
+            double last;
+            check(do_step3(c, (double)k * h, h, true, &event, &terminate, &early, &last), "fmi3DoStep");
+        } else {
+            check(do_step(c, (double)k * h, h, 1), "fmi2DoStep");
+        }
     }
     fclose(out);
-    check(((OneArg)symbol("fmi2Terminate"))(c), "fmi2Terminate");
-    ((FreeInstance)symbol("fmi2FreeInstance"))(c);
+    check(((OneArg)symbol(fmi3 ? "fmi3Terminate" : "fmi2Terminate"))(c), "Terminate");
+    ((FreeInstance)symbol(fmi3 ? "fmi3FreeInstance" : "fmi2FreeInstance"))(c);
     return 0;
 }

@@ -274,6 +274,29 @@ def test_aarch64_linux_under_qemu_starts_as_linux64_to_round_off(linux_run, aarc
     assert abs(peak_arm - peak_x86) < 0.01 * peak_x86, (peak_arm, peak_x86)
 
 
+def test_the_c_master_through_fmi3_equals_fmi2_on_linux64(linux_run, work, release):
+    """The C master through the library's fmi3* functions (fmi3InstantiateCoSimulation,
+    fmi3GetFloat64, fmi3DoStep, the FMU state) gives the FMI 2 run's bits at every communication
+    point, and a state serialized through fmi2 continues through fmi3 bit for bit (one format)."""
+    guid, experiment, _ = release
+    library = str(BINARIES / "linux64" / "FlexibleSliderCrank.so")
+    out = work / "linux64-fmi3.txt"
+    run([str(work / "fmu_run"), library, guid, *experiment, str(out), "--fmi3"])
+    assert lines_differing(out.read_text(), linux_run[0]) == []
+    resumed = work / "linux64-fmi3-resumed.txt"
+    run([str(work / "fmu_run"), library, guid, *experiment, str(resumed), "--restore-at",
+         str(SAVE_AT), str(linux_run[1]), "--fmi3"])
+    assert resumed.read_text().splitlines() == linux_run[0].splitlines()[SAVE_AT:]
+
+
+def test_aarch64_linux_under_qemu_through_fmi3_equals_its_fmi2_run(aarch64_master, work):
+    """On ARM64 too, the C master through the fmi3* functions gives the fmi2 functions' bits."""
+    fmi2, fmi3 = work / "aarch64-fmi2.txt", work / "aarch64-fmi3.txt"
+    aarch64_master(str(fmi2))
+    aarch64_master(str(fmi3), "--fmi3")
+    assert lines_differing(fmi3.read_text(), fmi2.read_text()) == []
+
+
 def test_aarch64_linux_exports_both_versions_against_glibc_2_28():
     for model in MODELS:
         library = str(BINARIES / "aarch64-linux" / f"{model}.so")
