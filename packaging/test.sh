@@ -25,7 +25,7 @@ echo "== benches and examples compile"
 cargo test --benches --examples --no-run --quiet
 echo "== cargo test (unit, validation and FMI tests)"
 cargo test --workspace --lib --tests
-echo "== fuzzing: state deserialization and fmi2* call sequences, 60 s each"
+echo "== fuzzing: state deserialization, fmi2* and fmi3* call sequences, 60 s each"
 bash packaging/fuzz.sh 60
 echo "== platform test tools: wine (win64 DLL), debootstrap (an older Debian for linux64), qemu-user and"
 echo "   Debian's ARM64 C library (aarch64-linux)"
