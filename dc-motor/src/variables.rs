@@ -5,14 +5,23 @@
 //! [`Vr`], so the code and the XML cannot disagree.
 
 pub use fmi_core::description::Description;
-pub use fmi_core::interface::Fmi3Interface;
+pub use fmi_core::interface::{Fmi3Interface, Terminal};
 pub use fmi_core::table::{Causality, Kind, ValueReference};
 
 /// One variable of this FMU.
 pub type Variable = fmi_core::table::Variable<Vr>;
 
-/// FMI 3 additions: none (the motor has no events to return early at, no arrays).
-pub const FMI3: Fmi3Interface = Fmi3Interface::NONE;
+/// FMI 3 additions: the shaft as a terminal (the motor has no events to return early at, no
+/// arrays).
+pub const FMI3: Fmi3Interface = Fmi3Interface {
+    terminals: &[Terminal {
+        name: "shaftFlange",
+        kind: "rotationalFlange",
+        description: "The shaft's load end: the load's speed in, the shaft torque out; connects to the crank's flange terminal (w out, tau in)",
+        members: &[("w", "shaft.speed"), ("tau", "shaft.torque")],
+    }],
+    ..Fmi3Interface::NONE
+};
 
 /// Everything modelDescription.xml says.
 pub const DESCRIPTION: Description<Vr> = Description {

@@ -24,6 +24,9 @@ pub struct Fmi3Interface {
     pub structural_parameters: &'static [StructuralParameter],
     /// The Float64 arrays, in the order the model's `Model::get_array` counts them.
     pub arrays: &'static [ArrayVariable],
+    /// Terminals: the variables a system editor connects together, grouped
+    /// (`terminalsAndIcons/terminalsAndIcons.xml`, FMI 3.0 §2.4.9).
+    pub terminals: &'static [Terminal],
 }
 
 impl Fmi3Interface {
@@ -35,6 +38,7 @@ impl Fmi3Interface {
         can_return_early_after_intermediate_update: false,
         structural_parameters: &[],
         arrays: &[],
+        terminals: &[],
     };
 
     /// The structural parameter with value reference `vr`, with its index.
@@ -84,4 +88,18 @@ pub struct ArrayVariable {
     pub unit: &'static str,
     /// Index of the structural parameter that sizes it.
     pub dimension: usize,
+}
+
+/// A terminal: signals a system editor connects in one go to the same-named members of a
+/// terminal of another FMU (matchingRule "bus": the members both have).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Terminal {
+    /// Name.
+    pub name: &'static str,
+    /// terminalKind: what kind of connector it is.
+    pub kind: &'static str,
+    /// Description.
+    pub description: &'static str,
+    /// Its members: (memberName, the variable's name).
+    pub members: &'static [(&'static str, &'static str)],
 }

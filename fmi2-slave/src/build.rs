@@ -6,7 +6,8 @@ use crate::table::ValueReference;
 
 /// The work of a model's build script: renders the FMI 2 modelDescription.xml and its GUID into
 /// `OUT_DIR` (`modelDescription.xml`, `guid.txt`, for `include_str!`) and the FMI 3 one with the
-/// model's FMI 3 additions `fmi3` (`fmi3/modelDescription.xml`), and, for a macOS target, gives the
+/// model's FMI 3 additions `fmi3` (`fmi3/modelDescription.xml`, and `fmi3/terminalsAndIcons.xml`,
+/// empty for a model without terminals), and, for a macOS target, gives the
 /// dylib the FMU's name as its install name (not the build path: reproducible builds).
 pub fn build_script<V: ValueReference>(
     d: &Description<V>,
@@ -15,11 +16,13 @@ pub fn build_script<V: ValueReference>(
     let (xml, guid) =
         description::model_description(d).map_err(|e| format!("variable table: {e}"))?;
     let xml3 = fmi3::description::model_description(d, fmi3, &guid)?;
+    let terminals = fmi3::description::terminals_and_icons(d, fmi3)?.unwrap_or_default();
     let out = std::path::PathBuf::from(std::env::var("OUT_DIR")?);
     std::fs::write(out.join("modelDescription.xml"), xml)?;
     std::fs::write(out.join("guid.txt"), guid)?;
     std::fs::create_dir_all(out.join("fmi3"))?;
     std::fs::write(out.join("fmi3/modelDescription.xml"), xml3)?;
+    std::fs::write(out.join("fmi3/terminalsAndIcons.xml"), terminals)?;
     if std::env::var("CARGO_CFG_TARGET_OS").as_deref() == Ok("macos") {
         println!(
             "cargo::rustc-cdylib-link-arg=-Wl,-install_name,@rpath/{}.dylib",

@@ -80,6 +80,7 @@ const FMI3: Fmi3Interface = Fmi3Interface {
         unit: "1",
         dimension: 0,
     }],
+    terminals: &[],
 };
 
 /// The lag's state; y(0) = 0.

@@ -28,7 +28,9 @@ use std::io::{BufRead, BufReader, Write};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
-use flexible_slider_crank::fmi::{MODEL_DESCRIPTION, MODEL_DESCRIPTION_FMI3, MODEL_IDENTIFIER};
+use flexible_slider_crank::fmi::{
+    MODEL_DESCRIPTION, MODEL_DESCRIPTION_FMI3, MODEL_IDENTIFIER, TERMINALS_AND_ICONS_FMI3,
+};
 use zip::write::SimpleFileOptions;
 
 /// Builds the cdylib of `package` in release mode and returns the path of the `.so` cargo reports.
@@ -243,6 +245,17 @@ fn write_fmu(
     Ok(())
 }
 
+/// An FMI 3 FMU's extra entries: `entries` and its terminalsAndIcons.xml, if it has terminals.
+fn with_terminals(mut entries: Vec<(String, Vec<u8>)>, terminals: &str) -> Vec<(String, Vec<u8>)> {
+    if !terminals.is_empty() {
+        entries.push((
+            "terminalsAndIcons/terminalsAndIcons.xml".into(),
+            terminals.as_bytes().to_vec(),
+        ));
+    }
+    entries
+}
+
 /// Deflated entries with a fixed time stamp, so that the same inputs give the same bytes.
 fn zip_options() -> SimpleFileOptions {
     SimpleFileOptions::default()
@@ -307,7 +320,7 @@ fn package(
         &fmi3_binaries(binaries),
         &guide,
         &images,
-        &crank_references.fmu_entries(),
+        &with_terminals(crank_references.fmu_entries(), TERMINALS_AND_ICONS_FMI3),
     )?;
     let motor_fmu3 = fmi3.join(format!("{}.fmu", motor.0));
     write_fmu(
@@ -316,7 +329,10 @@ fn package(
         &fmi3_binaries(motor_libraries),
         &documentation::motor(),
         &[],
-        &motor_references.fmu_entries(),
+        &with_terminals(
+            motor_references.fmu_entries(),
+            dc_motor::TERMINALS_AND_ICONS_FMI3,
+        ),
     )?;
     let system = root.join("systems/motor-crank");
     let ssp = out_dir.join("MotorCrank.ssp");

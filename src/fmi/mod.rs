@@ -18,7 +18,9 @@ pub mod outputs;
 pub mod snapshot;
 mod step;
 
-pub use model_description::{GUID, MODEL_DESCRIPTION, MODEL_DESCRIPTION_FMI3, MODEL_IDENTIFIER};
+pub use model_description::{
+    GUID, MODEL_DESCRIPTION, MODEL_DESCRIPTION_FMI3, MODEL_IDENTIFIER, TERMINALS_AND_ICONS_FMI3,
+};
 
 fmi2_slave::export_fmi2!(instance::SliderCrankFmu);
 fmi2_slave::export_fmi3!(instance::SliderCrankFmu);

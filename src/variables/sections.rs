@@ -1,10 +1,11 @@
 //! The FMI 3 additions of the FMU: the rod's section results as arrays along it, their number a
-//! structural parameter (FMI 2 has neither; its variables are the table's alone).
+//! structural parameter (FMI 2 has neither; its variables are the table's alone), and the
+//! terminals a system editor connects: the crank's flange and the slider's.
 //!
 //! The sections are evenly spaced from the crank pin (k = 0) to the slider pin (k = N − 1), at
 //! s_k = k L/(N − 1) along the rod's reference length L.
 
-use fmi_core::interface::{ArrayVariable, Fmi3Interface, StructuralParameter};
+use fmi_core::interface::{ArrayVariable, Fmi3Interface, StructuralParameter, Terminal};
 use fmi_core::table::Causality;
 
 /// Value reference of `rod.nSections`, the first after the independent variable `time`'s.
@@ -102,4 +103,26 @@ pub const FMI3: Fmi3Interface = Fmi3Interface {
     can_return_early_after_intermediate_update: true,
     structural_parameters: STRUCTURAL_PARAMETERS,
     arrays: SECTION_ARRAYS,
+    terminals: &[
+        Terminal {
+            name: "crankFlange",
+            kind: "rotationalFlange",
+            description: "The crank as a shaft end: its angle and speed out, the drive torque in (drive.mode = torque); a motor's shaft terminal (w in, tau out) connects to it",
+            members: &[
+                ("phi", "crank.angle"),
+                ("w", "crank.speed"),
+                ("tau", "drive.torque"),
+            ],
+        },
+        Terminal {
+            name: "sliderFlange",
+            kind: "translationalFlange",
+            description: "The slider: its position and velocity out, the external force along the guide in",
+            members: &[
+                ("s", "slider.position"),
+                ("v", "slider.velocity"),
+                ("f", "slider.force"),
+            ],
+        },
+    ],
 };

@@ -257,3 +257,38 @@ fn variable<V: ValueReference>(d: &Description<V>, v: &Variable<V>, intermediate
         }
     }
 }
+
+/// The terminalsAndIcons.xml of `fmi3`'s terminals (FMI 3.0 §2.4.9), every member a variable of
+/// `d`; None for a model without terminals.
+pub fn terminals_and_icons<V: ValueReference>(
+    d: &Description<V>,
+    fmi3: Fmi3Interface,
+) -> Result<Option<String>, String> {
+    if fmi3.terminals.is_empty() {
+        return Ok(None);
+    }
+    let mut x = String::from(
+        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<fmiTerminalsAndIcons fmiVersion=\"3.0\">\n  <Terminals>\n",
+    );
+    for t in fmi3.terminals {
+        let _ = writeln!(
+            x,
+            r#"    <Terminal name="{}" matchingRule="bus" terminalKind="{}" description="{}">"#,
+            t.name,
+            t.kind,
+            escape(t.description)
+        );
+        for (member, name) in t.members {
+            if !d.variables.iter().any(|v| v.name == *name) {
+                return Err(format!("terminal {}: no variable {name}", t.name));
+            }
+            let _ = writeln!(
+                x,
+                r#"      <TerminalMemberVariable variableName="{name}" memberName="{member}" variableKind="signal"/>"#
+            );
+        }
+        x.push_str("    </Terminal>\n");
+    }
+    x.push_str("  </Terminals>\n</fmiTerminalsAndIcons>\n");
+    Ok(Some(x))
+}

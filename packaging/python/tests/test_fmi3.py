@@ -2,6 +2,7 @@
 DefaultExperiment and in the motor-crank system, and, with early return allowed (and event mode),
 returning at the slider-crank's contact onsets without changing what the run computes."""
 import zipfile
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -163,6 +164,34 @@ def test_intermediate_update_reads_every_internal_step(root):
     for column, peak in [(1, "joint.forcePeak"), (2, "rod.stressPeak")]:
         held = plain[:, outputs.index(vr[peak])].max()
         assert 0.99 * held <= reads[:, column].max() <= held, peak
+
+
+def test_terminals_connect_the_motor_to_the_crank(root):
+    """Both FMI 3 FMUs carry terminalsAndIcons.xml, valid against the FMI 3 schema, every member a
+    variable of the FMU; the crank's flange and the motor's shaft share the members w and tau,
+    each an output on one side and an input on the other (what the motor-crank system connects);
+    the slider's flange groups its position, velocity and force."""
+    from lxml import etree
+    import fmpy
+
+    schema = etree.XMLSchema(file=str(Path(fmpy.__file__).parent / "schema" / "fmi3"
+                                      / "fmi3TerminalsAndIcons.xsd"))
+    members = {}
+    for model in MODELS:
+        with zipfile.ZipFile(fmi3_fmu(root, model)) as z:
+            doc = etree.fromstring(z.read("terminalsAndIcons/terminalsAndIcons.xml"))
+        assert schema.validate(doc), schema.error_log
+        causality = {v.name: v.causality for v in read_model_description(fmi3_fmu(root, model)).modelVariables}
+        for terminal in doc.iter("Terminal"):
+            assert terminal.get("matchingRule") == "bus"
+            members[terminal.get("name")] = {
+                m.get("memberName"): causality[m.get("variableName")]
+                for m in terminal.iter("TerminalMemberVariable")}
+    crank, shaft = members["crankFlange"], members["shaftFlange"]
+    assert set(shaft) == {"w", "tau"} <= set(crank)
+    for name in shaft:
+        assert {crank[name], shaft[name]} == {"input", "output"}, name
+    assert set(members["sliderFlange"]) == {"s", "v", "f"}
 
 
 def test_motor_has_no_event_mode(root):
