@@ -128,15 +128,15 @@ impl DcMotorFmu {
     }
 }
 
-/// The output `vr` among the motor's outputs (0 for any other variable).
-fn output(o: &MotorOutputs, vr: Vr) -> f64 {
+/// The output `vr` among the motor's outputs (None for any other variable).
+fn output(o: &MotorOutputs, vr: Vr) -> Option<f64> {
     match vr {
-        Vr::ShaftTorque => o.shaft_torque,
-        Vr::MotorSpeed => o.speed,
-        Vr::MotorCurrent => o.current,
-        Vr::MotorVoltage => o.voltage,
-        Vr::ShaftTwist => o.twist,
-        _ => 0.0,
+        Vr::ShaftTorque => Some(o.shaft_torque),
+        Vr::MotorSpeed => Some(o.speed),
+        Vr::MotorCurrent => Some(o.current),
+        Vr::MotorVoltage => Some(o.voltage),
+        Vr::ShaftTwist => Some(o.twist),
+        _ => None,
     }
 }
 
@@ -252,9 +252,9 @@ impl Model for DcMotorFmu {
         values: &mut [f64],
     ) -> Result<(), FmuError> {
         for (&v, value) in vars.iter().zip(values.iter_mut()) {
-            *value = match v.causality {
-                Causality::Parameter => self.parameters[v.vr as usize],
-                Causality::Input => self.inputs.value[Self::input_index(v.vr).unwrap_or(0)],
+            let read = match v.causality {
+                Causality::Parameter => Some(self.parameters[v.vr as usize]),
+                Causality::Input => Self::input_index(v.vr).map(|k| self.inputs.value[k]),
                 _ => {
                     let x = self.state();
                     output(
@@ -263,6 +263,7 @@ impl Model for DcMotorFmu {
                     )
                 }
             };
+            *value = read.ok_or_else(|| FmuError::Invalid(format!("{} cannot be read", v.name)))?;
         }
         Ok(())
     }
@@ -363,7 +364,8 @@ impl Model for DcMotorFmu {
             .motor()
             .output_derivatives(&x, &inputs(&self.inputs, self.time), set_point);
         for (v, c) in unknowns.iter().zip(column.iter_mut()) {
-            *c = output(&d, v.vr);
+            *c = output(&d, v.vr)
+                .ok_or_else(|| FmuError::Invalid(format!("{} is not an output", v.name)))?;
         }
         Ok(())
     }
