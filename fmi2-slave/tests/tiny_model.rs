@@ -265,15 +265,15 @@ fn logged(text: &str) -> bool {
 const OK: u32 = 0;
 const ERROR: u32 = 3;
 
-/// An FMI 3 instance of the lag in Step Mode, early return allowed or not.
-fn lag3(name: &str, early_return: bool) -> *mut std::ffi::c_void {
+/// A new FMI 3 instance of the lag, early return allowed or not.
+fn instantiate3(name: &str, early_return: bool) -> *mut std::ffi::c_void {
     let (name, token) = (
         CString::new(name).unwrap(),
         CString::new(Lag::GUID).unwrap(),
     );
-    // SAFETY: NUL-terminated strings that outlive the calls; the instance is live.
-    unsafe {
-        let c = fmi3InstantiateCoSimulation(
+    // SAFETY: NUL-terminated strings that outlive the call.
+    let c = unsafe {
+        fmi3InstantiateCoSimulation(
             name.as_ptr(),
             token.as_ptr(),
             std::ptr::null(),
@@ -286,15 +286,24 @@ fn lag3(name: &str, early_return: bool) -> *mut std::ffi::c_void {
             std::ptr::null_mut(),
             Some(log3),
             None,
-        );
-        assert!(!c.is_null(), "{}", last_message());
+        )
+    };
+    assert!(!c.is_null(), "{}", last_message());
+    c
+}
+
+/// An FMI 3 instance of the lag in Step Mode, early return allowed or not.
+fn lag3(name: &str, early_return: bool) -> *mut std::ffi::c_void {
+    let c = instantiate3(name, early_return);
+    // SAFETY: a live instance.
+    unsafe {
         assert_eq!(
             fmi3EnterInitializationMode(c, false, 0.0, 0.0, false, 0.0),
             OK
         );
         assert_eq!(fmi3ExitInitializationMode(c), OK);
-        c
     }
+    c
 }
 
 /// fmi3DoStep: status, earlyReturn, lastSuccessfulTime.
@@ -468,25 +477,9 @@ fn the_layer_refuses_before_the_model_in_each_versions_names() {
 /// model; a wrong total is refused before the model is called.
 #[test]
 fn fmi3_arrays_are_sized_by_structural_parameters() {
-    let name = CString::new("tiny-arrays").unwrap();
-    let token = CString::new(Lag::GUID).unwrap();
-    // SAFETY: NUL-terminated strings that outlive the calls; the instance is live, every pointer
-    // valid for the counts given.
+    let c = instantiate3("tiny-arrays", false);
+    // SAFETY: a live instance, every pointer valid for the counts given.
     unsafe {
-        let c = fmi3InstantiateCoSimulation(
-            name.as_ptr(),
-            token.as_ptr(),
-            std::ptr::null(),
-            false,
-            true,
-            false,
-            false,
-            std::ptr::null(),
-            0,
-            std::ptr::null_mut(),
-            Some(log3),
-            None,
-        );
         assert_eq!(fmi3SetUInt64(c, &N_POWERS, 1, &3, 1), ERROR);
         assert!(logged("fmi3SetUInt64: Illegal call sequence."));
         assert_eq!(fmi3Reset(c), OK);

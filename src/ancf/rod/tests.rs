@@ -46,27 +46,63 @@ fn patch_weights_anywhere_are_the_least_squares_quadratic() {
     }
 }
 
+/// A pinned beam of the benchmark-B rod under a uniform transverse load q small enough for the
+/// linear theory: its deflection w(x) = q x (L³ − 2Lx² + x³)/(24 EI) and slope, and the nodal
+/// coordinates of a rod of `n` elements that carry them exactly.
+struct LoadedBeam {
+    p: RodProperties,
+    l: f64,
+    ei: f64,
+    q: f64,
+}
+
+impl LoadedBeam {
+    fn new() -> Self {
+        let p = RodProperties::benchmark_b();
+        let (l, ei) = (p.length, p.youngs_modulus * p.second_moment_of_area);
+        Self {
+            p,
+            l,
+            ei,
+            q: 1e-5 * 8.0 * ei / (l * l),
+        }
+    }
+
+    fn w(&self, x: f64) -> f64 {
+        let (l, q) = (self.l, self.q);
+        q * x * (l.powi(3) - 2.0 * l * x * x + x.powi(3)) / (24.0 * self.ei)
+    }
+
+    fn slope(&self, x: f64) -> f64 {
+        let (l, q) = (self.l, self.q);
+        q * (l.powi(3) - 6.0 * l * x * x + 4.0 * x.powi(3)) / (24.0 * self.ei)
+    }
+
+    /// The rod of `n` elements and its nodal coordinates on the deflected line.
+    fn rod(&self, n: usize) -> (Rod, Vec<f64>) {
+        let e = (0..=n)
+            .flat_map(|k| {
+                let x = self.l * k as f64 / n as f64;
+                [x, self.w(x), 1.0, self.slope(x)]
+            })
+            .collect();
+        (Rod::new(self.p, n).unwrap(), e)
+    }
+}
+
 /// The pinned beam under a uniform load of the test below, at evenly spaced sections: the
 /// recovered moment is the exact −q x (L − x)/2 everywhere (a quadratic), the axial force zero,
 /// and the deflection the exact w(x) to the cubic (Hermite) interpolation's error between the
 /// nodes, at most w (h/2)⁴/4! = q h⁴/(384 EI) for elements of length h.
 #[test]
 fn a_pinned_beam_under_a_uniform_load_has_the_exact_section_moments() {
-    let p = RodProperties::benchmark_b();
-    let (l, ei) = (p.length, p.youngs_modulus * p.second_moment_of_area);
-    let q = 1e-5 * 8.0 * ei / (l * l);
-    let w = |x: f64| q * x * (l.powi(3) - 2.0 * l * x * x + x.powi(3)) / (24.0 * ei);
-    let slope = |x: f64| q * (l.powi(3) - 6.0 * l * x * x + 4.0 * x.powi(3)) / (24.0 * ei);
+    let beam = LoadedBeam::new();
+    let (l, ei, q) = (beam.l, beam.ei, beam.q);
+    let w = |x: f64| beam.w(x);
     let largest_moment = q * l * l / 8.0;
     for n in 2..=9 {
         let interpolation = q * (l / n as f64).powi(4) / (384.0 * ei);
-        let rod = Rod::new(p, n).unwrap();
-        let e: Vec<f64> = (0..=n)
-            .flat_map(|k| {
-                let x = l * k as f64 / n as f64;
-                [x, w(x), 1.0, slope(x)]
-            })
-            .collect();
+        let (rod, e) = beam.rod(n);
         for sections in [2, 7, 11, 20] {
             for k in 0..sections {
                 let place = section_place(k, sections);
@@ -148,20 +184,11 @@ fn a_stretched_rod_carries_e_times_the_strain() {
 /// signed field: the mid-span moment and both fibres' stresses, where the largest lies.
 #[test]
 fn a_pinned_beam_under_a_uniform_load_has_the_midspan_stress() {
-    let p = RodProperties::benchmark_b();
-    let (l, ei) = (p.length, p.youngs_modulus * p.second_moment_of_area);
-    let q = 1e-5 * 8.0 * ei / (l * l);
-    let w = |x: f64| q * x * (l.powi(3) - 2.0 * l * x * x + x.powi(3)) / (24.0 * ei);
-    let slope = |x: f64| q * (l.powi(3) - 6.0 * l * x * x + 4.0 * x.powi(3)) / (24.0 * ei);
+    let beam = LoadedBeam::new();
+    let (p, l, q) = (beam.p, beam.l, beam.q);
     let expected = q * l * l / 8.0 * p.outer_fibre_distance / p.second_moment_of_area;
     for n in 2..=9 {
-        let rod = Rod::new(p, n).unwrap();
-        let e: Vec<f64> = (0..=n)
-            .flat_map(|k| {
-                let x = l * k as f64 / n as f64;
-                [x, w(x), 1.0, slope(x)]
-            })
-            .collect();
+        let (rod, e) = beam.rod(n);
         let stresses = rod.normal_stresses(&e);
         let sigma = stresses.largest;
         assert!(
