@@ -223,7 +223,8 @@ macro_rules! export_fmi3_unsupported {
             )
         }
         const _: $crate::fmi3::exports::sys::fmi3SetShiftFractionTYPE = Some(fmi3SetShiftFraction);
-        /// Not supported: the FMU has no event mode (hasEventMode = false).
+        /// Not supported: providesEvaluateDiscreteStates = false (the model settles its discrete
+        /// states where its events happen).
         #[unsafe(no_mangle)]
         pub unsafe extern "C" fn fmi3EvaluateDiscreteStates(
             instance: $crate::fmi3::exports::sys::fmi3Instance,
@@ -231,7 +232,7 @@ macro_rules! export_fmi3_unsupported {
             $crate::fmi3::exports::unsupported::<$model>(
                 instance,
                 "fmi3EvaluateDiscreteStates",
-                "the FMU has no event mode (hasEventMode = false)",
+                "the discrete states are not evaluated apart (providesEvaluateDiscreteStates = false)",
             )
         }
         const _: $crate::fmi3::exports::sys::fmi3EvaluateDiscreteStatesTYPE =
