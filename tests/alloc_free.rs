@@ -11,7 +11,7 @@ use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 
 use flexible_slider_crank::params::JointParameters;
-use flexible_slider_crank::params::{JointModel, RodFormulation};
+use flexible_slider_crank::params::{FilmModel, JointModel, RodFormulation};
 use flexible_slider_crank::{Input, Parameters, Simulation};
 
 /// Counts the allocations of each thread while its [`COUNT`] is `Some` (tests run in parallel).
@@ -69,10 +69,16 @@ fn stepping_does_not_allocate() {
         RodFormulation::Ancf,
         RodFormulation::CraigBampton,
     ] {
-        for joint in [JointModel::Ideal, JointModel::Dry, JointModel::Lubricated] {
+        for (joint, film) in [
+            (JointModel::Ideal, FilmModel::Finite),
+            (JointModel::Dry, FilmModel::Finite),
+            (JointModel::Lubricated, FilmModel::Short),
+            (JointModel::Lubricated, FilmModel::Finite),
+        ] {
             let p = Parameters {
                 joint: JointParameters {
                     model: joint,
+                    film_model: film,
                     ..Parameters::default().joint
                 },
                 rod_formulation: rod,
@@ -90,14 +96,15 @@ fn stepping_does_not_allocate() {
             });
             assert_eq!(
                 n, 0,
-                "{rod:?} rod, {joint:?} joint: {n} allocations in 40 steps"
+                "{rod:?} rod, {joint:?} joint ({film:?} film): {n} allocations in 40 steps"
             );
         }
     }
 }
 
 /// A machine of the user's own with every option on the hot path: all three joints worn (a
-/// lubricated crank pin, a dry main bearing, a rod–slider joint in line contact), a counterweight,
+/// crank pin lubricated by the finite film, a dry main bearing with 0.1 mm clearance, a rod–slider
+/// joint in line contact), a counterweight,
 /// an offset cylinder, heavy rod eyes, a damped rod and a crank-angle load table: stepping still
 /// allocates nothing.
 #[test]
@@ -116,7 +123,10 @@ fn stepping_a_machine_with_every_option_does_not_allocate() {
             ..base.joint
         },
         crank_pin: worn(JointModel::Lubricated),
-        main_bearing: worn(JointModel::Dry),
+        main_bearing: JointParameters {
+            clearance: 1e-4,
+            ..worn(JointModel::Dry)
+        },
         crank_centre_of_mass_ratio: -0.2,
         slider_offset: 0.005,
         slider_force_table: table.display().to_string(),

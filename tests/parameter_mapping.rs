@@ -200,6 +200,15 @@ const FIELDS: &[(&str, Restore)] = &[
     ("mainBearing.contactGeometry", |p, d| {
         p.main_bearing.contact_geometry = d.main_bearing.contact_geometry
     }),
+    ("joint.filmModel", |p, d| {
+        p.joint.film_model = d.joint.film_model
+    }),
+    ("crankPin.filmModel", |p, d| {
+        p.crank_pin.film_model = d.crank_pin.film_model
+    }),
+    ("mainBearing.filmModel", |p, d| {
+        p.main_bearing.film_model = d.main_bearing.film_model
+    }),
     ("crank.centreOfMassRatio", |p, d| {
         p.crank_centre_of_mass_ratio = d.crank_centre_of_mass_ratio
     }),

@@ -4,9 +4,10 @@
 //! `tests/data/regression_lock.txt`:
 //! - `B`: the DefaultExperiment (benchmark B: 4-mode rod, dry rod–slider joint);
 //! - `A`: the rigid rod;
-//! - `lubricated`: the 4-mode rod with the lubricated rod–slider joint;
-//! - `worn`: lubricated crank pin and main bearing (0.05 mm, 9 mm long, 0.04 Pa s) with the dry
-//!   rod–slider joint, every journal settled (the three joints' laws at once);
+//! - `lubricated`: the 4-mode rod with the lubricated rod–slider joint (the short film);
+//! - `worn`: lubricated crank pin and main bearing (0.05 mm, 9 mm long, 0.04 Pa s, the short
+//!   film) with the dry rod–slider joint, every journal settled (the three joints' laws at once);
+//! - `finite`: `worn` with the finite film in both bearings;
 //! - `torque`: the torque drive under a constant 2 N m with a constant slider force.
 //!
 //! This is a lock, not a validation: it holds the code's own results, right or wrong, so that a
@@ -27,23 +28,12 @@ use fmi2_slave::reference::Slave;
 const CASES: &[(&str, &[(&str, f64)])] = &[
     ("B", &[]),
     ("A", &[("rod.formulation", 1.0)]),
-    ("lubricated", &[("joint.model", 3.0)]),
     (
-        "worn",
-        &[
-            ("joint.initialState", 2.0),
-            ("crankPin.model", 3.0),
-            ("crankPin.clearance", 5e-5),
-            ("crankPin.bearingLength", 9e-3),
-            ("crankPin.viscosity", 0.04),
-            ("crankPin.initialState", 2.0),
-            ("mainBearing.model", 3.0),
-            ("mainBearing.clearance", 5e-5),
-            ("mainBearing.bearingLength", 9e-3),
-            ("mainBearing.viscosity", 0.04),
-            ("mainBearing.initialState", 2.0),
-        ],
+        "lubricated",
+        &[("joint.model", 3.0), ("joint.filmModel", 1.0)],
     ),
+    ("worn", &WORN),
+    ("finite", &FINITE),
     (
         "torque",
         &[
@@ -53,6 +43,32 @@ const CASES: &[(&str, &[(&str, f64)])] = &[
         ],
     ),
 ];
+
+/// Lubricated crank pin and main bearing with the short film, the dry rod–slider joint, every
+/// journal settled.
+const WORN: [(&str, f64); 13] = [
+    ("joint.initialState", 2.0),
+    ("crankPin.model", 3.0),
+    ("crankPin.clearance", 5e-5),
+    ("crankPin.bearingLength", 9e-3),
+    ("crankPin.viscosity", 0.04),
+    ("crankPin.initialState", 2.0),
+    ("crankPin.filmModel", 1.0),
+    ("mainBearing.model", 3.0),
+    ("mainBearing.clearance", 5e-5),
+    ("mainBearing.bearingLength", 9e-3),
+    ("mainBearing.viscosity", 0.04),
+    ("mainBearing.initialState", 2.0),
+    ("mainBearing.filmModel", 1.0),
+];
+
+/// [`WORN`] with the finite film in both bearings.
+const FINITE: [(&str, f64); 13] = {
+    let mut finite = WORN;
+    finite[6].1 = 2.0;
+    finite[12].1 = 2.0;
+    finite
+};
 
 /// FNV-1a 64 of each output's bits over the run's 240 communication points.
 fn hashes(settings: &[(&str, f64)]) -> BTreeMap<&'static str, u64> {

@@ -227,7 +227,7 @@ pub(crate) fn real_attributes<V: ValueReference>(
 /// display units.
 pub(crate) fn unit_definitions<V>(d: &Description<V>) -> String {
     let mut x = String::from("  <UnitDefinitions>\n");
-    for (name, base) in d.units {
+    for (name, base, factor) in d.units {
         let displays: String = d
             .display_units
             .iter()
@@ -247,7 +247,12 @@ pub(crate) fn unit_definitions<V>(d: &Description<V>) -> String {
                     .filter(|(_, v)| **v != 0)
                     .map(|(k, v)| format!(r#" {k}="{v}""#))
                     .collect();
-                format!("<BaseUnit{attrs}/>")
+                let factor = if *factor == 1.0 {
+                    String::new()
+                } else {
+                    format!(r#" factor="{}""#, real(*factor))
+                };
+                format!("<BaseUnit{attrs}{factor}/>")
             }
             None => String::new(),
         };

@@ -163,7 +163,7 @@ pub fn real_output(o: &Outputs, vr: Vr) -> Option<f64> {
 
 /// Each joint's bearing-design outputs, by [`JointRole`], in the order of
 /// [`bearing_values`].
-const BEARING_OUTPUTS: [[Vr; 9]; 3] = [
+const BEARING_OUTPUTS: [[Vr; 18]; 3] = [
     [
         Vr::MainBearingEccentricityRatio,
         Vr::MainBearingFilmThickness,
@@ -174,6 +174,15 @@ const BEARING_OUTPUTS: [[Vr; 9]; 3] = [
         Vr::MainBearingFrictionTorque,
         Vr::MainBearingFrictionPower,
         Vr::MainBearingEnergyDissipated,
+        Vr::MainBearingOilFlow,
+        Vr::MainBearingFilmThicknessMinCycle,
+        Vr::MainBearingFilmThicknessMinCycleAngle,
+        Vr::MainBearingFilmPressurePeakCycle,
+        Vr::MainBearingFilmPressurePeakCycleAngle,
+        Vr::MainBearingForcePeakCycle,
+        Vr::MainBearingForcePeakCycleAngle,
+        Vr::MainBearingFrictionPowerMeanCycle,
+        Vr::MainBearingOilFlowMeanCycle,
     ],
     [
         Vr::CrankPinEccentricityRatio,
@@ -185,6 +194,15 @@ const BEARING_OUTPUTS: [[Vr; 9]; 3] = [
         Vr::CrankPinFrictionTorque,
         Vr::CrankPinFrictionPower,
         Vr::CrankPinEnergyDissipated,
+        Vr::CrankPinOilFlow,
+        Vr::CrankPinFilmThicknessMinCycle,
+        Vr::CrankPinFilmThicknessMinCycleAngle,
+        Vr::CrankPinFilmPressurePeakCycle,
+        Vr::CrankPinFilmPressurePeakCycleAngle,
+        Vr::CrankPinForcePeakCycle,
+        Vr::CrankPinForcePeakCycleAngle,
+        Vr::CrankPinFrictionPowerMeanCycle,
+        Vr::CrankPinOilFlowMeanCycle,
     ],
     [
         Vr::JointEccentricityRatio,
@@ -196,11 +214,20 @@ const BEARING_OUTPUTS: [[Vr; 9]; 3] = [
         Vr::JointFrictionTorque,
         Vr::JointFrictionPower,
         Vr::JointEnergyDissipated,
+        Vr::JointOilFlow,
+        Vr::JointFilmThicknessMinCycle,
+        Vr::JointFilmThicknessMinCycleAngle,
+        Vr::JointFilmPressurePeakCycle,
+        Vr::JointFilmPressurePeakCycleAngle,
+        Vr::JointForcePeakCycle,
+        Vr::JointForcePeakCycleAngle,
+        Vr::JointFrictionPowerMeanCycle,
+        Vr::JointOilFlowMeanCycle,
     ],
 ];
 
 /// A joint's bearing-design outputs in the order of a row of [`BEARING_OUTPUTS`].
-fn bearing_values(b: &BearingOutputs) -> [f64; 9] {
+fn bearing_values(b: &BearingOutputs) -> [f64; 18] {
     [
         b.eccentricity_ratio,
         b.film_thickness,
@@ -211,6 +238,15 @@ fn bearing_values(b: &BearingOutputs) -> [f64; 9] {
         b.friction_torque,
         b.friction_power,
         b.energy_dissipated,
+        b.oil_flow,
+        b.film_thickness_min_cycle,
+        b.film_thickness_min_cycle_angle,
+        b.film_pressure_peak_cycle,
+        b.film_pressure_peak_cycle_angle,
+        b.force_peak_cycle,
+        b.force_peak_cycle_angle,
+        b.friction_power_mean_cycle,
+        b.oil_flow_mean_cycle,
     ]
 }
 

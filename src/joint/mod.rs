@@ -12,16 +12,19 @@
 
 pub mod bearing;
 pub mod contact;
+pub mod finite_film;
 pub mod kinematics;
 pub mod parameters;
+pub mod reynolds;
 pub mod role;
+pub mod short_film;
 
-pub use bearing::JournalBearing;
+pub use bearing::{Film, JournalBearing};
 pub use contact::{ContactGeometry, ContactLaw, DryContact, Elastic, LineContact, hertz_stiffness};
 pub use kinematics::{
     ContactState, Contacts, JointForce, JointKinematics, MIN_IMPACT_VELOCITY, normal_rate_error,
 };
-pub use parameters::{JointModel, JointParameters, JournalStart};
+pub use parameters::{FilmModel, JointModel, JointParameters, JournalStart};
 pub use role::{JointField, JointRole};
 
 use nalgebra::Vector2;
@@ -38,8 +41,9 @@ pub enum Joint {
 }
 
 impl Joint {
-    /// The joint of the parameters `p` (validated beforehand).
-    pub fn new(p: &JointParameters) -> Self {
+    /// The joint of the parameters `p` (validated beforehand: a finite film's L/D in its
+    /// table's range).
+    pub fn new(p: &JointParameters) -> Result<Self, crate::error::ModelError> {
         let dry = DryContact {
             elastic: p.elastic(),
             clearance: p.clearance,
@@ -50,16 +54,22 @@ impl Joint {
             friction_v0: p.friction_v0,
             friction_v1: p.friction_v1,
         };
-        match p.model {
+        Ok(match p.model {
             JointModel::Ideal => Self::Ideal,
             JointModel::Dry => Self::Dry(dry),
             JointModel::Lubricated => Self::Lubricated(JournalBearing {
                 viscosity: p.viscosity,
                 length: p.bearing_length,
                 switch_eccentricity: p.switch_eccentricity,
+                film: match p.film_model {
+                    FilmModel::Short => Film::Short,
+                    FilmModel::Finite => {
+                        Film::Finite(finite_film::FiniteFilm::new(p.length_ratio())?)
+                    }
+                },
                 dry,
             }),
-        }
+        })
     }
 
     /// The dry-contact law, if the joint has one.
@@ -168,9 +178,13 @@ impl Joint {
         let c = dry.clearance;
         let eccentricity_ratio = k.e.norm() / c;
         let force = self.force(k, impact_velocity);
-        let (film_pressure, film_loss) = match self {
-            Self::Lubricated(bearing) => (bearing.peak_pressure(k), bearing.film_loss(k)),
-            _ => (0.0, 0.0),
+        let (film_pressure, film_loss, oil_flow) = match self {
+            Self::Lubricated(bearing) => (
+                bearing.peak_pressure(k),
+                bearing.film_loss(k),
+                bearing.side_flow(k),
+            ),
+            _ => (0.0, 0.0, 0.0),
         };
         BearingState {
             eccentricity_ratio,
@@ -178,6 +192,30 @@ impl Joint {
             film_pressure,
             friction_torque: force.moment,
             friction_power: film_loss + dry.friction_power(k, impact_velocity),
+            oil_flow,
+        }
+    }
+
+    /// Whether the joint dissipates by friction or carries a film: what has a friction power
+    /// or an oil flow to integrate (not the ideal joint, nor a dry joint without friction).
+    pub fn has_friction_or_film(&self) -> bool {
+        match self {
+            Self::Ideal => false,
+            Self::Dry(dry) => dry.friction != 0.0,
+            Self::Lubricated(_) => true,
+        }
+    }
+
+    /// The joint's friction power and oil flow in a state (what [`Joint::bearing_state`] gives,
+    /// without the force and the pressure peak).
+    pub fn friction_and_flow(&self, k: &JointKinematics, impact_velocity: f64) -> (f64, f64) {
+        match self {
+            Self::Ideal => (0.0, 0.0),
+            Self::Dry(dry) => (dry.friction_power(k, impact_velocity), 0.0),
+            Self::Lubricated(bearing) => (
+                bearing.film_loss(k) + bearing.dry.friction_power(k, impact_velocity),
+                bearing.side_flow(k),
+            ),
         }
     }
 }
@@ -203,6 +241,9 @@ pub struct BearingState {
     /// The rate at which the joint's friction dissipates energy, ≥ 0: the film's viscous loss
     /// ([`JournalBearing::film_loss`]) and dry friction's −F_T v_T \[W\].
     pub friction_power: f64,
+    /// The oil flow out of both ends of the pressurised film, 0 without a film \[m³/s\]
+    /// ([`JournalBearing::side_flow`]).
+    pub oil_flow: f64,
 }
 
 #[cfg(test)]
@@ -218,17 +259,18 @@ mod tests {
         let p = JointParameters::benchmark();
         let omega = -120.0;
         for (name, joint) in [
-            ("dry", Joint::new(&p)),
+            ("dry", Joint::new(&p).unwrap()),
             (
                 "dry, friction 0.2",
-                Joint::new(&JointParameters { friction: 0.2, ..p }),
+                Joint::new(&JointParameters { friction: 0.2, ..p }).unwrap(),
             ),
             (
                 "lubricated",
                 Joint::new(&JointParameters {
                     model: JointModel::Lubricated,
                     ..p
-                }),
+                })
+                .unwrap(),
             ),
         ] {
             for magnitude in [10.0, 1e3, 1e4] {
@@ -254,7 +296,7 @@ mod tests {
                 }
             }
         }
-        let joint = Joint::new(&p);
+        let joint = Joint::new(&p).unwrap();
         assert_eq!(
             joint.eccentricity_carrying(Vector2::zeros(), omega, 0.0),
             Vector2::zeros()

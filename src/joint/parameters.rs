@@ -15,6 +15,17 @@ pub enum JointModel {
     Lubricated,
 }
 
+/// The oil film of a lubricated joint.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FilmModel {
+    /// Ocvirk's infinitely short bearing: the benchmarks' film (Flores et al.), the limit
+    /// L/D → 0, carrying up to twice the finite bearing's load at L/D 0.5–1.
+    Short,
+    /// The finite bearing: the Reynolds equation over the bearing's length with the Reynolds
+    /// cavitation condition, tabulated ([`crate::joint::finite_film`]), L/D up to 4.
+    Finite,
+}
+
 /// Where a clearance joint's journal starts.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum JournalStart {
@@ -56,6 +67,8 @@ pub struct JointParameters {
     pub bearing_length: f64,
     /// Eccentricity ratio above which dry contact takes over, ε_b ∈ (0, 1).
     pub switch_eccentricity: f64,
+    /// The oil film's model.
+    pub film_model: FilmModel,
     /// Where the journal starts.
     pub initial_state: JournalStart,
 }
@@ -64,7 +77,7 @@ impl JointParameters {
     /// The benchmarks' rod–slider joint (docs/model.md §5): a dry clearance of 0.5 mm between a
     /// 9.5 mm steel journal and a 10 mm bearing, restitution 0.9 with the Lankarani–Nikravesh law,
     /// no friction (friction band 1e-4 … 1e-3 m/s), the benchmark C lubricant and bearing, the
-    /// journal centred.
+    /// journal centred, the finite film when made lubricated (benchmark C names the short film).
     pub fn benchmark() -> Self {
         Self {
             model: JointModel::Dry,
@@ -81,6 +94,7 @@ impl JointParameters {
             viscosity: 0.4,
             bearing_length: 0.04,
             switch_eccentricity: 0.95,
+            film_model: FilmModel::Finite,
             initial_state: JournalStart::Centred,
         }
     }
@@ -92,6 +106,11 @@ impl JointParameters {
             model: JointModel::Ideal,
             ..Self::benchmark()
         }
+    }
+
+    /// The bearing's length-to-diameter ratio L/D, D = 2 R_j.
+    pub fn length_ratio(&self) -> f64 {
+        self.bearing_length / (2.0 * self.journal_radius)
     }
 
     /// Bearing (hole) radius R_i = R_j + c \[m\].

@@ -30,6 +30,7 @@ macro_rules! names {
             concat!($prefix, ".bearingLength"),
             concat!($prefix, ".switchEccentricity"),
             concat!($prefix, ".initialState"),
+            concat!($prefix, ".filmModel"),
         ]
     };
 }
@@ -52,6 +53,7 @@ pub enum JointField {
     BearingLength,
     SwitchEccentricity,
     InitialState,
+    FilmModel,
 }
 
 impl JointRole {
@@ -69,7 +71,7 @@ impl JointRole {
 
     /// The FMU name of one of the joint's parameters, e.g. `crankPin.clearance`.
     pub fn parameter(self, field: JointField) -> &'static str {
-        const NAMES: [[&str; 14]; 3] = [names!("mainBearing"), names!("crankPin"), names!("joint")];
+        const NAMES: [[&str; 15]; 3] = [names!("mainBearing"), names!("crankPin"), names!("joint")];
         NAMES[self as usize][field as usize]
     }
 }

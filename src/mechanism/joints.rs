@@ -190,6 +190,19 @@ impl SliderCrank {
         })
     }
 
+    /// Each joint's friction power \[W\] and oil flow \[m³/s\] in state `y`, by [`JointRole`]
+    /// ([`Joint::friction_and_flow`]): what the cycle results' means integrate.
+    pub fn friction_and_flow(&self, y: &[f64]) -> [(f64, f64); 3] {
+        JointRole::ALL.map(|role| {
+            let joint = self.joint(role);
+            if !joint.has_friction_or_film() {
+                return (0.0, 0.0);
+            }
+            let kin = self.joint_kinematics(role, y);
+            joint.friction_and_flow(&kin, self.impact_velocity(role, &kin))
+        })
+    }
+
     /// Elastic energy stored in the contacts of every clearance joint in state `y` \[J\].
     pub fn contact_potential(&self, y: &[f64]) -> f64 {
         JointRole::ALL

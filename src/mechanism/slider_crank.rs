@@ -139,10 +139,11 @@ impl SliderCrank {
             speed_drive: p.drive_mode == DriveMode::Speed,
             free_crank,
         };
+        let [main_bearing, crank_pin, rod_slider] = p.joints().map(|(_, joint)| Joint::new(joint));
         Ok(Self {
             layout,
             joint_work,
-            joints: p.joints().map(|(_, joint)| Joint::new(joint)),
+            joints: [main_bearing?, crank_pin?, rod_slider?],
             drive: p.drive_mode,
             active,
             crank: Crank {

@@ -3,7 +3,7 @@
 
 use super::parameters::{BENCHMARK_SPEED, DriveMode, InitialState, Parameters, RodFormulation};
 use crate::integrator::Method;
-use crate::joint::{ContactGeometry, ContactLaw, JointModel, JournalStart};
+use crate::joint::{ContactGeometry, ContactLaw, FilmModel, JointModel, JournalStart};
 use crate::reduction::{Boundary, Quadrature};
 use crate::variables::Vr;
 
@@ -171,6 +171,9 @@ integer_fields! {
             [ContactGeometry::Point, ContactGeometry::Cylinder];
         MainBearingContactGeometry => main_bearing.contact_geometry:
             [ContactGeometry::Point, ContactGeometry::Cylinder];
+        JointFilmModel => joint.film_model: [FilmModel::Short, FilmModel::Finite];
+        CrankPinFilmModel => crank_pin.film_model: [FilmModel::Short, FilmModel::Finite];
+        MainBearingFilmModel => main_bearing.film_model: [FilmModel::Short, FilmModel::Finite];
     }
     counts {
         SliderForceTablePeriod => slider_force_table_period;

@@ -8,7 +8,7 @@ mod parameters;
 mod validate;
 
 pub use crate::joint::{
-    ContactGeometry, ContactLaw, JointModel, JointParameters, JointRole, JournalStart,
+    ContactGeometry, ContactLaw, FilmModel, JointModel, JointParameters, JointRole, JournalStart,
 };
 pub use access::{
     integer_parameter, real_parameter, set_integer_parameter, set_real_parameter,

@@ -3,7 +3,7 @@
 
 use crate::ancf::RodProperties;
 use crate::integrator::{Method, Tolerances};
-use crate::joint::{JointField, JointModel, JointParameters, JointRole};
+use crate::joint::{FilmModel, JointField, JointModel, JointParameters, JointRole};
 use crate::reduction::{Boundary, Quadrature};
 
 /// How the connecting rod is modelled.
@@ -206,12 +206,14 @@ impl Parameters {
         }
     }
 
-    /// Benchmark C (docs/model.md §5(b)): as B with the lubricated joint.
+    /// Benchmark C (docs/model.md §5(b)): as B with the lubricated joint and the benchmarks'
+    /// short film.
     pub fn benchmark_c() -> Self {
         let b = Self::benchmark_b();
         Self {
             joint: JointParameters {
                 model: JointModel::Lubricated,
+                film_model: FilmModel::Short,
                 ..b.joint
             },
             ..b
@@ -226,6 +228,7 @@ impl Parameters {
         Self {
             joint: JointParameters {
                 model: JointModel::Lubricated,
+                film_model: FilmModel::Short,
                 viscosity: 0.01,
                 ..JointParameters::benchmark()
             },
@@ -261,6 +264,17 @@ impl Parameters {
             self.resource_directory.as_deref(),
         )
         .map(Some)
+    }
+
+    /// The load cycle's crank-angle period \[rad\]: `slider_force_table_period` with a load
+    /// table, a revolution without one.
+    pub fn load_cycle(&self) -> f64 {
+        let degrees = if self.slider_force_table.is_empty() {
+            360.0
+        } else {
+            self.slider_force_table_period as f64
+        };
+        degrees.to_radians()
     }
 
     /// The crank's centre of mass: its distance a from the pivot along the crank \[m\].
@@ -326,16 +340,22 @@ impl Parameters {
     pub fn warnings(&self) -> Vec<String> {
         let mut warnings = Vec::new();
         for (role, joint) in self.joints() {
-            let ratio = joint.bearing_length / (2.0 * joint.journal_radius);
-            if joint.model == JointModel::Lubricated && ratio > Self::SHORT_BEARING_MAX_RATIO {
+            let ratio = joint.length_ratio();
+            if joint.model == JointModel::Lubricated
+                && joint.film_model == FilmModel::Short
+                && ratio > Self::SHORT_BEARING_MAX_RATIO
+            {
                 warnings.push(format!(
-                    "{} / (2 {}) = {} is outside the short-bearing range L/D <= {}: the film \
-                     force is the infinitely-short-bearing model's, which overestimates a long \
-                     bearing's squeeze and wedge forces",
+                    "{} / (2 {}) = {} is outside the short-bearing range L/D <= {}: with {} = \
+                     short the film force is the infinitely-short-bearing model's, which \
+                     overestimates a longer bearing's load (set {} = finite for the Reynolds \
+                     solution over the bearing's length)",
                     role.parameter(JointField::BearingLength),
                     role.parameter(JointField::JournalRadius),
                     crate::error::Num(ratio),
-                    crate::error::Num(Self::SHORT_BEARING_MAX_RATIO)
+                    crate::error::Num(Self::SHORT_BEARING_MAX_RATIO),
+                    role.parameter(JointField::FilmModel),
+                    role.parameter(JointField::FilmModel),
                 ));
             }
         }

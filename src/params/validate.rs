@@ -9,7 +9,8 @@ use super::parameters::{
 };
 use crate::error::{ModelError, Num};
 use crate::integrator::Method;
-use crate::joint::{JointField, JointModel, JointParameters, JointRole};
+use crate::joint::finite_film::MAX_LENGTH_RATIO;
+use crate::joint::{FilmModel, JointField, JointModel, JointParameters, JointRole};
 use crate::reduction::{Quadrature, check_mode_count};
 use crate::variables::{Causality, Kind, VARIABLES};
 
@@ -210,6 +211,28 @@ fn check_joint(role: JointRole, joint: &JointParameters) -> Result<(), ModelErro
                 name(JointField::Model),
                 format!("{:?}", joint.model).to_lowercase(),
                 name(JointField::Model),
+            ),
+        ));
+    }
+    let ratio = joint.length_ratio();
+    if joint.model == JointModel::Lubricated
+        && joint.film_model == FilmModel::Finite
+        && ratio > MAX_LENGTH_RATIO
+    {
+        return Err(ModelError::invalid(
+            name(JointField::BearingLength),
+            joint.bearing_length,
+            format!(
+                "(0, {}] m with {} = {} m and {} = finite: the finite film is tabulated for a \
+                 length-to-diameter ratio of at most {}, this bearing's is {} ({} = short for \
+                 the infinitely short bearing)",
+                Num(MAX_LENGTH_RATIO * 2.0 * joint.journal_radius),
+                name(JointField::JournalRadius),
+                Num(joint.journal_radius),
+                name(JointField::FilmModel),
+                Num(MAX_LENGTH_RATIO),
+                Num(ratio),
+                name(JointField::FilmModel),
             ),
         ));
     }

@@ -4,7 +4,8 @@
 
 pub use fmi_core::codec::{ByteReader, ByteWriter, CodecError};
 
-use super::peaks::{Peaks, Sample};
+use super::cycle::{Cycle, CycleHold, CycleStep, Extreme, JointCycle};
+use super::peaks::{Peaks, SERIES, Sample};
 use super::step::StepPoint;
 use crate::integrator::Stats;
 use crate::mechanism::{ContactState, Contacts, InputSignal, Inputs};
@@ -34,6 +35,34 @@ pub trait WriteRecords {
     fn signal(&mut self, s: &InputSignal);
     /// Writes integrator statistics.
     fn stats(&mut self, s: &Stats);
+    /// Writes the cycle results.
+    fn cycles(&mut self, c: &CycleHold);
+    /// Writes a pending step's contribution to the cycle results.
+    fn cycle_step(&mut self, step: &Option<CycleStep>);
+}
+
+/// The numbers of a cycle, in the codec's order.
+fn cycle_values(c: &Cycle) -> Vec<f64> {
+    let mut v = vec![c.start, c.end, c.start_angle];
+    for j in &c.joints {
+        for e in [j.eccentricity_ratio, j.film_pressure, j.force] {
+            v.extend([e.value, e.angle]);
+        }
+        v.extend([j.friction_energy, j.oil_volume]);
+    }
+    v
+}
+
+/// The numbers of a step's contribution, in the codec's order.
+fn cycle_step_values(s: &CycleStep) -> Vec<f64> {
+    let mut v = [s.time, s.angle].concat();
+    for sample in [s.at_end, s.inside, s.place] {
+        v.extend(sample);
+    }
+    for rates in [s.friction_power, s.oil_flow] {
+        v.extend(rates.into_iter().flatten());
+    }
+    v
 }
 
 impl WriteRecords for ByteWriter<'_> {
@@ -78,6 +107,73 @@ impl WriteRecords for ByteWriter<'_> {
             self.u64(x);
         }
     }
+    /// Writes the cycle results.
+    fn cycles(&mut self, c: &CycleHold) {
+        self.f64(c.period);
+        self.f64s(&cycle_values(&c.current));
+        self.flag(c.last.is_some());
+        if let Some(last) = &c.last {
+            self.f64s(&cycle_values(last));
+        }
+    }
+    /// Writes a pending step's contribution to the cycle results.
+    fn cycle_step(&mut self, step: &Option<CycleStep>) {
+        self.flag(step.is_some());
+        if let Some(step) = step {
+            self.f64s(&cycle_step_values(step));
+        }
+    }
+}
+
+/// The cycle of [`cycle_values`].
+fn cycle_from(v: &[f64]) -> Result<Cycle, CodecError> {
+    if v.len() != 3 + 3 * 8 {
+        return Err(CodecError(format!(
+            "FMU state rejected: a cycle of {} numbers",
+            v.len()
+        )));
+    }
+    let extreme = |k: usize| Extreme {
+        value: v[k],
+        angle: v[k + 1],
+    };
+    Ok(Cycle {
+        start: v[0],
+        end: v[1],
+        start_angle: v[2],
+        joints: std::array::from_fn(|i| {
+            let k = 3 + 8 * i;
+            JointCycle {
+                eccentricity_ratio: extreme(k),
+                film_pressure: extreme(k + 2),
+                force: extreme(k + 4),
+                friction_energy: v[k + 6],
+                oil_volume: v[k + 7],
+            }
+        }),
+    })
+}
+
+/// The step contribution of [`cycle_step_values`].
+fn cycle_step_from(v: &[f64]) -> Result<CycleStep, CodecError> {
+    if v.len() != 4 + 3 * SERIES + 12 {
+        return Err(CodecError(format!(
+            "FMU state rejected: a cycle step of {} numbers",
+            v.len()
+        )));
+    }
+    let sample = |k: usize| -> Sample { std::array::from_fn(|i| v[4 + k * SERIES + i]) };
+    let rates =
+        |k: usize| -> [[f64; 2]; 3] { std::array::from_fn(|i| [v[k + 2 * i], v[k + 2 * i + 1]]) };
+    Ok(CycleStep {
+        time: [v[0], v[1]],
+        angle: [v[2], v[3]],
+        at_end: sample(0),
+        inside: sample(1),
+        place: sample(2),
+        friction_power: rates(4 + 3 * SERIES),
+        oil_flow: rates(4 + 3 * SERIES + 6),
+    })
 }
 
 /// Reads the slider-crank's records.
@@ -92,6 +188,10 @@ pub trait ReadRecords {
     fn signal(&mut self) -> Result<InputSignal, CodecError>;
     /// Reads integrator statistics.
     fn stats(&mut self) -> Result<Stats, CodecError>;
+    /// Reads the cycle results.
+    fn cycles(&mut self) -> Result<CycleHold, CodecError>;
+    /// Reads a pending step's contribution to the cycle results.
+    fn cycle_step(&mut self) -> Result<Option<CycleStep>, CodecError>;
 }
 
 impl ReadRecords for ByteReader<'_> {
@@ -153,5 +253,28 @@ impl ReadRecords for ByteReader<'_> {
             jacobians: self.u64()?,
             factorizations: self.u64()?,
         })
+    }
+    /// Reads the cycle results.
+    fn cycles(&mut self) -> Result<CycleHold, CodecError> {
+        let period = self.f64()?;
+        let current = cycle_from(&self.f64s()?)?;
+        let last = if self.flag()? {
+            Some(cycle_from(&self.f64s()?)?)
+        } else {
+            None
+        };
+        Ok(CycleHold {
+            period,
+            current,
+            last,
+        })
+    }
+    /// Reads a pending step's contribution to the cycle results.
+    fn cycle_step(&mut self) -> Result<Option<CycleStep>, CodecError> {
+        if self.flag()? {
+            Ok(Some(cycle_step_from(&self.f64s()?)?))
+        } else {
+            Ok(None)
+        }
     }
 }

@@ -2,6 +2,7 @@
 //! outputs out. This is what the FMU, the examples and the benchmarks drive.
 
 pub mod codec;
+mod cycle;
 mod failure;
 mod interval;
 mod onset;
@@ -14,6 +15,7 @@ mod snapshot;
 mod step;
 pub mod validity;
 
+pub use self::cycle::{Cycle, CycleHold, CycleStep, Extreme, JointCycle};
 pub use self::outputs::{BearingOutputs, Outputs};
 pub use self::peaks::{PeakHold, Peaks};
 pub use self::snapshot::Snapshot;
@@ -122,6 +124,7 @@ impl Simulation {
         for warning in parameters.warnings() {
             monitor.warn(warning);
         }
+        let peaks = PeakHold::new(parameters.load_cycle(), 0.0, angle);
         Ok(Self {
             scratch: vec![0.0; state.len()],
             y_sample: vec![0.0; state.len()],
@@ -136,7 +139,7 @@ impl Simulation {
             state,
             next,
             inputs_set: false,
-            peaks: PeakHold::default(),
+            peaks,
             monitor,
             paused: None,
         })
@@ -160,6 +163,10 @@ impl Simulation {
         if self.end.time == self.time {
             self.start.time = time;
             self.end.time = time;
+        }
+        if self.integrator.stats().steps == 0 {
+            let cycles = &mut self.peaks.cycles;
+            *cycles = CycleHold::new(cycles.period, time, cycles.current.start_angle);
         }
         self.time = time;
     }

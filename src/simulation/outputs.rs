@@ -1,5 +1,6 @@
 //! The outputs a system engineer plots, computed from a state.
 
+use super::cycle::Extreme;
 use super::peaks::PeakHold;
 use crate::error::ModelError;
 use crate::joint::{JointRole, film_thickness};
@@ -173,6 +174,25 @@ pub struct BearingOutputs {
     pub friction_power: f64,
     /// The energy the joint has dissipated since the start \[J\].
     pub energy_dissipated: f64,
+    /// The oil flow out of both ends of the pressurised film \[m³/s\].
+    pub oil_flow: f64,
+    /// The smallest film thickness over the last complete load cycle \[m\]
+    /// ([`super::CycleHold`]).
+    pub film_thickness_min_cycle: f64,
+    /// The crank angle within the cycle where it occurred \[deg\].
+    pub film_thickness_min_cycle_angle: f64,
+    /// The largest film pressure over the last complete load cycle \[Pa\].
+    pub film_pressure_peak_cycle: f64,
+    /// The crank angle within the cycle where it occurred \[deg\].
+    pub film_pressure_peak_cycle_angle: f64,
+    /// The largest force over the last complete load cycle \[N\].
+    pub force_peak_cycle: f64,
+    /// The crank angle within the cycle where it occurred \[deg\].
+    pub force_peak_cycle_angle: f64,
+    /// The mean friction power over the last complete load cycle \[W\].
+    pub friction_power_mean_cycle: f64,
+    /// The mean oil flow over the last complete load cycle \[m³/s\].
+    pub oil_flow_mean_cycle: f64,
 }
 
 impl Outputs {
@@ -219,15 +239,41 @@ pub(super) fn outputs(
     let (crank_pin, crank_pin_penetration) = clearance(JointRole::CrankPin);
     let (main_bearing, main_bearing_penetration) = clearance(JointRole::MainBearing);
     let energies = mechanism.energies(y);
+    let forces = [
+        loads.main_bearing.norm(),
+        loads.crank_pin.norm(),
+        ev.joint_force.norm(),
+    ];
+    let cycles = &peaks.cycles;
+    let cycle = cycles.reported();
+    // an extreme not yet seen (no step taken) is the value now
+    let extreme = |e: Extreme, now: f64, angle: f64| match e.value.is_finite() {
+        true => (e.value, cycles.within(e.angle).to_degrees()),
+        false => (now, cycles.within(angle).to_degrees()),
+    };
     let bearings = JointRole::ALL.map(|role| {
         let i = role as usize;
+        let joint = &cycle.joints[i];
+        let (force_peak_cycle, force_peak_cycle_angle) =
+            extreme(joint.force, forces[i], y[CRANK_ANGLE]);
         let Some(clearance) = mechanism.joint(role).dry_contact().map(|dry| dry.clearance) else {
-            return BearingOutputs::default();
+            return BearingOutputs {
+                force_peak_cycle,
+                force_peak_cycle_angle,
+                ..BearingOutputs::default()
+            };
         };
         let now = mechanism.bearing_state(role, y);
         let (interval, since_start) = (&peaks.interval, &peaks.since_start);
         let ratio = interval.eccentricity_ratio[i].max(now.eccentricity_ratio);
         let pressure = interval.film_pressure[i].max(now.film_pressure);
+        let (ratio_cycle, film_thickness_min_cycle_angle) = extreme(
+            joint.eccentricity_ratio,
+            now.eccentricity_ratio,
+            y[CRANK_ANGLE],
+        );
+        let (film_pressure_peak_cycle, film_pressure_peak_cycle_angle) =
+            extreme(joint.film_pressure, now.film_pressure, y[CRANK_ANGLE]);
         BearingOutputs {
             eccentricity_ratio: now.eccentricity_ratio,
             film_thickness: now.film_thickness,
@@ -241,6 +287,15 @@ pub(super) fn outputs(
             friction_torque: now.friction_torque,
             friction_power: now.friction_power,
             energy_dissipated: energies.joints[i].dissipated(),
+            oil_flow: now.oil_flow,
+            film_thickness_min_cycle: film_thickness(clearance, ratio_cycle),
+            film_thickness_min_cycle_angle,
+            film_pressure_peak_cycle,
+            film_pressure_peak_cycle_angle,
+            force_peak_cycle,
+            force_peak_cycle_angle,
+            friction_power_mean_cycle: cycle.mean(joint.friction_energy),
+            oil_flow_mean_cycle: cycle.mean(joint.oil_volume),
         }
     });
     Ok(Outputs {

@@ -3,6 +3,7 @@
 
 use nalgebra::Vector2;
 
+use super::cycle::{CycleHold, CycleStep};
 use super::step::StepPoint;
 use crate::integrator::dense;
 use crate::joint::JointRole;
@@ -53,12 +54,12 @@ pub type Onsets = [u64; 3];
 
 /// Number of peak-held quantities: seven loads, each joint's eccentricity ratio and film pressure
 /// (by role), the rod's tension and compression.
-const SERIES: usize = 15;
+pub(super) const SERIES: usize = 15;
 
 /// Position in a [`Sample`] of the main bearing's eccentricity ratio (the other joints follow in
 /// role order), and of its film pressure.
-const ECCENTRICITY_RATIO: usize = 7;
-const FILM_PRESSURE: usize = 10;
+pub(super) const ECCENTRICITY_RATIO: usize = 7;
+pub(super) const FILM_PRESSURE: usize = 10;
 
 /// Positions in a [`Sample`] of the quantities whose peaks inside a step are refined always (the
 /// joint force, the slider acceleration, the deformation energy), and of the crank pin's and the
@@ -190,7 +191,7 @@ const PEAK_SAMPLES: usize = 4;
 /// benchmark B its peaks agree within 0.1 % with sampling the implicit method's own dense output
 /// (a partial step per sample, 3× the run's cost) at the default tolerance, for every rod, and
 /// exceed them by at most 3.5 % at rtol 1e-1.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PeakHold {
     /// Over the current communication interval, from the steps that end inside it.
     pub interval: Peaks,
@@ -203,11 +204,32 @@ pub struct PeakHold {
     /// The extremes since the start, of every accepted step taken into an interval (the film's
     /// are output; the value at the current time is added when the outputs are read).
     pub since_start: Peaks,
+    /// What the last accepted step brings to the cycle results, while it is pending.
+    pub cycle_step: Option<CycleStep>,
+    /// The cycle results, of every accepted step taken into an interval.
+    pub cycles: CycleHold,
 }
 
 impl PeakHold {
+    /// Nothing held yet, the load cycles of crank-angle period `period` \[rad\] counted from
+    /// crank angle `angle` at time `time`.
+    pub fn new(period: f64, time: f64, angle: f64) -> Self {
+        Self {
+            interval: Peaks::default(),
+            step_end: Peaks::default(),
+            pending: false,
+            total_onsets: [0; 3],
+            since_start: Peaks::default(),
+            cycle_step: None,
+            cycles: CycleHold::new(period, time, angle),
+        }
+    }
+
     /// Moves the last step end's extremes into the current interval.
     pub(super) fn take_step_end(&mut self) {
+        if let Some(step) = self.cycle_step.take() {
+            self.cycles.absorb(&step);
+        }
         self.since_start.absorb(&Peaks {
             contact_onsets: [0; 3],
             ..self.step_end

@@ -2,9 +2,11 @@
 //! it, its contact onsets, and the check of a lubricated joint's peak inside it.
 
 use super::Simulation;
+use super::cycle::CycleStep;
 use super::peaks::{self, AcceptedStep, Peaks};
 use crate::error::ModelError;
 use crate::joint::{Joint, JointRole};
+use crate::mechanism::layout::CRANK_ANGLE;
 
 impl Simulation {
     /// Evaluates the end of the step just accepted for the peak-hold outputs.
@@ -40,9 +42,26 @@ impl Simulation {
         );
         self.doubt_film_peaks(&within)?;
         self.peaks.step_end = Peaks::from_sample(peaks::larger(at_end, within.largest), onsets);
+        self.peaks.cycle_step = Some(self.cycle_step(at_end, &within));
         self.peaks.pending = true;
         self.check_validity(true);
         Ok(())
+    }
+
+    /// What the step just accepted brings to the cycle results ([`super::cycle`]): its ends'
+    /// times and crank angles, its samples, and each joint's friction power and oil flow at its
+    /// ends.
+    fn cycle_step(&self, at_end: peaks::Sample, within: &peaks::Within) -> CycleStep {
+        let rates = [&self.start.y, &self.end.y].map(|y| self.mechanism.friction_and_flow(y));
+        CycleStep {
+            time: [self.start.time, self.end.time],
+            angle: [self.start.y[CRANK_ANGLE], self.end.y[CRANK_ANGLE]],
+            at_end,
+            inside: within.largest,
+            place: within.place,
+            friction_power: std::array::from_fn(|i| [rates[0][i].0, rates[1][i].0]),
+            oil_flow: std::array::from_fn(|i| [rates[0][i].1, rates[1][i].1]),
+        }
     }
 
     /// Warns, once per joint, of a lubricated joint's force peak inside the step just accepted

@@ -93,6 +93,8 @@ impl Snapshot {
             w.u64(total);
         }
         w.peaks(&self.peaks.since_start);
+        w.cycle_step(&self.peaks.cycle_step);
+        w.cycles(&self.peaks.cycles);
         w.u64(self.warnings);
     }
 
@@ -148,6 +150,8 @@ impl Snapshot {
                 pending: r.flag()?,
                 total_onsets: [r.u64()?, r.u64()?, r.u64()?],
                 since_start: r.peaks()?,
+                cycle_step: r.cycle_step()?,
+                cycles: r.cycles()?,
             },
             warnings: r.u64()?,
         })

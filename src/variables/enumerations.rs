@@ -22,6 +22,8 @@ pub const JOURNAL_START: usize = 7;
 pub const ROD_QUADRATURE: usize = 8;
 /// Index of the `ContactGeometry` type in [`ENUMERATIONS`].
 pub const CONTACT_GEOMETRY: usize = 9;
+/// Index of the `FilmModel` type in [`ENUMERATIONS`].
+pub const FILM_MODEL: usize = 10;
 
 /// Enumeration types.
 pub const ENUMERATIONS: &[Enumeration] = &[
@@ -43,7 +45,7 @@ pub const ENUMERATIONS: &[Enumeration] = &[
             ),
             (
                 "lubricated",
-                "lubricated journal bearing (short-bearing film, dry contact near the wall)",
+                "lubricated journal bearing (oil film of the joint's filmModel, dry contact near the wall)",
             ),
         ],
     },
@@ -150,6 +152,19 @@ pub const ENUMERATIONS: &[Enumeration] = &[
             ),
         ],
     },
+    Enumeration {
+        name: "FilmModel",
+        items: &[
+            (
+                "short",
+                "Ocvirk's infinitely short bearing (the benchmarks' film): the limit L/D -> 0, which overestimates the load a bearing of L/D 0.3-1 carries",
+            ),
+            (
+                "finite",
+                "the finite bearing: Reynolds equation over the bearing length with the Reynolds cavitation condition (Raimondi and Boyd), tabulated for L/D up to 4",
+            ),
+        ],
+    },
 ];
 
 #[cfg(test)]
@@ -170,6 +185,7 @@ mod tests {
             (JOURNAL_START, "JournalStart"),
             (ROD_QUADRATURE, "RodQuadrature"),
             (CONTACT_GEOMETRY, "ContactGeometry"),
+            (FILM_MODEL, "FilmModel"),
         ];
         assert_eq!(named.len(), ENUMERATIONS.len());
         for (index, name) in named {

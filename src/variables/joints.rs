@@ -2,18 +2,18 @@
 //! (`crankPin`) and the main bearing (`mainBearing`) — from one definition of a joint's rows, and
 //! the loads each carries.
 
-use super::enumerations::{CONTACT_GEOMETRY, CONTACT_LAW, JOINT_MODEL, JOURNAL_START};
+use super::enumerations::{CONTACT_GEOMETRY, CONTACT_LAW, FILM_MODEL, JOINT_MODEL, JOURNAL_START};
 use super::vr::{Variable, Vr};
 use fmi_core::table::{Causality, Kind, Variability};
 
 /// Number of rows of each joint ([`joint_rows`]).
-const JOINT_ROWS: usize = 30;
+const JOINT_ROWS: usize = 40;
 
 /// Every row of a revolute joint, the same for the three: its model and dry-contact parameters,
 /// its film's parameters, its state and bearing-design outputs. Arguments: the variable-name
 /// prefix, its name starting a description and inside one, what it joins, what its eccentricity
 /// is, its journal, the journal as the film's outputs name it, the parts in contact, the default
-/// joint model, and the 30 value references in the order of the rows.
+/// joint model, and the 40 value references in the order of the rows.
 macro_rules! joint_rows {
     (
         $prefix:literal,
@@ -55,7 +55,17 @@ macro_rules! joint_rows {
             $pressure_start:ident,
             $torque:ident,
             $power:ident,
-            $dissipated:ident $(,)?
+            $dissipated:ident,
+            $film_model:ident,
+            $oil_flow:ident,
+            $thickness_cycle:ident,
+            $thickness_cycle_angle:ident,
+            $pressure_cycle:ident,
+            $pressure_cycle_angle:ident,
+            $force_cycle:ident,
+            $force_cycle_angle:ident,
+            $power_cycle:ident,
+            $flow_cycle:ident $(,)?
         ]
     ) => {
         [
@@ -328,6 +338,117 @@ macro_rules! joint_rows {
                     ": energy dissipated in the joint since the start (friction, contact hysteresis, film); the three joints' sum to energy.dissipated; 0 for the ideal joint"
                 ),
             ),
+            Variable::enumeration(
+                Vr::$film_model,
+                concat!($prefix, ".filmModel"),
+                2,
+                FILM_MODEL,
+                concat!(
+                    $label,
+                    ": oil film of the lubricated joint (short: Ocvirk's infinitely short bearing, the benchmarks' film; finite: the Reynolds equation over ",
+                    $prefix,
+                    ".bearingLength with the Reynolds cavitation condition, tabulated for L/D up to 4); the film force, pressure, flow, shear, settled start and hand-over to dry contact follow it"
+                ),
+            ),
+            Variable::output(
+                Vr::$oil_flow,
+                concat!($prefix, ".oilFlow"),
+                "m3/s",
+                concat!(
+                    $label,
+                    ": oil flow out of both ends of the pressurised film (side leakage, Raimondi and Boyd's Q_s) of ",
+                    $prefix,
+                    ".filmModel; 0 without a film (dry and ideal joints)"
+                ),
+            ),
+            Variable::peak(
+                Vr::$thickness_cycle,
+                concat!($prefix, ".filmThicknessMinCycle"),
+                "m",
+                concat!(
+                    "Smallest ",
+                    $prefix,
+                    ".filmThickness over the last complete load cycle (crank-angle period slider.forceTablePeriod, 360 deg without a load table; cycles bounded by its multiples of crank.angle; every internal step); until a cycle completes, over the cycle under way"
+                ),
+            ),
+            Variable::peak(
+                Vr::$thickness_cycle_angle,
+                concat!($prefix, ".filmThicknessMinCycleAngle"),
+                "deg",
+                concat!(
+                    "Crank angle within the cycle, [0, slider.forceTablePeriod) deg from its start at a multiple of the period, at which ",
+                    $prefix,
+                    ".filmThicknessMinCycle occurred"
+                ),
+            ),
+            Variable::peak(
+                Vr::$pressure_cycle,
+                concat!($prefix, ".filmPressurePeakCycle"),
+                "Pa",
+                concat!(
+                    "Largest ",
+                    $prefix,
+                    ".filmPressurePeak over the last complete load cycle (see ",
+                    $prefix,
+                    ".filmThicknessMinCycle)"
+                ),
+            ),
+            Variable::peak(
+                Vr::$pressure_cycle_angle,
+                concat!($prefix, ".filmPressurePeakCycleAngle"),
+                "deg",
+                concat!(
+                    "Crank angle within the cycle at which ",
+                    $prefix,
+                    ".filmPressurePeakCycle occurred"
+                ),
+            ),
+            Variable::peak(
+                Vr::$force_cycle,
+                concat!($prefix, ".forcePeakCycle"),
+                "N",
+                concat!(
+                    "Largest ",
+                    $prefix,
+                    ".force over the last complete load cycle (see ",
+                    $prefix,
+                    ".filmThicknessMinCycle)"
+                ),
+            ),
+            Variable::peak(
+                Vr::$force_cycle_angle,
+                concat!($prefix, ".forcePeakCycleAngle"),
+                "deg",
+                concat!(
+                    "Crank angle within the cycle at which ",
+                    $prefix,
+                    ".forcePeakCycle occurred"
+                ),
+            ),
+            Variable::peak(
+                Vr::$power_cycle,
+                concat!($prefix, ".frictionPowerMeanCycle"),
+                "W",
+                concat!(
+                    "Mean ",
+                    $prefix,
+                    ".frictionPower over the last complete load cycle: its energy over the cycle's duration (see ",
+                    $prefix,
+                    ".filmThicknessMinCycle)"
+                ),
+            ),
+            Variable::peak(
+                Vr::$flow_cycle,
+                concat!($prefix, ".oilFlowMeanCycle"),
+                "m3/s",
+                concat!(
+                    "Mean ",
+                    $prefix,
+                    ".oilFlow over the last complete load cycle: the oil volume over the cycle's duration (see ",
+                    $prefix,
+                    ".filmThicknessMinCycle)"
+                ),
+            ),
         ]
     };
 }
@@ -374,6 +495,16 @@ const ROD_SLIDER_JOINT: [Variable; JOINT_ROWS] = joint_rows!(
         JointFrictionTorque,
         JointFrictionPower,
         JointEnergyDissipated,
+        JointFilmModel,
+        JointOilFlow,
+        JointFilmThicknessMinCycle,
+        JointFilmThicknessMinCycleAngle,
+        JointFilmPressurePeakCycle,
+        JointFilmPressurePeakCycleAngle,
+        JointForcePeakCycle,
+        JointForcePeakCycleAngle,
+        JointFrictionPowerMeanCycle,
+        JointOilFlowMeanCycle,
     ]
 );
 
@@ -419,6 +550,16 @@ const CRANK_PIN: [Variable; JOINT_ROWS] = joint_rows!(
         CrankPinFrictionTorque,
         CrankPinFrictionPower,
         CrankPinEnergyDissipated,
+        CrankPinFilmModel,
+        CrankPinOilFlow,
+        CrankPinFilmThicknessMinCycle,
+        CrankPinFilmThicknessMinCycleAngle,
+        CrankPinFilmPressurePeakCycle,
+        CrankPinFilmPressurePeakCycleAngle,
+        CrankPinForcePeakCycle,
+        CrankPinForcePeakCycleAngle,
+        CrankPinFrictionPowerMeanCycle,
+        CrankPinOilFlowMeanCycle,
     ]
 );
 
@@ -464,6 +605,16 @@ const MAIN_BEARING: [Variable; JOINT_ROWS] = joint_rows!(
         MainBearingFrictionTorque,
         MainBearingFrictionPower,
         MainBearingEnergyDissipated,
+        MainBearingFilmModel,
+        MainBearingOilFlow,
+        MainBearingFilmThicknessMinCycle,
+        MainBearingFilmThicknessMinCycleAngle,
+        MainBearingFilmPressurePeakCycle,
+        MainBearingFilmPressurePeakCycleAngle,
+        MainBearingForcePeakCycle,
+        MainBearingForcePeakCycleAngle,
+        MainBearingFrictionPowerMeanCycle,
+        MainBearingOilFlowMeanCycle,
     ]
 );
 

@@ -119,28 +119,30 @@ pub const DESCRIPTION: Description<Vr> = Description {
     provides_directional_derivative: true,
 };
 
-/// Units: name and SI base-unit exponents (kg, m, s, A, rad), or None where FMI 2's integer
-/// exponents cannot express the unit (N/m^1.5).
-pub const UNITS: &[(&str, Option<[i32; 5]>)] = &[
-    ("s", Some([0, 0, 1, 0, 0])),
-    ("m", Some([0, 1, 0, 0, 0])),
-    ("m/s", Some([0, 1, -1, 0, 0])),
-    ("m/s2", Some([0, 1, -2, 0, 0])),
-    ("m2", Some([0, 2, 0, 0, 0])),
-    ("m4", Some([0, 4, 0, 0, 0])),
-    ("kg", Some([1, 0, 0, 0, 0])),
-    ("kg/m3", Some([1, -3, 0, 0, 0])),
-    ("kg.m2", Some([1, 2, 0, 0, 0])),
-    ("Pa", Some([1, -1, -2, 0, 0])),
-    ("Pa.s", Some([1, -1, -1, 0, 0])),
-    ("N", Some([1, 1, -2, 0, 0])),
-    ("N.m", Some([1, 2, -2, 0, 0])),
-    ("J", Some([1, 2, -2, 0, 0])),
-    ("W", Some([1, 2, -3, 0, 0])),
-    ("rad", Some([0, 0, 0, 0, 1])),
-    ("rad/s", Some([0, 0, -1, 0, 1])),
-    ("1", Some([0, 0, 0, 0, 0])),
-    ("N/m1.5", None),
+/// Units: name, SI base-unit exponents (kg, m, s, A, rad) and the factor to the base unit, or
+/// None where FMI 2's integer exponents cannot express the unit (N/m^1.5).
+pub const UNITS: &[(&str, Option<[i32; 5]>, f64)] = &[
+    ("s", Some([0, 0, 1, 0, 0]), 1.0),
+    ("m", Some([0, 1, 0, 0, 0]), 1.0),
+    ("m/s", Some([0, 1, -1, 0, 0]), 1.0),
+    ("m/s2", Some([0, 1, -2, 0, 0]), 1.0),
+    ("m2", Some([0, 2, 0, 0, 0]), 1.0),
+    ("m4", Some([0, 4, 0, 0, 0]), 1.0),
+    ("kg", Some([1, 0, 0, 0, 0]), 1.0),
+    ("kg/m3", Some([1, -3, 0, 0, 0]), 1.0),
+    ("kg.m2", Some([1, 2, 0, 0, 0]), 1.0),
+    ("Pa", Some([1, -1, -2, 0, 0]), 1.0),
+    ("Pa.s", Some([1, -1, -1, 0, 0]), 1.0),
+    ("N", Some([1, 1, -2, 0, 0]), 1.0),
+    ("N.m", Some([1, 2, -2, 0, 0]), 1.0),
+    ("J", Some([1, 2, -2, 0, 0]), 1.0),
+    ("W", Some([1, 2, -3, 0, 0]), 1.0),
+    ("rad", Some([0, 0, 0, 0, 1]), 1.0),
+    ("deg", Some([0, 0, 0, 0, 1]), core::f64::consts::PI / 180.0),
+    ("rad/s", Some([0, 0, -1, 0, 1]), 1.0),
+    ("m3/s", Some([0, 3, -1, 0, 0]), 1.0),
+    ("1", Some([0, 0, 0, 0, 0]), 1.0),
+    ("N/m1.5", None, 1.0),
 ];
 
 /// Default experiment: two crank revolutions of benchmark B (5000 rpm) with a 1e-4 s step; the

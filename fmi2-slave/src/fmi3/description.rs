@@ -72,7 +72,7 @@ pub fn model_description<V: ValueReference>(
     }
     x.push_str(&log_categories_and_experiment(d));
     x.push_str("  <ModelVariables>\n");
-    let time_unit = if d.units.iter().any(|(u, _)| *u == "s") {
+    let time_unit = if d.units.iter().any(|(u, _, _)| *u == "s") {
         r#" unit="s""#
     } else {
         ""
@@ -173,7 +173,7 @@ fn check_interface<V: ValueReference>(
                 a.name, a.dimension
             ));
         }
-        if !d.units.iter().any(|(u, _)| *u == a.unit) {
+        if !d.units.iter().any(|(u, _, _)| *u == a.unit) {
             return Err(format!("{}: unit {} is not defined", a.name, a.unit));
         }
     }

@@ -1,0 +1,242 @@
+"""The bearing report: a machine run through the FMU for a number of load cycles, and what a bearing
+designer reads off each clearance joint over the last complete cycle.
+
+    python -m fsc bearing-report MACHINE.toml [--out DIR] [--cycles N] [--fmu PATH]
+
+A machine file names the FMU's parameters (the start values of the run) and, optionally, the run:
+
+    fmu = "../target/fmu/FlexibleSliderCrank.fmu"   # relative to the machine file (optional)
+    cycles = 3                                      # load cycles to run (default 3)
+    points_per_cycle = 720                          # communication points per cycle (default 720)
+
+    [parameters]
+    "crank.length" = 0.03
+    "crankPin.model" = "lubricated"                 # a switch by item name or number
+    "slider.forceTable" = "compression.csv"         # a file, relative to the machine file
+
+For every joint that is not ideal the report draws the polar load diagram (the force on the bearing
+in the ground's frame and in the frame of the body that carries the journal: the crank for the main
+bearing and the crank pin, the rod for the rod-slider joint), the journal's orbit in its clearance
+circle, and the film thickness, film pressure, friction power and oil flow over the crank angle of
+the last complete cycle, with the FMU's cycle results (`<joint>.filmThicknessMinCycle` …) in a
+table. It writes one PNG per joint and `index.html` into the output directory (default
+`target/bearing-report/<machine name>`), and shows its progress while the FMU runs.
+"""
+import html
+import math
+import tomllib
+from dataclasses import dataclass
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from fmpy import read_model_description  # noqa: E402
+from tqdm import tqdm  # noqa: E402
+
+from .session import Session, errors  # noqa: E402
+from .study import StudyError, _check_value, _variables  # noqa: E402
+
+#: Each joint: its prefix, its name, the sign that turns its force output into the force on its
+#: bearing, and the body that carries its journal.
+JOINTS = [
+    ("mainBearing", "Main bearing", -1.0, "crank"),
+    ("crankPin", "Crank pin", 1.0, "crank"),
+    ("joint", "Rod–slider joint", -1.0, "rod"),
+]
+#: Each joint's outputs the report reads at every communication point.
+SERIES = ["forceX", "forceY", "eccentricityX", "eccentricityY", "filmThicknessMin",
+          "filmPressurePeak", "frictionPower", "oilFlow"]
+#: The cycle results, with their unit in the report and the factor from SI.
+CYCLE_RESULTS = [
+    ("filmThicknessMinCycle", "smallest film thickness", "µm", 1e6),
+    ("filmThicknessMinCycleAngle", "… at crank angle", "°", 1.0),
+    ("filmPressurePeakCycle", "largest film pressure", "MPa", 1e-6),
+    ("filmPressurePeakCycleAngle", "… at crank angle", "°", 1.0),
+    ("forcePeakCycle", "largest force", "kN", 1e-3),
+    ("forcePeakCycleAngle", "… at crank angle", "°", 1.0),
+    ("frictionPowerMeanCycle", "mean friction power", "W", 1.0),
+    ("oilFlowMeanCycle", "mean oil flow", "cm³/s", 1e6),
+]
+
+
+@dataclass
+class Machine:
+    """A checked machine file."""
+    name: str
+    fmu: Path
+    parameters: dict
+    cycles: int
+    points_per_cycle: int
+
+
+def load(path, fmu=None, cycles=None) -> Machine:
+    """The machine of the file at `path`, its parameters checked against the FMU's model
+    description (a StudyError names a wrong entry)."""
+    path = Path(path)
+    spec = tomllib.loads(path.read_text())
+    base = path.parent
+    fmu = Path(fmu) if fmu else base / spec.get("fmu", "../target/fmu/FlexibleSliderCrank.fmu")
+    if not fmu.is_file():
+        raise StudyError(f"{path}: no FMU at {fmu} (build it: cargo run --release -p packaging)")
+    variables = _variables(read_model_description(str(fmu)))
+    parameters = {}
+    for name, value in spec.get("parameters", {}).items():
+        value = _check_value(str(path), name, value, variables)
+        if variables[name].type == "String" and value:
+            file = base / value
+            if not file.is_file():
+                raise StudyError(f"{path}: {name} names {value}, which is not a file next to it")
+            value = str(file.resolve())
+        parameters[name] = value
+    cycles = int(cycles or spec.get("cycles", 3))
+    points = int(spec.get("points_per_cycle", 720))
+    if cycles < 2 or points < 36:
+        raise StudyError(f"{path}: cycles = {cycles} (at least 2: the first settles) and "
+                         f"points_per_cycle = {points} (at least 36)")
+    return Machine(path.stem, fmu, parameters, cycles, points)
+
+
+def run(machine: Machine, progress=True) -> dict:
+    """Runs the machine for its cycles: {name: array} of the crank angle, time, slider position and
+    every joint's series at each communication point, and the cycle results and parameters at the
+    end (scalars)."""
+    session = Session(machine.fmu, f"bearing-report-{machine.name}")
+    try:
+        session.set(machine.parameters)
+        session.initialize()
+        value = session.get
+        table = value("slider.forceTable") if "slider.forceTable" in session.vr else ""
+        period = math.radians(value("slider.forceTablePeriod") if table else 360.0)
+        speed = value("drive.speed") if value("drive.mode") == 1 else value("crank.speed")
+        if speed == 0:
+            raise StudyError(f"{machine.name}: the crank does not turn (drive.speed = 0)")
+        step = period / abs(speed) / machine.points_per_cycle
+        names = ["time", "crank.angle", "slider.position"] + [
+            f"{prefix}.{s}" for prefix, *_ in JOINTS for s in SERIES]
+        vrs = [session.vr[n] for n in names[1:]]
+        rows = []
+        start = value("crank.angle")
+        t = 0.0
+        total = machine.cycles * machine.points_per_cycle
+        bar = tqdm(total=total, desc=f"{machine.name}: {machine.cycles} cycles", unit="step",
+                   disable=not progress)
+        while True:
+            rows.append([t] + list(session.fmu.getReal(vrs)))
+            if abs(rows[-1][1] - start) >= machine.cycles * period or len(rows) > 4 * total:
+                break
+            session.fmu.doStep(currentCommunicationPoint=t, communicationStepSize=step)
+            failed = errors(session.fmu.instanceName)
+            if failed:
+                raise RuntimeError(f"{machine.name}: the FMU failed at t = {t} s: {failed[-1]}")
+            t += step
+            bar.update(1)
+        bar.close()
+        data = {n: np.array(c) for n, c in zip(names, zip(*rows))}
+        for prefix, *_ in JOINTS:
+            data[f"{prefix}.model"] = value(f"{prefix}.model")
+            data[f"{prefix}.clearance"] = value(f"{prefix}.clearance")
+            for name, *_ in CYCLE_RESULTS:
+                data[f"{prefix}.{name}"] = value(f"{prefix}.{name}")
+        for name in ["crank.length", "slider.offset", "solver.warnings"]:
+            data[name] = value(name)
+        data["period"] = period
+        return data
+    finally:
+        session.free()
+
+
+def last_cycle(data: dict) -> np.ndarray:
+    """The rows of the last complete load cycle: those whose crank angle lies between the last two
+    multiples of the period the crank angle crossed (the first row's interval begins before)."""
+    k = np.floor(data["crank.angle"] / data["period"])
+    boundaries = np.flatnonzero(np.diff(k) != 0) + 1
+    if len(boundaries) < 2:
+        raise StudyError("no complete load cycle: run more cycles")
+    return np.arange(boundaries[-2], boundaries[-1])
+
+
+def rod_angle(data: dict) -> np.ndarray:
+    """The rod's direction from the crank pin to the slider pin [rad] (rigid geometry)."""
+    r, e = data["crank.length"], data["slider.offset"]
+    theta = data["crank.angle"]
+    return np.arctan2(e - r * np.sin(theta), data["slider.position"] - r * np.cos(theta))
+
+
+def plot_joint(data: dict, rows: np.ndarray, prefix: str, title: str, sign: float, body: str,
+               path: Path):
+    """One joint's figure: load diagrams, orbit and the film over the last cycle."""
+    deg = np.degrees(np.mod(data["crank.angle"][rows], data["period"]))
+    fx = sign * data[f"{prefix}.forceX"][rows] / 1e3
+    fy = sign * data[f"{prefix}.forceY"][rows] / 1e3
+    frame = data["crank.angle"][rows] if body == "crank" else rod_angle(data)[rows]
+    c, s = np.cos(frame), np.sin(frame)
+    clearance = data[f"{prefix}.clearance"]
+    fig, ax = plt.subplots(2, 3, figsize=(15, 9))
+    for a, (x, y), label in [(ax[0, 0], (fx, fy), "ground's frame"),
+                             (ax[0, 1], (c * fx + s * fy, -s * fx + c * fy), f"{body}'s frame")]:
+        a.plot(x, y, lw=0.9)
+        a.plot([0], [0], "k+")
+        a.set(xlabel="x [kN]", ylabel="y [kN]", aspect="equal",
+              title=f"Force on the bearing, {label}")
+    phi = np.linspace(0, 2 * np.pi, 200)
+    ax[0, 2].plot(np.cos(phi), np.sin(phi), "k--", lw=0.8, label="clearance circle")
+    ax[0, 2].plot(data[f"{prefix}.eccentricityX"][rows] / clearance,
+                  data[f"{prefix}.eccentricityY"][rows] / clearance, lw=0.9, color="C2",
+                  label="journal centre")
+    ax[0, 2].set(xlabel="x / c", ylabel="y / c", aspect="equal", title="Journal orbit")
+    ax[0, 2].legend(loc="lower right", fontsize=8)
+    ax[1, 0].plot(deg, 1e6 * data[f"{prefix}.filmThicknessMin"][rows], lw=0.9, color="C3")
+    ax[1, 0].set(xlabel="crank angle in the cycle [°]", ylabel="smallest film thickness [µm]",
+                 title="Film thickness")
+    ax[1, 1].plot(deg, 1e-6 * data[f"{prefix}.filmPressurePeak"][rows], lw=0.9, color="C4")
+    ax[1, 1].set(xlabel="crank angle in the cycle [°]", ylabel="largest film pressure [MPa]",
+                 title="Film pressure")
+    ax[1, 2].plot(deg, data[f"{prefix}.frictionPower"][rows], lw=0.9, color="C5")
+    ax[1, 2].set(xlabel="crank angle in the cycle [°]", ylabel="friction power [W]",
+                 title="Friction power and oil flow")
+    flow = ax[1, 2].twinx()
+    flow.plot(deg, 1e6 * data[f"{prefix}.oilFlow"][rows], lw=0.9, color="C0")
+    flow.set_ylabel("oil flow [cm³/s]", color="C0")
+    for a in ax.flat:
+        a.grid(alpha=0.3)
+    fig.suptitle(f"{title}: the last complete load cycle")
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
+    plt.close(fig)
+
+
+def write(machine: Machine, data: dict, out: Path) -> Path:
+    """The PNG of each clearance joint and index.html; returns the page's path."""
+    out.mkdir(parents=True, exist_ok=True)
+    rows = last_cycle(data)
+    sections = []
+    for prefix, title, sign, body in JOINTS:
+        if data[f"{prefix}.model"] == 1:
+            continue
+        plot_joint(data, rows, prefix, title, sign, body, out / f"{prefix}.png")
+        cells = "".join(
+            f"<tr><td>{html.escape(label)}</td><td><code>{prefix}.{name}</code></td>"
+            f"<td>{data[f'{prefix}.{name}'] * factor:.4g} {unit}</td></tr>"
+            for name, label, unit, factor in CYCLE_RESULTS)
+        sections.append(f"<h2>{html.escape(title)}</h2>\n<table>{cells}</table>\n"
+                        f'<p><img src="{prefix}.png" alt="{html.escape(title)}" width="100%"></p>')
+    if not sections:
+        sections.append("<p>Every joint is ideal: no bearing to report.</p>")
+    parameters = "".join(f"<tr><td><code>{html.escape(n)}</code></td><td>{html.escape(str(v))}"
+                         "</td></tr>" for n, v in machine.parameters.items())
+    page = out / "index.html"
+    page.write_text(
+        "<!DOCTYPE html><html><head><meta charset='utf-8'>"
+        f"<title>Bearing report: {html.escape(machine.name)}</title>"
+        "<style>body{font-family:sans-serif;max-width:1100px;margin:auto}"
+        "td{padding:2px 12px}</style></head><body>"
+        f"<h1>Bearing report: {html.escape(machine.name)}</h1>"
+        f"<p>{machine.cycles} load cycles of {math.degrees(data['period']):.0f}° "
+        f"({data['time'][-1]:.4g} s), {machine.points_per_cycle} points per cycle; the results "
+        f"are those of the last complete cycle. FMU warnings: {int(data['solver.warnings'])}.</p>"
+        + "\n".join(sections)
+        + f"<h2>Parameters</h2><table>{parameters}</table></body></html>")
+    return page
