@@ -5,7 +5,8 @@
 pub use fmi_core::codec::{ByteReader, ByteWriter, CodecError};
 
 use super::cycle::{Cycle, CycleHold, CycleStep, Extreme, JointCycle};
-use super::peaks::{Peaks, SERIES, Sample};
+use super::peaks::Peaks;
+use super::sample::{SERIES, Sample};
 use super::step::StepPoint;
 use crate::integrator::Stats;
 use crate::mechanism::{ContactState, Contacts, InputSignal, Inputs};

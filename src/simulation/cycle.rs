@@ -15,7 +15,7 @@
 //! boundary to the next; until the first completes, those of the cycle under way (from the start,
 //! or from the last boundary crossed).
 
-use super::peaks::{ECCENTRICITY_RATIO, FILM_PRESSURE, Sample, force_series};
+use super::sample::{ECCENTRICITY_RATIO, FILM_PRESSURE, Sample, force_series};
 use crate::joint::JointRole;
 
 /// An extreme value and the crank angle where it occurred \[rad, absolute\].

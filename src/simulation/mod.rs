@@ -11,6 +11,7 @@ mod peaks;
 mod reading;
 mod record;
 mod restore;
+mod sample;
 mod snapshot;
 mod step;
 pub mod validity;

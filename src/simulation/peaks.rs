@@ -4,6 +4,9 @@
 use nalgebra::Vector2;
 
 use super::cycle::{CycleHold, CycleStep};
+use super::sample::{
+    CRANK_PIN_FORCE, ECCENTRICITY_RATIO, FILM_PRESSURE, MAIN_BEARING_FORCE, SERIES, Sample,
+};
 use super::step::StepPoint;
 use crate::integrator::dense;
 use crate::joint::JointRole;
@@ -52,24 +55,10 @@ impl Default for Peaks {
 /// Contact onsets at each joint, indexed by [`crate::joint::JointRole`].
 pub type Onsets = [u64; 3];
 
-/// Number of peak-held quantities: seven loads, each joint's eccentricity ratio and film pressure
-/// (by role), the rod's tension and compression.
-pub(super) const SERIES: usize = 15;
-
-/// Position in a [`Sample`] of the main bearing's eccentricity ratio (the other joints follow in
-/// role order), and of its film pressure.
-pub(super) const ECCENTRICITY_RATIO: usize = 7;
-pub(super) const FILM_PRESSURE: usize = 10;
-
 /// Positions in a [`Sample`] of the quantities whose peaks inside a step are refined always (the
-/// joint force, the slider acceleration, the deformation energy), and of the crank pin's and the
-/// main bearing's forces, refined when that joint is worn.
+/// joint force, the slider acceleration, the deformation energy); the crank pin's and the main
+/// bearing's forces are refined when that joint is worn.
 const ALWAYS_REFINED: usize = 3;
-const CRANK_PIN_FORCE: usize = 3;
-const MAIN_BEARING_FORCE: usize = 4;
-
-/// The peak-held magnitudes of one instant, in the order of [`Peaks::from_sample`].
-pub(super) type Sample = [f64; SERIES];
 
 impl Peaks {
     /// Extends these extremes by `other`'s and adds its onsets.
@@ -382,15 +371,6 @@ pub(super) const PEAK_TOLERANCE: f64 = 0.02;
 /// (`Simulation::doubt_film_peaks`).
 pub(super) fn interpolated_peak(value: f64, rise: f64, largest: f64) -> bool {
     rise > PEAK_TOLERANCE * value && value >= 0.5 * largest
-}
-
-/// The position in a [`Sample`] of the force at the joint `role`.
-pub(super) fn force_series(role: JointRole) -> usize {
-    match role {
-        JointRole::RodSlider => 0,
-        JointRole::CrankPin => CRANK_PIN_FORCE,
-        JointRole::MainBearing => MAIN_BEARING_FORCE,
-    }
 }
 
 /// The peak-held magnitudes at sample `k` (of [`PEAK_SAMPLES`] + 1 intervals) of the step just

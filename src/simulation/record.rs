@@ -4,6 +4,7 @@
 use super::Simulation;
 use super::cycle::CycleStep;
 use super::peaks::{self, AcceptedStep, Peaks};
+use super::sample::{Sample, force_series};
 use crate::error::ModelError;
 use crate::joint::{Joint, JointRole};
 use crate::mechanism::layout::CRANK_ANGLE;
@@ -51,7 +52,7 @@ impl Simulation {
     /// What the step just accepted brings to the cycle results ([`super::cycle`]): its ends'
     /// times and crank angles, its samples, and each joint's friction power and oil flow at its
     /// ends.
-    fn cycle_step(&self, at_end: peaks::Sample, within: &peaks::Within) -> CycleStep {
+    fn cycle_step(&self, at_end: Sample, within: &peaks::Within) -> CycleStep {
         let rates = [&self.start.y, &self.end.y].map(|y| self.mechanism.friction_and_flow(y));
         CycleStep {
             time: [self.start.time, self.end.time],
@@ -75,7 +76,7 @@ impl Simulation {
             self.peaks.interval.sample(),
         );
         for role in JointRole::ALL {
-            let i = peaks::force_series(role);
+            let i = force_series(role);
             let film = matches!(self.mechanism.joint(role), Joint::Lubricated(_));
             let (value, rise) = (within.largest[i], within.rise[i]);
             if !(film && peaks::interpolated_peak(value, rise, known[i])) {

@@ -60,6 +60,12 @@ const ALL_INPUTS: &[Vr] = &[Vr::DriveSpeed, Vr::DriveTorque, Vr::SliderForce];
 /// joint and rod model; `packaging/python/tests/test_fmu.py` checks them against perturbations
 /// in initialization mode.
 pub(super) fn initial_dependency(unknown: Vr, known: Vr) -> bool {
+    let start_in_cycle = |known| {
+        matches!(
+            known,
+            Vr::CrankInitialAngle | Vr::SliderForceTable | Vr::SliderForceTablePeriod
+        )
+    };
     use Vr::*;
     match unknown {
         CrankAngle => known == CrankInitialAngle,
@@ -77,14 +83,38 @@ pub(super) fn initial_dependency(unknown: Vr, known: Vr) -> bool {
             JointModel
                 | JointJournalRadius
                 | JointBearingLength
+                | JointFilmModel
                 | CrankPinModel
                 | CrankPinJournalRadius
                 | CrankPinBearingLength
+                | CrankPinFilmModel
                 | MainBearingModel
                 | MainBearingJournalRadius
                 | MainBearingBearingLength
+                | MainBearingFilmModel
         ),
-        SolverSteps
+        // before a step the cycle under way holds the present instant: its angles are the
+        // crank's start within the load cycle (a film's only at a clearance joint), its means
+        // (over no time) zero
+        JointForcePeakCycleAngle | CrankPinForcePeakCycleAngle | MainBearingForcePeakCycleAngle => {
+            start_in_cycle(known)
+        }
+        JointFilmThicknessMinCycleAngle | JointFilmPressurePeakCycleAngle => {
+            start_in_cycle(known) || known == JointModel
+        }
+        CrankPinFilmThicknessMinCycleAngle | CrankPinFilmPressurePeakCycleAngle => {
+            start_in_cycle(known) || known == CrankPinModel
+        }
+        MainBearingFilmThicknessMinCycleAngle | MainBearingFilmPressurePeakCycleAngle => {
+            start_in_cycle(known) || known == MainBearingModel
+        }
+        JointFrictionPowerMeanCycle
+        | JointOilFlowMeanCycle
+        | CrankPinFrictionPowerMeanCycle
+        | CrankPinOilFlowMeanCycle
+        | MainBearingFrictionPowerMeanCycle
+        | MainBearingOilFlowMeanCycle
+        | SolverSteps
         | SolverEvaluations
         | EnergyDriveWork
         | EnergySliderWork

@@ -34,6 +34,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from fmpy import read_model_description  # noqa: E402
+from fmpy.fmi1 import FMICallException  # noqa: E402
 from tqdm import tqdm  # noqa: E402
 
 from .session import Session, errors  # noqa: E402
@@ -47,7 +48,7 @@ JOINTS = [
     ("joint", "Rod–slider joint", -1.0, "rod"),
 ]
 #: Each joint's outputs the report reads at every communication point.
-SERIES = ["forceX", "forceY", "eccentricityX", "eccentricityY", "filmThicknessMin",
+SERIES = ["forceX", "forceY", "forcePeak", "eccentricityX", "eccentricityY", "filmThicknessMin",
           "filmPressurePeak", "frictionPower", "oilFlow"]
 #: The cycle results, with their unit in the report and the factor from SI.
 CYCLE_RESULTS = [
@@ -105,47 +106,53 @@ def run(machine: Machine, progress=True) -> dict:
     end (scalars)."""
     session = Session(machine.fmu, f"bearing-report-{machine.name}")
     try:
-        session.set(machine.parameters)
-        session.initialize()
-        value = session.get
-        table = value("slider.forceTable") if "slider.forceTable" in session.vr else ""
-        period = math.radians(value("slider.forceTablePeriod") if table else 360.0)
-        speed = value("drive.speed") if value("drive.mode") == 1 else value("crank.speed")
-        if speed == 0:
-            raise StudyError(f"{machine.name}: the crank does not turn (drive.speed = 0)")
-        step = period / abs(speed) / machine.points_per_cycle
-        names = ["time", "crank.angle", "slider.position"] + [
-            f"{prefix}.{s}" for prefix, *_ in JOINTS for s in SERIES]
-        vrs = [session.vr[n] for n in names[1:]]
-        rows = []
-        start = value("crank.angle")
-        t = 0.0
-        total = machine.cycles * machine.points_per_cycle
-        bar = tqdm(total=total, desc=f"{machine.name}: {machine.cycles} cycles", unit="step",
-                   disable=not progress)
-        while True:
-            rows.append([t] + list(session.fmu.getReal(vrs)))
-            if abs(rows[-1][1] - start) >= machine.cycles * period or len(rows) > 4 * total:
-                break
-            session.fmu.doStep(currentCommunicationPoint=t, communicationStepSize=step)
-            failed = errors(session.fmu.instanceName)
-            if failed:
-                raise RuntimeError(f"{machine.name}: the FMU failed at t = {t} s: {failed[-1]}")
-            t += step
-            bar.update(1)
-        bar.close()
-        data = {n: np.array(c) for n, c in zip(names, zip(*rows))}
-        for prefix, *_ in JOINTS:
-            data[f"{prefix}.model"] = value(f"{prefix}.model")
-            data[f"{prefix}.clearance"] = value(f"{prefix}.clearance")
-            for name, *_ in CYCLE_RESULTS:
-                data[f"{prefix}.{name}"] = value(f"{prefix}.{name}")
-        for name in ["crank.length", "slider.offset", "solver.warnings"]:
-            data[name] = value(name)
-        data["period"] = period
-        return data
-    finally:
-        session.free()
+        data = _run(machine, session, progress)
+    except FMICallException as e:
+        failed = errors(session.fmu.instanceName)
+        session.fmu.freeInstance()
+        raise StudyError(f"{machine.name}: {failed[-1] if failed else e}") from None
+    session.free()
+    return data
+
+
+def _run(machine: Machine, session: Session, progress: bool) -> dict:
+    """`run` on an instantiated session."""
+    session.set(machine.parameters)
+    session.initialize()
+    value = session.get
+    table = value("slider.forceTable") if "slider.forceTable" in session.vr else ""
+    period = math.radians(value("slider.forceTablePeriod") if table else 360.0)
+    speed = value("drive.speed") if value("drive.mode") == 1 else value("crank.speed")
+    if speed == 0:
+        raise StudyError(f"{machine.name}: the crank does not turn (drive.speed = 0)")
+    step = period / abs(speed) / machine.points_per_cycle
+    names = ["time", "crank.angle", "slider.position"] + [
+        f"{prefix}.{s}" for prefix, *_ in JOINTS for s in SERIES]
+    vrs = [session.vr[n] for n in names[1:]]
+    rows = []
+    start = value("crank.angle")
+    t = 0.0
+    total = machine.cycles * machine.points_per_cycle
+    bar = tqdm(total=total, desc=f"{machine.name}: {machine.cycles} cycles", unit="step",
+               disable=not progress)
+    while True:
+        rows.append([t] + list(session.fmu.getReal(vrs)))
+        if abs(rows[-1][1] - start) >= machine.cycles * period or len(rows) > 4 * total:
+            break
+        session.fmu.doStep(currentCommunicationPoint=t, communicationStepSize=step)
+        t += step
+        bar.update(1)
+    bar.close()
+    data = {n: np.array(c) for n, c in zip(names, zip(*rows))}
+    for prefix, *_ in JOINTS:
+        data[f"{prefix}.model"] = value(f"{prefix}.model")
+        data[f"{prefix}.clearance"] = value(f"{prefix}.clearance")
+        for name, *_ in CYCLE_RESULTS:
+            data[f"{prefix}.{name}"] = value(f"{prefix}.{name}")
+    for name in ["crank.length", "slider.offset", "solver.warnings"]:
+        data[name] = value(name)
+    data["period"] = period
+    return data
 
 
 def last_cycle(data: dict) -> np.ndarray:
