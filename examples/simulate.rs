@@ -1,14 +1,15 @@
 //! Runs the slider-crank through the Rust API and prints a CSV of the outputs to stdout.
 //!
-//! `cargo run --release --example simulate -- [rigid|ancf|craigBampton] [ideal|dry|lubricated]
-//! [stop time s] [output interval s]` — defaults: benchmark B (Craig–Bampton, 4 modes, dry joint),
-//! two crank revolutions at 5000 rpm, 1e-4 s.
+//! `cargo run --release --example simulate -- [rigid|ancf|craigBampton]
+//! [ideal|dry|lubricated|short] [stop time s] [output interval s]` — defaults: benchmark B
+//! (Craig–Bampton, 4 modes, dry joint), two crank revolutions at 5000 rpm, 1e-4 s; `lubricated` is
+//! the joint's default finite film, `short` the lubricated joint with the short film (benchmark C's).
 //!
 //! Communication points follow fmpy's arithmetic (t_n = n·dt, step h = t_{n+1} − t_n, end t + h) and
 //! values are printed in shortest round-trip form, so the FMU run through fmpy can be compared with
 //! this library run bit for bit (packaging/python/tests/test_fmu.py).
 
-use flexible_slider_crank::params::{JointModel, RodFormulation};
+use flexible_slider_crank::params::{FilmModel, JointModel, RodFormulation};
 use flexible_slider_crank::{ModelError, Parameters, Simulation};
 
 fn main() -> Result<(), ModelError> {
@@ -22,6 +23,10 @@ fn main() -> Result<(), ModelError> {
     match args.get(1).map(String::as_str) {
         Some("ideal") => p.joint.model = JointModel::Ideal,
         Some("lubricated") => p.joint.model = JointModel::Lubricated,
+        Some("short") => {
+            p.joint.model = JointModel::Lubricated;
+            p.joint.film_model = FilmModel::Short;
+        }
         _ => {}
     }
     let stop: f64 = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(0.024);

@@ -102,9 +102,10 @@ impl JournalBearing {
         let (f_r, f_t) = field.force();
         let scale = self.film_coefficient();
         let t = field.tangent();
-        match self.ratios(&field) {
-            None => (scale * (f_r * field.n + f_t * t), scale * f_t),
-            Some([t_r, t_t, ..]) => {
+        match &self.film {
+            Film::Short => (scale * (f_r * field.n + f_t * t), scale * f_t),
+            Film::Finite(finite) => {
+                let [t_r, t_t] = finite.force_ratios_at(field.eps, field.squeeze_direction());
                 let magnitude = scale * crate::math::hypot(f_r, f_t);
                 (magnitude * (t_r * field.n + t_t * t), magnitude * t_t)
             }

@@ -195,13 +195,25 @@ impl FiniteFilm {
 
     /// The ratios [T_r, T_t, T_p, T_q] at eccentricity ratio `eps` (≤ 0.99) and squeeze
     /// direction (cos ψ, sin ψ).
-    pub fn ratios_at(&self, eps: f64, (cos, sin): (f64, f64)) -> [f64; RATIOS] {
-        let x = (1.0 - (1.0 - eps.clamp(0.0, MAX_ECCENTRICITY)).sqrt()) / 0.9
-            * (ECCENTRICITY_NODES - 1) as f64;
-        let psi = math::atan2(sin, cos);
-        let y = (psi / std::f64::consts::PI + 1.0) * (AROUND / 2) as f64;
-        self.patches.at(x, y)
+    pub fn ratios_at(&self, eps: f64, direction: (f64, f64)) -> [f64; RATIOS] {
+        let (x, y) = coordinates(eps, direction);
+        self.patches.at(x, y, 0)
     }
+
+    /// The force's ratios [T_r, T_t] alone (what every right-hand side needs), as
+    /// [`FiniteFilm::ratios_at`] gives them.
+    pub fn force_ratios_at(&self, eps: f64, direction: (f64, f64)) -> [f64; 2] {
+        let (x, y) = coordinates(eps, direction);
+        self.patches.at(x, y, 0)
+    }
+}
+
+/// The interpolation grid's index coordinates (x along ε, y around ψ) of a state.
+fn coordinates(eps: f64, (cos, sin): (f64, f64)) -> (f64, f64) {
+    let x = (1.0 - (1.0 - eps.clamp(0.0, MAX_ECCENTRICITY)).sqrt()) / 0.9
+        * (ECCENTRICITY_NODES - 1) as f64;
+    let psi = math::atan2(sin, cos);
+    (x, (psi / std::f64::consts::PI + 1.0) * (AROUND / 2) as f64)
 }
 
 /// The ratios at λ for ε node `i` (ε = `eps`) and ψ node `j`, interpolated over the λ nodes
@@ -276,9 +288,9 @@ impl Patches {
         Self { nodes }
     }
 
-    /// The bicubic Hermite interpolant at index coordinates (x, y), x ∈ [0, 24], y periodic
-    /// with period 72.
-    fn at(&self, x: f64, y: f64) -> [f64; RATIOS] {
+    /// The bicubic Hermite interpolant of the `N` ratios from `first` at index coordinates
+    /// (x, y), x ∈ [0, 24], y periodic with period 72.
+    fn at<const N: usize>(&self, x: f64, y: f64, first: usize) -> [f64; N] {
         let cols = AROUND;
         let i = (x.floor().max(0.0) as usize).min(ECCENTRICITY_NODES - 2);
         let u = x - i as f64;
@@ -293,10 +305,10 @@ impl Patches {
             ]
         };
         let (bu, bv) = (basis(u), basis(v));
-        let mut out = [0.0; RATIOS];
+        let mut out = [0.0; N];
         for (a, bu) in bu.iter().enumerate() {
             for (b, bv) in bv.iter().enumerate() {
-                let node = &self.nodes[(i + a) * cols + (j + b) % cols];
+                let node = &self.nodes[(i + a) * cols + (j + b) % cols][first..first + N];
                 for (o, [f, f_i, f_j, f_ij]) in out.iter_mut().zip(node) {
                     *o += bu[0] * (bv[0] * f + bv[1] * f_j) + bu[1] * (bv[0] * f_i + bv[1] * f_ij);
                 }
