@@ -4,13 +4,14 @@
 //! crank angle, the firing load and the forces on the two bearings, their smallest film thickness
 //! and their largest film pressure over each 1e-4 s communication interval (the peak-hold
 //! outputs), and their friction power; prints the cycle's extremes, the mean friction loss and
-//! each joint's dissipation over the cycle.
+//! each joint's dissipation over the cycle, and the same cycle's extremes with the short film.
 //!
 //! `cargo run --release --example bearing_design` writes `target/bearing_design/bearing_design.png`.
 //! The plot needs the DejaVu Sans font (Debian package fonts-dejavu-core).
 
 use std::error::Error;
 
+use flexible_slider_crank::params::FilmModel;
 use plotters::prelude::*;
 
 #[path = "../tests/support/engine.rs"]
@@ -32,10 +33,17 @@ struct Row {
 /// A panel of the plot: caption, axis label, top of the axis, and the value of bearing k in a row.
 type Panel<'a> = (&'a str, &'a str, f64, &'a dyn Fn(&Row, usize) -> f64);
 
-fn main() -> Result<(), Box<dyn Error>> {
+/// The second cycle's rows with the bearings' film `film`, and each bearing's dissipation at the
+/// cycle's start and end.
+fn second_cycle(
+    film: FilmModel,
+) -> Result<(Vec<Row>, [[f64; 2]; 2]), flexible_slider_crank::ModelError> {
+    let mut p = engine::parameters(1e-2);
+    p.main_bearing.film_model = film;
+    p.crank_pin.film_model = film;
     let mut rows = Vec::new();
     let mut dissipated = [[0.0; 2]; 2];
-    engine::run(engine::parameters(1e-2), 2, |t, o| {
+    engine::run(p, 2, |t, o| {
         if (t - engine::CYCLE).abs() < 0.5 * engine::STEP {
             dissipated[0] = [0, 1].map(|k| o.bearings[k].energy_dissipated);
         }
@@ -53,6 +61,11 @@ fn main() -> Result<(), Box<dyn Error>> {
             power: [0, 1].map(|k| o.bearings[k].friction_power),
         });
     })?;
+    Ok((rows, dissipated))
+}
+
+/// Prints each bearing's extremes, mean friction power and dissipation over the cycle.
+fn summary(film: &str, rows: &[Row], dissipated: [[f64; 2]; 2]) {
     let names = ["main bearing", "crank pin"];
     for (k, name) in names.iter().enumerate() {
         let thinnest = rows.iter().map(|r| r.thickness[k]).fold(f64::MAX, f64::min);
@@ -61,14 +74,23 @@ fn main() -> Result<(), Box<dyn Error>> {
         let mean_power = rows.iter().map(|r| r.power[k]).sum::<f64>() / rows.len() as f64;
         let energy = dissipated[1][k] - dissipated[0][k];
         println!(
-            "{name}: peak force {:.0} N, smallest film {:.2} µm, peak pressure {:.1} MPa, mean \
-             friction power {mean_power:.2} W, dissipated over the cycle {energy:.4} J ({:.2} W)",
+            "{film} film, {name}: peak force {:.0} N, smallest film {:.2} µm, peak pressure \
+             {:.1} MPa, mean friction power {mean_power:.2} W, dissipated over the cycle \
+             {energy:.4} J ({:.2} W)",
             force,
             1e6 * thinnest,
             1e-6 * pressure,
             energy / engine::CYCLE
         );
     }
+}
+
+fn main() -> Result<(), Box<dyn Error>> {
+    let (rows, dissipated) = second_cycle(FilmModel::Finite)?;
+    summary("finite", &rows, dissipated);
+    let (short, short_dissipated) = second_cycle(FilmModel::Short)?;
+    summary("short", &short, short_dissipated);
+    let names = ["main bearing", "crank pin"];
 
     let font: &'static [u8] = Box::leak(std::fs::read(FONT)?.into_boxed_slice());
     plotters::style::register_font("sans-serif", FontStyle::Normal, font)

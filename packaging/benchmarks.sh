@@ -4,7 +4,7 @@
 # the fuzzing half an hour per target of it); with arguments only the named ones:
 #
 #   bash packaging/benchmarks.sh [fmu] [native] [impacts] [weight] [damping] [integrators]
-#                                [accuracy] [energy] [criterion] [modes] [bearings] [coupling]
+#                                [accuracy] [energy] [criterion] [modes] [bearings] [film] [coupling]
 #                                [system] [dask] [space] [platforms] [fuzz]
 #
 # Needs the packaged FMU and the venv (the README's first command makes both). Figures vary with the
@@ -13,7 +13,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 py=.venv/bin/python
 fmu=target/fmu/FlexibleSliderCrank.fmu
-all=(fmu native impacts weight damping integrators accuracy energy criterion modes bearings coupling system dask space platforms fuzz)
+all=(fmu native impacts weight damping integrators accuracy energy criterion modes bearings film coupling system dask space platforms fuzz)
 sections=("$@")
 [ ${#sections[@]} -eq 0 ] && sections=("${all[@]}")
 
@@ -50,6 +50,18 @@ for s in "${sections[@]}"; do
     bearings)
       cargo test --release --quiet --test validation_mechanism bearings -- --nocapture
       cargo run --release --quiet --example bearing_design ;;
+    film)
+      cargo run --release --quiet --example film_models
+      cargo build --release --quiet --example simulate
+      # the finite film against the short one, alternating, ten revolutions each
+      TIMEFORMAT="%R s"
+      for _ in 1 2 3 4 5 6 7 8 9 10 11; do
+        for film in lubricated short; do
+          printf '%s ' "$film"
+          { time target/release/examples/simulate craigBampton "$film" 0.12 >/dev/null 2>&1; } 2>&1
+        done
+      done
+      time "$py" -m fsc bearing-report studies/compressor.toml ;;
     coupling) "$py" -m fsc.coupling_benchmark "$fmu" ;;
     system) "$py" -m fsc.system ;;
     dask) "$py" -m fsc.sweep_benchmark "$fmu" ;;

@@ -34,6 +34,7 @@ CASES = [
     ("rigid", LUBRICATED, {"rod.formulation": RIGID}),
     ("Craig-Bampton 4 modes, 8 elements", LUBRICATED, {}),
     ("full ANCF, 8 elements", LUBRICATED, {"rod.formulation": ANCF}),
+    ("Craig-Bampton 4 modes, 8 elements, short film", LUBRICATED, {"joint.filmModel": 1}),
     ("Craig-Bampton 4 modes, 8 elements, sampled", DRY, {"rod.quadrature": SAMPLED}),
     ("Craig-Bampton 4 modes, 16 elements, sampled", DRY, {"rod.quadrature": SAMPLED, "rod.nElements": 16}),
     ("Craig-Bampton 4 modes, 32 elements, sampled", DRY, {"rod.quadrature": SAMPLED, "rod.nElements": 32}),
@@ -53,7 +54,7 @@ def run_once(fmu, start_values):
 def main(fmu: str, quick: bool, common: dict, baseline: str | None = None) -> None:
     md = read_model_description(fmu)
     stop = float(md.defaultExperiment.stopTime)
-    cases = CASES[:4] + CASES[8:10] if quick else CASES
+    cases = CASES[:4] + CASES[8:10] + CASES[11:12] if quick else CASES
     builds = [fmu] if baseline is None else [fmu, baseline]
     # Round-robin: every round runs every case once (with each build), so a slow spell of the machine
     # hits all cases alike instead of one; each case keeps its best round.
