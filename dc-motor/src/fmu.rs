@@ -142,6 +142,7 @@ fn output(o: &MotorOutputs, vr: Vr) -> Option<f64> {
 
 impl Model for DcMotorFmu {
     const GUID: &'static str = crate::GUID;
+    const FMI3_TOKENS: [&'static str; 2] = [crate::FMI3_TOKEN, crate::FMI3_TOKEN];
     type Vr = Vr;
     const VARIABLES: &'static [Variable] = VARIABLES;
     const MAX_INPUT_DERIVATIVE_ORDER: u32 =

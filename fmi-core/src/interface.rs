@@ -41,6 +41,17 @@ impl Fmi3Interface {
         terminals: &[],
     };
 
+    /// The interface without arrays and structural parameters: what a master that reads every
+    /// variable as a scalar can load (OMSimulator asks every variable it lists with one value,
+    /// an array too). The capabilities and terminals stay.
+    pub const fn scalar(self) -> Self {
+        Self {
+            structural_parameters: &[],
+            arrays: &[],
+            ..self
+        }
+    }
+
     /// The structural parameter with value reference `vr`, with its index.
     pub fn structural_parameter(&self, vr: u32) -> Option<(usize, &'static StructuralParameter)> {
         let parameters: &'static [StructuralParameter] = self.structural_parameters;

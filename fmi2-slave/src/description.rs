@@ -7,7 +7,9 @@ pub use fmi_core::description::{Description, check};
 
 use crate::table::{Causality, Kind, ValueReference, Variability, Variable, item_list};
 
-const GUID_PLACEHOLDER: &str = "@GUID@";
+/// Where the GUID (FMI 3: the instantiation token) goes in a rendered description: its hash is
+/// taken with this in its place.
+pub(crate) const GUID_PLACEHOLDER: &str = "@GUID@";
 
 /// The rendered XML and its GUID.
 pub fn model_description<V: ValueReference>(
@@ -289,7 +291,7 @@ pub(crate) fn log_categories_and_experiment<V>(d: &Description<V>) -> String {
 }
 
 /// FNV-1a, 128 bits, written as a braced GUID.
-fn guid(text: &str) -> String {
+pub(crate) fn guid(text: &str) -> String {
     let mut h: u128 = 0x6c62_272e_07bb_0142_62b8_2175_6295_c58d;
     for b in text.bytes() {
         h ^= u128::from(b);

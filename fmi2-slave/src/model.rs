@@ -31,6 +31,10 @@ pub trait Model: Sized + 'static {
     const MAX_INPUT_DERIVATIVE_ORDER: u32 = 0;
     /// What its FMI 3 interface adds to the table: capabilities, structural parameters, arrays.
     const FMI3: Fmi3Interface = Fmi3Interface::NONE;
+    /// The instantiation tokens of its FMI 3 descriptions: the one of [`Model::FMI3`], and the
+    /// one without arrays ([`Fmi3Interface::scalar`]; the same for a model without arrays). An
+    /// instance serves the interface of the token it was instantiated with.
+    const FMI3_TOKENS: [&'static str; 2] = [Self::GUID, Self::GUID];
 
     /// A model with every start value (fmi2Instantiate, fmi2Reset).
     fn new() -> Self;
@@ -303,6 +307,9 @@ pub struct Instance<M: Model> {
     /// FMI 3: the values of the model's structural parameters ([`Model::FMI3`]), set in
     /// Configuration Mode; they size its arrays.
     pub structural: Vec<u64>,
+    /// FMI 3: the interface of the description the instance was instantiated with
+    /// ([`Model::FMI3_TOKENS`]).
+    pub fmi3: Fmi3Interface,
 }
 
 /// The master's FMI 3 intermediate-update callback with the environment it is called with.
@@ -360,17 +367,20 @@ impl<M: Model> Instance<M> {
             event_mode_used: false,
             intermediate_update: None,
             integers: Vec::new(),
-            structural: Self::structural_starts(),
+            structural: Self::structural_starts(M::FMI3),
+            fmi3: M::FMI3,
         }
     }
 
-    /// The start values of the structural parameters.
-    fn structural_starts() -> Vec<u64> {
-        M::FMI3
-            .structural_parameters
-            .iter()
-            .map(|p| p.start)
-            .collect()
+    /// The start values of the structural parameters of `fmi3`.
+    fn structural_starts(fmi3: Fmi3Interface) -> Vec<u64> {
+        fmi3.structural_parameters.iter().map(|p| p.start).collect()
+    }
+
+    /// Serves the FMI 3 interface `fmi3` (the one of the description it was instantiated with).
+    pub fn serve(&mut self, fmi3: Fmi3Interface) {
+        self.fmi3 = fmi3;
+        self.structural = Self::structural_starts(fmi3);
     }
 
     /// fmi2Reset: back to Instantiated with every start value.
@@ -380,7 +390,7 @@ impl<M: Model> Instance<M> {
         self.cause = None;
         self.model = M::new();
         self.model.set_resource_directory(self.resources.clone());
-        self.structural = Self::structural_starts();
+        self.structural = Self::structural_starts(self.fmi3);
     }
 
     /// The serialized state: magic, version, state machine, the model's bytes, and an FNV-1a 64

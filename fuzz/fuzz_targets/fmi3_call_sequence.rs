@@ -12,7 +12,7 @@ use std::ffi::CString;
 use std::ptr;
 
 use arbitrary::Arbitrary;
-use flexible_slider_crank::fmi::{self, GUID};
+use flexible_slider_crank::fmi::{self, FMI3_TOKEN};
 use flexible_slider_crank::variables::{FMI3, N_SECTIONS};
 use flexible_slider_crank_fuzz::{value_for, variable_count};
 use fmi_sys::fmi3::*;
@@ -138,7 +138,7 @@ unsafe extern "C" fn on_update(
 
 fuzz_target!(|session: Session| {
     let name = CString::new("fuzz3").unwrap_or_default();
-    let token = CString::new(GUID).unwrap_or_default();
+    let token = CString::new(FMI3_TOKEN).unwrap_or_default();
     // SAFETY: live strings for the duration of the call; no logger (messages are dropped).
     let c = unsafe {
         fmi::fmi3InstantiateCoSimulation(

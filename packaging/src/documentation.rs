@@ -9,7 +9,7 @@
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-use flexible_slider_crank::fmi::GUID;
+use flexible_slider_crank::fmi::{FMI3_SCALAR_TOKEN, FMI3_TOKEN, GUID};
 use flexible_slider_crank::variables::{Causality, DESCRIPTION, ENUMERATIONS, Kind};
 use fmi2_slave::description::Description;
 use fmi2_slave::number::Num;
@@ -214,11 +214,50 @@ fn to_html(markdown: &str, shift: u8, root: &Path, images: &mut Vec<PathBuf>) ->
     out
 }
 
-/// documentation/index.html of the slider-crank, and the images it shows (files to pack beside
-/// it): the README's introduction, demo plot and first studies, then every page of the user guide,
-/// the variable tables with value references and display units from the variable table; an error
-/// if a section it shows is missing.
-pub fn slider_crank(root: &Path) -> Result<(String, Vec<PathBuf>), String> {
+/// Which FMU a documentation page is for: its FMI version, and for FMI 3 whether it carries the
+/// rod's section arrays.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Edition {
+    /// The FMI 2.0 FMU.
+    Fmi2,
+    /// The FMI 3.0 FMU with the rod's section arrays.
+    Fmi3,
+    /// The FMI 3.0 FMU without arrays, for masters that read every variable as a scalar.
+    Fmi3Scalar,
+}
+
+impl Edition {
+    /// The page's heading after the model's name.
+    fn heading(self) -> &'static str {
+        match self {
+            Self::Fmi2 => "FMI 2.0 co-simulation FMU",
+            Self::Fmi3 => "FMI 3.0 co-simulation FMU",
+            Self::Fmi3Scalar => {
+                "FMI 3.0 co-simulation FMU without arrays (for masters that read every variable as \
+                 a scalar)"
+            }
+        }
+    }
+
+    /// The FMU's identity as the master checks it: "GUID …" or "instantiation token …".
+    fn identity(self, guid: &str, token: &str, scalar_token: &str) -> String {
+        match self {
+            Self::Fmi2 => format!("GUID <code>{guid}</code>"),
+            Self::Fmi3 => format!("Instantiation token <code>{token}</code>"),
+            Self::Fmi3Scalar => format!(
+                "Instantiation token <code>{scalar_token}</code>. This FMU declares no arrays and \
+                 no structural parameter (the rod's sections are in the FMI 3.0 FMU with arrays); \
+                 everything else is the same, bit for bit"
+            ),
+        }
+    }
+}
+
+/// documentation/index.html of the slider-crank's `edition`, and the images it shows (files to
+/// pack beside it): the README's introduction, demo plot and first studies, then every page of
+/// the user guide, the variable tables with value references and display units from the variable
+/// table; an error if a section it shows is missing.
+pub fn slider_crank(root: &Path, edition: Edition) -> Result<(String, Vec<PathBuf>), String> {
     let readme = std::fs::read_to_string(root.join("README.md")).map_err(|e| e.to_string())?;
     let mut images = Vec::new();
     let intro = readme
@@ -259,14 +298,16 @@ pub fn slider_crank(root: &Path) -> Result<(String, Vec<PathBuf>), String> {
         };
         let _ = write!(pages, "<h2 id=\"{anchor}\">{title}</h2>\n{body}");
     }
+    let heading = edition.heading();
+    let identity = edition.identity(GUID, FMI3_TOKEN, FMI3_SCALAR_TOKEN);
     let page = format!(
         r##"<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8"><title>FlexibleSliderCrank</title>
 <style>{STYLE}</style></head>
 <body>
-<h1>FlexibleSliderCrank — FMI 2.0 co-simulation FMU</h1>
+<h1>FlexibleSliderCrank — {heading}</h1>
 {intro}
-<p>GUID <code>{GUID}</code>. Contents: {contents}</p>
+<p>{identity}. Contents: {contents}</p>
 {demo}
 <h2 id="quick-start">Quick start</h2>
 {quick_start}
@@ -315,16 +356,27 @@ fn variable_page(body: &str, html: &mut impl FnMut(&str, u8) -> String) -> Resul
     Ok(page)
 }
 
-/// documentation/index.html of the DC motor.
-pub fn motor() -> String {
+/// documentation/index.html of the DC motor's `edition` (it has no arrays: its FMI 3.0 FMU serves
+/// every master).
+pub fn motor(edition: Edition) -> String {
     use dc_motor::variables::DESCRIPTION as MOTOR;
     let rows = |causality| variable_rows(&MOTOR, &[], causality);
+    let heading = match edition {
+        Edition::Fmi2 => Edition::Fmi2.heading(),
+        Edition::Fmi3 | Edition::Fmi3Scalar => Edition::Fmi3.heading(),
+    };
+    let identity = match edition {
+        Edition::Fmi2 => format!("GUID <code>{}</code>", dc_motor::GUID),
+        Edition::Fmi3 | Edition::Fmi3Scalar => {
+            format!("Instantiation token <code>{}</code>", dc_motor::FMI3_TOKEN)
+        }
+    };
     format!(
         r#"<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8"><title>DcMotor</title>
 <style>{STYLE}</style></head>
 <body>
-<h1>DcMotor — FMI 2.0 co-simulation FMU</h1>
+<h1>DcMotor — {heading}</h1>
 <p>{}</p>
 <pre>
 L di/dt = u - R i - k w            armature (back-EMF constant = torque constant k)
@@ -342,14 +394,13 @@ its spectral radius exceeds 1 for either exchange order (both FMUs from the same
 the FMU logs a warning with both largest stable steps and counts it in solver.warnings. Directional
 derivatives: d shaft.torque/d shaft.speed = -d_s, d motor.voltage/d speed.setPoint = Kp inside the voltage
 limit. Reference results of the DefaultExperiment (load at 500 rad/s) are in
-extra/org.fmi-standard.fmi-ls-ref/. GUID <code>{}</code>.</p>
+extra/org.fmi-standard.fmi-ls-ref/. {identity}.</p>
 <h2>Parameters</h2>{}
 <h2>Inputs</h2>{}
 <h2>Outputs</h2>{}
 </body></html>
 "#,
         MOTOR.description,
-        dc_motor::GUID,
         rows(Causality::Parameter),
         rows(Causality::Input),
         rows(Causality::Output)

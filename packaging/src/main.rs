@@ -16,7 +16,9 @@
 //! Beside each FMI 2 FMU goes its FMI 3.0 twin under `fmi3/` (`target/fmu/fmi3/`,
 //! `target/fmu/release/fmi3/`): the same libraries, which export both `fmi2*` and `fmi3*`, in FMI
 //! 3's platform folders ([`fmi3_platform`]; the macOS universal binary's slices apart), with the FMI 3
-//! modelDescription.xml.
+//! modelDescription.xml. The slider-crank's FMI 3 FMU carries the rod's section arrays; its twin
+//! without them, for masters that read every variable as a scalar (OMSimulator), goes to
+//! `fmi3/scalar/` (the motor has no arrays: its one FMI 3 FMU serves every master).
 //!
 //! The archive is reproducible: its entries come in a fixed order with a fixed time stamp.
 
@@ -28,8 +30,10 @@ use std::io::{BufRead, BufReader, Write};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
+use documentation::Edition;
 use flexible_slider_crank::fmi::{
-    MODEL_DESCRIPTION, MODEL_DESCRIPTION_FMI3, MODEL_IDENTIFIER, TERMINALS_AND_ICONS_FMI3,
+    MODEL_DESCRIPTION, MODEL_DESCRIPTION_FMI3, MODEL_DESCRIPTION_FMI3_SCALAR, MODEL_IDENTIFIER,
+    TERMINALS_AND_ICONS_FMI3,
 };
 use zip::write::SimpleFileOptions;
 
@@ -274,10 +278,28 @@ fn write_zip(path: &Path, entries: &[(String, PathBuf)]) -> Result<(), Box<dyn E
     Ok(())
 }
 
+/// The SSP archive `ssp` of the system structure in `system` with `fmus` as its resources.
+fn write_ssp(system: &Path, ssp: &Path, fmus: [&PathBuf; 2]) -> Result<(), Box<dyn Error>> {
+    let mut entries = vec![(
+        "SystemStructure.ssd".to_string(),
+        system.join("SystemStructure.ssd"),
+    )];
+    for fmu in fmus {
+        let name = fmu
+            .file_name()
+            .and_then(|n| n.to_str())
+            .unwrap_or("model.fmu");
+        entries.push((format!("resources/{name}"), fmu.clone()));
+    }
+    write_zip(ssp, &entries)
+}
+
 /// Writes both FMUs into `out_dir` with the libraries of FMI 2's platform folders among
 /// `binaries` (the slider-crank's) and `motor_libraries`, their FMI 3.0 twins into `out_dir/fmi3/`
-/// with every library, and the motor-crank system made of the FMI 2 FMUs: `MotorCrank.ssp` and
-/// `motor-crank/` (OSP system structure beside both FMUs). Returns the paths written.
+/// with every library (the slider-crank's without arrays into `out_dir/fmi3/scalar/`), and the
+/// motor-crank system made of the FMI 2 FMUs: `MotorCrank.ssp` and `motor-crank/` (OSP system
+/// structure beside both FMUs), and of the FMI 3 FMUs every master loads, `fmi3/MotorCrank.ssp`.
+/// Returns the paths written.
 fn package(
     root: &Path,
     out_dir: &Path,
@@ -287,7 +309,7 @@ fn package(
     std::fs::create_dir_all(out_dir)?;
     let crank_binaries = &fmi2_binaries(binaries);
     let motor_binaries = &fmi2_binaries(motor_libraries);
-    let (guide, images) = documentation::slider_crank(root)?;
+    let (guide, images) = documentation::slider_crank(root, Edition::Fmi2)?;
     let crank_references = compatibility::slider_crank()?;
     let crank_fmu = out_dir.join(format!("{MODEL_IDENTIFIER}.fmu"));
     write_fmu(
@@ -305,7 +327,7 @@ fn package(
         &motor_fmu,
         motor,
         motor_binaries,
-        &documentation::motor(),
+        &documentation::motor(Edition::Fmi2),
         &[],
         &motor_references.fmu_entries(),
     )?;
@@ -313,21 +335,33 @@ fn package(
     motor_references.write_cross_check(out_dir, &motor_fmu, motor_binaries)?;
     let fmi3 = out_dir.join("fmi3");
     std::fs::create_dir_all(&fmi3)?;
+    std::fs::create_dir_all(fmi3.join("scalar"))?;
     let crank_fmu3 = fmi3.join(format!("{MODEL_IDENTIFIER}.fmu"));
-    write_fmu(
-        &crank_fmu3,
-        (MODEL_IDENTIFIER, MODEL_DESCRIPTION_FMI3),
-        &fmi3_binaries(binaries),
-        &guide,
-        &images,
-        &with_terminals(crank_references.fmu_entries(), TERMINALS_AND_ICONS_FMI3),
-    )?;
+    let crank_fmu3_scalar = fmi3.join("scalar").join(format!("{MODEL_IDENTIFIER}.fmu"));
+    for (fmu, description, edition) in [
+        (&crank_fmu3, MODEL_DESCRIPTION_FMI3, Edition::Fmi3),
+        (
+            &crank_fmu3_scalar,
+            MODEL_DESCRIPTION_FMI3_SCALAR,
+            Edition::Fmi3Scalar,
+        ),
+    ] {
+        let (guide, _) = documentation::slider_crank(root, edition)?;
+        write_fmu(
+            fmu,
+            (MODEL_IDENTIFIER, description),
+            &fmi3_binaries(binaries),
+            &guide,
+            &images,
+            &with_terminals(crank_references.fmu_entries(), TERMINALS_AND_ICONS_FMI3),
+        )?;
+    }
     let motor_fmu3 = fmi3.join(format!("{}.fmu", motor.0));
     write_fmu(
         &motor_fmu3,
         (motor.0, dc_motor::MODEL_DESCRIPTION_FMI3),
         &fmi3_binaries(motor_libraries),
-        &documentation::motor(),
+        &documentation::motor(Edition::Fmi3),
         &[],
         &with_terminals(
             motor_references.fmu_entries(),
@@ -337,18 +371,10 @@ fn package(
     let system = root.join("systems/motor-crank");
     let ssp = out_dir.join("MotorCrank.ssp");
     let fmus = [&motor_fmu, &crank_fmu];
-    let mut entries = vec![(
-        "SystemStructure.ssd".to_string(),
-        system.join("SystemStructure.ssd"),
-    )];
-    for fmu in fmus {
-        let name = fmu
-            .file_name()
-            .and_then(|n| n.to_str())
-            .unwrap_or("model.fmu");
-        entries.push((format!("resources/{name}"), fmu.clone()));
-    }
-    write_zip(&ssp, &entries)?;
+    write_ssp(&system, &ssp, fmus)?;
+    // the same system of the FMI 3 FMUs every master loads
+    let ssp3 = fmi3.join("MotorCrank.ssp");
+    write_ssp(&system, &ssp3, [&motor_fmu3, &crank_fmu3_scalar])?;
     compatibility::system()?.write_system(out_dir, &ssp)?;
     let osp = out_dir.join("motor-crank");
     std::fs::create_dir_all(&osp)?;
@@ -365,7 +391,9 @@ fn package(
         crank_fmu,
         motor_fmu,
         crank_fmu3,
+        crank_fmu3_scalar,
         motor_fmu3,
+        ssp3,
         ssp,
         osp,
         out_dir.join("compatibility"),

@@ -113,13 +113,17 @@ impl Model for SliderCrankFmu {
     const GUID: &'static str = super::model_description::GUID;
     const LOG_CATEGORIES: &'static [(&'static str, &'static str)] = LOG_CATEGORIES;
     const STATE_MAGIC: [u8; 4] = *b"FSCS";
-    const STATE_VERSION: u32 = 15;
+    const STATE_VERSION: u32 = 16;
     type Vr = Vr;
     const VARIABLES: &'static [Variable] = VARIABLES;
     const ENUMERATIONS: &'static [Enumeration] = ENUMERATIONS;
     const MAX_INPUT_DERIVATIVE_ORDER: u32 =
         crate::variables::DESCRIPTION.max_input_derivative_order;
     const FMI3: Fmi3Interface = crate::variables::FMI3;
+    const FMI3_TOKENS: [&'static str; 2] = [
+        super::model_description::FMI3_TOKEN,
+        super::model_description::FMI3_SCALAR_TOKEN,
+    ];
 
     fn new() -> Self {
         Self {

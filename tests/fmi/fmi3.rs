@@ -7,7 +7,7 @@ use std::ffi::{CStr, CString, c_char};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Mutex, OnceLock};
 
-use flexible_slider_crank::fmi::GUID;
+use flexible_slider_crank::fmi::FMI3_TOKEN as GUID;
 use flexible_slider_crank::simulation::CLOCK_RESOLUTION;
 use flexible_slider_crank::variables::{Causality, FMI3, Kind, N_SECTIONS, VARIABLES};
 use fmi_sys::fmi3::*;
@@ -732,5 +732,60 @@ fn intermediate_update_reads_every_internal_step_and_changes_nothing() {
             .any(|m| m.contains("fmi3FreeInstance: not allowed from inside fmi3DoStep")),
         "{:?}",
         paused.messages()
+    );
+}
+
+/// The FMU without arrays (its own token): no Configuration Mode, an array's value reference is
+/// unknown, the scalars read as with arrays; a token of neither description is refused, naming
+/// both.
+#[test]
+fn the_description_without_arrays_serves_scalars_only() {
+    use flexible_slider_crank::fmi::FMI3_SCALAR_TOKEN;
+    let (inst, _) = Instance3::try_new(FMI3_SCALAR_TOKEN, false, false);
+    let inst = inst.unwrap();
+    let last = |inst: &Instance3| inst.messages().last().cloned().unwrap_or_default();
+    // SAFETY: a live instance.
+    unsafe {
+        assert_eq!(fmu3().fmi3EnterConfigurationMode(inst.c), ERROR);
+        assert!(
+            last(&inst).contains("no structural parameters"),
+            "{}",
+            last(&inst)
+        );
+        assert_eq!(fmu3().fmi3Reset(inst.c), OK);
+        assert_eq!(
+            fmu3().fmi3EnterInitializationMode(inst.c, false, 0.0, 0.0, false, 0.0),
+            OK
+        );
+        assert_eq!(fmu3().fmi3ExitInitializationMode(inst.c), OK);
+    }
+    let moment = N_SECTIONS + 4;
+    assert_eq!(inst.get_float64(&[moment]).0, ERROR);
+    assert!(last(&inst).contains("1000005"), "{}", last(&inst));
+    let with_arrays = Instance3::initialized(false);
+    let outputs = real_outputs();
+    assert_eq!(with_arrays.do_step(0.0, 1e-3).0, OK);
+    // (the refused get put the first instance in the Error state: a fresh one steps)
+    let (fresh, _) = Instance3::try_new(FMI3_SCALAR_TOKEN, false, false);
+    let fresh = fresh.unwrap();
+    // SAFETY: a live instance.
+    unsafe {
+        assert_eq!(
+            fmu3().fmi3EnterInitializationMode(fresh.c, false, 0.0, 0.0, false, 0.0),
+            OK
+        );
+        assert_eq!(fmu3().fmi3ExitInitializationMode(fresh.c), OK);
+    }
+    assert_eq!(fresh.do_step(0.0, 1e-3).0, OK);
+    assert_eq!(
+        fresh.get_float64(&outputs).1,
+        with_arrays.get_float64(&outputs).1
+    );
+    let (refused, id) = Instance3::try_new("{not-this-fmu}", false, false);
+    assert!(refused.is_none());
+    let message = messages(id).join("\n");
+    assert!(
+        message.contains(GUID) && message.contains(FMI3_SCALAR_TOKEN),
+        "{message}"
     );
 }

@@ -92,13 +92,28 @@ pub(crate) fn create<M: Model>(
         logger.error(&format!("{call}: instanceName must not be NULL or empty."));
         return None;
     }
-    if guid != M::GUID {
-        logger.error(&format!(
-            "{call}: Wrong {token}: expected {}, got \"{guid}\".",
-            M::GUID
-        ));
-        return None;
-    }
+    let fmi3 = match version {
+        Version::Fmi2 if guid == M::GUID => M::FMI3,
+        Version::Fmi3 if guid == M::FMI3_TOKENS[0] => M::FMI3,
+        Version::Fmi3 if guid == M::FMI3_TOKENS[1] => M::FMI3.scalar(),
+        _ => {
+            let expected = match version {
+                Version::Fmi2 => M::GUID.to_string(),
+                Version::Fmi3 if M::FMI3_TOKENS[0] == M::FMI3_TOKENS[1] => {
+                    M::FMI3_TOKENS[0].to_string()
+                }
+                Version::Fmi3 => format!(
+                    "{} (with arrays) or {} (without)",
+                    M::FMI3_TOKENS[0],
+                    M::FMI3_TOKENS[1]
+                ),
+            };
+            logger.error(&format!(
+                "{call}: Wrong {token}: expected {expected}, got \"{guid}\"."
+            ));
+            return None;
+        }
+    };
     logger.event(&format!(
         "{call}: instance \"{name}\" created (resources: {})",
         resources
@@ -107,6 +122,7 @@ pub(crate) fn create<M: Model>(
     ));
     let mut instance = Instance::<M>::new(logger, resources);
     instance.version = version;
+    instance.serve(fmi3);
     Some(Box::new(instance))
 }
 

@@ -2,15 +2,16 @@
 //! Float64, Int32, Boolean and String variables, the switches as FMI 3 Enumerations, the
 //! independent variable `time`, and ModelStructure by value reference (FMI 3.0 §2.4).
 //!
-//! The instantiation token is the FMI 2 GUID: both descriptions come from one table, so they
-//! change together.
+//! The instantiation token is the description's own: an FNV-1a 128 hash of its text (with a
+//! placeholder where the token goes), like the FMI 2 GUID, so that a change only FMI 3 sees (its
+//! arrays, structural parameters, terminals' variables) changes it.
 
 use std::fmt::Write as _;
 
 use super::interface::{ArrayVariable, Fmi3Interface, StructuralParameter};
 use crate::description::{
-    Description, attributes, check, escape, log_categories_and_experiment, real_attributes,
-    unit_definitions,
+    Description, GUID_PLACEHOLDER, attributes, check, escape, guid, log_categories_and_experiment,
+    real_attributes, unit_definitions,
 };
 use crate::table::{Causality, Kind, ValueReference, Variable};
 
@@ -18,20 +19,26 @@ use crate::table::{Causality, Kind, ValueReference, Variable};
 /// own value references are dense from 0, so this one stays clear of any it will ever have).
 pub const TIME_VALUE_REFERENCE: u32 = 1_000_000;
 
-/// The FMI 3.0 modelDescription.xml of `d` with the FMI 3 additions `fmi3`, and `token` as its
+/// The FMI 3.0 modelDescription.xml of `d` with the FMI 3 additions `fmi3`, and its
 /// instantiationToken.
 pub fn model_description<V: ValueReference>(
     d: &Description<V>,
     fmi3: Fmi3Interface,
-    token: &str,
-) -> Result<String, String> {
+) -> Result<(String, String), String> {
+    let template = render(d, fmi3)?;
+    let token = guid(&template);
+    Ok((template.replace(GUID_PLACEHOLDER, &token), token))
+}
+
+/// The description with [`GUID_PLACEHOLDER`] for its token.
+fn render<V: ValueReference>(d: &Description<V>, fmi3: Fmi3Interface) -> Result<String, String> {
     check(d)?;
     check_interface(d, fmi3)?;
     let mut x = String::new();
     let _ = writeln!(x, r#"<?xml version="1.0" encoding="UTF-8"?>"#);
     let _ = writeln!(
         x,
-        r#"<fmiModelDescription fmiVersion="3.0" modelName="{}" instantiationToken="{token}"
+        r#"<fmiModelDescription fmiVersion="3.0" modelName="{}" instantiationToken="{GUID_PLACEHOLDER}"
   description="{}"
   author="{}" version="{}" copyright="{}" license="{}"
   generationTool="{}" variableNamingConvention="structured">"#,

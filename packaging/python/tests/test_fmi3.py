@@ -1,6 +1,7 @@
 """The FMI 3.0 FMUs through fmpy's FMI 3 master: valid, bit-identical to their FMI 2 twins at the
 DefaultExperiment and in the motor-crank system, and, with early return allowed (and event mode),
 returning at the slider-crank's contact onsets without changing what the run computes."""
+import re
 import zipfile
 from pathlib import Path
 
@@ -30,7 +31,8 @@ def test_fmi3_fmus_are_valid(root, model):
 def test_fmi3_declares_its_capabilities(root, model):
     """Co-simulation only; early return, event mode and intermediate update where the model has
     events and internal steps worth reading (the slider-crank); the same variables as FMI 2, the
-    switches as Enumerations, and the binary in FMI 3's platform folder."""
+    switches as Enumerations, the binary in FMI 3's platform folder, and an instantiation token of its
+    own (its description's hash, not the FMI 2 GUID)."""
     md3 = read_model_description(fmi3_fmu(root, model))
     md2 = read_model_description(fmi2_fmu(root, model))
     assert md3.fmiVersion == "3.0" and md3.modelExchange is None
@@ -40,7 +42,8 @@ def test_fmi3_declares_its_capabilities(root, model):
     assert cs.providesIntermediateUpdate == crank
     assert cs.canReturnEarlyAfterIntermediateUpdate == crank
     assert cs.canGetAndSetFMUstate and cs.canSerializeFMUstate
-    assert md3.instantiationToken == md2.guid
+    assert md3.instantiationToken != md2.guid
+    assert re.fullmatch(r"\{[0-9a-f]{8}(-[0-9a-f]{4}){3}-[0-9a-f]{12}\}", md3.instantiationToken)
     (time,) = [v for v in md3.modelVariables if v.causality == "independent"]
     assert time.name == "time" and time.type == "Float64"
     # (the structural parameter and the arrays are FMI 3's own: tests/test_fmi3_arrays.py)

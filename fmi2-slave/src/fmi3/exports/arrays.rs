@@ -30,7 +30,7 @@ pub(super) fn scalars(n_value_references: usize, n_values: usize) -> Result<(), 
 /// Enters Configuration Mode, where the structural parameters are set.
 pub unsafe fn fmi3EnterConfigurationMode<M: Model>(instance: fmi3Instance) -> fmi3Status {
     with_instance::<M>(instance, Call::EnterConfigurationMode, |inst| {
-        if M::FMI3.structural_parameters.is_empty() {
+        if inst.fmi3.structural_parameters.is_empty() {
             return Err(FmuError::Invalid(
                 "not supported: the FMU has no structural parameters".into(),
             ));
@@ -66,7 +66,7 @@ pub unsafe fn fmi3GetUInt64<M: Model>(
             )
         };
         for (&r, value) in vr.iter().zip(values) {
-            let (index, _) = structural::<M>(r)?;
+            let (index, _) = structural(inst, r)?;
             *value = inst.structural[index];
         }
         Ok(OK)
@@ -91,7 +91,7 @@ pub unsafe fn fmi3SetUInt64<M: Model>(
             )
         };
         for (&r, &value) in vr.iter().zip(values) {
-            let (_, p) = structural::<M>(r)?;
+            let (_, p) = structural(inst, r)?;
             if !(p.min..=p.max).contains(&value) {
                 return Err(FmuError::Invalid(format!(
                     "{} = {value} is outside the allowed range [{}, {}]",
@@ -100,7 +100,8 @@ pub unsafe fn fmi3SetUInt64<M: Model>(
             }
         }
         for (&r, &value) in vr.iter().zip(values) {
-            inst.structural[structural::<M>(r)?.0] = value;
+            let index = structural(inst, r)?.0;
+            inst.structural[index] = value;
         }
         Ok(OK)
     })
@@ -109,13 +110,14 @@ pub unsafe fn fmi3SetUInt64<M: Model>(
 /// The structural parameter with value reference `vr`, with its index; any other value reference
 /// is refused, named.
 fn structural<M: Model>(
+    inst: &Instance<M>,
     vr: u32,
 ) -> Result<(usize, &'static crate::fmi3::interface::StructuralParameter), FmuError> {
-    M::FMI3.structural_parameter(vr).ok_or_else(|| match vr {
+    inst.fmi3.structural_parameter(vr).ok_or_else(|| match vr {
         TIME_VALUE_REFERENCE => {
             FmuError::Invalid(format!("value reference {vr} (time) is not of type UInt64"))
         }
-        _ => match M::FMI3.array(vr) {
+        _ => match inst.fmi3.array(vr) {
             Some((_, a)) => FmuError::Invalid(format!(
                 "value reference {vr} ({}) is not of type UInt64",
                 a.name
@@ -129,7 +131,7 @@ fn structural<M: Model>(
 
 /// The number of values of the Float64 variable `vr`: its array's size, or 1.
 fn size<M: Model>(inst: &Instance<M>, vr: u32) -> usize {
-    M::FMI3.array(vr).map_or(1, |(_, a)| {
+    inst.fmi3.array(vr).map_or(1, |(_, a)| {
         usize::try_from(inst.structural[a.dimension]).unwrap_or(usize::MAX)
     })
 }
@@ -158,7 +160,7 @@ pub fn get_float64<M: Model>(
         if r == TIME_VALUE_REFERENCE {
             values[at] = inst.model.last_successful_time();
             (i, at) = (i + 1, at + 1);
-        } else if let Some((index, _)) = M::FMI3.array(r) {
+        } else if let Some((index, _)) = inst.fmi3.array(r) {
             let n = size(inst, r);
             inst.model
                 .get_array(&inst.logger, index, &mut values[at..at + n])?;
@@ -166,7 +168,7 @@ pub fn get_float64<M: Model>(
         } else {
             let run = vr[i..]
                 .iter()
-                .take_while(|&&r| r != TIME_VALUE_REFERENCE && M::FMI3.array(r).is_none())
+                .take_while(|&&r| r != TIME_VALUE_REFERENCE && inst.fmi3.array(r).is_none())
                 .count();
             resolve::<M>(&vr[i..i + run], "Float64", &mut inst.variables)?;
             inst.model
@@ -178,8 +180,8 @@ pub fn get_float64<M: Model>(
 }
 
 /// The refusal of a Float64 array in a set call: every array is computed.
-pub fn refuse_arrays<M: Model>(vr: &[u32]) -> Result<(), FmuError> {
-    match vr.iter().find_map(|&r| M::FMI3.array(r)) {
+pub fn refuse_arrays<M: Model>(inst: &Instance<M>, vr: &[u32]) -> Result<(), FmuError> {
+    match vr.iter().find_map(|&r| inst.fmi3.array(r)) {
         Some((_, a)) => Err(FmuError::Invalid(format!(
             "{} is computed by the FMU and cannot be set",
             a.name

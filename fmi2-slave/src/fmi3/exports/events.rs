@@ -17,7 +17,7 @@ use crate::state::{Call, State};
 pub unsafe fn fmi3EnterEventMode<M: Model>(instance: fmi3Instance) -> fmi3Status {
     with_instance::<M>(instance, Call::EnterEventMode, |inst| {
         if !inst.event_mode_used {
-            return Err(FmuError::Invalid(if M::FMI3.has_event_mode {
+            return Err(FmuError::Invalid(if inst.fmi3.has_event_mode {
                 "the instance was created with eventModeUsed = false".into()
             } else {
                 "not supported: the FMU has no event mode (hasEventMode = false)".into()

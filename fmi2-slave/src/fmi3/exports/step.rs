@@ -143,7 +143,8 @@ unsafe fn step<M: Model>(
     };
     if let (Ok(StepOutcome::Paused { time }), Some(update)) = (&result, inst.intermediate_update) {
         inst.state = State::IntermediateUpdate;
-        let can_return_early = early_allowed && M::FMI3.can_return_early_after_intermediate_update;
+        let can_return_early =
+            early_allowed && inst.fmi3.can_return_early_after_intermediate_update;
         *pause = Some((*time, update, can_return_early));
         return Ok(OK);
     }

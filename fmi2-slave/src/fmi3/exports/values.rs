@@ -88,7 +88,7 @@ pub unsafe fn fmi3SetFloat64<M: Model>(
 ) -> fmi3Status {
     with_instance::<M>(instance, Call::SetReal, |inst| {
         // SAFETY: nValueReferences value references (FMI 3.0 §2.3.6).
-        refuse_arrays::<M>(unsafe {
+        refuse_arrays(inst, unsafe {
             slice(valueReferences, nValueReferences, "valueReferences")
         }?)?;
         // SAFETY: nValueReferences and nValues elements (FMI 3.0 §2.3.6).
