@@ -26,7 +26,7 @@
 use nalgebra::{Matrix2, Matrix4, SMatrix, SVector, Vector2, Vector4};
 
 use super::shape::{shape, shape_x, shape_xx};
-use crate::quadrature::{GAUSS_2, GAUSS_3, GAUSS_5};
+use crate::quadrature::{GAUSS_3, GAUSS_5};
 
 /// Element coordinate vector e = [r₁, r₁,ₓ, r₂, r₂,ₓ].
 pub type ElementVector = SVector<f64, 8>;
@@ -61,8 +61,6 @@ pub struct Element {
     l: f64,
     axial: [GaussPoint; 5],
     bending: [GaussPoint; 3],
-    /// The two Gauss points, where the element's curvature is superconvergent (the stress points).
-    barlow: [GaussPoint; 2],
 }
 
 /// Axial strain and its first variation at a point.
@@ -144,7 +142,6 @@ impl Element {
             l,
             axial: std::array::from_fn(|i| point(GAUSS_5.unit_node(i, l))),
             bending: std::array::from_fn(|i| point(GAUSS_3.unit_node(i, l))),
-            barlow: std::array::from_fn(|i| point(GAUSS_2.unit_node(i, l))),
         }
     }
 
@@ -384,16 +381,6 @@ impl Element {
             .map(|p| p.weight * ei * Self::curvature_at(p, e).powi(2))
             .sum();
         0.5 * (axial + bending)
-    }
-
-    /// Axial strain ε and curvature κ at the element's two Gauss points, ξ = (1 ∓ 1/√3)/2, where
-    /// the curvature of cubic Hermite elements is superconvergent: with exact nodal values (a
-    /// beam under a uniform load) the element's linear curvature is the L² projection of the exact
-    /// quadratic one, which it meets exactly there (J. Barlow (1976), Int. J. Numer. Meth. Eng. 10,
-    /// 243–251). The stress resultants are N = EA ε and M = EI κ.
-    pub fn strain_at_stress_points(&self, e: &ElementVector) -> [(f64, f64); 2] {
-        self.barlow
-            .map(|p| (Self::strain_at(&p, e), Self::curvature_at(&p, e)))
     }
 
     /// Position r(x) = S(x) e at arc length `x` ∈ [0, l] on the reference.

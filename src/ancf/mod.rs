@@ -15,5 +15,6 @@ pub mod rod;
 pub mod shape;
 
 pub use element::{Element, Section};
+pub use rod::equilibrium::RodLoad;
 pub use rod::sections::{SectionResult, section_place};
 pub use rod::{NormalStresses, Rod, RodProperties};

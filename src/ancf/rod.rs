@@ -123,45 +123,6 @@ impl RodProperties {
     }
 }
 
-/// Weights of the four Gauss-point values of two neighbouring elements (at a, b, 1 + a, 1 + b
-/// element lengths from the patch's start, a, b = (1 ∓ 1/√3)/2) in the value of their
-/// least-squares quadratic at the patch's start (a pin): the first row of (VᵀV)⁻¹Vᵀ for the
-/// points' Vandermonde matrix V (checked by a unit test), and at the first element's mid-point and
-/// at the node between the elements. The patch's end and its second element's mid-point take the
-/// mirrored weights.
-const PATCH_AT_END: [f64; 4] = [
-    1.418_856_620_135_745_3,
-    -0.168_856_620_135_744,
-    -0.485_843_918_243_526,
-    0.235_843_918_243_524_58,
-];
-/// See [`PATCH_AT_END`].
-const PATCH_AT_HALF: [f64; 4] = [
-    0.473_584_391_824_351,
-    0.401_415_608_175_649,
-    0.242_921_959_121_758_43,
-    -0.117_921_959_121_758_76,
-];
-/// See [`PATCH_AT_END`].
-const PATCH_AT_NODE: [f64; 4] = [
-    -0.038_675_134_594_817_306,
-    0.538_675_134_594_817,
-    0.538_675_134_594_817_2,
-    -0.038_675_134_594_816_97,
-];
-
-/// A one-element rod's linear field through its two Gauss-point values (given twice, as
-/// [g₁, g₂, g₁, g₂]) at ξ = 0, 1/2 and 1.
-const SINGLE_ELEMENT: [[f64; 4]; 3] = {
-    let (a, b) = GAUSS_POINTS;
-    let (w, v) = (0.5 * b / (b - a), -0.5 * a / (b - a));
-    [[w, v, w, v], [0.25; 4], [v, w, v, w]]
-};
-
-/// The places (element fractions) of an element's two Gauss points, (1 ∓ 1/√3)/2, at which the
-/// patch weights above read the strains.
-const GAUSS_POINTS: (f64, f64) = (0.211_324_865_405_187_1, 0.788_675_134_594_812_9);
-
 /// The normal stresses of a rod in one state ([`Rod::normal_stresses`]; SI units).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct NormalStresses {
@@ -178,40 +139,6 @@ pub struct NormalStresses {
     /// The bending moment at mid-span, positive where the rod turns left (counter-clockwise
     /// curvature) \[N m\].
     pub midspan_moment: f64,
-}
-
-/// The extremes of ε ± c |κ| over the samples of a rod, and where the largest magnitude lies.
-#[derive(Clone, Copy, Debug)]
-struct Field {
-    largest: f64,
-    max: f64,
-    min: f64,
-    location: f64,
-}
-
-impl Default for Field {
-    fn default() -> Self {
-        Self {
-            largest: 0.0,
-            max: f64::NEG_INFINITY,
-            min: f64::INFINITY,
-            location: 0.0,
-        }
-    }
-}
-
-impl Field {
-    /// Takes in the strains (ε, κ) at `place` along the rod, for the outer-fibre distance `c`.
-    fn add(&mut self, place: f64, (eps, kappa): (f64, f64), c: f64) {
-        let bending = c * kappa.abs();
-        let magnitude = eps.abs() + bending;
-        if magnitude > self.largest {
-            self.largest = magnitude;
-            self.location = place;
-        }
-        self.max = self.max.max(eps + bending);
-        self.min = self.min.min(eps - bending);
-    }
 }
 
 /// An assembled ANCF rod of `n` equal elements.
@@ -337,89 +264,6 @@ impl Rod {
     }
 
     /// The rod's normal stresses ([`NormalStresses`]): over the rod, σ = N/A ± |M| c/I =
-    /// E (ε ± c |κ|) (Euler–Bernoulli, c the outer-fibre distance), its largest magnitude
-    /// |N|/A + |M| c/I and where it lies, its most tensile and most compressive values, and the
-    /// axial force and bending moment at mid-span (N = EA ε, M = EI κ: tension and a left-turning
-    /// curvature positive).
-    ///
-    /// N and M are taken at the elements' Gauss points, where they are superconvergent
-    /// ([`Element::strain_at_stress_points`]), and recovered at the nodes and the element
-    /// mid-points from the least-squares quadratic through the four Gauss-point values of two
-    /// neighbouring elements (superconvergent patch recovery; O. C. Zienkiewicz, J. Z. Zhu (1992),
-    /// Int. J. Numer. Meth. Eng. 33, 1331–1364). The recovery is exact for a quadratic moment (a
-    /// beam under a uniform load), so the largest moment is found wherever it lies: at a node, in
-    /// an element, at a pin. A one-element rod uses its own linear field.
-    pub fn normal_stresses(&self, e: &[f64]) -> NormalStresses {
-        let n = self.n_elements;
-        let p = &self.properties;
-        let c = p.outer_fibre_distance;
-        // (ε, κ) at the Gauss points, in order along the rod (no allocation: at most 64 elements).
-        let mut points = [(0.0, 0.0); 2 * MAX_ELEMENTS];
-        for j in 0..n {
-            let [a, b] = self
-                .element
-                .strain_at_stress_points(&Self::element_coordinates(e, j));
-            points[2 * j] = a;
-            points[2 * j + 1] = b;
-        }
-        let points = &points[..2 * n];
-        let combine = |weights: &[f64; 4], values: &[(f64, f64)]| {
-            weights
-                .iter()
-                .zip(values)
-                .fold((0.0, 0.0), |(eps, kappa), (w, v)| {
-                    (eps + w * v.0, kappa + w * v.1)
-                })
-        };
-        // Every sample: its place along the rod (a fraction of its length) and (ε, κ) there.
-        let mut field = Field::default();
-        let (a, b) = GAUSS_POINTS;
-        let element = 1.0 / n as f64;
-        for (k, &point) in points.iter().enumerate() {
-            let offset = if k % 2 == 0 { a } else { b };
-            field.add(((k / 2) as f64 + offset) * element, point, c);
-        }
-        let mirrored = |w: &[f64; 4]| [w[3], w[2], w[1], w[0]];
-        let midspan = if n == 1 {
-            let doubled = [points[0], points[1], points[0], points[1]];
-            for (weights, place) in SINGLE_ELEMENT.iter().zip([0.0, 0.5, 1.0]) {
-                field.add(place, combine(weights, &doubled), c);
-            }
-            combine(&SINGLE_ELEMENT[1], &doubled)
-        } else if n % 2 == 0 {
-            combine(&PATCH_AT_NODE, &points[n - 2..n + 2])
-        } else {
-            combine(&PATCH_AT_HALF, &points[n - 1..n + 3])
-        };
-        // Patch j: elements j and j + 1, its points at a, b, 1 + a, 1 + b element lengths.
-        for j in 0..n.saturating_sub(1) {
-            let patch = &points[2 * j..2 * j + 4];
-            field.add((j + 1) as f64 * element, combine(&PATCH_AT_NODE, patch), c);
-            field.add(
-                (j as f64 + 0.5) * element,
-                combine(&PATCH_AT_HALF, patch),
-                c,
-            );
-            if j == 0 {
-                field.add(0.0, combine(&PATCH_AT_END, patch), c);
-            }
-            if j + 2 == n {
-                let half = combine(&mirrored(&PATCH_AT_HALF), patch);
-                field.add((j as f64 + 1.5) * element, half, c);
-                field.add(1.0, combine(&mirrored(&PATCH_AT_END), patch), c);
-            }
-        }
-        let modulus = p.youngs_modulus;
-        NormalStresses {
-            largest: modulus * field.largest,
-            max: modulus * field.max,
-            min: modulus * field.min,
-            location: field.location,
-            midspan_axial_force: modulus * p.area * midspan.0,
-            midspan_moment: modulus * p.second_moment_of_area * midspan.1,
-        }
-    }
-
     /// Strain energy U(e) = Σ element energies \[J\].
     pub fn strain_energy(&self, e: &[f64]) -> f64 {
         (0..self.n_elements)
@@ -483,6 +327,7 @@ pub fn kron_identity(a: &Mat<f64>) -> Mat<f64> {
     })
 }
 
+pub mod equilibrium;
 pub mod sections;
 
 #[cfg(test)]

@@ -16,9 +16,10 @@
 //! main bearing gives its force by its joint law instead (F_A = −F, F_O = F, with F the force on
 //! the journal), exact in every state, as the rod–slider joint's is.
 //!
-//! The stress: for a flexible rod from its strains ([`crate::ancf::Rod::normal_stresses`]);
-//! for the rigid rod from the equilibrium of its parts under the pin force and the distributed
-//! inertia and gravity (d'Alembert), in closed form ([`rigid_rod_stress`]).
+//! The stress: from the equilibrium of the rod's parts under the pin force (and a worn crank
+//! pin's moment) and the distributed inertia and gravity (d'Alembert): for a flexible rod by quadrature over its elements
+//! ([`crate::ancf::Rod::normal_stresses`]), for the rigid rod in closed form
+//! ([`rigid_rod_stress`]).
 //!
 //! With masses lumped at the pins (the rod's eyes, m_A and m_B) the pin forces move them too: the
 //! rod's shank receives F_A − m_A (a_A − g) at A and F_B − m_B (a_B − g) at B, which set the axial
@@ -29,6 +30,7 @@ use nalgebra::Vector2;
 use super::layout::{CRANK_ANGLE, PIN_A, pair};
 use super::rod_body::RodBody;
 use super::slider_crank::SliderCrank;
+use crate::ancf::RodLoad;
 use crate::ancf::{NormalStresses, RodProperties, SectionResult, section_place};
 use crate::joint::JointRole;
 use crate::math;
@@ -74,25 +76,19 @@ impl SliderCrank {
         } else {
             self.crank.mass * crank_centre_acceleration + crank_pin - self.crank.mass * self.gravity
         };
+        let load = self.rod_load(y, dy, crank_pin, joint_force);
         let deformation = match &mut self.rod {
             RodBody::Rigid { .. } => {
                 let (r_a, r_b) = (pair(y, PIN_A), pair(y, l.pin_b()));
                 let t = (r_b - r_a).normalize();
                 let accelerations = [pair(dy, l.rate_of(PIN_A)), pair(dy, l.rate_of(l.pin_b()))];
-                let [shank_a, _] = self.shank_forces(dy, crank_pin, joint_force);
                 Deformation {
                     energy: 0.0,
-                    stresses: rigid_rod_stress(
-                        &self.rod_data.section,
-                        t,
-                        accelerations,
-                        shank_a,
-                        self.gravity,
-                    ),
+                    stresses: rigid_rod_stress(&self.rod_data.section, t, accelerations, &load),
                     tangents: [t, t],
                 }
             }
-            RodBody::Flexible(model) => model.deformation(&y[l.rod()]),
+            RodBody::Flexible(model) => model.deformation(&y[l.rod()], &dy[l.rod_rates()], &load),
         };
         let [t_a, t_b] = deformation.tangents;
         let [shank_a, shank_b] = self.shank_forces(dy, crank_pin, joint_force);
@@ -110,9 +106,9 @@ impl SliderCrank {
 impl SliderCrank {
     /// The rod's `result` at `out.len()` evenly spaced sections from the crank pin to the slider
     /// pin ([`section_place`]) in state `y` whose time derivative is `dy` (only its accelerations
-    /// are read), with `joint_force` the rod–slider joint's force on the journal: for the flexible
-    /// rod from its shape and strains ([`crate::ancf::Rod::section_result`]), for the rigid rod
-    /// from the equilibrium of its parts ([`RigidRodResultants`]; no deflection).
+    /// are read), with `joint_force` the rod–slider joint's force on the journal: the deflection
+    /// from the flexible rod's shape, the resultants from the equilibrium of the rod's parts
+    /// ([`crate::ancf::Rod::sections`], [`RigidRodResultants`]; the rigid rod has no deflection).
     pub fn rod_sections(
         &mut self,
         y: &[f64],
@@ -122,20 +118,20 @@ impl SliderCrank {
         out: &mut [f64],
     ) {
         let l = self.layout;
+        let crank_pin = self.crank_pin_force(y, dy, joint_force);
+        let load = self.rod_load(y, dy, crank_pin, joint_force);
         if let RodBody::Flexible(model) = &mut self.rod {
-            model.sections(&y[l.rod()], result, out);
+            model.sections(&y[l.rod()], &dy[l.rod_rates()], &load, result, out);
             return;
         }
         if result == SectionResult::Deflection {
             out.fill(0.0);
             return;
         }
-        let crank_pin = self.crank_pin_force(y, dy, joint_force);
-        let [shank_a, _] = self.shank_forces(dy, crank_pin, joint_force);
         let t = (pair(y, l.pin_b()) - pair(y, PIN_A)).normalize();
         let accelerations = [pair(dy, l.rate_of(PIN_A)), pair(dy, l.rate_of(l.pin_b()))];
         let section = &self.rod_data.section;
-        let r = RigidRodResultants::new(section, t, accelerations, shank_a, self.gravity);
+        let r = RigidRodResultants::new(section, t, accelerations, &load);
         let n = out.len();
         for (k, value) in out.iter_mut().enumerate() {
             let s = section_place(k, n) * section.length;
@@ -168,6 +164,29 @@ impl SliderCrank {
         Vector2::new(momentum(0), momentum(1)) - joint_force - self.rod_data.mass * self.gravity
     }
 
+    /// What the rod's section resultants balance besides its inertia and weight: the force on its
+    /// shank at the crank pin ([`SliderCrank::shank_forces`]) and a worn crank pin's moment on its
+    /// eye (the film's or the contact's friction and the force's lever about the eye's centre).
+    fn rod_load(
+        &self,
+        y: &[f64],
+        dy: &[f64],
+        crank_pin: Vector2<f64>,
+        joint_force: Vector2<f64>,
+    ) -> RodLoad {
+        let [start_force, _] = self.shank_forces(dy, crank_pin, joint_force);
+        let start_moment = if self.has_clearance(JointRole::CrankPin) {
+            self.joint_force(JointRole::CrankPin, y).0.bearing_moment
+        } else {
+            0.0
+        };
+        RodLoad {
+            start_force,
+            start_moment,
+            gravity: self.gravity,
+        }
+    }
+
     /// The forces on the rod's shank at its ends, the pin forces `crank_pin` (of the crank on the
     /// rod at A) and `joint_force` (on the rod's journal at B) less what accelerates the end masses:
     /// F − m (a − g) at each pin, with the accelerations of `dy`.
@@ -188,18 +207,20 @@ impl SliderCrank {
 }
 
 /// The section resultants of a rigid uniform rod with unit direction `t` (crank → slider), pin
-/// accelerations `accelerations` = [a_A, a_B], loaded by the force `f_a` of the crank at pin A,
-/// its weight and its inertia (the slider pin's force closes the balance).
+/// accelerations `accelerations` = [a_A, a_B], loaded by the force F_A and the moment M_A at pin
+/// A and by gravity g ([`RodLoad`]), and by its inertia (the slider pin's force and moment close
+/// the balance).
 ///
 /// The rod's acceleration field is linear along it, a(u) = a_A + (a_B − a_A) u/l, so the load per
 /// length q(u) = ρA (g − a(u)) is linear too, with axial part q·t = p₀ + p₁u and transverse part
 /// t × q = α + βu. The equilibrium of the part [0, s] gives the axial force (tension positive) and
 /// the bending moment (positive where the rod turns left)
 /// ```text
-/// N(s) = −F_A·t − p₀ s − p₁ s²/2,      M(s) = (t × F_A) s + α s²/2 + β s³/6.
+/// N(s) = −F_A·t − p₀ s − p₁ s²/2,      M(s) = −M_A + (t × F_A) s + α s²/2 + β s³/6.
 /// ```
 #[derive(Clone, Copy, Debug)]
 pub struct RigidRodResultants {
+    m0: f64,
     n0: f64,
     p0: f64,
     p1: f64,
@@ -214,14 +235,15 @@ impl RigidRodResultants {
         section: &RodProperties,
         t: Vector2<f64>,
         accelerations: [Vector2<f64>; 2],
-        f_a: Vector2<f64>,
-        g: Vector2<f64>,
+        load: &RodLoad,
     ) -> Self {
         let cross = |a: Vector2<f64>, b: Vector2<f64>| a.x * b.y - a.y * b.x;
         let rho_a = section.density * section.area;
         let [a_a, a_b] = accelerations;
+        let (f_a, g) = (load.start_force, load.gravity);
         let (q0, q1) = (rho_a * (g - a_a), -rho_a * (a_b - a_a) / section.length);
         Self {
+            m0: -load.start_moment,
             n0: -f_a.dot(&t),
             p0: q0.dot(&t),
             p1: q1.dot(&t),
@@ -238,7 +260,7 @@ impl RigidRodResultants {
 
     /// M(s) \[N m\] at arc length `s` from pin A.
     pub fn moment(&self, s: f64) -> f64 {
-        self.f_perp * s + 0.5 * self.alpha * s * s + self.beta * s * s * s / 6.0
+        self.m0 + self.f_perp * s + 0.5 * self.alpha * s * s + self.beta * s * s * s / 6.0
     }
 }
 
@@ -250,12 +272,11 @@ pub fn rigid_rod_stress(
     section: &RodProperties,
     t: Vector2<f64>,
     accelerations: [Vector2<f64>; 2],
-    f_a: Vector2<f64>,
-    g: Vector2<f64>,
+    load: &RodLoad,
 ) -> NormalStresses {
     let (length, area) = (section.length, section.area);
     let bending = section.outer_fibre_distance / section.second_moment_of_area;
-    let r = RigidRodResultants::new(section, t, accelerations, f_a, g);
+    let r = RigidRodResultants::new(section, t, accelerations, load);
     let (axial, moment) = (|s| r.axial(s), |s| r.moment(s));
     let RigidRodResultants {
         p0,
@@ -319,8 +340,8 @@ mod tests {
     use super::*;
 
     /// The closed form against a dense sampling of the fibres' stresses N/A ± |M| c/I from the
-    /// parts' equilibrium summed numerically: a rod with a pin force, inertia and oblique
-    /// gravity. The largest magnitude, the most tensile and the most compressive stress within
+    /// parts' equilibrium summed numerically: a rod with a pin force and moment, inertia and
+    /// oblique gravity. The largest magnitude, the most tensile and the most compressive stress within
     /// 1e-6, the largest's place within 1e-3 of the length, the mid-span section's axial force and
     /// moment within 1e-6.
     #[test]
@@ -330,7 +351,13 @@ mod tests {
         let accelerations = [Vector2::new(-900.0, 4000.0), Vector2::new(2500.0, -300.0)];
         let f_a = Vector2::new(700.0, -1500.0);
         let g = Vector2::new(3.0, -9.81);
-        let stress = rigid_rod_stress(&section, t, accelerations, f_a, g);
+        let m_a = 35.0;
+        let load = RodLoad {
+            start_force: f_a,
+            start_moment: m_a,
+            gravity: g,
+        };
+        let stress = rigid_rod_stress(&section, t, accelerations, &load);
         let (l, n) = (section.length, 20_000);
         let rho_a = section.density * section.area;
         let bending = section.outer_fibre_distance / section.second_moment_of_area;
@@ -338,7 +365,7 @@ mod tests {
         let (mut largest, mut max, mut min) = (0.0f64, f64::NEG_INFINITY, f64::INFINITY);
         let (mut location, mut midspan) = (0.0, (0.0, 0.0));
         // March along the rod: the internal force T and moment M of the part [0, s].
-        let (mut force, mut moment) = (-f_a, 0.0f64);
+        let (mut force, mut moment) = (-f_a, m_a);
         let cross = |a: Vector2<f64>, b: Vector2<f64>| a.x * b.y - a.y * b.x;
         for k in 0..=n {
             let s = k as f64 * ds;

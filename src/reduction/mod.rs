@@ -19,7 +19,8 @@ pub use sampling::SampledForces;
 
 use nalgebra::Vector2;
 
-use crate::ancf::{NormalStresses, Rod, SectionResult, section_place};
+use crate::ancf::RodLoad;
+use crate::ancf::{NormalStresses, Rod, SectionResult};
 use crate::error::ModelError;
 
 /// How the reduced rod integrates its internal forces and strain energy.
@@ -36,7 +37,7 @@ pub enum Quadrature {
 pub struct Deformation {
     /// Strain energy \[J\].
     pub energy: f64,
-    /// The rod's normal stresses ([`Rod::normal_stresses`]).
+    /// The rod's normal stresses from the equilibrium of its parts ([`Rod::normal_stresses`]).
     pub stresses: NormalStresses,
     /// Unit tangents r,ₓ/|r,ₓ| at the crank-pin end and at the slider-pin end.
     pub tangents: [Vector2<f64>; 2],
@@ -75,6 +76,8 @@ pub struct RodModel {
     end_slopes: [Vec<(usize, f64)>; 2],
     e: Vec<f64>,
     e_dot: Vec<f64>,
+    /// Nodal accelerations (section resultants).
+    e_ddot: Vec<f64>,
     q: Vec<f64>,
     k_full: Mat<f64>,
     k_work: Mat<f64>,
@@ -178,6 +181,7 @@ impl RodModel {
             end_masses: [0.0; 2],
             e: vec![0.0; n_full],
             e_dot: vec![0.0; n_full],
+            e_ddot: vec![0.0; n_full],
             q: vec![0.0; n_full],
             k_full: Mat::zeros(n_full, n_full),
             k_work: Mat::zeros(n_full, n),
@@ -327,10 +331,11 @@ impl RodModel {
         }
     }
 
-    /// The rod's strain energy, largest normal stress and end tangents at `p`, from one expansion
-    /// to nodal coordinates.
-    pub fn deformation(&mut self, p: &[f64]) -> Deformation {
+    /// The rod's strain energy, normal stresses and end tangents at `p` with accelerations
+    /// `p_ddot` under `load`, from one expansion to nodal coordinates.
+    pub fn deformation(&mut self, p: &[f64], p_ddot: &[f64], load: &RodLoad) -> Deformation {
         let e = nodal(self.reduction.as_ref(), &mut self.e, p);
+        let e_ddot = nodal(self.reduction.as_ref(), &mut self.e_ddot, p_ddot);
         let last = self.rod.last_node_offset();
         let unit = |at: usize| Vector2::new(e[at], e[at + 1]).normalize();
         Deformation {
@@ -338,7 +343,7 @@ impl RodModel {
                 Some(sampled) => sampled.strain_energy(p),
                 None => self.rod.strain_energy(e),
             },
-            stresses: self.rod.normal_stresses(e),
+            stresses: self.rod.normal_stresses(e, e_ddot, load),
             tangents: [unit(2), unit(last + 2)],
         }
     }
@@ -351,13 +356,18 @@ impl RodModel {
     }
 
     /// The rod's `result` at `out.len()` evenly spaced sections from its first node to its last
-    /// ([`section_place`]), from one expansion to nodal coordinates.
-    pub fn sections(&mut self, p: &[f64], result: SectionResult, out: &mut [f64]) {
+    /// ([`crate::ancf::section_place`]) at `p` with accelerations `p_ddot` under `load`.
+    pub fn sections(
+        &mut self,
+        p: &[f64],
+        p_ddot: &[f64],
+        load: &RodLoad,
+        result: SectionResult,
+        out: &mut [f64],
+    ) {
         let e = nodal(self.reduction.as_ref(), &mut self.e, p);
-        let n = out.len();
-        for (k, value) in out.iter_mut().enumerate() {
-            *value = self.rod.section_result(e, result, section_place(k, n));
-        }
+        let e_ddot = nodal(self.reduction.as_ref(), &mut self.e_ddot, p_ddot);
+        self.rod.sections(e, e_ddot, load, result, out);
     }
 
     /// For each model coordinate, the largest displacement along the rod \[m\] per unit of it:

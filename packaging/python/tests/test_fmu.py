@@ -323,8 +323,11 @@ def test_directional_derivatives_agree_with_central_differences(fmu):
     """fmi2GetDirectionalDerivative (fmpy's getDirectionalDerivative) gives ∂y/∂u of every Real
     output with respect to every input, 2 ms into benchmark B, in every drive x joint x rod
     model: within 1e-6 of the master's own central differences (step 3e-4 max(1, |u|)), beyond
-    those differences' round-off 4 eps |y| / h; exactly zero where no feedthrough is declared. A
-    peak-hold output is compared where the master's differences stay on one side of its kink."""
+    those differences' round-off 16 eps |y| / h (measured on a line of 41 input values: the rod's
+    stresses deviate from their straight line by up to 15 eps |y|, as their bending moment sums
+    moments of the pin force and the rod's inertia up to F l, larger than itself; other outputs
+    6 eps |y|); exactly zero where no feedthrough is declared. A peak-hold output is compared
+    where the master's differences stay on one side of its kink."""
     md = read_model_description(fmu)
     vr = {v.name: v.valueReference for v in md.modelVariables}
     inputs = [v.name for v in md.modelVariables if v.causality == "input"]
@@ -349,7 +352,7 @@ def test_directional_derivatives_agree_with_central_differences(fmu):
             minus = np.array(s.getReal(ov))
             s.setReal([vr[u]], [x])
             difference = (plus - minus) / (2.0 * h)
-            bound = 1e-6 * np.abs(difference) + 4.0 * eps * np.abs(y) / h
+            bound = 1e-6 * np.abs(difference) + 16.0 * eps * np.abs(y) / h
             for o, d, c, b in zip(outputs, derivative, difference, bound):
                 if o in PEAKS:
                     # Differences across a kink of max(held, |value|) average both sides:
