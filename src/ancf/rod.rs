@@ -147,6 +147,8 @@ pub struct Rod {
     properties: RodProperties,
     n_elements: usize,
     element: Element,
+    /// The element's quarter pieces for the stress scan ([`Rod::normal_stresses`]).
+    quarters: equilibrium::Quarters,
 }
 
 impl Rod {
@@ -172,6 +174,7 @@ impl Rod {
             properties,
             n_elements,
             element,
+            quarters: equilibrium::Quarters::new(element.length()),
         })
     }
 

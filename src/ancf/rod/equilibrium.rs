@@ -15,8 +15,18 @@
 //! force, and rigid translation and rotation lie in the reduced rod's basis), the resultants at
 //! the slider end are the slider pin's force and moment: the section forces and the pin forces are
 //! one number, for the reduced rod as for the full one (the mode-acceleration idea: the inertia
-//! the modes carry, not the modes' truncated strains). The integrals are Gauss–Legendre with four
-//! points per piece, exact for the degree-6 integrand r × q of cubic elements.
+//! the modes carry, not the modes' truncated strains).
+//!
+//! With the element's shape functions S_m and nodal vectors e_m, ë_m (m = 1…4), a piece [a, b] of
+//! an element adds
+//! ```text
+//! ΔQ = ρA (L g − Σ I_m ë_m),
+//! ΔP = ρA (Σ I_m (e_m × g + r_A × ë_m) − L r_A × g − Σ J_mn e_m × ë_n),
+//! ```
+//! with L = b − a, I_m = ∫ S_m dx and J_mn = ∫ S_m S_n dx over the piece: constants of the piece,
+//! computed once for the quarter pieces the stress scan walks (Gauss–Legendre with four points,
+//! exact for the degree-6 products of cubics), so a scan costs the sixteen cross products
+//! e_m × ë_n of each element and a few sums per piece.
 //!
 //! # References
 //! - R. R. Craig, A. J. Kurdila (2006), Fundamentals of Structural Dynamics, 2nd ed., Wiley,
@@ -40,64 +50,134 @@ pub struct RodLoad {
     pub gravity: Vector2<f64>,
 }
 
-/// A walk along the rod from its first node, carrying Q and P up to where it is: local
-/// coordinate `at` of element `element`.
-struct Walk<'a> {
-    rod: &'a Rod,
-    e: &'a [f64],
-    e_ddot: &'a [f64],
-    load: &'a RodLoad,
-    element: usize,
-    at: f64,
-    q: Vector2<f64>,
-    p: f64,
+/// The integrals of an element's shape functions over a piece of it (module documentation).
+#[derive(Clone, Copy, Debug)]
+struct Piece {
+    length: f64,
+    single: [f64; 4],
+    /// J_mn at 4m + n.
+    double: [f64; 16],
+}
+
+impl Piece {
+    /// The piece from `from` to `to` of an element of length `l`.
+    fn new(l: f64, from: f64, to: f64) -> Self {
+        let length = (to - from).max(0.0);
+        let mut piece = Self {
+            length,
+            single: [0.0; 4],
+            double: [0.0; 16],
+        };
+        for (node, weight) in GAUSS_4.on_unit_interval(length) {
+            let s = shape((from + node * length) / l, l);
+            for m in 0..4 {
+                piece.single[m] += weight * s[m];
+                for n in 0..4 {
+                    piece.double[4 * m + n] += weight * s[m] * s[n];
+                }
+            }
+        }
+        piece
+    }
+}
+
+/// An element's quarter pieces, and its shape functions and their slopes at the quarter points
+/// (ξ = 0, 1/4, …, 1): what the stress scan reads, the same for every element of a rod.
+#[derive(Clone, Copy, Debug)]
+pub struct Quarters {
+    pieces: [Piece; 4],
+    shape: [Vector4<f64>; 5],
+    slope: [Vector4<f64>; 5],
+}
+
+impl Quarters {
+    /// The quarters of an element of length `l`.
+    pub fn new(l: f64) -> Self {
+        let xi = |k: usize| k as f64 / 4.0;
+        Self {
+            pieces: std::array::from_fn(|k| Piece::new(l, xi(k) * l, xi(k + 1) * l)),
+            shape: std::array::from_fn(|k| shape(xi(k), l)),
+            slope: std::array::from_fn(|k| shape_x(xi(k), l)),
+        }
+    }
 }
 
 fn cross(a: Vector2<f64>, b: Vector2<f64>) -> f64 {
     a.x * b.y - a.y * b.x
 }
 
+/// An element's nodal vector `m` of the rod's coordinates `v`.
+fn nodal(v: &[f64], j: usize, m: usize) -> Vector2<f64> {
+    Vector2::new(v[4 * j + 2 * m], v[4 * j + 2 * m + 1])
+}
+
+/// A walk along the rod from its first node, carrying Q and P up to where it is: local
+/// coordinate `at` of element `element`, whose cross products it holds.
+struct Walk<'a> {
+    rod: &'a Rod,
+    e: &'a [f64],
+    e_ddot: &'a [f64],
+    load: &'a RodLoad,
+    origin: Vector2<f64>,
+    element: usize,
+    at: f64,
+    /// ë_m, e_m × g + r_A × ë_m and e_m × ë_n (at 4m + n) of the element.
+    accelerations: [Vector2<f64>; 4],
+    linear: [f64; 4],
+    bilinear: [f64; 16],
+    q: Vector2<f64>,
+    p: f64,
+}
+
 impl<'a> Walk<'a> {
     fn new(rod: &'a Rod, e: &'a [f64], e_ddot: &'a [f64], load: &'a RodLoad) -> Self {
-        Self {
+        let mut walk = Self {
             rod,
             e,
             e_ddot,
             load,
+            origin: Vector2::new(e[0], e[1]),
             element: 0,
             at: 0.0,
+            accelerations: [Vector2::zeros(); 4],
+            linear: [0.0; 4],
+            bilinear: [0.0; 16],
             q: Vector2::zeros(),
             p: 0.0,
+        };
+        walk.enter(0);
+        walk
+    }
+
+    /// Enters element `j` at its start.
+    fn enter(&mut self, j: usize) {
+        self.element = j;
+        self.at = 0.0;
+        let g = self.load.gravity;
+        for m in 0..4 {
+            let (e_m, a_m) = (nodal(self.e, j, m), nodal(self.e_ddot, j, m));
+            self.accelerations[m] = a_m;
+            self.linear[m] = cross(e_m, g) + cross(self.origin, a_m);
+            for n in 0..4 {
+                self.bilinear[4 * m + n] = cross(e_m, nodal(self.e_ddot, j, n));
+            }
         }
     }
 
-    /// The first node's position, the origin of the moments (positions measured from it keep
-    /// the moments' terms as small as the rod).
-    fn origin(&self) -> Vector2<f64> {
-        Vector2::new(self.e[0], self.e[1])
-    }
-
-    /// The field Σ Sₖ vₖ of element `j`'s nodal vectors in `v` for the shape functions `shape`.
-    fn field(&self, v: &[f64], j: usize, shape: Vector4<f64>) -> Vector2<f64> {
-        let at = 4 * j;
-        (0..4).fold(Vector2::zeros(), |sum, k| {
-            sum + shape[k] * Vector2::new(v[at + 2 * k], v[at + 2 * k + 1])
-        })
-    }
-
-    /// Adds the integrals of element `j` from local coordinate `from` to `to` to Q and P.
-    fn integrate(&mut self, j: usize, from: f64, to: f64) {
-        let l = self.rod.element.length();
+    /// Adds the piece's ΔQ and ΔP (module documentation) of the element the walk is in.
+    fn integrate(&mut self, piece: &Piece) {
         let rho_a = self.rod.properties.density * self.rod.properties.area;
-        let span = (to - from).max(0.0);
-        for (node, weight) in GAUSS_4.on_unit_interval(span) {
-            let s = shape((from + node * span) / l, l);
-            let d = self.field(self.e, j, s) - self.origin();
-            let a = self.field(self.e_ddot, j, s);
-            let q = rho_a * (self.load.gravity - a);
-            self.q += weight * q;
-            self.p += weight * cross(d, q);
+        let g = self.load.gravity;
+        let mut q = piece.length * g;
+        let mut p = -piece.length * cross(self.origin, g);
+        for m in 0..4 {
+            q -= piece.single[m] * self.accelerations[m];
+            p += piece.single[m] * self.linear[m];
         }
+        let products = piece.double.iter().zip(&self.bilinear);
+        p -= products.map(|(j, c)| j * c).sum::<f64>();
+        self.q += rho_a * q;
+        self.p += rho_a * p;
     }
 
     /// Walks on to arc length `x` (not behind where the walk is).
@@ -107,24 +187,33 @@ impl<'a> Walk<'a> {
         let target = ((x / l).floor().max(0.0) as usize).min(last);
         let local = (x - target as f64 * l).clamp(0.0, l);
         while self.element < target {
-            self.integrate(self.element, self.at, l);
-            self.element += 1;
-            self.at = 0.0;
+            self.integrate(&Piece::new(l, self.at, l));
+            self.enter(self.element + 1);
         }
-        self.integrate(self.element, self.at, local);
+        self.integrate(&Piece::new(l, self.at, local));
         self.at = self.at.max(local);
     }
 
-    /// N and M where the walk is.
-    fn resultants(&self) -> (f64, f64) {
-        let l = self.rod.element.length();
-        let (j, x) = (self.element, self.at);
-        let d = self.field(self.e, j, shape(x / l, l)) - self.origin();
-        let tangent = self.field(self.e, j, shape_x(x / l, l)).normalize();
+    /// N and M where the walk is, the element's shape functions and their slopes there being
+    /// `shape` and `slope`.
+    fn resultants(&self, shape: &Vector4<f64>, slope: &Vector4<f64>) -> (f64, f64) {
+        let field = |v: &[f64], s: &Vector4<f64>| {
+            (0..4).fold(Vector2::zeros(), |sum, m| {
+                sum + s[m] * nodal(v, self.element, m)
+            })
+        };
+        let d = field(self.e, shape) - self.origin;
+        let tangent = field(self.e, slope).normalize();
         let f_a = self.load.start_force;
         let axial = (-f_a - self.q).dot(&tangent);
         let moment = -(cross(-d, f_a) + self.load.start_moment + self.p - cross(d, self.q));
         (axial, moment)
+    }
+
+    /// N and M at local coordinate `at` of the element the walk is in.
+    fn resultants_here(&self) -> (f64, f64) {
+        let l = self.rod.element.length();
+        self.resultants(&shape(self.at / l, l), &shape_x(self.at / l, l))
     }
 }
 
@@ -144,7 +233,7 @@ impl Rod {
         let length = self.properties.length;
         for place in places {
             walk.advance(place.clamp(0.0, 1.0) * length);
-            let (axial, moment) = walk.resultants();
+            let (axial, moment) = walk.resultants_here();
             visit(place, axial, moment);
         }
     }
@@ -152,7 +241,7 @@ impl Rod {
     /// The normal stresses N/A ± |M| c/I over the rod (Euler–Bernoulli, c the outer-fibre
     /// distance) from the resultants of [`Rod::resultants`], sampled at the quarter points of every
     /// element: the largest magnitude and where it lies, the most tensile and the most compressive
-    /// fibre, and the resultants at mid-span.
+    /// fibre, and the resultants at mid-span (a quarter point of some element).
     pub fn normal_stresses(&self, e: &[f64], e_ddot: &[f64], load: &RodLoad) -> NormalStresses {
         let p = &self.properties;
         let (area, bending) = (p.area, p.outer_fibre_distance / p.second_moment_of_area);
@@ -165,21 +254,32 @@ impl Rod {
             midspan_moment: 0.0,
         };
         let samples = 4 * self.n_elements;
-        // the samples in order, mid-span among them (it is a quarter point of some element)
-        let places = (0..=samples).map(|k| k as f64 / samples as f64);
-        self.resultants(e, e_ddot, load, places, |place, axial, moment| {
+        let mut take = |k: usize, (axial, moment): (f64, f64)| {
             let (direct, flexural) = (axial / area, moment.abs() * bending);
             if direct.abs() + flexural > stresses.largest {
                 stresses.largest = direct.abs() + flexural;
-                stresses.location = place;
+                stresses.location = k as f64 / samples as f64;
             }
             stresses.max = stresses.max.max(direct + flexural);
             stresses.min = stresses.min.min(direct - flexural);
-            if 2 * (place * samples as f64).round() as usize == samples {
+            if 2 * k == samples {
                 stresses.midspan_axial_force = axial;
                 stresses.midspan_moment = moment;
             }
-        });
+        };
+        let quarters = &self.quarters;
+        let mut walk = Walk::new(self, e, e_ddot, load);
+        take(0, walk.resultants(&quarters.shape[0], &quarters.slope[0]));
+        for j in 0..self.n_elements {
+            if j > 0 {
+                walk.enter(j);
+            }
+            for (k, piece) in quarters.pieces.iter().enumerate() {
+                walk.integrate(piece);
+                let here = walk.resultants(&quarters.shape[k + 1], &quarters.slope[k + 1]);
+                take(4 * j + k + 1, here);
+            }
+        }
         stresses
     }
 }
