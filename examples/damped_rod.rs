@@ -6,8 +6,8 @@
 //! converged run (`tests/support/load_spectrum.rs`).
 //!
 //! `cargo run --release --example damped_rod` prints the table; `… --example damped_rod -- time ζ n`
-//! only runs the defaults with that damping ratio n times (for `farm-bench --vs`, which times whole
-//! processes).
+//! only runs the defaults with that damping ratio n times (for timing whole processes,
+//! `packaging/benchmarks.sh damping`).
 
 use std::error::Error;
 use std::time::Instant;
