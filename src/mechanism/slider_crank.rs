@@ -262,11 +262,6 @@ impl SliderCrank {
         }
     }
 
-    /// Quantities of the last right-hand-side evaluation.
-    pub fn evaluation(&self) -> &Evaluation {
-        &self.evaluation
-    }
-
     pub(super) fn constraint_state(&self, y: &[f64]) -> ConstraintState {
         let l = self.layout;
         ConstraintState {
