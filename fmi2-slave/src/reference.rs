@@ -10,7 +10,7 @@
 
 use std::fmt::Write as _;
 
-use crate::checks::{check_set_integer, check_set_real, lookup};
+use crate::checks::{check_set_integer, check_set_real, check_set_string, lookup};
 use crate::error::FmuError;
 use crate::logger::Logger;
 use crate::model::{Model, Var};
@@ -116,6 +116,13 @@ impl<M: Model> Slave<M> {
                 self.model.set_integer(self.state, &[v], &[n])
             }
         }
+    }
+
+    /// Sets a String variable.
+    pub fn set_string(&mut self, name: &str, value: &str) -> Result<(), FmuError> {
+        let v = Self::variable(name)?;
+        check_set_string(self.state, &[v])?;
+        self.model.set_string(self.state, &[v], &[value])
     }
 
     /// The values of the Real variables `names`.
