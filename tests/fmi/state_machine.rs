@@ -259,9 +259,43 @@ fn calls_after_a_discard_name_the_discard() {
     );
 }
 
-/// Every instance function in every reachable state where the FMI 2 state machine forbids it
-/// returns fmi2Error with "fmi2X: Illegal call sequence." and no crash (the table of
-/// src/fmi/state.rs is the oracle; 30 functions × 5 states).
+/// The states, among those this test reaches, in which FMI 2.0 Co-Simulation allows `call`:
+/// transcribed from the standard's table of the calling sequence (FMI 2.0.4, §4.2.4; the same
+/// table as the masks of the Modelica Association's Reference FMUs), independently of the
+/// implementation's own table. StepFailed, StepInProgress and StepCanceled are not reached.
+fn fmi2_allows(call: Call) -> &'static [State] {
+    use State::Terminated as T;
+    use State::{Error as E, InitializationMode as I, Instantiated as N, StepComplete as C};
+    match call {
+        Call::SetDebugLogging | Call::Reset => &[N, I, C, T, E],
+        Call::GetFmuState
+        | Call::SetFmuState
+        | Call::FreeFmuState
+        | Call::SerializedFmuStateSize
+        | Call::SerializeFmuState
+        | Call::DeSerializeFmuState => &[N, I, C, T, E],
+        Call::SetupExperiment | Call::EnterInitializationMode => &[N],
+        Call::ExitInitializationMode => &[I],
+        Call::Terminate | Call::DoStep => &[C],
+        Call::GetReal | Call::GetInteger | Call::GetBoolean | Call::GetString => &[I, C, T, E],
+        Call::GetDirectionalDerivative => &[I, C, T, E],
+        Call::SetReal | Call::SetInteger | Call::SetBoolean | Call::SetString => &[N, I, C],
+        Call::SetRealInputDerivatives => &[N, I, C],
+        Call::GetRealOutputDerivatives => &[C, T, E],
+        Call::CancelStep => &[],
+        Call::GetStatus
+        | Call::GetRealStatus
+        | Call::GetIntegerStatus
+        | Call::GetBooleanStatus
+        | Call::GetStringStatus => &[C, T],
+        _ => unreachable!("{call:?} has no FMI 2 function"),
+    }
+}
+
+/// Every instance function in every reachable state: where the FMI 2 state machine forbids it
+/// ([`fmi2_allows`], the standard's table) it returns fmi2Error with "fmi2X: Illegal call
+/// sequence." and no crash; where the table allows it, it is not refused as illegal (it may still
+/// report something else, such as a status that is not pending). 30 functions × 5 states.
 #[test]
 fn every_function_in_every_illegal_state_is_an_error() {
     let donor = Instance::new("donor");
@@ -277,23 +311,18 @@ fn every_function_in_every_illegal_state_is_an_error() {
         State::Error,
     ] {
         for call in CALLS {
-            if call.allowed().contains(&s) {
-                continue;
-            }
             let inst = in_state(&format!("sm-{s:?}-{call:?}"), s);
             let before = inst.messages().len();
-            assert_eq!(
-                invoke(&inst, call, state, &bytes),
-                ERROR,
-                "{call:?} in {s:?}"
-            );
+            let status = invoke(&inst, call, state, &bytes);
             let messages = inst.messages();
-            assert!(messages.len() > before, "{call:?} in {s:?}: no message");
-            let expected = format!("{}: Illegal call sequence.", call.name(Version::Fmi2));
-            assert!(
-                messages.last().is_some_and(|m| m.contains(&expected)),
-                "{call:?} in {s:?}: {messages:?}"
-            );
+            let illegal = format!("{}: Illegal call sequence.", call.name(Version::Fmi2));
+            let refused = messages[before..].iter().any(|m| m.contains(&illegal));
+            if fmi2_allows(call).contains(&s) {
+                assert!(!refused, "{call:?} in {s:?} is allowed: {messages:?}");
+                continue;
+            }
+            assert_eq!(status, ERROR, "{call:?} in {s:?}");
+            assert!(refused, "{call:?} in {s:?}: {messages:?}");
             checked += 1;
         }
     }
