@@ -12,10 +12,10 @@
 //! - `machine`: a user's machine, every feature of it at once: the compressor of
 //!   `studies/compressor.toml` with its crank-angle load table, counterweighted crank, lubricated
 //!   crank pin and main bearing (finite film) and a dry piston pin in line contact with friction,
-//!   with an offset guide, the rod's eye masses and gravity besides. Its 17 outputs locked as
-//!   zeros are zeros by the physics: the oiled bearings never touch (contact onsets, penetration,
-//!   in contact), the dry piston pin has no film (film pressure, oil flow) and rests on its wall
-//!   (film thickness 0), and the run warns of nothing.
+//!   with an offset guide, the rod's eye masses and gravity besides.
+//!
+//! An output locked as zeros at every point says why ([`ZEROS`], checked both ways): an ideal
+//! joint, a dry joint's film, no gravity, a journal that never touches or never lifts off.
 //!
 //! This is a lock, not a validation: it holds the code's own results, right or wrong, so that a
 //! change that moves any bit says so. A change meant to move results re-records the file with
@@ -188,5 +188,196 @@ fn every_output_of_the_locked_runs_is_bit_identical() {
         locked.len(),
         current.lines().count(),
         "the lock holds outputs the table no longer has"
+    );
+}
+
+/// The outputs an ideal bearing reports as zeros.
+const BEARING: &[&str] = &[
+    "contactOnsets",
+    "contactOnsetsTotal",
+    "eccentricityRatio",
+    "eccentricityX",
+    "eccentricityY",
+    "energyDissipated",
+    "filmPressurePeak",
+    "filmPressurePeakCycle",
+    "filmPressurePeakCycleAngle",
+    "filmPressurePeakSinceStart",
+    "filmThickness",
+    "filmThicknessMin",
+    "filmThicknessMinCycle",
+    "filmThicknessMinCycleAngle",
+    "filmThicknessMinSinceStart",
+    "frictionPower",
+    "frictionPowerMeanCycle",
+    "frictionTorque",
+    "inContact",
+    "oilFlow",
+    "oilFlowMeanCycle",
+    "penetration",
+];
+
+const CRANK_JOINTS: &[&str] = &["crankPin.", "mainBearing."];
+const ONSETS: &[&str] = &["contactOnsets", "contactOnsetsTotal"];
+const TOUCH: &[&str] = &[
+    "contactOnsets",
+    "contactOnsetsTotal",
+    "inContact",
+    "penetration",
+];
+const FILM: &[&str] = &[
+    "filmPressurePeak",
+    "filmPressurePeakCycle",
+    "filmPressurePeakSinceStart",
+    "oilFlow",
+    "oilFlowMeanCycle",
+];
+
+/// Why an output is zero at every communication point of a locked run: the runs, the outputs
+/// (each prefix joined with each name) and the reason.
+type Zero = (
+    &'static [&'static str],
+    &'static [&'static str],
+    &'static [&'static str],
+    &'static str,
+);
+
+const ZEROS: &[Zero] = &[
+    (
+        &["B", "A", "lubricated", "torque"],
+        CRANK_JOINTS,
+        BEARING,
+        "an ideal joint has no clearance, film or friction",
+    ),
+    (
+        &["B", "A", "lubricated", "worn", "finite", "torque"],
+        &[""],
+        &["energy.gravity"],
+        "no gravity",
+    ),
+    (
+        &["B", "A", "lubricated", "worn", "finite", "torque"],
+        &[""],
+        &["energy.materialDamping"],
+        "an undamped rod",
+    ),
+    (
+        &["B", "A", "lubricated", "worn", "finite"],
+        &[""],
+        &["energy.sliderWork", "slider.appliedForce"],
+        "no slider force and no load table",
+    ),
+    (
+        &["B", "A", "torque", "worn", "finite", "machine"],
+        &["joint."],
+        FILM,
+        "a dry rod-slider joint has no film",
+    ),
+    (
+        &["B", "A", "torque", "worn", "finite"],
+        &["joint."],
+        &["frictionPower", "frictionPowerMeanCycle"],
+        "a dry joint without friction",
+    ),
+    (
+        &["worn", "finite", "machine"],
+        &["joint."],
+        &["filmThicknessMinCycle", "filmThicknessMinSinceStart"],
+        "the dry joint is settled on its wall",
+    ),
+    (
+        &["machine"],
+        &["joint."],
+        &["filmThicknessMin"],
+        "the dry piston pin stays on its wall",
+    ),
+    (
+        &["A"],
+        &[""],
+        &[
+            "rod.deformationEnergy",
+            "rod.deformationEnergyPeak",
+            "rod.midspanDeflection",
+        ],
+        "a rigid rod does not deform",
+    ),
+    (
+        &["lubricated"],
+        &["joint."],
+        TOUCH,
+        "the film keeps the journal off the wall",
+    ),
+    (
+        &["lubricated"],
+        &[""],
+        &["energy.contact"],
+        "the film keeps the journal off the wall",
+    ),
+    (
+        &["worn"],
+        CRANK_JOINTS,
+        ONSETS,
+        "the settled start is in dry contact and never lifts off",
+    ),
+    (
+        &["worn", "finite"],
+        CRANK_JOINTS,
+        &["filmThicknessMinCycle", "filmThicknessMinSinceStart"],
+        "the journal touches its wall",
+    ),
+    (
+        &["worn", "finite"],
+        &["crankPin."],
+        &["filmThicknessMinCycleAngle"],
+        "the zero minimum is reached at the cycle's start",
+    ),
+    (
+        &["machine"],
+        CRANK_JOINTS,
+        TOUCH,
+        "the oiled bearings never touch",
+    ),
+    (
+        &["B", "A", "worn", "finite", "torque", "machine"],
+        &[""],
+        &["solver.warnings"],
+        "the run warns of nothing",
+    ),
+];
+
+/// Every output the lock holds as zeros (at all 240 points) is zero for a reason of [`ZEROS`], and
+/// every output a reason names is zero in the runs it names: a lock of zeros says why.
+#[test]
+fn every_output_locked_as_zeros_says_why() {
+    let mut zero = 0xcbf2_9ce4_8422_2325u64;
+    for _ in 0..240 * 8 {
+        zero = zero.wrapping_mul(0x100_0000_01b3);
+    }
+    let zero = format!("{zero:016x}");
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/regression_lock.txt");
+    let locked = std::fs::read_to_string(path).unwrap();
+    let zeros: std::collections::BTreeSet<String> = locked
+        .lines()
+        .filter_map(|l| l.rsplit_once(' '))
+        .filter(|(_, hash)| *hash == zero)
+        .map(|(key, _)| key.to_string())
+        .collect();
+    let mut explained = std::collections::BTreeSet::new();
+    for &(cases, prefixes, names, reason) in ZEROS {
+        for case in cases {
+            for prefix in prefixes {
+                for name in names {
+                    let key = format!("{case} {prefix}{name}");
+                    assert!(zeros.contains(&key), "{key} is not zero ({reason})");
+                    explained.insert(key);
+                }
+            }
+        }
+    }
+    let unexplained: Vec<_> = zeros.difference(&explained).collect();
+    assert!(
+        unexplained.is_empty(),
+        "locked as zeros without a reason: {unexplained:?}"
     );
 }
