@@ -11,6 +11,7 @@
 //! - Exudyn, `CObjectANCFCable2D` (shape functions, strain measures, Gauss orders).
 
 pub mod element;
+pub mod quarters;
 pub mod rod;
 pub mod shape;
 

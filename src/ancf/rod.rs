@@ -148,7 +148,7 @@ pub struct Rod {
     n_elements: usize,
     element: Element,
     /// The element's quarter pieces for the stress scan ([`Rod::normal_stresses`]).
-    quarters: equilibrium::Quarters,
+    quarters: crate::ancf::quarters::Quarters,
 }
 
 impl Rod {
@@ -174,7 +174,7 @@ impl Rod {
             properties,
             n_elements,
             element,
-            quarters: equilibrium::Quarters::new(element.length()),
+            quarters: crate::ancf::quarters::Quarters::new(element.length()),
         })
     }
 
