@@ -17,9 +17,9 @@
 //! the journal), exact in every state, as the rod–slider joint's is.
 //!
 //! The stress: from the equilibrium of the rod's parts under the pin force (and a worn crank
-//! pin's moment) and the distributed inertia and gravity (d'Alembert): for a flexible rod by quadrature over its elements
-//! ([`crate::ancf::Rod::normal_stresses`]), for the rigid rod in closed form
-//! ([`rigid_rod_stress`]).
+//! pin's moment) and the distributed inertia and gravity (d'Alembert): for a flexible rod by
+//! quadrature over its elements ([`crate::ancf::Rod::normal_stresses`]), for the rigid rod in
+//! closed form ([`rigid_rod_stress`]).
 //!
 //! With masses lumped at the pins (the rod's eyes, m_A and m_B) the pin forces move them too: the
 //! rod's shank receives F_A − m_A (a_A − g) at A and F_B − m_B (a_B − g) at B, which set the axial
