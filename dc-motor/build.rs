@@ -7,5 +7,5 @@ mod variables;
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     println!("cargo::rerun-if-changed=src/variables.rs");
     println!("cargo::rerun-if-changed=build.rs");
-    fmi2_slave::build::build_script(&variables::DESCRIPTION, variables::FMI3)
+    fmi_export::build::build_script(&variables::DESCRIPTION, variables::FMI3)
 }

@@ -157,8 +157,8 @@ fn fmi_stepping_and_reading_do_not_allocate() {
     use flexible_slider_crank::fmi::GUID;
     use flexible_slider_crank::fmi::instance::SliderCrankFmu as M;
     use flexible_slider_crank::variables::{Causality, Kind, VARIABLES, Vr};
-    use fmi2_slave::exports::sys::{fmi2CallbackFunctions, fmi2Type_fmi2CoSimulation};
-    use fmi2_slave::exports::{
+    use fmi_export::fmi2::exports::sys::{fmi2CallbackFunctions, fmi2Type_fmi2CoSimulation};
+    use fmi_export::fmi2::exports::{
         fmi2DoStep, fmi2EnterInitializationMode, fmi2ExitInitializationMode, fmi2FreeInstance,
         fmi2GetReal, fmi2Instantiate, fmi2SetReal, fmi2SetupExperiment,
     };

@@ -29,7 +29,7 @@
 use std::collections::BTreeMap;
 
 use flexible_slider_crank::fmi::instance::SliderCrankFmu;
-use fmi2_slave::reference::Slave;
+use fmi_export::reference::Slave;
 
 /// The parameters (and inputs) of each locked run, set by name before initialization.
 const CASES: &[(&str, &[(&str, f64)])] = &[

@@ -1,13 +1,13 @@
-//! [`DcMotorFmu`]: the motor as an FMI 2.0 [`Model`] of `fmi2-slave` — parameters, inputs as
+//! [`DcMotorFmu`]: the motor as an FMI 2.0 [`Model`] of `fmi-export` — parameters, inputs as
 //! polynomials over the communication step, the state, the clock and the state codec.
 
 use fmi_core::clock::on_clock_grid;
 use fmi_core::codec::{ByteReader, ByteWriter};
 use fmi_core::number::Num;
 use fmi_core::signal::Polynomial;
-use fmi2_slave::checks::{check_real, check_step};
-use fmi2_slave::model::Var;
-use fmi2_slave::{FmuError, Logger, Model, State, StepOutcome};
+use fmi_export::checks::{check_real, check_step};
+use fmi_export::model::Var;
+use fmi_export::{FmuError, Logger, Model, State, StepOutcome};
 
 use crate::coupling::{self, Exchange};
 use crate::motor::{MotorInputs, MotorOutputs, MotorParameters, MotorState, substeps};

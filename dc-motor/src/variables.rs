@@ -1,6 +1,6 @@
 //! The variable table of the DC-motor FMU: one row per FMI variable, in value-reference order.
 //!
-//! Plain data over the table types of `fmi2-slave`: `build.rs` renders `modelDescription.xml`
+//! Plain data over the table types of `fmi-export`: `build.rs` renders `modelDescription.xml`
 //! from [`DESCRIPTION`], and the FMU reads and writes values through an exhaustive `match` on
 //! [`Vr`], so the code and the XML cannot disagree.
 
@@ -31,7 +31,7 @@ pub const DESCRIPTION: Description<Vr> = Description {
     version: env!("CARGO_PKG_VERSION"),
     copyright: "Copyright (c) 2026 The FlexibleSliderCrank authors",
     license: "MIT",
-    generation_tool: "dc-motor build.rs (fmi2-slave)",
+    generation_tool: "dc-motor build.rs (fmi-export)",
     max_input_derivative_order: 2,
     max_output_derivative_order: 1,
     units: UNITS,

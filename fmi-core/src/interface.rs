@@ -4,7 +4,7 @@
 use crate::table::Causality;
 
 /// A model's FMI 3 additions: rendered into its FMI 3 modelDescription.xml and read by the
-/// `fmi3*` functions (`fmi2-slave`'s `fmi3` module).
+/// `fmi3*` functions (`fmi-export`'s `fmi3` module).
 #[derive(Clone, Copy, Debug)]
 pub struct Fmi3Interface {
     /// mightReturnEarlyFromDoStep: fmi3DoStep may end before the communication point (at an event

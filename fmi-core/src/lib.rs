@@ -10,7 +10,7 @@
 //! - [`signal`]: inputs given as polynomials of time over a communication step.
 //! - [`number`]: the shortest round-trip decimal form of numbers in messages.
 //!
-//! No FMI version's C API is here: `fmi2-slave` renders both versions' modelDescription.xml from
+//! No FMI version's C API is here: `fmi-export` renders both versions' modelDescription.xml from
 //! the table and exports the `fmi2*` and `fmi3*` functions over a model. A model's run and physics
 //! import only this crate.
 

@@ -87,7 +87,7 @@ fn vr(pick: u8) -> u32 {
     let n = variable_count();
     let extra = [
         n,
-        fmi2_slave::fmi3::description::TIME_VALUE_REFERENCE,
+        fmi_export::fmi3::description::TIME_VALUE_REFERENCE,
         N_SECTIONS,
     ];
     let arrays = FMI3.arrays.len() as u32;
@@ -115,7 +115,7 @@ unsafe extern "C" fn on_update(
 ) {
     let (instance, request, free) = PAUSED.get();
     let refs = [
-        fmi2_slave::fmi3::description::TIME_VALUE_REFERENCE,
+        fmi_export::fmi3::description::TIME_VALUE_REFERENCE,
         FMI3.arrays[0].vr,
     ];
     let mut values = [0.0; 1 + 1001];

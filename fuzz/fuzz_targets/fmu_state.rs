@@ -11,7 +11,7 @@
 
 use flexible_slider_crank_fuzz::{Instance, variable_count};
 use fmi_sys::fmi2::fmi2Status_fmi2OK as OK;
-use fmi2_slave::model::state_checksum;
+use fmi_export::model::state_checksum;
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {

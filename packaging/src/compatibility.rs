@@ -1,5 +1,5 @@
 //! Compatibility information: each FMU's DefaultExperiment run through its FMI model interface
-//! ([`fmi2_slave::reference`]), shipped inside the FMU under `extra/org.fmi-standard.fmi-ls-ref/`
+//! ([`fmi_export::reference`]), shipped inside the FMU under `extra/org.fmi-standard.fmi-ls-ref/`
 //! with an FMI-LS-REF manifest, and beside it in the FMI cross-check layout
 //! `compatibility/2.0/cs/<platform>/<tool>/<version>/<model>/` (the FMU, `<model>_ref.csv`,
 //! `<model>_ref.opt`, `<model>_in.csv` if it has inputs, `README.md`), which
@@ -11,8 +11,8 @@ use std::path::{Path, PathBuf};
 
 use dc_motor::fmu::DcMotorFmu;
 use flexible_slider_crank::fmi::instance::SliderCrankFmu;
-use fmi2_slave::reference::{Experiment, Results, Slave, run};
-use fmi2_slave::{FmuError, Model};
+use fmi_export::reference::{Experiment, Results, Slave, run};
+use fmi_export::{FmuError, Model};
 
 /// The exporting tool and its version in the cross-check layout.
 pub const TOOL: (&str, &str) = ("flexible-slider-crank", env!("CARGO_PKG_VERSION"));
@@ -56,7 +56,7 @@ pub fn motor() -> Result<References, Box<dyn Error>> {
         .iter()
         .find(|v| v.name == "speed.setPoint")
         .and_then(|v| match v.kind {
-            fmi2_slave::table::Kind::Real { start, .. } => start,
+            fmi_export::table::Kind::Real { start, .. } => start,
             _ => None,
         })
         .ok_or("speed.setPoint has no start value")?;

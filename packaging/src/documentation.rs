@@ -11,9 +11,9 @@ use std::path::{Path, PathBuf};
 
 use flexible_slider_crank::fmi::{FMI3_SCALAR_TOKEN, FMI3_TOKEN, GUID};
 use flexible_slider_crank::variables::{Causality, DESCRIPTION, ENUMERATIONS, Kind};
-use fmi2_slave::description::Description;
-use fmi2_slave::number::Num;
-use fmi2_slave::table::{Enumeration, ValueReference, Variable};
+use fmi_export::description::Description;
+use fmi_export::number::Num;
+use fmi_export::table::{Enumeration, ValueReference, Variable};
 
 /// The page's style.
 const STYLE: &str = "body{font-family:sans-serif;max-width:1100px;margin:auto}\

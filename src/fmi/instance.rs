@@ -1,12 +1,12 @@
 //! [`SliderCrankFmu`]: the slider-crank as an FMI 2.0 [`Model`] — parameters, inputs, the
 //! simulation and the clock; the state machine, the C functions and every value check (against
 //! the variable table, so every message quotes what the master sees in the XML) come from
-//! `fmi2-slave`. Values are read and written by an exhaustive `match` on [`Vr`].
+//! `fmi-export`. Values are read and written by an exhaustive `match` on [`Vr`].
 
-use fmi2_slave::fmi3::interface::Fmi3Interface;
-use fmi2_slave::model::Var;
-use fmi2_slave::table::Enumeration;
-use fmi2_slave::{FmuError, Logger, Model, State, StepOutcome};
+use fmi_export::fmi3::interface::Fmi3Interface;
+use fmi_export::model::Var;
+use fmi_export::table::Enumeration;
+use fmi_export::{FmuError, Logger, Model, State, StepOutcome};
 
 use super::outputs::{count_output, real_output, section_array, sensitivity};
 use super::snapshot::FmuSnapshot;

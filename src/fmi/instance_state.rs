@@ -1,7 +1,7 @@
 //! An instance's FMU state: the snapshot it takes of itself, and its restoration, which rebuilds
 //! the model only when the snapshot's parameters differ from the instance's.
 
-use fmi2_slave::FmuError;
+use fmi_export::FmuError;
 
 use super::instance::{SliderCrankFmu, model_parameters};
 use super::snapshot::FmuSnapshot;

@@ -1,5 +1,5 @@
 //! The FMI 2.0 and FMI 3.0 co-simulation FMU of the slider-crank: [`instance::SliderCrankFmu`]
-//! implements the [`fmi2_slave::Model`] of the model-independent FMI layer around
+//! implements the [`fmi_export::Model`] of the model-independent FMI layer around
 //! [`crate::Simulation`], which supplies the exported functions of both versions (one library
 //! exports `fmi2*` and `fmi3*`), their state machine and the checks at the boundary.
 //!
@@ -23,5 +23,5 @@ pub use model_description::{
     MODEL_DESCRIPTION_FMI3_SCALAR, MODEL_IDENTIFIER, TERMINALS_AND_ICONS_FMI3,
 };
 
-fmi2_slave::export_fmi2!(instance::SliderCrankFmu);
-fmi2_slave::export_fmi3!(instance::SliderCrankFmu);
+fmi_export::export_fmi2!(instance::SliderCrankFmu);
+fmi_export::export_fmi3!(instance::SliderCrankFmu);

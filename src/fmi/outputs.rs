@@ -1,8 +1,8 @@
 //! The Real and the count outputs of the FMU by value reference: the lists that map each output
 //! row of the variable table to its field of [`Outputs`].
 
-use fmi2_slave::FmuError;
-use fmi2_slave::model::Var;
+use fmi_export::FmuError;
+use fmi_export::model::Var;
 
 use crate::simulation::{BearingOutputs, Input, Outputs, SectionResult, Simulation, section_place};
 use crate::variables::{SectionArray, Vr};

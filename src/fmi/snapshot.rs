@@ -1,12 +1,12 @@
 //! FMU state: a complete, pointer-free snapshot of the model and its bytes.
 //!
-//! Layout (little-endian, inside the framing of `fmi2-slave`: magic, version, state machine,
+//! Layout (little-endian, inside the framing of `fmi-export`: magic, version, state machine,
 //! checksum): the parameter count of the variable table and nModes (so a state from another build
 //! or model is rejected), every parameter in table order (a String as its length and bytes),
 //! whether crank.initialSpeed was set, inputs, clock, the simulation snapshot.
 
-use fmi2_slave::FmuError;
-use fmi2_slave::checks::check_real;
+use fmi_export::FmuError;
+use fmi_export::checks::check_real;
 
 use crate::params::{
     Parameters, integer_parameter, real_parameter, set_integer_parameter, set_real_parameter,

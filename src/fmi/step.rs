@@ -1,8 +1,8 @@
 //! The slider-crank's step as the FMI layer asks for it: to the communication point, or early at
 //! a contact onset, or paused after each internal step for the master's intermediate update.
 
-use fmi2_slave::checks::check_step;
-use fmi2_slave::{FmuError, Logger, StepOutcome};
+use fmi_export::checks::check_step;
+use fmi_export::{FmuError, Logger, StepOutcome};
 
 use super::instance::SliderCrankFmu;
 use crate::simulation::{Advance, Simulation};

@@ -2,7 +2,7 @@
 //! crank and its drive, the slider, gravity, the three joints from one definition, the solver, the
 //! energy account) and assembled in value-reference order.
 //!
-//! This module is plain data over the table types of `fmi2-slave`: `build.rs` compiles it too and
+//! This module is plain data over the table types of `fmi-export`: `build.rs` compiles it too and
 //! renders `modelDescription.xml` from [`DESCRIPTION`], the library validates parameters against
 //! its ranges, and values are got and set through one list per kind keyed by [`Vr`] (parameters in
 //! `params::access`, Real outputs in `fmi::outputs`), each tested to cover exactly its rows, so the
@@ -35,7 +35,7 @@ pub const DESCRIPTION: Description<Vr> = Description {
     version: env!("CARGO_PKG_VERSION"),
     copyright: "Copyright (c) 2026 The FlexibleSliderCrank authors",
     license: "MIT",
-    generation_tool: "flexible-slider-crank build.rs (fmi2-slave)",
+    generation_tool: "flexible-slider-crank build.rs (fmi-export)",
     max_input_derivative_order: 2,
     max_output_derivative_order: 2,
     units: UNITS,

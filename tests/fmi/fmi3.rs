@@ -17,7 +17,7 @@ use crate::harness::{Instance, library_path, vr};
 const OK: fmi3Status = fmi3Status_fmi3OK;
 const ERROR: fmi3Status = fmi3Status_fmi3Error;
 /// The independent variable's value reference.
-const TIME: u32 = fmi2_slave::fmi3::description::TIME_VALUE_REFERENCE;
+const TIME: u32 = fmi_export::fmi3::description::TIME_VALUE_REFERENCE;
 
 /// The library's FMI 3 functions (one per test process).
 fn fmu3() -> &'static Fmi3Binding {

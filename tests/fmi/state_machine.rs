@@ -1,8 +1,8 @@
 //! The state machine: every function in every state where FMI 2.0.4 forbids it is an error, and
 //! calls refused after an error name the first one.
 
+use fmi_export::{Call, State, Version};
 use fmi_sys::fmi2::*;
-use fmi2_slave::{Call, State, Version};
 
 use crate::harness::{Instance, fmu, vr};
 

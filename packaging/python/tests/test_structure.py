@@ -6,7 +6,7 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parents[3]
-CRATES = ["src", "fmi-core/src", "fmi2-slave/src", "dc-motor/src", "packaging/src", "fuzz/src"]
+CRATES = ["src", "fmi-core/src", "fmi-export/src", "dc-motor/src", "packaging/src", "fuzz/src"]
 #: Longest file, in lines before its unit tests.
 MAX_LINES = 520
 #: Data tables: one row per FMI variable (the slider-crank's, by component, in a folder).
@@ -143,14 +143,42 @@ def test_no_module_imports_the_fmi_layer():
 
 def test_only_the_fmi_adapters_import_the_fmi_versions():
     """The run, the physics and the variable tables import the version-neutral core (`fmi_core`),
-    never the crate with the FMI versions' C API (`fmi2_slave`): only the FMI adapter does
+    never the crate with the FMI versions' C API (`fmi_export`): only the FMI adapter does
     (src/fmi/ of the slider-crank, fmu.rs and lib.rs of the motor)."""
     found = []
     for crate, adapters in [("src", ("fmi/",)), ("dc-motor/src", ("fmu.rs", "lib.rs"))]:
         for path in sorted((ROOT / crate).rglob("*.rs")):
             name = path.relative_to(ROOT / crate).as_posix()
             text = re.sub(r"//.*", "", path.read_text())
-            if "fmi2_slave" in text and not name.startswith(adapters):
+            if "fmi_export" in text and not name.startswith(adapters):
                 found.append(f"{crate}/{name}")
     assert not found, found
-    assert "fmi2_slave" in (ROOT / "src" / "fmi" / "instance.rs").read_text()
+    assert "fmi_export" in (ROOT / "src" / "fmi" / "instance.rs").read_text()
+
+
+def test_the_fmi_versions_are_siblings_over_one_core():
+    """In the FMI layer, `fmi2` and `fmi3` are clients of the version-free core: neither imports
+    the other or calls the other's functions, and the core (every module outside them but the
+    build script, which renders both descriptions) imports neither and names no version's C types."""
+    files = modules("fmi-export/src")
+    edges = imports(files)
+    versions = ("fmi2", "fmi3")
+
+    def version_of(module):
+        return next((v for v in versions if module == v or module.startswith(v + "::")), None)
+
+    found = []
+    for module, targets in edges.items():
+        mine = version_of(module)
+        for t in sorted(targets):
+            theirs = version_of(t)
+            if theirs and theirs != mine and module != "" and module != "build":
+                found.append(f"{module} imports {t}")
+        src = files[module]
+        for other in versions:
+            if other != mine and module not in ("", "build") and \
+                    re.search(rf"\b{other}[A-Z]\w*\s*(::<[^>]*>)?\(", src):
+                found.append(f"{module} calls an {other}* function")
+        if mine is None and module not in ("", "build") and "fmi_sys" in src:
+            found.append(f"{module} (core) uses fmi_sys")
+    assert not found, "\n".join(found)

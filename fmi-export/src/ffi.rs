@@ -1,0 +1,152 @@
+//! The unsafe edge of the FMI layer: raw pointers to slices and strings (NULL-checked), the
+//! instance guard with `catch_unwind`.
+#![allow(unsafe_code)]
+
+use std::ffi::{CStr, c_char, c_void};
+use std::panic::{AssertUnwindSafe, catch_unwind};
+
+use super::error::FmuError;
+use super::model::{Instance, Model};
+use super::state::{Call, State};
+use super::status::Status;
+
+/// `n` values at `ptr` (any pointer when n = 0); NULL with n > 0 is an error naming `name`.
+///
+/// # Safety
+/// A non-NULL `ptr` must point to `n` valid values for the duration of the call (FMI 2.0.4 §2.1.7).
+pub unsafe fn slice<'a, T>(
+    ptr: *const T,
+    n: usize,
+    name: &'static str,
+) -> Result<&'a [T], FmuError> {
+    if n == 0 {
+        Ok(&[])
+    } else if ptr.is_null() {
+        Err(FmuError::Null(name))
+    } else {
+        // SAFETY: non-NULL and n values long per the caller's contract.
+        Ok(unsafe { std::slice::from_raw_parts(ptr, n) })
+    }
+}
+
+/// Mutable version of [`slice()`].
+///
+/// # Safety
+/// A non-NULL `ptr` must point to `n` writable values for the duration of the call.
+pub unsafe fn slice_mut<'a, T>(
+    ptr: *mut T,
+    n: usize,
+    name: &'static str,
+) -> Result<&'a mut [T], FmuError> {
+    if n == 0 {
+        Ok(&mut [])
+    } else if ptr.is_null() {
+        Err(FmuError::Null(name))
+    } else {
+        // SAFETY: non-NULL and n writable values per the caller's contract.
+        Ok(unsafe { std::slice::from_raw_parts_mut(ptr, n) })
+    }
+}
+
+/// A C string as `&str` (None for NULL; invalid UTF-8 is replaced).
+///
+/// # Safety
+/// A non-NULL `ptr` must be NUL-terminated and valid for the duration of the call.
+pub unsafe fn string(ptr: *const c_char) -> Option<String> {
+    if ptr.is_null() {
+        None
+    } else {
+        // SAFETY: NUL-terminated per the caller's contract (FMI 2.0.4 fmi2String).
+        Some(
+            unsafe { CStr::from_ptr(ptr) }
+                .to_string_lossy()
+                .into_owned(),
+        )
+    }
+}
+
+/// A panic payload as text.
+pub fn panic_text(payload: &(dyn std::any::Any + Send)) -> String {
+    payload
+        .downcast_ref::<&str>()
+        .map(|s| (*s).to_string())
+        .or_else(|| payload.downcast_ref::<String>().cloned())
+        .unwrap_or_else(|| "unknown panic".into())
+}
+
+/// Runs `f` on the instance behind `c` (fmi2Component, fmi3Instance) if `call` is legal in its
+/// state: errors are logged and move the instance to the Error state, a discarded step to
+/// StepFailed, and a panic is caught, logged and poisons the instance (only Reset and
+/// FreeInstance are accepted afterwards).
+pub fn with_instance<M: Model>(
+    c: *mut c_void,
+    call: Call,
+    f: impl FnOnce(&mut Instance<M>) -> Result<Status, FmuError>,
+) -> Status {
+    if c.is_null() {
+        return Status::Error;
+    }
+    // SAFETY: a non-NULL instance pointer is one returned by fmi2Instantiate or
+    // fmi3InstantiateCoSimulation (Box::into_raw, [`crate::calls::create`]) and not yet freed, and
+    // the master calls one instance's functions one at a time (FMI 2.0.4 §2.1.5, FMI 3.0 §2.3).
+    let instance = unsafe { &mut *c.cast::<Instance<M>>() };
+    let version = instance.version;
+    let name = || call.name(version);
+    let result = catch_unwind(AssertUnwindSafe(|| {
+        if instance.poisoned && call != Call::Reset {
+            return Err(FmuError::Invalid(format!(
+                "{}: the instance is unusable after an internal error; call {p}Reset or {p}FreeInstance",
+                name(),
+                p = version.prefix()
+            )));
+        }
+        if !call.allowed().contains(&instance.state) {
+            return Err(match &instance.cause {
+                Some(cause) => FmuError::Invalid(format!(
+                    "Illegal call sequence. The instance is in the {:?} state since: {cause}",
+                    instance.state
+                )),
+                None => FmuError::IllegalCall(name()),
+            });
+        }
+        f(instance)
+    }));
+    match result {
+        Ok(Ok(status)) => {
+            if !matches!(instance.state, State::Error | State::StepFailed) {
+                instance.cause = None;
+            }
+            status
+        }
+        Ok(Err(e @ FmuError::Discard { .. })) => {
+            let message = format!("{}: {e}", name());
+            instance.logger.discard(&message);
+            instance.cause = Some(message);
+            instance.state = State::StepFailed;
+            Status::Discard
+        }
+        Ok(Err(e)) => {
+            let message = match e {
+                FmuError::IllegalCall(_) => e.to_string(),
+                _ => format!("{}: {e}", name()),
+            };
+            instance.logger.error(&message);
+            if instance.state != State::Error {
+                instance.cause = Some(message);
+            }
+            instance.state = State::Error;
+            Status::Error
+        }
+        Err(payload) => {
+            instance.logger.error(&format!(
+                "{}: internal error: {}",
+                name(),
+                panic_text(&*payload)
+            ));
+            instance.poisoned = true;
+            instance.cause = Some(format!("{}: internal error", name()));
+            instance.state = State::Error;
+            Status::Error
+        }
+    }
+}

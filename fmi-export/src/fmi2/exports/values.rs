@@ -1,0 +1,229 @@
+//! Getting and setting values, their derivatives and directional derivatives.
+#![allow(unsafe_code, non_snake_case, clippy::missing_safety_doc)]
+
+use fmi_sys::fmi2::*;
+
+use super::codes::with_instance;
+use crate::calls;
+use crate::checks::{
+    check_input_derivatives, check_set_boolean, check_set_integer, check_set_real, resolve,
+};
+use crate::ffi::{slice, slice_mut};
+use crate::model::{Model, no_input_derivatives};
+use crate::state::Call;
+use crate::status::ok;
+
+/// Reads Real variables.
+pub unsafe fn fmi2GetReal<M: Model>(
+    c: fmi2Component,
+    vr: *const fmi2ValueReference,
+    nvr: usize,
+    value: *mut fmi2Real,
+) -> fmi2Status {
+    with_instance::<M>(c, Call::GetReal, |inst| {
+        // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
+        let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?) };
+        resolve::<M>(vr, "Real", &mut inst.variables)?;
+        inst.model
+            .get_real(&inst.logger, &inst.variables, value)
+            .map(ok)
+    })
+}
+
+/// Reads Integer variables (the switches among them).
+pub unsafe fn fmi2GetInteger<M: Model>(
+    c: fmi2Component,
+    vr: *const fmi2ValueReference,
+    nvr: usize,
+    value: *mut fmi2Integer,
+) -> fmi2Status {
+    with_instance::<M>(c, Call::GetInteger, |inst| {
+        // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
+        let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?) };
+        resolve::<M>(vr, "Integer", &mut inst.variables)?;
+        inst.model
+            .get_integer(&inst.logger, &inst.variables, value)
+            .map(ok)
+    })
+}
+
+/// Reads Boolean variables.
+pub unsafe fn fmi2GetBoolean<M: Model>(
+    c: fmi2Component,
+    vr: *const fmi2ValueReference,
+    nvr: usize,
+    value: *mut fmi2Boolean,
+) -> fmi2Status {
+    with_instance::<M>(c, Call::GetBoolean, |inst| {
+        // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
+        let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?) };
+        resolve::<M>(vr, "Boolean", &mut inst.variables)?;
+        inst.model
+            .get_boolean(&inst.logger, &inst.variables, value)
+            .map(ok)
+    })
+}
+
+/// Reads String variables; the strings stay valid until the next call on the instance.
+pub unsafe fn fmi2GetString<M: Model>(
+    c: fmi2Component,
+    vr: *const fmi2ValueReference,
+    nvr: usize,
+    value: *mut fmi2String,
+) -> fmi2Status {
+    with_instance::<M>(c, Call::GetString, |inst| {
+        // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
+        let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?) };
+        calls::get_string(inst, vr, value)
+    })
+}
+
+/// Writes Real parameters (before initialization ends) and inputs.
+pub unsafe fn fmi2SetReal<M: Model>(
+    c: fmi2Component,
+    vr: *const fmi2ValueReference,
+    nvr: usize,
+    value: *const fmi2Real,
+) -> fmi2Status {
+    with_instance::<M>(c, Call::SetReal, |inst| {
+        // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
+        let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice(value, nvr, "value")?) };
+        resolve::<M>(vr, "Real", &mut inst.variables)?;
+        check_set_real(inst.state, &inst.variables, value)?;
+        inst.model
+            .set_real(inst.state, &inst.variables, value)
+            .map(ok)
+    })
+}
+
+/// Writes Integer parameters, the switches among them (before initialization ends).
+pub unsafe fn fmi2SetInteger<M: Model>(
+    c: fmi2Component,
+    vr: *const fmi2ValueReference,
+    nvr: usize,
+    value: *const fmi2Integer,
+) -> fmi2Status {
+    with_instance::<M>(c, Call::SetInteger, |inst| {
+        // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
+        let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice(value, nvr, "value")?) };
+        resolve::<M>(vr, "Integer", &mut inst.variables)?;
+        check_set_integer::<M>(inst.state, &inst.variables, value)?;
+        inst.model
+            .set_integer(inst.state, &inst.variables, value)
+            .map(ok)
+    })
+}
+
+/// No Boolean variable is settable: any value reference is an error.
+pub unsafe fn fmi2SetBoolean<M: Model>(
+    c: fmi2Component,
+    vr: *const fmi2ValueReference,
+    nvr: usize,
+    value: *const fmi2Boolean,
+) -> fmi2Status {
+    with_instance::<M>(c, Call::SetBoolean, |inst| {
+        // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
+        let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice(value, nvr, "value")?) };
+        resolve::<M>(vr, "Boolean", &mut inst.variables)?;
+        check_set_boolean(inst.state, &inst.variables)?;
+        inst.model
+            .set_boolean(inst.state, &inst.variables, value)
+            .map(ok)
+    })
+}
+
+/// Writes String variables (parameters: before fmi2ExitInitializationMode).
+pub unsafe fn fmi2SetString<M: Model>(
+    c: fmi2Component,
+    vr: *const fmi2ValueReference,
+    nvr: usize,
+    value: *const fmi2String,
+) -> fmi2Status {
+    with_instance::<M>(c, Call::SetString, |inst| {
+        // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
+        let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice(value, nvr, "value")?) };
+        // SAFETY: NUL-terminated strings of the master's (FMI 2.0.4 fmi2String).
+        unsafe { calls::set_string(inst, vr, value) }
+    })
+}
+
+/// The directional derivative Δy = (∂y/∂u) Δu of Real outputs y with respect to Real inputs
+/// u at the current point ([`calls::directional_derivative`]).
+pub unsafe fn fmi2GetDirectionalDerivative<M: Model>(
+    c: fmi2Component,
+    vUnknown_ref: *const fmi2ValueReference,
+    nUnknown: usize,
+    vKnown_ref: *const fmi2ValueReference,
+    nKnown: usize,
+    dvKnown: *const fmi2Real,
+    dvUnknown: *mut fmi2Real,
+) -> fmi2Status {
+    with_instance::<M>(c, Call::GetDirectionalDerivative, |inst| {
+        // SAFETY: nUnknown and nKnown elements (FMI 2.0.4 §2.1.9).
+        let (unknowns, knowns, dv_known, dv_unknown) = unsafe {
+            (
+                slice(vUnknown_ref, nUnknown, "vUnknown_ref")?,
+                slice(vKnown_ref, nKnown, "vKnown_ref")?,
+                slice(dvKnown, nKnown, "dvKnown")?,
+                slice_mut(dvUnknown, nUnknown, "dvUnknown")?,
+            )
+        };
+        calls::directional_derivative(
+            inst,
+            unknowns,
+            knowns,
+            dv_known,
+            dv_unknown,
+            ["vUnknown_ref", "vKnown_ref", "dvKnown"],
+        )
+    })
+}
+
+/// Sets first or second time derivatives of inputs at the current communication point; the
+/// inputs are the resulting polynomials over the next communication step.
+pub unsafe fn fmi2SetRealInputDerivatives<M: Model>(
+    c: fmi2Component,
+    vr: *const fmi2ValueReference,
+    nvr: usize,
+    order: *const fmi2Integer,
+    value: *const fmi2Real,
+) -> fmi2Status {
+    with_instance::<M>(c, Call::SetRealInputDerivatives, |inst| {
+        // SAFETY: nvr elements each (FMI 2.0.4 §4.2.1).
+        let (vr, order, value) = unsafe {
+            (
+                slice(vr, nvr, "vr")?,
+                slice(order, nvr, "order")?,
+                slice(value, nvr, "value")?,
+            )
+        };
+        if M::MAX_INPUT_DERIVATIVE_ORDER == 0 {
+            return Err(no_input_derivatives());
+        }
+        check_input_derivatives::<M>(vr, order, value, &mut inst.variables)?;
+        inst.model
+            .set_real_input_derivatives(&inst.variables, order, value)
+            .map(ok)
+    })
+}
+
+/// Time derivatives of the kinematic outputs at the current communication point.
+pub unsafe fn fmi2GetRealOutputDerivatives<M: Model>(
+    c: fmi2Component,
+    vr: *const fmi2ValueReference,
+    nvr: usize,
+    order: *const fmi2Integer,
+    value: *mut fmi2Real,
+) -> fmi2Status {
+    with_instance::<M>(c, Call::GetRealOutputDerivatives, |inst| {
+        // SAFETY: nvr elements each (FMI 2.0.4 §4.2.1).
+        let (vr, order, value) = unsafe {
+            (
+                slice(vr, nvr, "vr")?,
+                slice(order, nvr, "order")?,
+                slice_mut(value, nvr, "value")?,
+            )
+        };
+        calls::output_derivatives(inst, vr, order, value)
+    })
+}

@@ -1,0 +1,333 @@
+//! Getting and setting values (FMI 3.0 §2.3.6): Float64 (with the independent variable `time`),
+//! Int32, Int64 (the switches, FMI 3 Enumerations), Boolean and String; the FMU has no variable
+//! of the other types, whose functions refuse every value reference.
+#![allow(unsafe_code, non_snake_case, clippy::missing_safety_doc)]
+
+use fmi_sys::fmi3::*;
+
+use super::arrays::{get_float64, refuse_arrays, scalars};
+use super::codes::with_instance;
+use crate::calls;
+use crate::checks::{check_set_boolean, check_set_integer, check_set_real, lookup, resolve};
+use crate::error::FmuError;
+use crate::ffi::{slice, slice_mut};
+use crate::fmi3::description::TIME_VALUE_REFERENCE;
+use crate::logger::Logger;
+use crate::model::{Instance, Model, Var};
+use crate::state::Call;
+use crate::status::{Status, ok};
+
+/// The value references and values of a get call.
+///
+/// # Safety
+/// As [`slice`] and [`slice_mut`], for `n` elements each.
+unsafe fn get_args<'a, T>(
+    vr: *const fmi3ValueReference,
+    nvr: usize,
+    values: *mut T,
+    n: usize,
+) -> Result<(&'a [u32], &'a mut [T]), FmuError> {
+    scalars(nvr, n)?;
+    // SAFETY: the caller's contract.
+    unsafe {
+        Ok((
+            slice(vr, nvr, "valueReferences")?,
+            slice_mut(values, n, "values")?,
+        ))
+    }
+}
+
+/// The value references and values of a set call.
+///
+/// # Safety
+/// As [`slice`], for `n` elements each.
+unsafe fn set_args<'a, T>(
+    vr: *const fmi3ValueReference,
+    nvr: usize,
+    values: *const T,
+    n: usize,
+) -> Result<(&'a [u32], &'a [T]), FmuError> {
+    scalars(nvr, n)?;
+    if vr.is_null() && nvr > 0 {
+        return Err(FmuError::Null("valueReferences"));
+    }
+    // SAFETY: the caller's contract.
+    unsafe {
+        Ok((
+            slice(vr, nvr, "valueReferences")?,
+            slice(values, n, "values")?,
+        ))
+    }
+}
+
+/// Reads Float64 variables and arrays; `time` is the time the instance has reached.
+pub unsafe fn fmi3GetFloat64<M: Model>(
+    instance: fmi3Instance,
+    valueReferences: *const fmi3ValueReference,
+    nValueReferences: usize,
+    values: *mut fmi3Float64,
+    nValues: usize,
+) -> fmi3Status {
+    with_instance::<M>(instance, Call::GetReal, |inst| {
+        // SAFETY: nValueReferences and nValues elements (FMI 3.0 §2.3.6).
+        let (vr, values) = unsafe {
+            (
+                slice(valueReferences, nValueReferences, "valueReferences")?,
+                slice_mut(values, nValues, "values")?,
+            )
+        };
+        get_float64(inst, vr, values).map(ok)
+    })
+}
+
+/// Writes Float64 parameters (before initialization ends) and inputs.
+pub unsafe fn fmi3SetFloat64<M: Model>(
+    instance: fmi3Instance,
+    valueReferences: *const fmi3ValueReference,
+    nValueReferences: usize,
+    values: *const fmi3Float64,
+    nValues: usize,
+) -> fmi3Status {
+    with_instance::<M>(instance, Call::SetReal, |inst| {
+        // SAFETY: nValueReferences value references (FMI 3.0 §2.3.6).
+        refuse_arrays(inst, unsafe {
+            slice(valueReferences, nValueReferences, "valueReferences")
+        }?)?;
+        // SAFETY: nValueReferences and nValues elements (FMI 3.0 §2.3.6).
+        let (vr, values) = unsafe { set_args(valueReferences, nValueReferences, values, nValues) }?;
+        if vr.contains(&TIME_VALUE_REFERENCE) {
+            return Err(FmuError::Invalid(
+                "time is the independent variable and cannot be set".into(),
+            ));
+        }
+        resolve::<M>(vr, "Float64", &mut inst.variables)?;
+        check_set_real(inst.state, &inst.variables, values)?;
+        inst.model
+            .set_real(inst.state, &inst.variables, values)
+            .map(ok)
+    })
+}
+
+/// Reads Int32 variables.
+pub unsafe fn fmi3GetInt32<M: Model>(
+    instance: fmi3Instance,
+    valueReferences: *const fmi3ValueReference,
+    nValueReferences: usize,
+    values: *mut fmi3Int32,
+    nValues: usize,
+) -> fmi3Status {
+    with_instance::<M>(instance, Call::GetInteger, |inst| {
+        // SAFETY: nValueReferences and nValues elements (FMI 3.0 §2.3.6).
+        let (vr, values) = unsafe { get_args(valueReferences, nValueReferences, values, nValues) }?;
+        resolve::<M>(vr, "Int32", &mut inst.variables)?;
+        inst.model
+            .get_integer(&inst.logger, &inst.variables, values)
+            .map(ok)
+    })
+}
+
+/// Writes Int32 parameters (before initialization ends).
+pub unsafe fn fmi3SetInt32<M: Model>(
+    instance: fmi3Instance,
+    valueReferences: *const fmi3ValueReference,
+    nValueReferences: usize,
+    values: *const fmi3Int32,
+    nValues: usize,
+) -> fmi3Status {
+    with_instance::<M>(instance, Call::SetInteger, |inst| {
+        // SAFETY: nValueReferences and nValues elements (FMI 3.0 §2.3.6).
+        let (vr, values) = unsafe { set_args(valueReferences, nValueReferences, values, nValues) }?;
+        resolve::<M>(vr, "Int32", &mut inst.variables)?;
+        check_set_integer::<M>(inst.state, &inst.variables, values)?;
+        inst.model
+            .set_integer(inst.state, &inst.variables, values)
+            .map(ok)
+    })
+}
+
+/// The model's callback that reads variables as the i32 of FMI 2 (Integer, Boolean).
+type ReadI32<M> = fn(&mut M, &Logger, &[Var<<M as Model>::Vr>], &mut [i32]) -> Result<(), FmuError>;
+
+/// Reads the variables `vr` of type `base` through the model's i32 callback `read`, each value
+/// converted to the FMI 3 type by `convert`.
+fn read_as<M: Model, T>(
+    inst: &mut Instance<M>,
+    vr: &[u32],
+    values: &mut [T],
+    base: &str,
+    read: ReadI32<M>,
+    convert: fn(i32) -> T,
+) -> Result<Status, FmuError> {
+    resolve::<M>(vr, base, &mut inst.variables)?;
+    inst.integers.clear();
+    inst.integers.resize(values.len(), 0);
+    read(
+        &mut inst.model,
+        &inst.logger,
+        &inst.variables,
+        &mut inst.integers,
+    )?;
+    for (value, &x) in values.iter_mut().zip(&inst.integers) {
+        *value = convert(x);
+    }
+    Ok(Status::Ok)
+}
+
+/// Reads the switches (FMI 3 Enumerations, exchanged as Int64).
+pub unsafe fn fmi3GetInt64<M: Model>(
+    instance: fmi3Instance,
+    valueReferences: *const fmi3ValueReference,
+    nValueReferences: usize,
+    values: *mut fmi3Int64,
+    nValues: usize,
+) -> fmi3Status {
+    with_instance::<M>(instance, Call::GetInt64, |inst| {
+        // SAFETY: nValueReferences and nValues elements (FMI 3.0 §2.3.6).
+        let (vr, values) = unsafe { get_args(valueReferences, nValueReferences, values, nValues) }?;
+        read_as(inst, vr, values, "Int64", M::get_integer, i64::from)
+    })
+}
+
+/// Writes the switches (before initialization ends), each one of its type's items.
+pub unsafe fn fmi3SetInt64<M: Model>(
+    instance: fmi3Instance,
+    valueReferences: *const fmi3ValueReference,
+    nValueReferences: usize,
+    values: *const fmi3Int64,
+    nValues: usize,
+) -> fmi3Status {
+    with_instance::<M>(instance, Call::SetInt64, |inst| {
+        // SAFETY: nValueReferences and nValues elements (FMI 3.0 §2.3.6).
+        let (vr, values) = unsafe { set_args(valueReferences, nValueReferences, values, nValues) }?;
+        resolve::<M>(vr, "Int64", &mut inst.variables)?;
+        inst.integers.clear();
+        for (v, &value) in inst.variables.iter().zip(values) {
+            let item = i32::try_from(value).map_err(|_| {
+                FmuError::Invalid(format!("{} = {value} is not one of its items", v.name))
+            })?;
+            inst.integers.push(item);
+        }
+        check_set_integer::<M>(inst.state, &inst.variables, &inst.integers)?;
+        inst.model
+            .set_integer(inst.state, &inst.variables, &inst.integers)
+            .map(ok)
+    })
+}
+
+/// Reads Boolean variables.
+pub unsafe fn fmi3GetBoolean<M: Model>(
+    instance: fmi3Instance,
+    valueReferences: *const fmi3ValueReference,
+    nValueReferences: usize,
+    values: *mut fmi3Boolean,
+    nValues: usize,
+) -> fmi3Status {
+    with_instance::<M>(instance, Call::GetBoolean, |inst| {
+        // SAFETY: nValueReferences and nValues elements (FMI 3.0 §2.3.6).
+        let (vr, values) = unsafe { get_args(valueReferences, nValueReferences, values, nValues) }?;
+        read_as(inst, vr, values, "Boolean", M::get_boolean, |flag| {
+            flag != 0
+        })
+    })
+}
+
+/// Writes Boolean variables (the model says which are settable).
+pub unsafe fn fmi3SetBoolean<M: Model>(
+    instance: fmi3Instance,
+    valueReferences: *const fmi3ValueReference,
+    nValueReferences: usize,
+    values: *const fmi3Boolean,
+    nValues: usize,
+) -> fmi3Status {
+    with_instance::<M>(instance, Call::SetBoolean, |inst| {
+        // SAFETY: nValueReferences and nValues elements (FMI 3.0 §2.3.6).
+        let (vr, values) = unsafe { set_args(valueReferences, nValueReferences, values, nValues) }?;
+        resolve::<M>(vr, "Boolean", &mut inst.variables)?;
+        check_set_boolean(inst.state, &inst.variables)?;
+        inst.integers.clear();
+        inst.integers.extend(values.iter().map(|&b| i32::from(b)));
+        inst.model
+            .set_boolean(inst.state, &inst.variables, &inst.integers)
+            .map(ok)
+    })
+}
+
+/// Reads String variables; the strings stay valid until the next call on the instance.
+pub unsafe fn fmi3GetString<M: Model>(
+    instance: fmi3Instance,
+    valueReferences: *const fmi3ValueReference,
+    nValueReferences: usize,
+    values: *mut fmi3String,
+    nValues: usize,
+) -> fmi3Status {
+    if nValues != nValueReferences {
+        return refuse::<M>(
+            instance,
+            Call::GetString,
+            scalars(nValueReferences, nValues),
+        );
+    }
+    with_instance::<M>(instance, Call::GetString, |inst| {
+        // SAFETY: nValueReferences elements each (FMI 3.0 §2.3.6).
+        let (vr, values) = unsafe { get_args(valueReferences, nValueReferences, values, nValues)? };
+        calls::get_string(inst, vr, values)
+    })
+}
+
+/// Writes String parameters (before initialization ends).
+pub unsafe fn fmi3SetString<M: Model>(
+    instance: fmi3Instance,
+    valueReferences: *const fmi3ValueReference,
+    nValueReferences: usize,
+    values: *const fmi3String,
+    nValues: usize,
+) -> fmi3Status {
+    if nValues != nValueReferences {
+        return refuse::<M>(
+            instance,
+            Call::SetString,
+            scalars(nValueReferences, nValues),
+        );
+    }
+    with_instance::<M>(instance, Call::SetString, |inst| {
+        // SAFETY: nValueReferences elements each, NUL-terminated strings (FMI 3.0 §2.3.6).
+        unsafe {
+            let (vr, values) = set_args(valueReferences, nValueReferences, values, nValues)?;
+            calls::set_string(inst, vr, values)
+        }
+    })
+}
+
+/// Logs and returns the error of a call refused before it reaches the model.
+pub(super) fn refuse<M: Model>(
+    instance: fmi3Instance,
+    call: Call,
+    error: Result<(), FmuError>,
+) -> fmi3Status {
+    with_instance::<M>(instance, call, |_| error.map(ok))
+}
+
+/// A get or set function of a type the FMU has no variable of (`call` names it, `type_name` the
+/// type): an empty request succeeds, any value reference is refused, naming its variable.
+///
+/// # Safety
+/// `valueReferences` is NULL or points to `nValueReferences` value references.
+pub unsafe fn no_variable_of_type<M: Model>(
+    instance: fmi3Instance,
+    call: &'static str,
+    type_name: &str,
+    valueReferences: *const fmi3ValueReference,
+    nValueReferences: usize,
+) -> fmi3Status {
+    with_instance::<M>(instance, Call::Other(call), |_| {
+        // SAFETY: the caller's contract.
+        let vr = unsafe { slice(valueReferences, nValueReferences, "valueReferences") }?;
+        match vr.first() {
+            None => Ok(Status::Ok),
+            Some(&TIME_VALUE_REFERENCE) => Err(FmuError::Invalid(format!(
+                "value reference {TIME_VALUE_REFERENCE} (time) is not of type {type_name}"
+            ))),
+            Some(&r) => lookup(M::VARIABLES, r, type_name).map(|_| Status::Ok),
+        }
+    })
+}

@@ -1,0 +1,443 @@
+//! [`Model`]: what a model supplies; [`Instance`]: one FMU instance of it — the model, the
+//! master's logger and the state machine — and the framing of its serialized states.
+
+use crate::error::FmuError;
+use crate::interface::Fmi3Interface;
+use crate::logger::Logger;
+use crate::state::{State, Version};
+use crate::table::{Enumeration, ValueReference, Variable};
+
+/// A co-simulation model behind the FMI functions. The generic layer resolves every value
+/// reference to the model's [`Variable`] before a getter or setter sees it ([`crate::checks::resolve`]: it
+/// exists and has the function's type) and checks that a value to set is settable in the current
+/// state and inside its declared range ([`crate::checks`]): the callbacks receive typed, checked variables ([`Var`]) and only
+/// dispatch. Every method that may need to log gets the instance's logger.
+pub trait Model: Sized + 'static {
+    /// The GUID of the model's modelDescription.xml.
+    const GUID: &'static str;
+    /// Log categories (name, description), as in modelDescription.xml.
+    const LOG_CATEGORIES: &'static [(&'static str, &'static str)];
+    /// Four bytes that open every serialized state of this model.
+    const STATE_MAGIC: [u8; 4];
+    /// Version of the state format; a state of another version is rejected.
+    const STATE_VERSION: u32;
+    /// The model's value references.
+    type Vr: ValueReference;
+    /// The model's variable table, in value-reference order (the generic checks read it).
+    const VARIABLES: &'static [Variable<Self::Vr>];
+    /// The switch types its enumeration variables refer to.
+    const ENUMERATIONS: &'static [Enumeration] = &[];
+    /// The highest order of input derivatives it takes (0: canInterpolateInputs = false).
+    const MAX_INPUT_DERIVATIVE_ORDER: u32 = 0;
+    /// What its FMI 3 interface adds to the table: capabilities, structural parameters, arrays.
+    const FMI3: Fmi3Interface = Fmi3Interface::NONE;
+    /// The instantiation tokens of its FMI 3 descriptions: the one of [`Model::FMI3`], and the
+    /// one without arrays ([`Fmi3Interface::scalar`]; the same for a model without arrays). An
+    /// instance serves the interface of the token it was instantiated with.
+    const FMI3_TOKENS: [&'static str; 2] = [Self::GUID, Self::GUID];
+
+    /// A model with every start value (instantiation, Reset).
+    fn new() -> Self;
+
+    /// The experiment: fmi2SetupExperiment, fmi3EnterInitializationMode.
+    fn setup_experiment(
+        &mut self,
+        log: &Logger,
+        tolerance: Option<f64>,
+        start: f64,
+        stop: Option<f64>,
+    ) -> Result<(), FmuError>;
+
+    /// ExitInitializationMode: every parameter check happens here at the latest.
+    fn exit_initialization(&mut self, log: &Logger) -> Result<(), FmuError>;
+
+    /// fmi2DoStep and fmi3DoStep from `t` over `h`; [`FmuError::Discard`] if the step failed.
+    /// With `early_return` (FMI 3's earlyReturnAllowed) it may stop before `t + h` at an event of
+    /// the model, on the clock grid ([`crate::clock`]), and say so.
+    fn do_step(
+        &mut self,
+        log: &Logger,
+        t: f64,
+        h: f64,
+        early_return: bool,
+    ) -> Result<StepOutcome, FmuError>;
+
+    /// FMI 3 intermediate update: [`Model::do_step`] that may also pause after an internal step
+    /// ending before `t + h` ([`StepOutcome::Paused`]), with its state there the one the getters
+    /// read; called again with the same arguments, it resumes. By default it does not pause.
+    fn do_step_pausing(
+        &mut self,
+        log: &Logger,
+        t: f64,
+        h: f64,
+        early_return: bool,
+    ) -> Result<StepOutcome, FmuError> {
+        self.do_step(log, t, h, early_return)
+    }
+
+    /// Ends a paused step at the pause, as an early return (on the clock grid): the time
+    /// reached, or None where the step cannot end there (it then stays paused). By default no
+    /// step pauses.
+    fn return_at_pause(&mut self, _log: &Logger) -> Result<Option<f64>, FmuError> {
+        Ok(None)
+    }
+
+    /// The time up to which the last step succeeded (FMI 2's fmi2LastSuccessfulTime, FMI 3's
+    /// lastSuccessfulTime).
+    fn last_successful_time(&self) -> f64;
+
+    /// fmi2GetReal, fmi3GetFloat64.
+    fn get_real(
+        &mut self,
+        log: &Logger,
+        vars: &[Var<Self::Vr>],
+        value: &mut [f64],
+    ) -> Result<(), FmuError>;
+
+    /// fmi2SetReal, fmi3SetFloat64 in machine state `state`.
+    fn set_real(
+        &mut self,
+        state: State,
+        vars: &[Var<Self::Vr>],
+        value: &[f64],
+    ) -> Result<(), FmuError>;
+
+    /// fmi3GetFloat64 of the array `array` (its index in [`Model::FMI3`]'s arrays) at the current
+    /// point: `value` has the length its structural parameter gives. A model with arrays
+    /// implements it; the generic layer calls it for no other.
+    fn get_array(
+        &mut self,
+        _log: &Logger,
+        array: usize,
+        _value: &mut [f64],
+    ) -> Result<(), FmuError> {
+        Err(FmuError::Invalid(format!("array {array} cannot be read")))
+    }
+
+    /// fmi2GetInteger, fmi3GetInt32 and fmi3GetInt64 (the switches).
+    fn get_integer(
+        &mut self,
+        log: &Logger,
+        vars: &[Var<Self::Vr>],
+        value: &mut [i32],
+    ) -> Result<(), FmuError>;
+
+    /// fmi2SetInteger, fmi3SetInt32 and fmi3SetInt64 in machine state `state`: by default no Integer variable is settable.
+    fn set_integer(
+        &mut self,
+        _state: State,
+        vars: &[Var<Self::Vr>],
+        _value: &[i32],
+    ) -> Result<(), FmuError> {
+        not_settable(vars)
+    }
+
+    /// GetBoolean: a model with Boolean variables reads them here (by default it has none,
+    /// and [`crate::checks::resolve`] refuses every value reference before this is called).
+    fn get_boolean(
+        &mut self,
+        _log: &Logger,
+        vars: &[Var<Self::Vr>],
+        _value: &mut [i32],
+    ) -> Result<(), FmuError> {
+        match vars.first() {
+            Some(v) => Err(FmuError::Invalid(format!("{} cannot be read", v.name))),
+            None => Ok(()),
+        }
+    }
+
+    /// SetBoolean: by default no Boolean variable is settable.
+    fn set_boolean(
+        &mut self,
+        _state: State,
+        vars: &[Var<Self::Vr>],
+        _value: &[i32],
+    ) -> Result<(), FmuError> {
+        not_settable(vars)
+    }
+
+    /// GetString: a model with String variables writes their values to `value` (cleared
+    /// first); by default it has none, and [`crate::checks::resolve`] refuses every value reference before this
+    /// is called.
+    fn get_string(
+        &mut self,
+        vars: &[Var<Self::Vr>],
+        _value: &mut Vec<String>,
+    ) -> Result<(), FmuError> {
+        match vars.first() {
+            Some(v) => Err(FmuError::Invalid(format!("{} cannot be read", v.name))),
+            None => Ok(()),
+        }
+    }
+
+    /// SetString: by default no String variable is settable.
+    fn set_string(
+        &mut self,
+        _state: State,
+        vars: &[Var<Self::Vr>],
+        _value: &[&str],
+    ) -> Result<(), FmuError> {
+        not_settable(vars)
+    }
+
+    /// The directory of the FMU's unpacked `resources` folder, from the instantiation's
+    /// resource location (FMI 2: a `file:` URI; FMI 3: a path), if the master gave one that names a directory here:
+    /// for a model that reads files from it. By default it is not kept.
+    fn set_resource_directory(&mut self, _directory: Option<std::path::PathBuf>) {}
+
+    /// fmi2SetRealInputDerivatives, the arguments checked ([`crate::checks::check_input_derivatives`]); called
+    /// only for a model with [`Model::MAX_INPUT_DERIVATIVE_ORDER`] > 0 (the generic layer refuses
+    /// the call otherwise), which implements it.
+    fn set_real_input_derivatives(
+        &mut self,
+        _vars: &[Var<Self::Vr>],
+        _order: &[i32],
+        _value: &[f64],
+    ) -> Result<(), FmuError> {
+        Err(no_input_derivatives())
+    }
+
+    /// fmi2GetRealOutputDerivatives, fmi3GetOutputDerivatives; by default none are provided.
+    fn get_real_output_derivatives(
+        &mut self,
+        _log: &Logger,
+        _vars: &[Var<Self::Vr>],
+        _order: &[i32],
+        _value: &mut [f64],
+    ) -> Result<(), FmuError> {
+        Err(FmuError::Invalid(
+            "output derivatives are not provided (maxOutputDerivativeOrder = 0)".into(),
+        ))
+    }
+
+    /// ∂y/∂u: the partial derivatives of the Real outputs `unknowns` with respect to the Real
+    /// input `known` at the current point (one column of the Jacobian that
+    /// fmi2GetDirectionalDerivative multiplies); both are already checked to be an output and
+    /// an input. By default none are provided.
+    fn output_sensitivity(
+        &mut self,
+        _log: &Logger,
+        _known: Var<Self::Vr>,
+        _unknowns: &[Var<Self::Vr>],
+        _column: &mut [f64],
+    ) -> Result<(), FmuError> {
+        Err(FmuError::Invalid(
+            "directional derivatives are not provided (providesDirectionalDerivative = false)"
+                .into(),
+        ))
+    }
+
+    /// Appends the model's complete state (pointer-free) to `out`.
+    fn save(&self, out: &mut Vec<u8>);
+
+    /// Parses and checks bytes written by [`Model::save`] and, if `apply`, resumes from them.
+    /// Nothing changes when they are rejected.
+    fn load(&mut self, log: &Logger, bytes: &[u8], apply: bool) -> Result<(), FmuError>;
+}
+
+/// How a step that succeeded ended.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum StepOutcome {
+    /// At the communication point.
+    Completed,
+    /// Paused inside it after an internal step (FMI 3 intermediate update,
+    /// [`Model::do_step_pausing`]).
+    Paused {
+        /// The internal step's end \[s\].
+        time: f64,
+    },
+    /// Before it, at an event of the model (FMI 3 early return).
+    ReturnedEarly {
+        /// The time reached \[s\], on the clock grid.
+        time: f64,
+        /// What happened there, for the log ("contact onset in crankPin").
+        event: &'static str,
+    },
+}
+
+/// The refusal of input derivatives by a model that takes none.
+pub fn no_input_derivatives() -> FmuError {
+    FmuError::Invalid("input derivatives are not supported (canInterpolateInputs = false)".into())
+}
+
+/// A variable of a model's table, as the callbacks receive it.
+pub type Var<V> = &'static Variable<V>;
+
+/// An error for a non-empty set request on variables of a type the model has none settable of
+/// (by their causality, [`crate::checks::check_settable`] refuses them before this is called).
+pub fn not_settable<V>(vars: &[Var<V>]) -> Result<(), FmuError> {
+    match vars.first() {
+        Some(v) => Err(FmuError::Invalid(format!("{} cannot be set", v.name))),
+        None => Ok(()),
+    }
+}
+
+/// One FMU instance.
+#[derive(Debug)]
+pub struct Instance<M: Model> {
+    /// The master's logger.
+    pub logger: Logger,
+    /// State-machine state.
+    pub state: State,
+    /// Set after a caught panic: only Reset and FreeInstance are accepted.
+    pub poisoned: bool,
+    /// The message of the event that put the instance in the Error or StepFailed state (the
+    /// first error, the discarded step), for the calls refused there.
+    pub cause: Option<String>,
+    /// The model.
+    pub model: M,
+    /// The variables of the current call, resolved from its value references ([`crate::checks::resolve`]).
+    pub variables: Vec<Var<M::Vr>>,
+    /// The String values GetString returned last: the master may read them until the next
+    /// call on this instance.
+    pub strings: Vec<std::ffi::CString>,
+    /// The FMU's resources directory, from the instantiation (given to every new model).
+    pub resources: Option<std::path::PathBuf>,
+    /// The FMI version it was instantiated through.
+    pub version: Version,
+    /// FMI 3: whether the master allows fmi3DoStep to return early (earlyReturnAllowed).
+    pub early_return_allowed: bool,
+    /// FMI 3: whether the master handles the model's events in Event Mode (eventModeUsed).
+    pub event_mode_used: bool,
+    /// FMI 3: the master's intermediate-update callback and its environment, for a model that
+    /// provides intermediate update.
+    pub intermediate_update: Option<IntermediateUpdate>,
+    /// Integers of the current call in the model's representation (FMI 3's Int64 switches and
+    /// Booleans); its capacity is reused.
+    pub integers: Vec<i32>,
+    /// FMI 3: the values of the model's structural parameters ([`Model::FMI3`]), set in
+    /// Configuration Mode; they size its arrays.
+    pub structural: Vec<u64>,
+    /// FMI 3: the interface of the description the instance was instantiated with
+    /// ([`Model::FMI3_TOKENS`]).
+    pub fmi3: Fmi3Interface,
+}
+
+/// The master's FMI 3 intermediate-update callback with the environment it is called with.
+#[derive(Clone, Copy, Debug)]
+pub struct IntermediateUpdate {
+    /// The callback.
+    pub callback: unsafe extern "C" fn(
+        *mut std::ffi::c_void,
+        f64,
+        bool,
+        bool,
+        bool,
+        bool,
+        *mut bool,
+        *mut f64,
+    ),
+    /// The master's instance environment.
+    pub environment: *mut std::ffi::c_void,
+}
+
+/// The states in the order of their byte in a serialized state.
+const STATES: [State; 7] = [
+    State::Instantiated,
+    State::InitializationMode,
+    State::StepComplete,
+    State::StepFailed,
+    State::Terminated,
+    State::Error,
+    State::EventMode,
+];
+
+/// The checksum that ends a serialized state: FNV-1a 64 of every byte before it.
+pub fn state_checksum(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| {
+        (h ^ u64::from(b)).wrapping_mul(0x100_0000_01b3)
+    })
+}
+
+impl<M: Model> Instance<M> {
+    /// A fresh instance with the start values, its model told the FMU's resources directory.
+    pub fn new(logger: Logger, resources: Option<std::path::PathBuf>) -> Self {
+        let mut model = M::new();
+        model.set_resource_directory(resources.clone());
+        Self {
+            logger,
+            state: State::Instantiated,
+            poisoned: false,
+            cause: None,
+            model,
+            variables: Vec::new(),
+            strings: Vec::new(),
+            resources,
+            version: Version::Fmi2,
+            early_return_allowed: false,
+            event_mode_used: false,
+            intermediate_update: None,
+            integers: Vec::new(),
+            structural: Self::structural_starts(M::FMI3),
+            fmi3: M::FMI3,
+        }
+    }
+
+    /// The start values of the structural parameters of `fmi3`.
+    fn structural_starts(fmi3: Fmi3Interface) -> Vec<u64> {
+        fmi3.structural_parameters.iter().map(|p| p.start).collect()
+    }
+
+    /// Serves the FMI 3 interface `fmi3` (the one of the description it was instantiated with).
+    pub fn serve(&mut self, fmi3: Fmi3Interface) {
+        self.fmi3 = fmi3;
+        self.structural = Self::structural_starts(fmi3);
+    }
+
+    /// Reset: back to Instantiated with every start value.
+    pub fn reset(&mut self) {
+        self.state = State::Instantiated;
+        self.poisoned = false;
+        self.cause = None;
+        self.model = M::new();
+        self.model.set_resource_directory(self.resources.clone());
+        self.structural = Self::structural_starts(self.fmi3);
+    }
+
+    /// The serialized state: magic, version, state machine, the model's bytes, and an FNV-1a 64
+    /// checksum of everything before it (a corrupted byte is rejected, never restored).
+    pub fn serialize(&self) -> Vec<u8> {
+        let mut out = Vec::with_capacity(1024);
+        out.extend_from_slice(&M::STATE_MAGIC);
+        out.extend_from_slice(&M::STATE_VERSION.to_le_bytes());
+        out.push(STATES.iter().position(|s| *s == self.state).unwrap_or(0) as u8);
+        self.model.save(&mut out);
+        let checksum = state_checksum(&out);
+        out.extend_from_slice(&checksum.to_le_bytes());
+        out
+    }
+
+    /// Checks a serialized state and, if `apply`, resumes from it (state machine included).
+    pub fn deserialize(&mut self, bytes: &[u8], apply: bool) -> Result<(), FmuError> {
+        let bad = |what: String| FmuError::Invalid(format!("FMU state rejected: {what}"));
+        if bytes.len() < 4 + 4 + 1 + 8 {
+            return Err(bad(format!("{} bytes is too short", bytes.len())));
+        }
+        let (body, tail) = bytes.split_at(bytes.len() - 8);
+        let mut sum = [0; 8];
+        sum.copy_from_slice(tail);
+        if state_checksum(body) != u64::from_le_bytes(sum) {
+            return Err(bad("checksum mismatch (corrupted bytes)".into()));
+        }
+        if body[..4] != M::STATE_MAGIC {
+            return Err(bad("wrong magic (not a state of this FMU)".into()));
+        }
+        let mut version = [0; 4];
+        version.copy_from_slice(&body[4..8]);
+        let version = u32::from_le_bytes(version);
+        if version != M::STATE_VERSION {
+            return Err(bad(format!(
+                "format version {version}, expected {}",
+                M::STATE_VERSION
+            )));
+        }
+        let state = *STATES
+            .get(usize::from(body[8]))
+            .ok_or_else(|| bad("invalid state".into()))?;
+        self.model.load(&self.logger, &body[9..], apply)?;
+        if apply {
+            self.state = state;
+        }
+        Ok(())
+    }
+}
