@@ -5,9 +5,9 @@ use fmi_core::clock::on_clock_grid;
 use fmi_core::codec::{ByteReader, ByteWriter};
 use fmi_core::number::Num;
 use fmi_core::signal::Polynomial;
-use fmi_export::checks::{check_real, check_step};
+use fmi_export::checks::check_real;
 use fmi_export::model::Var;
-use fmi_export::{FmuError, Logger, Model, State, StepOutcome};
+use fmi_export::{Experiment, FmuError, Logger, Model, State, Step, StepOutcome};
 
 use crate::coupling::{self, Exchange};
 use crate::motor::{MotorInputs, MotorOutputs, MotorParameters, MotorState, substeps};
@@ -37,9 +37,8 @@ pub struct DcMotorFmu {
     inputs: Signal,
     /// [i, ω, φ, z], once initialised.
     state: Option<MotorState>,
+    /// The motor's time: the communication point on the clock grid \[s\].
     time: f64,
-    stop_time: Option<f64>,
-    last_successful_time: f64,
     /// Warnings since the start (unstable communication steps).
     warnings: u32,
     /// The communication step whose coupling stability was checked last.
@@ -149,7 +148,7 @@ impl Model for DcMotorFmu {
         crate::variables::DESCRIPTION.max_input_derivative_order;
     const LOG_CATEGORIES: &'static [(&'static str, &'static str)] = LOG_CATEGORIES;
     const STATE_MAGIC: [u8; 4] = *b"DCMS";
-    const STATE_VERSION: u32 = 2;
+    const STATE_VERSION: u32 = 3;
 
     fn new() -> Self {
         Self {
@@ -163,31 +162,14 @@ impl Model for DcMotorFmu {
             },
             state: None,
             time: 0.0,
-            stop_time: None,
-            last_successful_time: 0.0,
             warnings: 0,
             checked_step: None,
         }
     }
 
-    fn setup_experiment(
-        &mut self,
-        _log: &Logger,
-        _tolerance: Option<f64>,
-        start: f64,
-        stop: Option<f64>,
-    ) -> Result<(), FmuError> {
-        if !start.is_finite() || stop.is_some_and(|s| !(s.is_finite() && s >= start)) {
-            return Err(FmuError::Invalid(format!(
-                "startTime = {} and stopTime = {} must be finite, stopTime >= startTime",
-                Num(start),
-                stop.map_or("undefined".to_string(), |s| Num(s).to_string())
-            )));
-        }
-        self.time = on_clock_grid(start);
-        self.last_successful_time = self.time;
+    fn setup_experiment(&mut self, _log: &Logger, e: &Experiment) -> Result<(), FmuError> {
+        self.time = on_clock_grid(e.start);
         self.inputs.start = self.time;
-        self.stop_time = stop;
         Ok(())
     }
 
@@ -202,14 +184,8 @@ impl Model for DcMotorFmu {
     }
 
     /// The motor has no events: every step reaches the communication point.
-    fn do_step(
-        &mut self,
-        log: &Logger,
-        t: f64,
-        h: f64,
-        _early_return: bool,
-    ) -> Result<StepOutcome, FmuError> {
-        check_step(self.time, t, h, self.stop_time)?;
+    fn do_step(&mut self, log: &Logger, step: &Step) -> Result<StepOutcome, FmuError> {
+        let (t, h) = (step.t, step.h);
         // On the clock grid, every master's representation of the same points gives the same
         // step.
         let (t, end) = (on_clock_grid(t), on_clock_grid(t + h));
@@ -231,7 +207,6 @@ impl Model for DcMotorFmu {
             .advance(&mut x, end - t, n, |tau| inputs(&signal, t + tau));
         self.state = Some(x);
         self.time = end;
-        self.last_successful_time = self.time;
         // Input derivatives hold for one communication step; the inputs are then held at the
         // values their polynomials reached.
         self.inputs = Signal {
@@ -239,11 +214,7 @@ impl Model for DcMotorFmu {
             value: signal.at(self.time),
             derivatives: [[0.0; 2]; 2],
         };
-        Ok(StepOutcome::Completed)
-    }
-
-    fn last_successful_time(&self) -> f64 {
-        self.last_successful_time
+        Ok(StepOutcome::Completed { time: end })
     }
 
     fn get_real(
@@ -371,7 +342,7 @@ impl Model for DcMotorFmu {
         Ok(())
     }
 
-    /// The parameters, the input signal, the state (NaN before initialization), the clock, the
+    /// The parameters, the input signal, the state (NaN before initialization), the time, the
     /// warnings count and the last checked step (NaN if none).
     fn save(&self, out: &mut Vec<u8>) {
         let mut w = ByteWriter(out);
@@ -383,8 +354,6 @@ impl Model for DcMotorFmu {
         let x = self.state.unwrap_or([f64::NAN; 4]);
         x.iter().for_each(|&v| w.f64(v));
         w.f64(self.time);
-        w.f64(self.stop_time.unwrap_or(f64::NAN));
-        w.f64(self.last_successful_time);
         w.u32(self.warnings);
         w.f64(self.checked_step.unwrap_or(f64::NAN));
     }
@@ -408,7 +377,7 @@ impl Model for DcMotorFmu {
         };
         let state = [r.f64()?, r.f64()?, r.f64()?, r.f64()?];
         let initialised = state.iter().all(|v| v.is_finite());
-        let (time, stop, last) = (r.f64()?, r.f64()?, r.f64()?);
+        let time = r.f64()?;
         let (warnings, checked) = (r.u32()?, r.f64()?);
         if r.remaining() != 0 {
             return bad(&format!("{} bytes too many", r.remaining()));
@@ -416,7 +385,6 @@ impl Model for DcMotorFmu {
         if !(signal.iter().all(|v| v.is_finite())
             && (initialised || state.iter().all(|v| v.is_nan()))
             && time.is_finite()
-            && last.is_finite()
             && !checked.is_infinite())
         {
             return bad("a non-finite input, state, time or checked step");
@@ -426,8 +394,6 @@ impl Model for DcMotorFmu {
             self.inputs = inputs;
             self.state = initialised.then_some(state);
             self.time = time;
-            self.stop_time = (!stop.is_nan()).then_some(stop);
-            self.last_successful_time = last;
             self.warnings = warnings;
             self.checked_step = (!checked.is_nan()).then_some(checked);
         }

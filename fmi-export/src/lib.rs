@@ -4,7 +4,8 @@
 //! both versions' modelDescription.xml from that table ([`build`]), and at run time it implements
 //! [`Model`] — parameters, inputs, outputs, a step, a state codec — while this crate supplies
 //! everything FMI. Its core knows no FMI version's C types: the instance ([`Instance`]) with its
-//! state machine (one table for both versions, [`state`]), the argument checks ([`checks`]), the
+//! state machine (one table for both versions, [`state`]), the experiment and the clock of the
+//! communication steps ([`experiment`]), the argument checks ([`checks`]), the
 //! master's logger, `catch_unwind` at the boundary ([`ffi`]), the version-free status
 //! ([`Status`]) and the calls both versions make alike ([`calls`]). Two sibling clients turn their
 //! version's C calls into calls of that core: [`fmi2`] (the 34 `fmi2*` functions,
@@ -30,6 +31,8 @@ pub mod checks;
 #[cfg(feature = "runtime")]
 pub mod error;
 #[cfg(feature = "runtime")]
+pub mod experiment;
+#[cfg(feature = "runtime")]
 pub mod ffi;
 #[cfg(feature = "runtime")]
 pub mod logger;
@@ -44,6 +47,8 @@ pub mod status;
 
 #[cfg(feature = "runtime")]
 pub use error::FmuError;
+#[cfg(feature = "runtime")]
+pub use experiment::{Experiment, Step};
 #[cfg(feature = "runtime")]
 pub use logger::Logger;
 #[cfg(feature = "runtime")]

@@ -1,7 +1,9 @@
 //! [`Model`]: what a model supplies; [`Instance`]: one FMU instance of it — the model, the
 //! master's logger and the state machine — and the framing of its serialized states.
 
+use crate::codec::{ByteReader, ByteWriter};
 use crate::error::FmuError;
+use crate::experiment::{Clock, Experiment, Step};
 use crate::interface::Fmi3Interface;
 use crate::logger::Logger;
 use crate::state::{State, Version};
@@ -39,41 +41,26 @@ pub trait Model: Sized + 'static {
     /// A model with every start value (instantiation, Reset).
     fn new() -> Self;
 
-    /// The experiment: fmi2SetupExperiment, fmi3EnterInitializationMode.
+    /// The experiment the master set up (fmi2SetupExperiment, fmi3EnterInitializationMode),
+    /// checked ([`Experiment::new`]); the clock is the generic layer's ([`crate::experiment`]).
+    /// By default the model takes no notice.
     fn setup_experiment(
         &mut self,
-        log: &Logger,
-        tolerance: Option<f64>,
-        start: f64,
-        stop: Option<f64>,
-    ) -> Result<(), FmuError>;
+        _log: &Logger,
+        _experiment: &Experiment,
+    ) -> Result<(), FmuError> {
+        Ok(())
+    }
 
     /// ExitInitializationMode: every parameter check happens here at the latest.
     fn exit_initialization(&mut self, log: &Logger) -> Result<(), FmuError>;
 
-    /// fmi2DoStep and fmi3DoStep from `t` over `h`; [`FmuError::Discard`] if the step failed.
-    /// With `early_return` (FMI 3's earlyReturnAllowed) it may stop before `t + h` at an event of
-    /// the model, on the clock grid ([`crate::clock`]), and say so.
-    fn do_step(
-        &mut self,
-        log: &Logger,
-        t: f64,
-        h: f64,
-        early_return: bool,
-    ) -> Result<StepOutcome, FmuError>;
-
-    /// FMI 3 intermediate update: [`Model::do_step`] that may also pause after an internal step
-    /// ending before `t + h` ([`StepOutcome::Paused`]), with its state there the one the getters
-    /// read; called again with the same arguments, it resumes. By default it does not pause.
-    fn do_step_pausing(
-        &mut self,
-        log: &Logger,
-        t: f64,
-        h: f64,
-        early_return: bool,
-    ) -> Result<StepOutcome, FmuError> {
-        self.do_step(log, t, h, early_return)
-    }
+    /// fmi2DoStep and fmi3DoStep: the step `step` (checked against the clock), to its end, or
+    /// early at an event of the model where `step.early_return` allows it (on the clock grid,
+    /// [`crate::clock`]), or paused after an internal step where `step.pause` allows it (its state
+    /// there the one the getters read; called again with the same step, it resumes); what
+    /// happened is the outcome, and [`FmuError::Discard`] says where a failed step stopped.
+    fn do_step(&mut self, log: &Logger, step: &Step) -> Result<StepOutcome, FmuError>;
 
     /// Ends a paused step at the pause, as an early return (on the clock grid): the time
     /// reached, or None where the step cannot end there (it then stays paused). By default no
@@ -81,10 +68,6 @@ pub trait Model: Sized + 'static {
     fn return_at_pause(&mut self, _log: &Logger) -> Result<Option<f64>, FmuError> {
         Ok(None)
     }
-
-    /// The time up to which the last step succeeded (FMI 2's fmi2LastSuccessfulTime, FMI 3's
-    /// lastSuccessfulTime).
-    fn last_successful_time(&self) -> f64;
 
     /// fmi2GetReal, fmi3GetFloat64.
     fn get_real(
@@ -239,9 +222,12 @@ pub trait Model: Sized + 'static {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum StepOutcome {
     /// At the communication point.
-    Completed,
-    /// Paused inside it after an internal step (FMI 3 intermediate update,
-    /// [`Model::do_step_pausing`]).
+    Completed {
+        /// The time reached \[s\]: t + h, or the point on the clock grid nearest it for a model
+        /// that keeps its time there.
+        time: f64,
+    },
+    /// Paused inside it after an internal step (FMI 3 intermediate update, [`Step::pause`]).
     Paused {
         /// The internal step's end \[s\].
         time: f64,
@@ -286,6 +272,8 @@ pub struct Instance<M: Model> {
     pub cause: Option<String>,
     /// The model.
     pub model: M,
+    /// The experiment and the communication clock.
+    pub clock: Clock,
     /// The variables of the current call, resolved from its value references ([`crate::checks::resolve`]).
     pub variables: Vec<Var<M::Vr>>,
     /// The String values GetString returned last: the master may read them until the next
@@ -360,6 +348,7 @@ impl<M: Model> Instance<M> {
             poisoned: false,
             cause: None,
             model,
+            clock: Clock::default(),
             variables: Vec::new(),
             strings: Vec::new(),
             resources,
@@ -391,16 +380,18 @@ impl<M: Model> Instance<M> {
         self.cause = None;
         self.model = M::new();
         self.model.set_resource_directory(self.resources.clone());
+        self.clock = Clock::default();
         self.structural = Self::structural_starts(self.fmi3);
     }
 
-    /// The serialized state: magic, version, state machine, the model's bytes, and an FNV-1a 64
-    /// checksum of everything before it (a corrupted byte is rejected, never restored).
+    /// The serialized state: magic, version, state machine, clock, the model's bytes, and an
+    /// FNV-1a 64 checksum of everything before it (a corrupted byte is rejected, never restored).
     pub fn serialize(&self) -> Vec<u8> {
         let mut out = Vec::with_capacity(1024);
         out.extend_from_slice(&M::STATE_MAGIC);
         out.extend_from_slice(&M::STATE_VERSION.to_le_bytes());
         out.push(STATES.iter().position(|s| *s == self.state).unwrap_or(0) as u8);
+        self.clock.write(&mut ByteWriter(&mut out));
         self.model.save(&mut out);
         let checksum = state_checksum(&out);
         out.extend_from_slice(&checksum.to_le_bytes());
@@ -434,9 +425,13 @@ impl<M: Model> Instance<M> {
         let state = *STATES
             .get(usize::from(body[8]))
             .ok_or_else(|| bad("invalid state".into()))?;
-        self.model.load(&self.logger, &body[9..], apply)?;
+        let mut reader = ByteReader::new(&body[9..]);
+        let clock = Clock::read(&mut reader)?;
+        let model = &body[body.len() - reader.remaining()..];
+        self.model.load(&self.logger, model, apply)?;
         if apply {
             self.state = state;
+            self.clock = clock;
         }
         Ok(())
     }

@@ -12,6 +12,7 @@ use std::fmt::Write as _;
 
 use crate::checks::{check_set_integer, check_set_real, check_set_string, lookup};
 use crate::error::FmuError;
+use crate::experiment::{Clock, Step};
 use crate::logger::Logger;
 use crate::model::{Model, Var};
 use crate::state::State;
@@ -47,6 +48,7 @@ pub struct Slave<M: Model> {
     model: M,
     log: Logger,
     state: State,
+    clock: Clock,
 }
 
 impl<M: Model> Slave<M> {
@@ -56,6 +58,7 @@ impl<M: Model> Slave<M> {
             model: M::new(),
             log: Logger::silent(M::LOG_CATEGORIES),
             state: State::Instantiated,
+            clock: Clock::default(),
         }
     }
 
@@ -82,8 +85,8 @@ impl<M: Model> Slave<M> {
         start: f64,
         stop: Option<f64>,
     ) -> Result<(), FmuError> {
-        self.model
-            .setup_experiment(&self.log, tolerance, start, stop)
+        self.clock
+            .setup(&mut self.model, &self.log, tolerance, start, stop)
     }
 
     /// fmi2EnterInitializationMode.
@@ -184,7 +187,15 @@ impl<M: Model> Slave<M> {
 
     /// fmi2DoStep from `t` over `h`.
     pub fn step(&mut self, t: f64, h: f64) -> Result<(), FmuError> {
-        self.model.do_step(&self.log, t, h, false).map(|_| ())
+        let step = Step {
+            t,
+            h,
+            early_return: false,
+            pause: false,
+        };
+        self.clock
+            .step(&mut self.model, &self.log, step)
+            .map(|_| ())
     }
 }
 

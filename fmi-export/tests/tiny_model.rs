@@ -17,7 +17,7 @@ use fmi_export::fmi3::description::TIME_VALUE_REFERENCE;
 use fmi_export::fmi3::interface::{ArrayVariable, Fmi3Interface, StructuralParameter};
 use fmi_export::model::Var;
 use fmi_export::table::{Causality, ValueReference, Variable};
-use fmi_export::{FmuError, Logger, Model, State, StepOutcome};
+use fmi_export::{Experiment, FmuError, Logger, Model, State, Step, StepOutcome};
 use fmi_sys::fmi2::{fmi2CallbackFunctions, fmi2Type_fmi2CoSimulation};
 use fmi_sys::fmi3::{fmi3InstanceEnvironment, fmi3Status, fmi3String};
 
@@ -115,14 +115,8 @@ impl Model for Lag {
         }
     }
 
-    fn setup_experiment(
-        &mut self,
-        _log: &Logger,
-        _tolerance: Option<f64>,
-        start: f64,
-        _stop: Option<f64>,
-    ) -> Result<(), FmuError> {
-        self.time = on_clock_grid(start);
+    fn setup_experiment(&mut self, _log: &Logger, e: &Experiment) -> Result<(), FmuError> {
+        self.time = on_clock_grid(e.start);
         Ok(())
     }
 
@@ -132,14 +126,8 @@ impl Model for Lag {
 
     /// y(t + h) = u + (y − u) e^(−h/τ); the upward crossing of the threshold at
     /// t + τ ln((y − u)/(threshold − u)), on the clock grid rounded down.
-    fn do_step(
-        &mut self,
-        _log: &Logger,
-        t: f64,
-        h: f64,
-        early_return: bool,
-    ) -> Result<StepOutcome, FmuError> {
-        fmi_export::checks::check_step(self.time, t, h, None)?;
+    fn do_step(&mut self, _log: &Logger, step: &Step) -> Result<StepOutcome, FmuError> {
+        let (t, h, early_return) = (step.t, step.h, step.early_return);
         let end = on_clock_grid(t + h);
         let below = !self.above && self.threshold < self.u;
         let crossing = t + self.tau * ((self.y - self.u) / (self.threshold - self.u)).ln();
@@ -148,7 +136,7 @@ impl Model for Lag {
             let event = "threshold crossed";
             (at, StepOutcome::ReturnedEarly { time: at, event })
         } else {
-            (end, StepOutcome::Completed)
+            (end, StepOutcome::Completed { time: end })
         };
         if below && crossing <= reach + CLOCK_RESOLUTION {
             self.crossings += 1;
@@ -157,10 +145,6 @@ impl Model for Lag {
         self.y = self.u + (self.y - self.u) * (-(reach - t) / self.tau).exp();
         self.time = reach;
         Ok(outcome)
-    }
-
-    fn last_successful_time(&self) -> f64 {
-        self.time
     }
 
     fn get_real(

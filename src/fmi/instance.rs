@@ -3,10 +3,10 @@
 //! the variable table, so every message quotes what the master sees in the XML) come from
 //! `fmi-export`. Values are read and written by an exhaustive `match` on [`Vr`].
 
-use fmi_export::fmi3::interface::Fmi3Interface;
+use fmi_export::interface::Fmi3Interface;
 use fmi_export::model::Var;
 use fmi_export::table::Enumeration;
-use fmi_export::{FmuError, Logger, Model, State, StepOutcome};
+use fmi_export::{Experiment, FmuError, Logger, Model, State, Step, StepOutcome};
 
 use super::outputs::{count_output, real_output, section_array, sensitivity};
 use super::snapshot::FmuSnapshot;
@@ -52,19 +52,18 @@ fn input_of(v: Var<Vr>) -> Result<Input, FmuError> {
     input(v.vr).ok_or_else(|| FmuError::Invalid(format!("{} is not an input", v.name)))
 }
 
-/// The slider-crank behind the FMI functions: parameters, inputs, the simulation and the clock.
+/// The slider-crank behind the FMI functions: parameters, inputs, the simulation and the
+/// experiment it is built for (the clock is the generic layer's).
 #[derive(Debug)]
 pub struct SliderCrankFmu {
     pub(crate) parameters: Parameters,
     /// Input values, and the derivatives set for the next step (fmi2SetRealInputDerivatives).
     pub(crate) inputs: InputSignal,
     pub(crate) simulation: Option<Simulation>,
+    /// The experiment's start time, where the simulation is built \[s\].
     pub(crate) start_time: f64,
-    pub(crate) stop_time: Option<f64>,
-    /// The master's tolerance from fmi2SetupExperiment, if it gave one.
+    /// The master's tolerance, if it gave one.
     pub(crate) tolerance: Option<f64>,
-    pub(crate) time: f64,
-    pub(crate) last_successful_time: f64,
 }
 
 impl SliderCrankFmu {
@@ -81,7 +80,7 @@ impl SliderCrankFmu {
                 ));
             }
             let mut sim = Simulation::with_inputs(parameters, self.inputs.value)?;
-            sim.set_time(self.time);
+            sim.set_time(self.start_time);
             for i in [Input::DriveSpeed, Input::DriveTorque, Input::SliderForce] {
                 for (k, d) in self.inputs.derivatives.iter().enumerate() {
                     sim.set_input_derivative(i, k + 1, d.get(i))?;
@@ -113,7 +112,7 @@ impl Model for SliderCrankFmu {
     const GUID: &'static str = super::model_description::GUID;
     const LOG_CATEGORIES: &'static [(&'static str, &'static str)] = LOG_CATEGORIES;
     const STATE_MAGIC: [u8; 4] = *b"FSCS";
-    const STATE_VERSION: u32 = 16;
+    const STATE_VERSION: u32 = 17;
     type Vr = Vr;
     const VARIABLES: &'static [Variable] = VARIABLES;
     const ENUMERATIONS: &'static [Enumeration] = ENUMERATIONS;
@@ -131,15 +130,8 @@ impl Model for SliderCrankFmu {
             inputs: start_inputs(),
             simulation: None,
             start_time: 0.0,
-            stop_time: None,
             tolerance: None,
-            time: 0.0,
-            last_successful_time: 0.0,
         }
-    }
-
-    fn last_successful_time(&self) -> f64 {
-        self.last_successful_time
     }
 
     /// ∂y/∂u at the current state ([`super::outputs::sensitivity`]).
@@ -170,43 +162,11 @@ impl Model for SliderCrankFmu {
         Ok(())
     }
 
-    /// fmi2SetupExperiment. A defined `tolerance` takes part in the integrator's relative
-    /// tolerance (see [`model_parameters`]).
-    fn setup_experiment(
-        &mut self,
-        _log: &Logger,
-        tolerance: Option<f64>,
-        start: f64,
-        stop: Option<f64>,
-    ) -> Result<(), FmuError> {
-        if let Some(tolerance) = tolerance {
-            if !(tolerance.is_finite() && tolerance > 0.0) {
-                return Err(FmuError::Invalid(format!(
-                    "tolerance = {} must be finite and > 0",
-                    Num(tolerance)
-                )));
-            }
-        }
-        if !start.is_finite() {
-            return Err(FmuError::Invalid(format!(
-                "startTime = {} is not finite",
-                Num(start)
-            )));
-        }
-        if let Some(stop) = stop {
-            if !(stop.is_finite() && stop >= start) {
-                return Err(FmuError::Invalid(format!(
-                    "stopTime = {} must be finite and >= startTime = {}",
-                    Num(stop),
-                    Num(start)
-                )));
-            }
-        }
-        self.start_time = start;
-        self.stop_time = stop;
-        self.tolerance = tolerance;
-        self.time = start;
-        self.last_successful_time = start;
+    /// The experiment: its start time is where the simulation is built, and a defined tolerance
+    /// takes part in the integrator's relative tolerance (see [`model_parameters`]).
+    fn setup_experiment(&mut self, _log: &Logger, e: &Experiment) -> Result<(), FmuError> {
+        self.start_time = e.start;
+        self.tolerance = e.tolerance;
         Ok(())
     }
 
@@ -216,29 +176,12 @@ impl Model for SliderCrankFmu {
         Ok(())
     }
 
-    /// fmi2DoStep from `t` over `h`.
-    /// With `early_return`, the step stops at the end of the first internal step in which a joint
-    /// comes into contact ([`crate::Simulation::advance_to_onset`]).
-    fn do_step(
-        &mut self,
-        log: &Logger,
-        t: f64,
-        h: f64,
-        early_return: bool,
-    ) -> Result<StepOutcome, FmuError> {
-        self.step(log, t, h, early_return, false)
-    }
-
-    /// The step of [`Model::do_step`], paused after every internal step before `t + h`
-    /// ([`crate::Simulation::advance_pausing`]).
-    fn do_step_pausing(
-        &mut self,
-        log: &Logger,
-        t: f64,
-        h: f64,
-        early_return: bool,
-    ) -> Result<StepOutcome, FmuError> {
-        self.step(log, t, h, early_return, true)
+    /// fmi2DoStep and fmi3DoStep ([`SliderCrankFmu::step`]): with `early_return`, the step stops
+    /// at the end of the first internal step in which a joint comes into contact
+    /// ([`crate::Simulation::advance_to_onset`]); with `pause`, it pauses after every internal
+    /// step before its end ([`crate::Simulation::advance_pausing`]).
+    fn do_step(&mut self, log: &Logger, step: &Step) -> Result<StepOutcome, FmuError> {
+        self.step(log, step)
     }
 
     fn return_at_pause(&mut self, log: &Logger) -> Result<Option<f64>, FmuError> {

@@ -8,16 +8,14 @@ use super::snapshot::FmuSnapshot;
 use crate::simulation::Simulation;
 
 impl SliderCrankFmu {
-    /// Captures the complete state (parameters, inputs, clock, simulation).
+    /// Captures the complete state (parameters, inputs, the experiment it was built for,
+    /// simulation).
     pub(super) fn snapshot(&self) -> FmuSnapshot {
         FmuSnapshot {
             parameters: self.parameters.clone(),
             inputs: self.inputs,
             start_time: self.start_time,
-            stop_time: self.stop_time,
             tolerance: self.tolerance,
-            time: self.time,
-            last_successful_time: self.last_successful_time,
             simulation: self.simulation.as_ref().map(Simulation::snapshot),
         }
     }
@@ -49,10 +47,7 @@ impl SliderCrankFmu {
         self.parameters = s.parameters.clone();
         self.inputs = s.inputs;
         self.start_time = s.start_time;
-        self.stop_time = s.stop_time;
         self.tolerance = s.tolerance;
-        self.time = s.time;
-        self.last_successful_time = s.last_successful_time;
         Ok(())
     }
 }

@@ -3,7 +3,8 @@
 //! Layout (little-endian, inside the framing of `fmi-export`: magic, version, state machine,
 //! checksum): the parameter count of the variable table and nModes (so a state from another build
 //! or model is rejected), every parameter in table order (a String as its length and bytes),
-//! whether crank.initialSpeed was set, inputs, clock, the simulation snapshot.
+//! whether crank.initialSpeed was set, inputs, the start time and tolerance the model was built
+//! for, the simulation snapshot (the clock is the framing's).
 
 use fmi_export::FmuError;
 use fmi_export::checks::check_real;
@@ -23,16 +24,10 @@ pub struct FmuSnapshot {
     pub parameters: Parameters,
     /// Input values and the derivatives set for the next step.
     pub inputs: InputSignal,
-    /// Start time \[s\].
+    /// Start time, where the simulation is built \[s\].
     pub start_time: f64,
-    /// Stop time, if defined \[s\].
-    pub stop_time: Option<f64>,
-    /// The master's tolerance from fmi2SetupExperiment, if defined.
+    /// The master's tolerance, if defined.
     pub tolerance: Option<f64>,
-    /// Current communication point \[s\].
-    pub time: f64,
-    /// Last successful time \[s\].
-    pub last_successful_time: f64,
     /// Simulation state, once the model is built.
     pub simulation: Option<Snapshot>,
 }
@@ -67,9 +62,8 @@ impl FmuSnapshot {
         check_range(Vr::DriveSpeed, i.value.drive_speed)?;
         check_range(Vr::DriveTorque, i.value.drive_torque)?;
         check_range(Vr::SliderForce, i.value.slider_force)?;
-        let times = [self.start_time, self.time, self.last_successful_time];
-        if times.iter().any(|t| !t.is_finite()) || self.stop_time.is_some_and(|t| !t.is_finite()) {
-            return Err(rejected("a non-finite time"));
+        if !self.start_time.is_finite() {
+            return Err(rejected("a non-finite start time"));
         }
         if self.tolerance.is_some_and(|t| !(t.is_finite() && t > 0.0)) {
             return Err(rejected("a tolerance that is not a finite positive number"));
@@ -111,12 +105,8 @@ impl FmuSnapshot {
         w.u8(u8::from(self.parameters.crank_initial_speed.is_some()));
         w.signal(&self.inputs);
         w.f64(self.start_time);
-        for x in [self.stop_time, self.tolerance] {
-            w.u8(u8::from(x.is_some()));
-            w.f64(x.unwrap_or(0.0));
-        }
-        w.f64(self.time);
-        w.f64(self.last_successful_time);
+        w.u8(u8::from(self.tolerance.is_some()));
+        w.f64(self.tolerance.unwrap_or(0.0));
         w.u8(u8::from(self.simulation.is_some()));
         if let Some(s) = &self.simulation {
             s.write(&mut w);
@@ -160,12 +150,8 @@ impl FmuSnapshot {
         }
         let inputs = r.signal()?;
         let start_time = r.f64()?;
-        let has_stop = r.flag()?;
-        let stop = r.f64()?;
         let has_tolerance = r.flag()?;
         let tolerance = r.f64()?;
-        let time = r.f64()?;
-        let last_successful_time = r.f64()?;
         let simulation = if r.flag()? {
             Some(Snapshot::read(&mut r)?)
         } else {
@@ -178,10 +164,7 @@ impl FmuSnapshot {
             parameters,
             inputs,
             start_time,
-            stop_time: has_stop.then_some(stop),
             tolerance: has_tolerance.then_some(tolerance),
-            time,
-            last_successful_time,
             simulation,
         })
     }
@@ -199,10 +182,7 @@ mod tests {
             parameters,
             inputs: simulation.next,
             start_time: 0.0,
-            stop_time: Some(0.024),
             tolerance: None,
-            time: 0.0,
-            last_successful_time: 0.0,
             simulation: Some(simulation),
         }
     }
@@ -227,8 +207,8 @@ mod tests {
         s.inputs.value.drive_speed = 1e9;
         assert!(rejected(&s).contains("drive.speed = 1e9 is outside"));
         let mut s = snapshot();
-        s.time = f64::NAN;
-        assert!(rejected(&s).contains("non-finite time"));
+        s.start_time = f64::NAN;
+        assert!(rejected(&s).contains("non-finite start time"));
         let mut s = snapshot();
         s.parameters.joint.clearance = 1.0;
         assert!(rejected(&s).contains("joint.clearance"));

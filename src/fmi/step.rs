@@ -1,28 +1,23 @@
 //! The slider-crank's step as the FMI layer asks for it: to the communication point, or early at
 //! a contact onset, or paused after each internal step for the master's intermediate update.
 
-use fmi_export::checks::check_step;
-use fmi_export::{FmuError, Logger, StepOutcome};
+use fmi_export::{FmuError, Logger, Step, StepOutcome};
 
 use super::instance::SliderCrankFmu;
 use crate::simulation::{Advance, Simulation};
 
 impl SliderCrankFmu {
-    /// The step from `t` over `h`: with `early_return` it stops at the end of the first internal
-    /// step in which a joint comes into contact, with `pause` it pauses after every internal step
-    /// before `t + h` (called again with the same `t` and `h` it resumes the paused step).
-    pub(super) fn step(
-        &mut self,
-        log: &Logger,
-        t: f64,
-        h: f64,
-        early_return: bool,
-        pause: bool,
-    ) -> Result<StepOutcome, FmuError> {
+    /// The step `step` (checked against the clock): with `early_return` it stops at the end of the
+    /// first internal step in which a joint comes into contact, with `pause` it pauses after every
+    /// internal step before `t + h` (called again with the same step it resumes the paused one).
+    pub(super) fn step(&mut self, log: &Logger, step: &Step) -> Result<StepOutcome, FmuError> {
+        let Step {
+            t,
+            h,
+            early_return,
+            pause,
+        } = *step;
         let resuming = self.simulation.as_ref().is_some_and(Simulation::is_paused);
-        if !resuming {
-            check_step(self.time, t, h, self.stop_time)?;
-        }
         let end = t + h;
         let sim = self.simulation(log)?;
         if !resuming {
@@ -40,34 +35,21 @@ impl SliderCrankFmu {
             log.warning(warning);
         }
         if let Ok(Advance::Paused(time)) = result {
-            self.last_successful_time = time;
             return Ok(StepOutcome::Paused { time });
         }
         // Input derivatives hold for one communication step: the inputs are then held at the
         // values their polynomials reached.
         self.inputs = *sim.next_inputs();
         match result {
-            Ok(Advance::Reached | Advance::Paused(_)) => {
-                self.time = end;
-                self.last_successful_time = end;
-                Ok(StepOutcome::Completed)
-            }
-            Ok(Advance::Onset(onset)) => {
-                self.time = onset.time;
-                self.last_successful_time = onset.time;
-                Ok(StepOutcome::ReturnedEarly {
-                    time: onset.time,
-                    event: onset.event(),
-                })
-            }
-            Err(e) => {
-                self.time = time;
-                self.last_successful_time = time;
-                Err(FmuError::Discard {
-                    time,
-                    reason: e.to_string(),
-                })
-            }
+            Ok(Advance::Reached | Advance::Paused(_)) => Ok(StepOutcome::Completed { time: end }),
+            Ok(Advance::Onset(onset)) => Ok(StepOutcome::ReturnedEarly {
+                time: onset.time,
+                event: onset.event(),
+            }),
+            Err(e) => Err(FmuError::Discard {
+                time,
+                reason: e.to_string(),
+            }),
         }
     }
 
@@ -76,10 +58,8 @@ impl SliderCrankFmu {
     pub(super) fn end_at_pause(&mut self, log: &Logger) -> Result<Option<f64>, FmuError> {
         let sim = self.simulation(log)?;
         let reached = sim.end_at_pause()?;
-        if let Some(time) = reached {
+        if reached.is_some() {
             self.inputs = *sim.next_inputs();
-            self.time = time;
-            self.last_successful_time = time;
         }
         Ok(reached)
     }

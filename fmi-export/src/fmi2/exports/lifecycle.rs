@@ -104,8 +104,9 @@ pub unsafe fn fmi2SetupExperiment<M: Model>(
     stopTime: fmi2Real,
 ) -> fmi2Status {
     with_instance::<M>(c, Call::SetupExperiment, |inst| {
-        inst.model
-            .setup_experiment(
+        inst.clock
+            .setup(
+                &mut inst.model,
                 &inst.logger,
                 (toleranceDefined != 0).then_some(tolerance),
                 startTime,

@@ -4,6 +4,7 @@
 use fmi_sys::fmi2::*;
 
 use super::codes::with_instance;
+use crate::experiment::Step;
 use crate::ffi::slice_mut;
 use crate::model::Model;
 use crate::state::Call;
@@ -17,13 +18,14 @@ pub unsafe fn fmi2DoStep<M: Model>(
     _noSetFMUStatePriorToCurrentPoint: fmi2Boolean,
 ) -> fmi2Status {
     with_instance::<M>(c, Call::DoStep, |inst| {
-        inst.model
-            .do_step(
-                &inst.logger,
-                currentCommunicationPoint,
-                communicationStepSize,
-                false,
-            )
+        let step = Step {
+            t: currentCommunicationPoint,
+            h: communicationStepSize,
+            early_return: false,
+            pause: false,
+        };
+        inst.clock
+            .step(&mut inst.model, &inst.logger, step)
             .map(|_| Status::Ok)
     })
 }
@@ -58,7 +60,7 @@ pub unsafe fn fmi2GetRealStatus<M: Model>(
         // SAFETY: one writable value (FMI 2.0.4 §4.2.3).
         let value = unsafe { slice_mut(value, 1, "value") }?;
         if s == fmi2StatusKind_fmi2LastSuccessfulTime {
-            value[0] = inst.model.last_successful_time();
+            value[0] = inst.clock.last_successful_time;
             Ok(Status::Ok)
         } else {
             Ok(Status::Discard)

@@ -159,7 +159,7 @@ pub fn get_float64<M: Model>(
     while i < vr.len() {
         let r = vr[i];
         if r == TIME_VALUE_REFERENCE {
-            values[at] = inst.model.last_successful_time();
+            values[at] = inst.clock.last_successful_time;
             (i, at) = (i + 1, at + 1);
         } else if let Some((index, _)) = inst.fmi3.array(r) {
             let n = size(inst, r);

@@ -140,7 +140,8 @@ pub unsafe fn fmi3EnterInitializationMode<M: Model>(
     stopTime: fmi3Float64,
 ) -> fmi3Status {
     with_instance::<M>(instance, Call::EnterInitializationMode, |inst| {
-        inst.model.setup_experiment(
+        inst.clock.setup(
+            &mut inst.model,
             &inst.logger,
             toleranceDefined.then_some(tolerance),
             startTime,

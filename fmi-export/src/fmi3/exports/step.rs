@@ -10,6 +10,7 @@ use super::codes::with_instance;
 use super::values::refuse;
 use crate::calls;
 use crate::error::FmuError;
+use crate::experiment::Step;
 use crate::ffi::{slice, slice_mut};
 use crate::model::{Instance, IntermediateUpdate, Model, StepOutcome};
 use crate::number::Num;
@@ -71,7 +72,7 @@ pub unsafe fn fmi3DoStep<M: Model>(
         status = with_instance::<M>(instance, Call::ResumeStep, |inst| {
             inst.state = State::StepComplete;
             if requested && can_return_early {
-                if let Some(reached) = inst.model.return_at_pause(&inst.logger)? {
+                if let Some(reached) = inst.clock.return_at_pause(&mut inst.model, &inst.logger)? {
                     inst.logger.event(&format!(
                         "fmi3DoStep: returned early at t = {} s: requested by the master",
                         Num(reached)
@@ -137,12 +138,13 @@ unsafe fn step<M: Model>(
     pause: &mut Option<(f64, IntermediateUpdate, bool)>,
 ) -> Result<Status, FmuError> {
     let early_allowed = inst.early_return_allowed;
-    let result = match inst.intermediate_update {
-        Some(_) => inst
-            .model
-            .do_step_pausing(&inst.logger, t, h, early_allowed),
-        None => inst.model.do_step(&inst.logger, t, h, early_allowed),
+    let step = Step {
+        t,
+        h,
+        early_return: early_allowed,
+        pause: inst.intermediate_update.is_some(),
     };
+    let result = inst.clock.step(&mut inst.model, &inst.logger, step);
     if let (Ok(StepOutcome::Paused { time }), Some(update)) = (&result, inst.intermediate_update) {
         inst.state = State::IntermediateUpdate;
         let can_return_early =
@@ -151,7 +153,7 @@ unsafe fn step<M: Model>(
         return Ok(Status::Ok);
     }
     let early = matches!(result, Ok(StepOutcome::ReturnedEarly { .. }));
-    let last = inst.model.last_successful_time();
+    let last = inst.clock.last_successful_time;
     // SAFETY: the caller's contract.
     unsafe { flags.write(early && inst.event_mode_used, early, last) }?;
     if let Ok(StepOutcome::ReturnedEarly { time, event }) = result {
