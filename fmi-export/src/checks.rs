@@ -47,7 +47,8 @@ pub fn check_settable<V>(state: State, v: &Variable<V>) -> Result<(), FmuError> 
         Causality::Parameter => {
             matches!(state, State::Instantiated | State::InitializationMode)
         }
-        Causality::Input => true,
+        // FMI 3's Configuration Mode sets structural parameters only.
+        Causality::Input => state != State::ConfigurationMode,
         _ => false,
     };
     if ok {

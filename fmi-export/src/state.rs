@@ -100,8 +100,14 @@ pub enum Call {
     EnterStepMode,
     /// fmi3DoStep going on after the master's intermediate-update callback.
     ResumeStep,
-    /// A call with no state rule of its own, named for messages: FMI 3's functions of the types
-    /// and capabilities the FMU does not have, which refuse every non-empty request.
+    /// A getter of an FMI 3 type the FMU has no variable of (named: "fmi3GetFloat32"): the state
+    /// rule of every getter; it refuses every value reference.
+    GetOther(&'static str),
+    /// A setter of an FMI 3 type the FMU has no variable of: the state rule of every setter.
+    SetOther(&'static str),
+    /// A call with no state rule of its own, named for messages: FMI 3's functions of the
+    /// capabilities the FMU does not have (clocks, model exchange, scheduled execution, adjoint
+    /// derivatives, variable dependencies), which refuse every non-empty request.
     Other(&'static str),
 }
 
@@ -159,9 +165,8 @@ impl Call {
             Call::Terminate => &[StepComplete, StepFailed, EventMode],
             Call::Reset => ALL,
             Call::EnterConfigurationMode => &[Instantiated],
-            Call::ExitConfigurationMode | Call::SetUInt64 => &[ConfigurationMode],
+            Call::ExitConfigurationMode => &[ConfigurationMode],
             Call::GetUInt64 => &[
-                ConfigurationMode,
                 InitializationMode,
                 StepComplete,
                 StepFailed,
@@ -183,7 +188,8 @@ impl Call {
             | Call::GetInteger
             | Call::GetBoolean
             | Call::GetString
-            | Call::GetInt64 => &[
+            | Call::GetInt64
+            | Call::GetOther(_) => &[
                 InitializationMode,
                 StepComplete,
                 StepFailed,
@@ -200,12 +206,22 @@ impl Call {
                 Error,
                 EventMode,
             ],
+            // FMI 3 sets structural parameters in Configuration Mode, and only them there
+            // (checked per variable).
             Call::SetReal
             | Call::SetInteger
             | Call::SetBoolean
             | Call::SetString
             | Call::SetInt64
-            | Call::SetRealInputDerivatives => {
+            | Call::SetUInt64
+            | Call::SetOther(_) => &[
+                Instantiated,
+                ConfigurationMode,
+                InitializationMode,
+                StepComplete,
+                EventMode,
+            ],
+            Call::SetRealInputDerivatives => {
                 &[Instantiated, InitializationMode, StepComplete, EventMode]
             }
             Call::GetRealOutputDerivatives => &[StepComplete, StepFailed, Terminated, Error],
@@ -221,7 +237,9 @@ impl Call {
     pub fn name(self, version: Version) -> String {
         let debug = format!("{self:?}");
         match (version, self) {
-            (_, Call::Other(name)) => name.to_string(),
+            (_, Call::Other(name) | Call::GetOther(name) | Call::SetOther(name)) => {
+                name.to_string()
+            }
             (Version::Fmi2, _) => format!("fmi2{}", debug.replace("FmuState", "FMUstate")),
             (Version::Fmi3, Call::SetupExperiment) => "fmi3EnterInitializationMode".into(),
             (Version::Fmi3, Call::ResumeStep) => "fmi3DoStep".into(),

@@ -488,3 +488,4 @@ fn event_mode_at_each_contact_onset_changes_nothing() {
 
 mod arrays;
 mod intermediate;
+mod state_machine;

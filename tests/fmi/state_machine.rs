@@ -137,7 +137,9 @@ fn invoke(inst: &Instance, call: Call, state: fmi2FMUstate, bytes: &[u8]) -> fmi
             | Call::UpdateDiscreteStates
             | Call::EnterStepMode
             | Call::ResumeStep
-            | Call::Other(_) => {
+            | Call::Other(_)
+            | Call::GetOther(_)
+            | Call::SetOther(_) => {
                 unreachable!("{call:?} has no FMI 2 function")
             }
         }

@@ -74,7 +74,8 @@ pub unsafe fn fmi3GetUInt64<M: Model>(
     })
 }
 
-/// Sets structural parameters, each inside its range (Configuration Mode only).
+/// Sets structural parameters, each inside its range, in Configuration Mode only (the call is
+/// legal wherever a setter is; its variables are refused outside Configuration Mode).
 pub unsafe fn fmi3SetUInt64<M: Model>(
     instance: fmi3Instance,
     valueReferences: *const fmi3ValueReference,
@@ -93,6 +94,13 @@ pub unsafe fn fmi3SetUInt64<M: Model>(
         };
         for (&r, &value) in vr.iter().zip(values) {
             let (_, p) = structural(inst, r)?;
+            if inst.state != State::ConfigurationMode {
+                return Err(FmuError::Invalid(format!(
+                    "{} is a structural parameter: it is set in Configuration Mode only \
+                     (fmi3EnterConfigurationMode), not in the {:?} state",
+                    p.name, inst.state
+                )));
+            }
             if !(p.min..=p.max).contains(&value) {
                 return Err(FmuError::Invalid(format!(
                     "{} = {value} is outside the allowed range [{}, {}]",

@@ -319,7 +319,12 @@ pub unsafe fn no_variable_of_type<M: Model>(
     valueReferences: *const fmi3ValueReference,
     nValueReferences: usize,
 ) -> fmi3Status {
-    with_instance::<M>(instance, Call::Other(call), |_| {
+    let call = match (type_name, call.starts_with("fmi3Get")) {
+        ("Clock", _) => Call::Other(call),
+        (_, true) => Call::GetOther(call),
+        (_, false) => Call::SetOther(call),
+    };
+    with_instance::<M>(instance, call, |_| {
         // SAFETY: the caller's contract.
         let vr = unsafe { slice(valueReferences, nValueReferences, "valueReferences") }?;
         match vr.first() {
