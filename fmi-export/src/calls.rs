@@ -159,7 +159,7 @@ unsafe fn bytes_of<'a>(state: *mut c_void, name: &'static str) -> Result<&'a Sta
 /// Captures the complete instance state into the master's variable `*slot` (`name` its argument).
 ///
 /// # Safety
-/// As [`store`].
+/// As `store`.
 pub unsafe fn get_state<M: Model>(
     inst: &mut Instance<M>,
     slot: *mut *mut c_void,
@@ -172,7 +172,7 @@ pub unsafe fn get_state<M: Model>(
 /// Restores a captured state, the state machine included.
 ///
 /// # Safety
-/// As [`bytes_of`].
+/// As `bytes_of`.
 pub unsafe fn set_state<M: Model>(
     inst: &mut Instance<M>,
     state: *mut c_void,
@@ -186,7 +186,7 @@ pub unsafe fn set_state<M: Model>(
 /// Frees the state in the master's variable `*slot` and sets it to NULL.
 ///
 /// # Safety
-/// As [`store`]; the state is freed once.
+/// As `store`; the state is freed once.
 pub unsafe fn free_state(slot: *mut *mut c_void, name: &'static str) -> Result<Status, FmuError> {
     if slot.is_null() {
         return Err(FmuError::Null(name));
@@ -204,7 +204,7 @@ pub unsafe fn free_state(slot: *mut *mut c_void, name: &'static str) -> Result<S
 /// The size of a state in bytes, written to `size[0]`.
 ///
 /// # Safety
-/// As [`bytes_of`].
+/// As `bytes_of`.
 pub unsafe fn serialized_size(
     state: *mut c_void,
     size: &mut [usize],
@@ -218,7 +218,7 @@ pub unsafe fn serialized_size(
 /// Writes a state as pointer-free bytes into the master's `size` bytes at `out`.
 ///
 /// # Safety
-/// As [`bytes_of`]; `out` is NULL or `size` writable bytes.
+/// As `bytes_of`; `out` is NULL or `size` writable bytes.
 pub unsafe fn serialize(
     state: *mut c_void,
     out: *mut u8,
@@ -243,7 +243,7 @@ pub unsafe fn serialize(
 /// variable `*slot`.
 ///
 /// # Safety
-/// As [`store`].
+/// As `store`.
 pub unsafe fn deserialize<M: Model>(
     inst: &mut Instance<M>,
     bytes: &[u8],

@@ -10,7 +10,7 @@
 //! ([`Status`]) and the calls both versions make alike ([`calls`]). Two sibling clients turn their
 //! version's C calls into calls of that core: [`fmi2`] (the 34 `fmi2*` functions,
 //! [`export_fmi2!`]) and [`fmi3`] (the 75 `fmi3*` functions, [`export_fmi3!`]); neither calls the
-//! other. The reference driver ([`reference`]) is a third client. It knows no physics: every model
+//! other. The reference driver ([`reference`](mod@reference)) is a third client. It knows no physics: every model
 //! of the workspace is built on it.
 //!
 //! # References

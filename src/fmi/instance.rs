@@ -176,7 +176,7 @@ impl Model for SliderCrankFmu {
         Ok(())
     }
 
-    /// fmi2DoStep and fmi3DoStep ([`SliderCrankFmu::step`]): with `early_return`, the step stops
+    /// fmi2DoStep and fmi3DoStep: with `early_return`, the step stops
     /// at the end of the first internal step in which a joint comes into contact
     /// ([`crate::Simulation::advance_to_onset`]); with `pause`, it pauses after every internal
     /// step before its end ([`crate::Simulation::advance_pausing`]).

@@ -8,132 +8,48 @@
 #[macro_export]
 macro_rules! export_fmi3_other_types {
     ($model:ty) => {
-        /// No variable of this FMU is a Float32: refuses every value reference.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3GetFloat32(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
-            valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
-            nValueReferences: usize,
+        $crate::fmi3_no_variable_of_type!(
+            $model,
+            fmi3GetFloat32: fmi3GetFloat32TYPE,
+            "Float32",
             _values: *mut $crate::fmi3::exports::sys::fmi3Float32,
             _nValues: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::no_variable_of_type::<$model>(
-                    instance,
-                    "fmi3GetFloat32",
-                    "Float32",
-                    valueReferences,
-                    nValueReferences,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3GetFloat32TYPE = Some(fmi3GetFloat32);
-        /// No variable of this FMU is a Int8: refuses every value reference.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3GetInt8(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
-            valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
-            nValueReferences: usize,
+        );
+        $crate::fmi3_no_variable_of_type!(
+            $model,
+            fmi3GetInt8: fmi3GetInt8TYPE,
+            "Int8",
             _values: *mut $crate::fmi3::exports::sys::fmi3Int8,
             _nValues: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::no_variable_of_type::<$model>(
-                    instance,
-                    "fmi3GetInt8",
-                    "Int8",
-                    valueReferences,
-                    nValueReferences,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3GetInt8TYPE = Some(fmi3GetInt8);
-        /// No variable of this FMU is a UInt8: refuses every value reference.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3GetUInt8(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
-            valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
-            nValueReferences: usize,
+        );
+        $crate::fmi3_no_variable_of_type!(
+            $model,
+            fmi3GetUInt8: fmi3GetUInt8TYPE,
+            "UInt8",
             _values: *mut $crate::fmi3::exports::sys::fmi3UInt8,
             _nValues: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::no_variable_of_type::<$model>(
-                    instance,
-                    "fmi3GetUInt8",
-                    "UInt8",
-                    valueReferences,
-                    nValueReferences,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3GetUInt8TYPE = Some(fmi3GetUInt8);
-        /// No variable of this FMU is a Int16: refuses every value reference.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3GetInt16(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
-            valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
-            nValueReferences: usize,
+        );
+        $crate::fmi3_no_variable_of_type!(
+            $model,
+            fmi3GetInt16: fmi3GetInt16TYPE,
+            "Int16",
             _values: *mut $crate::fmi3::exports::sys::fmi3Int16,
             _nValues: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::no_variable_of_type::<$model>(
-                    instance,
-                    "fmi3GetInt16",
-                    "Int16",
-                    valueReferences,
-                    nValueReferences,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3GetInt16TYPE = Some(fmi3GetInt16);
-        /// No variable of this FMU is a UInt16: refuses every value reference.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3GetUInt16(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
-            valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
-            nValueReferences: usize,
+        );
+        $crate::fmi3_no_variable_of_type!(
+            $model,
+            fmi3GetUInt16: fmi3GetUInt16TYPE,
+            "UInt16",
             _values: *mut $crate::fmi3::exports::sys::fmi3UInt16,
             _nValues: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::no_variable_of_type::<$model>(
-                    instance,
-                    "fmi3GetUInt16",
-                    "UInt16",
-                    valueReferences,
-                    nValueReferences,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3GetUInt16TYPE = Some(fmi3GetUInt16);
-        /// No variable of this FMU is a UInt32: refuses every value reference.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3GetUInt32(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
-            valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
-            nValueReferences: usize,
+        );
+        $crate::fmi3_no_variable_of_type!(
+            $model,
+            fmi3GetUInt32: fmi3GetUInt32TYPE,
+            "UInt32",
             _values: *mut $crate::fmi3::exports::sys::fmi3UInt32,
             _nValues: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::no_variable_of_type::<$model>(
-                    instance,
-                    "fmi3GetUInt32",
-                    "UInt32",
-                    valueReferences,
-                    nValueReferences,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3GetUInt32TYPE = Some(fmi3GetUInt32);
+        );
         /// Reads the structural parameters (FMI 3's only UInt64 variables).
         #[unsafe(no_mangle)]
         pub unsafe extern "C" fn fmi3GetUInt64(
@@ -155,174 +71,62 @@ macro_rules! export_fmi3_other_types {
             }
         }
         const _: $crate::fmi3::exports::sys::fmi3GetUInt64TYPE = Some(fmi3GetUInt64);
-        /// No variable of this FMU is a Binary: refuses every value reference.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3GetBinary(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
-            valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
-            nValueReferences: usize,
+        $crate::fmi3_no_variable_of_type!(
+            $model,
+            fmi3GetBinary: fmi3GetBinaryTYPE,
+            "Binary",
             _valueSizes: *mut usize,
             _values: *mut $crate::fmi3::exports::sys::fmi3Binary,
             _nValues: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::no_variable_of_type::<$model>(
-                    instance,
-                    "fmi3GetBinary",
-                    "Binary",
-                    valueReferences,
-                    nValueReferences,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3GetBinaryTYPE = Some(fmi3GetBinary);
-        /// No variable of this FMU is a Clock: refuses every value reference.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3GetClock(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
-            valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
-            nValueReferences: usize,
+        );
+        $crate::fmi3_no_variable_of_type!(
+            $model,
+            fmi3GetClock: fmi3GetClockTYPE,
+            "Clock",
             _values: *mut $crate::fmi3::exports::sys::fmi3Clock,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::no_variable_of_type::<$model>(
-                    instance,
-                    "fmi3GetClock",
-                    "Clock",
-                    valueReferences,
-                    nValueReferences,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3GetClockTYPE = Some(fmi3GetClock);
-        /// No variable of this FMU is a Float32: refuses every value reference.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3SetFloat32(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
-            valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
-            nValueReferences: usize,
+        );
+        $crate::fmi3_no_variable_of_type!(
+            $model,
+            fmi3SetFloat32: fmi3SetFloat32TYPE,
+            "Float32",
             _values: *const $crate::fmi3::exports::sys::fmi3Float32,
             _nValues: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::no_variable_of_type::<$model>(
-                    instance,
-                    "fmi3SetFloat32",
-                    "Float32",
-                    valueReferences,
-                    nValueReferences,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3SetFloat32TYPE = Some(fmi3SetFloat32);
-        /// No variable of this FMU is a Int8: refuses every value reference.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3SetInt8(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
-            valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
-            nValueReferences: usize,
+        );
+        $crate::fmi3_no_variable_of_type!(
+            $model,
+            fmi3SetInt8: fmi3SetInt8TYPE,
+            "Int8",
             _values: *const $crate::fmi3::exports::sys::fmi3Int8,
             _nValues: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::no_variable_of_type::<$model>(
-                    instance,
-                    "fmi3SetInt8",
-                    "Int8",
-                    valueReferences,
-                    nValueReferences,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3SetInt8TYPE = Some(fmi3SetInt8);
-        /// No variable of this FMU is a UInt8: refuses every value reference.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3SetUInt8(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
-            valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
-            nValueReferences: usize,
+        );
+        $crate::fmi3_no_variable_of_type!(
+            $model,
+            fmi3SetUInt8: fmi3SetUInt8TYPE,
+            "UInt8",
             _values: *const $crate::fmi3::exports::sys::fmi3UInt8,
             _nValues: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::no_variable_of_type::<$model>(
-                    instance,
-                    "fmi3SetUInt8",
-                    "UInt8",
-                    valueReferences,
-                    nValueReferences,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3SetUInt8TYPE = Some(fmi3SetUInt8);
-        /// No variable of this FMU is a Int16: refuses every value reference.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3SetInt16(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
-            valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
-            nValueReferences: usize,
+        );
+        $crate::fmi3_no_variable_of_type!(
+            $model,
+            fmi3SetInt16: fmi3SetInt16TYPE,
+            "Int16",
             _values: *const $crate::fmi3::exports::sys::fmi3Int16,
             _nValues: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::no_variable_of_type::<$model>(
-                    instance,
-                    "fmi3SetInt16",
-                    "Int16",
-                    valueReferences,
-                    nValueReferences,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3SetInt16TYPE = Some(fmi3SetInt16);
-        /// No variable of this FMU is a UInt16: refuses every value reference.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3SetUInt16(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
-            valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
-            nValueReferences: usize,
+        );
+        $crate::fmi3_no_variable_of_type!(
+            $model,
+            fmi3SetUInt16: fmi3SetUInt16TYPE,
+            "UInt16",
             _values: *const $crate::fmi3::exports::sys::fmi3UInt16,
             _nValues: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::no_variable_of_type::<$model>(
-                    instance,
-                    "fmi3SetUInt16",
-                    "UInt16",
-                    valueReferences,
-                    nValueReferences,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3SetUInt16TYPE = Some(fmi3SetUInt16);
-        /// No variable of this FMU is a UInt32: refuses every value reference.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3SetUInt32(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
-            valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
-            nValueReferences: usize,
+        );
+        $crate::fmi3_no_variable_of_type!(
+            $model,
+            fmi3SetUInt32: fmi3SetUInt32TYPE,
+            "UInt32",
             _values: *const $crate::fmi3::exports::sys::fmi3UInt32,
             _nValues: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::no_variable_of_type::<$model>(
-                    instance,
-                    "fmi3SetUInt32",
-                    "UInt32",
-                    valueReferences,
-                    nValueReferences,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3SetUInt32TYPE = Some(fmi3SetUInt32);
+        );
         /// Sets the structural parameters (FMI 3's only UInt64 variables).
         #[unsafe(no_mangle)]
         pub unsafe extern "C" fn fmi3SetUInt64(
@@ -344,47 +148,50 @@ macro_rules! export_fmi3_other_types {
             }
         }
         const _: $crate::fmi3::exports::sys::fmi3SetUInt64TYPE = Some(fmi3SetUInt64);
-        /// No variable of this FMU is a Binary: refuses every value reference.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3SetBinary(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
-            valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
-            nValueReferences: usize,
+        $crate::fmi3_no_variable_of_type!(
+            $model,
+            fmi3SetBinary: fmi3SetBinaryTYPE,
+            "Binary",
             _valueSizes: *const usize,
             _values: *const $crate::fmi3::exports::sys::fmi3Binary,
             _nValues: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::no_variable_of_type::<$model>(
-                    instance,
-                    "fmi3SetBinary",
-                    "Binary",
-                    valueReferences,
-                    nValueReferences,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3SetBinaryTYPE = Some(fmi3SetBinary);
-        /// No variable of this FMU is a Clock: refuses every value reference.
+        );
+        $crate::fmi3_no_variable_of_type!(
+            $model,
+            fmi3SetClock: fmi3SetClockTYPE,
+            "Clock",
+            _values: *const $crate::fmi3::exports::sys::fmi3Clock,
+        );
+    };
+}
+
+/// One `fmi3Get*`/`fmi3Set*` function of a type the FMU has no variable of, for
+/// [`crate::export_fmi3_other_types!`]: `$name` under its C name with the arguments after the
+/// value references (`$arg: $ty`, of the header's types, unused), its signature pinned to the
+/// header's `$pinned`; it refuses every value reference ([`crate::fmi3::exports::no_variable_of_type`]).
+#[doc(hidden)]
+#[macro_export]
+macro_rules! fmi3_no_variable_of_type {
+    ($model:ty, $name:ident: $pinned:ident, $type_name:literal, $($arg:ident: $ty:ty,)*) => {
+        #[doc = concat!("No variable of this FMU is a ", $type_name, ": refuses every value reference.")]
         #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3SetClock(
+        pub unsafe extern "C" fn $name(
             instance: $crate::fmi3::exports::sys::fmi3Instance,
             valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
             nValueReferences: usize,
-            _values: *const $crate::fmi3::exports::sys::fmi3Clock,
+            $($arg: $ty,)*
         ) -> $crate::fmi3::exports::sys::fmi3Status {
             // SAFETY: the master's arguments, passed on unchanged under the same contract.
             unsafe {
                 $crate::fmi3::exports::no_variable_of_type::<$model>(
                     instance,
-                    "fmi3SetClock",
-                    "Clock",
+                    stringify!($name),
+                    $type_name,
                     valueReferences,
                     nValueReferences,
                 )
             }
         }
-        const _: $crate::fmi3::exports::sys::fmi3SetClockTYPE = Some(fmi3SetClock);
+        const _: $crate::fmi3::exports::sys::$pinned = Some($name);
     };
 }

@@ -18,44 +18,28 @@ macro_rules! export_fmi3_unsupported {
             unsafe { $crate::fmi3::exports::fmi3EnterEventMode::<$model>(instance) }
         }
         const _: $crate::fmi3::exports::sys::fmi3EnterEventModeTYPE = Some(fmi3EnterEventMode);
-        /// Not supported: the dependencies are those of modelDescription.xml's ModelStructure.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3GetNumberOfVariableDependencies(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
+        $crate::fmi3_unsupported!(
+            $model,
+            fmi3GetNumberOfVariableDependencies: fmi3GetNumberOfVariableDependenciesTYPE,
+            "the dependencies are those of modelDescription.xml's ModelStructure",
             _valueReference: $crate::fmi3::exports::sys::fmi3ValueReference,
             _nDependencies: *mut usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            $crate::fmi3::exports::unsupported::<$model>(
-                instance,
-                "fmi3GetNumberOfVariableDependencies",
-                "the dependencies are those of modelDescription.xml's ModelStructure",
-            )
-        }
-        const _: $crate::fmi3::exports::sys::fmi3GetNumberOfVariableDependenciesTYPE =
-            Some(fmi3GetNumberOfVariableDependencies);
-        /// Not supported: the dependencies are those of modelDescription.xml's ModelStructure.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3GetVariableDependencies(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
+        );
+        $crate::fmi3_unsupported!(
+            $model,
+            fmi3GetVariableDependencies: fmi3GetVariableDependenciesTYPE,
+            "the dependencies are those of modelDescription.xml's ModelStructure",
             _dependent: $crate::fmi3::exports::sys::fmi3ValueReference,
             _elementIndicesOfDependent: *mut usize,
             _independents: *mut $crate::fmi3::exports::sys::fmi3ValueReference,
             _elementIndicesOfIndependents: *mut usize,
             _dependencyKinds: *mut $crate::fmi3::exports::sys::fmi3DependencyKind,
             _nDependencies: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            $crate::fmi3::exports::unsupported::<$model>(
-                instance,
-                "fmi3GetVariableDependencies",
-                "the dependencies are those of modelDescription.xml's ModelStructure",
-            )
-        }
-        const _: $crate::fmi3::exports::sys::fmi3GetVariableDependenciesTYPE =
-            Some(fmi3GetVariableDependencies);
-        /// Not supported: adjoint derivatives are not provided (providesAdjointDerivatives = false).
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3GetAdjointDerivative(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
+        );
+        $crate::fmi3_unsupported!(
+            $model,
+            fmi3GetAdjointDerivative: fmi3GetAdjointDerivativeTYPE,
+            "adjoint derivatives are not provided (providesAdjointDerivatives = false)",
             _unknowns: *const $crate::fmi3::exports::sys::fmi3ValueReference,
             _nUnknowns: usize,
             _knowns: *const $crate::fmi3::exports::sys::fmi3ValueReference,
@@ -64,15 +48,7 @@ macro_rules! export_fmi3_unsupported {
             _nSeed: usize,
             _sensitivity: *mut $crate::fmi3::exports::sys::fmi3Float64,
             _nSensitivity: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            $crate::fmi3::exports::unsupported::<$model>(
-                instance,
-                "fmi3GetAdjointDerivative",
-                "adjoint derivatives are not provided (providesAdjointDerivatives = false)",
-            )
-        }
-        const _: $crate::fmi3::exports::sys::fmi3GetAdjointDerivativeTYPE =
-            Some(fmi3GetAdjointDerivative);
+        );
         /// Enters Configuration Mode (a model with structural parameters).
         #[unsafe(no_mangle)]
         pub unsafe extern "C" fn fmi3EnterConfigurationMode(
@@ -93,150 +69,81 @@ macro_rules! export_fmi3_unsupported {
         }
         const _: $crate::fmi3::exports::sys::fmi3ExitConfigurationModeTYPE =
             Some(fmi3ExitConfigurationMode);
-        /// Not supported: the FMU has no clocks.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3GetIntervalDecimal(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
+        $crate::fmi3_unsupported!(
+            $model,
+            fmi3GetIntervalDecimal: fmi3GetIntervalDecimalTYPE,
+            "the FMU has no clocks",
             _valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
             _nValueReferences: usize,
             _intervals: *mut $crate::fmi3::exports::sys::fmi3Float64,
             _qualifiers: *mut $crate::fmi3::exports::sys::fmi3IntervalQualifier,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            $crate::fmi3::exports::unsupported::<$model>(
-                instance,
-                "fmi3GetIntervalDecimal",
-                "the FMU has no clocks",
-            )
-        }
-        const _: $crate::fmi3::exports::sys::fmi3GetIntervalDecimalTYPE =
-            Some(fmi3GetIntervalDecimal);
-        /// Not supported: the FMU has no clocks.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3GetIntervalFraction(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
+        );
+        $crate::fmi3_unsupported!(
+            $model,
+            fmi3GetIntervalFraction: fmi3GetIntervalFractionTYPE,
+            "the FMU has no clocks",
             _valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
             _nValueReferences: usize,
             _counters: *mut $crate::fmi3::exports::sys::fmi3UInt64,
             _resolutions: *mut $crate::fmi3::exports::sys::fmi3UInt64,
             _qualifiers: *mut $crate::fmi3::exports::sys::fmi3IntervalQualifier,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            $crate::fmi3::exports::unsupported::<$model>(
-                instance,
-                "fmi3GetIntervalFraction",
-                "the FMU has no clocks",
-            )
-        }
-        const _: $crate::fmi3::exports::sys::fmi3GetIntervalFractionTYPE =
-            Some(fmi3GetIntervalFraction);
-        /// Not supported: the FMU has no clocks.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3GetShiftDecimal(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
+        );
+        $crate::fmi3_unsupported!(
+            $model,
+            fmi3GetShiftDecimal: fmi3GetShiftDecimalTYPE,
+            "the FMU has no clocks",
             _valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
             _nValueReferences: usize,
             _shifts: *mut $crate::fmi3::exports::sys::fmi3Float64,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            $crate::fmi3::exports::unsupported::<$model>(
-                instance,
-                "fmi3GetShiftDecimal",
-                "the FMU has no clocks",
-            )
-        }
-        const _: $crate::fmi3::exports::sys::fmi3GetShiftDecimalTYPE = Some(fmi3GetShiftDecimal);
-        /// Not supported: the FMU has no clocks.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3GetShiftFraction(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
+        );
+        $crate::fmi3_unsupported!(
+            $model,
+            fmi3GetShiftFraction: fmi3GetShiftFractionTYPE,
+            "the FMU has no clocks",
             _valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
             _nValueReferences: usize,
             _counters: *mut $crate::fmi3::exports::sys::fmi3UInt64,
             _resolutions: *mut $crate::fmi3::exports::sys::fmi3UInt64,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            $crate::fmi3::exports::unsupported::<$model>(
-                instance,
-                "fmi3GetShiftFraction",
-                "the FMU has no clocks",
-            )
-        }
-        const _: $crate::fmi3::exports::sys::fmi3GetShiftFractionTYPE = Some(fmi3GetShiftFraction);
-        /// Not supported: the FMU has no clocks.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3SetIntervalDecimal(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
+        );
+        $crate::fmi3_unsupported!(
+            $model,
+            fmi3SetIntervalDecimal: fmi3SetIntervalDecimalTYPE,
+            "the FMU has no clocks",
             _valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
             _nValueReferences: usize,
             _intervals: *const $crate::fmi3::exports::sys::fmi3Float64,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            $crate::fmi3::exports::unsupported::<$model>(
-                instance,
-                "fmi3SetIntervalDecimal",
-                "the FMU has no clocks",
-            )
-        }
-        const _: $crate::fmi3::exports::sys::fmi3SetIntervalDecimalTYPE =
-            Some(fmi3SetIntervalDecimal);
-        /// Not supported: the FMU has no clocks.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3SetIntervalFraction(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
+        );
+        $crate::fmi3_unsupported!(
+            $model,
+            fmi3SetIntervalFraction: fmi3SetIntervalFractionTYPE,
+            "the FMU has no clocks",
             _valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
             _nValueReferences: usize,
             _counters: *const $crate::fmi3::exports::sys::fmi3UInt64,
             _resolutions: *const $crate::fmi3::exports::sys::fmi3UInt64,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            $crate::fmi3::exports::unsupported::<$model>(
-                instance,
-                "fmi3SetIntervalFraction",
-                "the FMU has no clocks",
-            )
-        }
-        const _: $crate::fmi3::exports::sys::fmi3SetIntervalFractionTYPE =
-            Some(fmi3SetIntervalFraction);
-        /// Not supported: the FMU has no clocks.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3SetShiftDecimal(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
+        );
+        $crate::fmi3_unsupported!(
+            $model,
+            fmi3SetShiftDecimal: fmi3SetShiftDecimalTYPE,
+            "the FMU has no clocks",
             _valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
             _nValueReferences: usize,
             _shifts: *const $crate::fmi3::exports::sys::fmi3Float64,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            $crate::fmi3::exports::unsupported::<$model>(
-                instance,
-                "fmi3SetShiftDecimal",
-                "the FMU has no clocks",
-            )
-        }
-        const _: $crate::fmi3::exports::sys::fmi3SetShiftDecimalTYPE = Some(fmi3SetShiftDecimal);
-        /// Not supported: the FMU has no clocks.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3SetShiftFraction(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
+        );
+        $crate::fmi3_unsupported!(
+            $model,
+            fmi3SetShiftFraction: fmi3SetShiftFractionTYPE,
+            "the FMU has no clocks",
             _valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
             _nValueReferences: usize,
             _counters: *const $crate::fmi3::exports::sys::fmi3UInt64,
             _resolutions: *const $crate::fmi3::exports::sys::fmi3UInt64,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            $crate::fmi3::exports::unsupported::<$model>(
-                instance,
-                "fmi3SetShiftFraction",
-                "the FMU has no clocks",
-            )
-        }
-        const _: $crate::fmi3::exports::sys::fmi3SetShiftFractionTYPE = Some(fmi3SetShiftFraction);
-        /// Not supported: providesEvaluateDiscreteStates = false (the model settles its discrete
-        /// states where its events happen).
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3EvaluateDiscreteStates(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            $crate::fmi3::exports::unsupported::<$model>(
-                instance,
-                "fmi3EvaluateDiscreteStates",
-                "the discrete states are not evaluated apart (providesEvaluateDiscreteStates = false)",
-            )
-        }
-        const _: $crate::fmi3::exports::sys::fmi3EvaluateDiscreteStatesTYPE =
-            Some(fmi3EvaluateDiscreteStates);
+        );
+        $crate::fmi3_unsupported!(
+            $model,
+            fmi3EvaluateDiscreteStates: fmi3EvaluateDiscreteStatesTYPE,
+            "the discrete states are not evaluated apart (providesEvaluateDiscreteStates = false)",
+        );
         /// Settles the discrete states in Event Mode.
         #[unsafe(no_mangle)]
         pub unsafe extern "C" fn fmi3UpdateDiscreteStates(
@@ -263,151 +170,72 @@ macro_rules! export_fmi3_unsupported {
         }
         const _: $crate::fmi3::exports::sys::fmi3UpdateDiscreteStatesTYPE =
             Some(fmi3UpdateDiscreteStates);
-        /// Not supported: model exchange is not provided.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3EnterContinuousTimeMode(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            $crate::fmi3::exports::unsupported::<$model>(
-                instance,
-                "fmi3EnterContinuousTimeMode",
-                "model exchange is not provided",
-            )
-        }
-        const _: $crate::fmi3::exports::sys::fmi3EnterContinuousTimeModeTYPE =
-            Some(fmi3EnterContinuousTimeMode);
-        /// Not supported: model exchange is not provided.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3CompletedIntegratorStep(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
+        $crate::fmi3_unsupported!(
+            $model,
+            fmi3EnterContinuousTimeMode: fmi3EnterContinuousTimeModeTYPE,
+            "model exchange is not provided",
+        );
+        $crate::fmi3_unsupported!(
+            $model,
+            fmi3CompletedIntegratorStep: fmi3CompletedIntegratorStepTYPE,
+            "model exchange is not provided",
             _noSetFMUStatePriorToCurrentPoint: $crate::fmi3::exports::sys::fmi3Boolean,
             _enterEventMode: *mut $crate::fmi3::exports::sys::fmi3Boolean,
             _terminateSimulation: *mut $crate::fmi3::exports::sys::fmi3Boolean,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            $crate::fmi3::exports::unsupported::<$model>(
-                instance,
-                "fmi3CompletedIntegratorStep",
-                "model exchange is not provided",
-            )
-        }
-        const _: $crate::fmi3::exports::sys::fmi3CompletedIntegratorStepTYPE =
-            Some(fmi3CompletedIntegratorStep);
-        /// Not supported: model exchange is not provided.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3SetTime(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
+        );
+        $crate::fmi3_unsupported!(
+            $model,
+            fmi3SetTime: fmi3SetTimeTYPE,
+            "model exchange is not provided",
             _time: $crate::fmi3::exports::sys::fmi3Float64,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            $crate::fmi3::exports::unsupported::<$model>(
-                instance,
-                "fmi3SetTime",
-                "model exchange is not provided",
-            )
-        }
-        const _: $crate::fmi3::exports::sys::fmi3SetTimeTYPE = Some(fmi3SetTime);
-        /// Not supported: model exchange is not provided.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3SetContinuousStates(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
+        );
+        $crate::fmi3_unsupported!(
+            $model,
+            fmi3SetContinuousStates: fmi3SetContinuousStatesTYPE,
+            "model exchange is not provided",
             _continuousStates: *const $crate::fmi3::exports::sys::fmi3Float64,
             _nContinuousStates: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            $crate::fmi3::exports::unsupported::<$model>(
-                instance,
-                "fmi3SetContinuousStates",
-                "model exchange is not provided",
-            )
-        }
-        const _: $crate::fmi3::exports::sys::fmi3SetContinuousStatesTYPE =
-            Some(fmi3SetContinuousStates);
-        /// Not supported: model exchange is not provided.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3GetContinuousStateDerivatives(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
+        );
+        $crate::fmi3_unsupported!(
+            $model,
+            fmi3GetContinuousStateDerivatives: fmi3GetContinuousStateDerivativesTYPE,
+            "model exchange is not provided",
             _derivatives: *mut $crate::fmi3::exports::sys::fmi3Float64,
             _nContinuousStates: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            $crate::fmi3::exports::unsupported::<$model>(
-                instance,
-                "fmi3GetContinuousStateDerivatives",
-                "model exchange is not provided",
-            )
-        }
-        const _: $crate::fmi3::exports::sys::fmi3GetContinuousStateDerivativesTYPE =
-            Some(fmi3GetContinuousStateDerivatives);
-        /// Not supported: model exchange is not provided.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3GetEventIndicators(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
+        );
+        $crate::fmi3_unsupported!(
+            $model,
+            fmi3GetEventIndicators: fmi3GetEventIndicatorsTYPE,
+            "model exchange is not provided",
             _eventIndicators: *mut $crate::fmi3::exports::sys::fmi3Float64,
             _nEventIndicators: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            $crate::fmi3::exports::unsupported::<$model>(
-                instance,
-                "fmi3GetEventIndicators",
-                "model exchange is not provided",
-            )
-        }
-        const _: $crate::fmi3::exports::sys::fmi3GetEventIndicatorsTYPE =
-            Some(fmi3GetEventIndicators);
-        /// Not supported: model exchange is not provided.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3GetContinuousStates(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
+        );
+        $crate::fmi3_unsupported!(
+            $model,
+            fmi3GetContinuousStates: fmi3GetContinuousStatesTYPE,
+            "model exchange is not provided",
             _continuousStates: *mut $crate::fmi3::exports::sys::fmi3Float64,
             _nContinuousStates: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            $crate::fmi3::exports::unsupported::<$model>(
-                instance,
-                "fmi3GetContinuousStates",
-                "model exchange is not provided",
-            )
-        }
-        const _: $crate::fmi3::exports::sys::fmi3GetContinuousStatesTYPE =
-            Some(fmi3GetContinuousStates);
-        /// Not supported: model exchange is not provided.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3GetNominalsOfContinuousStates(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
+        );
+        $crate::fmi3_unsupported!(
+            $model,
+            fmi3GetNominalsOfContinuousStates: fmi3GetNominalsOfContinuousStatesTYPE,
+            "model exchange is not provided",
             _nominals: *mut $crate::fmi3::exports::sys::fmi3Float64,
             _nContinuousStates: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            $crate::fmi3::exports::unsupported::<$model>(
-                instance,
-                "fmi3GetNominalsOfContinuousStates",
-                "model exchange is not provided",
-            )
-        }
-        const _: $crate::fmi3::exports::sys::fmi3GetNominalsOfContinuousStatesTYPE =
-            Some(fmi3GetNominalsOfContinuousStates);
-        /// Not supported: model exchange is not provided.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3GetNumberOfEventIndicators(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
+        );
+        $crate::fmi3_unsupported!(
+            $model,
+            fmi3GetNumberOfEventIndicators: fmi3GetNumberOfEventIndicatorsTYPE,
+            "model exchange is not provided",
             _nEventIndicators: *mut usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            $crate::fmi3::exports::unsupported::<$model>(
-                instance,
-                "fmi3GetNumberOfEventIndicators",
-                "model exchange is not provided",
-            )
-        }
-        const _: $crate::fmi3::exports::sys::fmi3GetNumberOfEventIndicatorsTYPE =
-            Some(fmi3GetNumberOfEventIndicators);
-        /// Not supported: model exchange is not provided.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3GetNumberOfContinuousStates(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
+        );
+        $crate::fmi3_unsupported!(
+            $model,
+            fmi3GetNumberOfContinuousStates: fmi3GetNumberOfContinuousStatesTYPE,
+            "model exchange is not provided",
             _nContinuousStates: *mut usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            $crate::fmi3::exports::unsupported::<$model>(
-                instance,
-                "fmi3GetNumberOfContinuousStates",
-                "model exchange is not provided",
-            )
-        }
-        const _: $crate::fmi3::exports::sys::fmi3GetNumberOfContinuousStatesTYPE =
-            Some(fmi3GetNumberOfContinuousStates);
+        );
         /// Leaves Event Mode for Step Mode.
         #[unsafe(no_mangle)]
         pub unsafe extern "C" fn fmi3EnterStepMode(
@@ -417,20 +245,33 @@ macro_rules! export_fmi3_unsupported {
             unsafe { $crate::fmi3::exports::fmi3EnterStepMode::<$model>(instance) }
         }
         const _: $crate::fmi3::exports::sys::fmi3EnterStepModeTYPE = Some(fmi3EnterStepMode);
-        /// Not supported: scheduled execution is not provided.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3ActivateModelPartition(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
+        $crate::fmi3_unsupported!(
+            $model,
+            fmi3ActivateModelPartition: fmi3ActivateModelPartitionTYPE,
+            "scheduled execution is not provided",
             _clockReference: $crate::fmi3::exports::sys::fmi3ValueReference,
             _activationTime: $crate::fmi3::exports::sys::fmi3Float64,
+        );
+    };
+}
+
+/// One `fmi3*` function of a capability the FMU does not declare, for
+/// [`crate::export_fmi3_unsupported!`]: `$name` under its C name with the arguments after the
+/// instance (`$arg: $ty`, of the header's types, unused), its signature pinned to the header's
+/// `$pinned`; it logs "not supported: `$why`" and returns fmi3Error
+/// ([`crate::fmi3::exports::unsupported`]).
+#[doc(hidden)]
+#[macro_export]
+macro_rules! fmi3_unsupported {
+    ($model:ty, $name:ident: $pinned:ident, $why:literal, $($arg:ident: $ty:ty,)*) => {
+        #[doc = concat!("Not supported: ", $why, ".")]
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $name(
+            instance: $crate::fmi3::exports::sys::fmi3Instance,
+            $($arg: $ty,)*
         ) -> $crate::fmi3::exports::sys::fmi3Status {
-            $crate::fmi3::exports::unsupported::<$model>(
-                instance,
-                "fmi3ActivateModelPartition",
-                "scheduled execution is not provided",
-            )
+            $crate::fmi3::exports::unsupported::<$model>(instance, stringify!($name), $why)
         }
-        const _: $crate::fmi3::exports::sys::fmi3ActivateModelPartitionTYPE =
-            Some(fmi3ActivateModelPartition);
+        const _: $crate::fmi3::exports::sys::$pinned = Some($name);
     };
 }
