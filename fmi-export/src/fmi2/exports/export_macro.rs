@@ -20,9 +20,10 @@ macro_rules! export_fmi2 {
             $crate::fmi2::exports::fmi2GetVersion()
         }
         const _: $crate::fmi2::exports::sys::fmi2GetVersionTYPE = Some(fmi2GetVersion);
-        /// See `fmi_export::fmi2::exports::fmi2Instantiate`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2Instantiate(
+        $crate::forward_export!(
+            fmi2, $model,
+            fmi2Instantiate: fmi2InstantiateTYPE,
+            (
             instanceName: $crate::fmi2::exports::sys::fmi2String,
             fmuType: $crate::fmi2::exports::sys::fmi2Type,
             fmuGUID: $crate::fmi2::exports::sys::fmi2String,
@@ -30,21 +31,8 @@ macro_rules! export_fmi2 {
             functions: *const $crate::fmi2::exports::sys::fmi2CallbackFunctions,
             _visible: $crate::fmi2::exports::sys::fmi2Boolean,
             loggingOn: $crate::fmi2::exports::sys::fmi2Boolean,
-        ) -> $crate::fmi2::exports::sys::fmi2Component {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi2::exports::fmi2Instantiate::<$model>(
-                    instanceName,
-                    fmuType,
-                    fmuGUID,
-                    _fmuResourceLocation,
-                    functions,
-                    _visible,
-                    loggingOn,
-                )
-            }
-        }
-        const _: $crate::fmi2::exports::sys::fmi2InstantiateTYPE = Some(fmi2Instantiate);
+            ) -> $crate::fmi2::exports::sys::fmi2Component
+        );
         /// See `fmi_export::fmi2::exports::fmi2FreeInstance`.
         #[unsafe(no_mangle)]
         pub unsafe extern "C" fn fmi2FreeInstance(c: $crate::fmi2::exports::sys::fmi2Component) {
@@ -52,269 +40,193 @@ macro_rules! export_fmi2 {
             unsafe { $crate::fmi2::exports::fmi2FreeInstance::<$model>(c) }
         }
         const _: $crate::fmi2::exports::sys::fmi2FreeInstanceTYPE = Some(fmi2FreeInstance);
-        /// See `fmi_export::fmi2::exports::fmi2SetDebugLogging`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2SetDebugLogging(
+        $crate::forward_export!(
+            fmi2, $model,
+            fmi2SetDebugLogging: fmi2SetDebugLoggingTYPE,
+            (
             c: $crate::fmi2::exports::sys::fmi2Component,
             loggingOn: $crate::fmi2::exports::sys::fmi2Boolean,
             nCategories: usize,
             categories: *const $crate::fmi2::exports::sys::fmi2String,
-        ) -> $crate::fmi2::exports::sys::fmi2Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi2::exports::fmi2SetDebugLogging::<$model>(
-                    c,
-                    loggingOn,
-                    nCategories,
-                    categories,
-                )
-            }
-        }
-        const _: $crate::fmi2::exports::sys::fmi2SetDebugLoggingTYPE = Some(fmi2SetDebugLogging);
-        /// See `fmi_export::fmi2::exports::fmi2SetupExperiment`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2SetupExperiment(
+            ) -> $crate::fmi2::exports::sys::fmi2Status
+        );
+        $crate::forward_export!(
+            fmi2, $model,
+            fmi2SetupExperiment: fmi2SetupExperimentTYPE,
+            (
             c: $crate::fmi2::exports::sys::fmi2Component,
             toleranceDefined: $crate::fmi2::exports::sys::fmi2Boolean,
             tolerance: $crate::fmi2::exports::sys::fmi2Real,
             startTime: $crate::fmi2::exports::sys::fmi2Real,
             stopTimeDefined: $crate::fmi2::exports::sys::fmi2Boolean,
             stopTime: $crate::fmi2::exports::sys::fmi2Real,
-        ) -> $crate::fmi2::exports::sys::fmi2Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi2::exports::fmi2SetupExperiment::<$model>(
-                    c,
-                    toleranceDefined,
-                    tolerance,
-                    startTime,
-                    stopTimeDefined,
-                    stopTime,
-                )
-            }
-        }
-        const _: $crate::fmi2::exports::sys::fmi2SetupExperimentTYPE = Some(fmi2SetupExperiment);
-        /// See `fmi_export::fmi2::exports::fmi2EnterInitializationMode`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2EnterInitializationMode(
+            ) -> $crate::fmi2::exports::sys::fmi2Status
+        );
+        $crate::forward_export!(
+            fmi2, $model,
+            fmi2EnterInitializationMode: fmi2EnterInitializationModeTYPE,
+            (
             c: $crate::fmi2::exports::sys::fmi2Component,
-        ) -> $crate::fmi2::exports::sys::fmi2Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe { $crate::fmi2::exports::fmi2EnterInitializationMode::<$model>(c) }
-        }
-        const _: $crate::fmi2::exports::sys::fmi2EnterInitializationModeTYPE =
-            Some(fmi2EnterInitializationMode);
-        /// See `fmi_export::fmi2::exports::fmi2ExitInitializationMode`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2ExitInitializationMode(
+            ) -> $crate::fmi2::exports::sys::fmi2Status
+        );
+        $crate::forward_export!(
+            fmi2, $model,
+            fmi2ExitInitializationMode: fmi2ExitInitializationModeTYPE,
+            (
             c: $crate::fmi2::exports::sys::fmi2Component,
-        ) -> $crate::fmi2::exports::sys::fmi2Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe { $crate::fmi2::exports::fmi2ExitInitializationMode::<$model>(c) }
-        }
-        const _: $crate::fmi2::exports::sys::fmi2ExitInitializationModeTYPE =
-            Some(fmi2ExitInitializationMode);
-        /// See `fmi_export::fmi2::exports::fmi2Terminate`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2Terminate(
+            ) -> $crate::fmi2::exports::sys::fmi2Status
+        );
+        $crate::forward_export!(
+            fmi2, $model,
+            fmi2Terminate: fmi2TerminateTYPE,
+            (
             c: $crate::fmi2::exports::sys::fmi2Component,
-        ) -> $crate::fmi2::exports::sys::fmi2Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe { $crate::fmi2::exports::fmi2Terminate::<$model>(c) }
-        }
-        const _: $crate::fmi2::exports::sys::fmi2TerminateTYPE = Some(fmi2Terminate);
-        /// See `fmi_export::fmi2::exports::fmi2Reset`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2Reset(
+            ) -> $crate::fmi2::exports::sys::fmi2Status
+        );
+        $crate::forward_export!(
+            fmi2, $model,
+            fmi2Reset: fmi2ResetTYPE,
+            (
             c: $crate::fmi2::exports::sys::fmi2Component,
-        ) -> $crate::fmi2::exports::sys::fmi2Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe { $crate::fmi2::exports::fmi2Reset::<$model>(c) }
-        }
-        const _: $crate::fmi2::exports::sys::fmi2ResetTYPE = Some(fmi2Reset);
-        /// See `fmi_export::fmi2::exports::fmi2GetReal`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2GetReal(
+            ) -> $crate::fmi2::exports::sys::fmi2Status
+        );
+        $crate::forward_export!(
+            fmi2, $model,
+            fmi2GetReal: fmi2GetRealTYPE,
+            (
             c: $crate::fmi2::exports::sys::fmi2Component,
             vr: *const $crate::fmi2::exports::sys::fmi2ValueReference,
             nvr: usize,
             value: *mut $crate::fmi2::exports::sys::fmi2Real,
-        ) -> $crate::fmi2::exports::sys::fmi2Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe { $crate::fmi2::exports::fmi2GetReal::<$model>(c, vr, nvr, value) }
-        }
-        const _: $crate::fmi2::exports::sys::fmi2GetRealTYPE = Some(fmi2GetReal);
-        /// See `fmi_export::fmi2::exports::fmi2GetInteger`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2GetInteger(
+            ) -> $crate::fmi2::exports::sys::fmi2Status
+        );
+        $crate::forward_export!(
+            fmi2, $model,
+            fmi2GetInteger: fmi2GetIntegerTYPE,
+            (
             c: $crate::fmi2::exports::sys::fmi2Component,
             vr: *const $crate::fmi2::exports::sys::fmi2ValueReference,
             nvr: usize,
             value: *mut $crate::fmi2::exports::sys::fmi2Integer,
-        ) -> $crate::fmi2::exports::sys::fmi2Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe { $crate::fmi2::exports::fmi2GetInteger::<$model>(c, vr, nvr, value) }
-        }
-        const _: $crate::fmi2::exports::sys::fmi2GetIntegerTYPE = Some(fmi2GetInteger);
-        /// See `fmi_export::fmi2::exports::fmi2GetBoolean`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2GetBoolean(
+            ) -> $crate::fmi2::exports::sys::fmi2Status
+        );
+        $crate::forward_export!(
+            fmi2, $model,
+            fmi2GetBoolean: fmi2GetBooleanTYPE,
+            (
             c: $crate::fmi2::exports::sys::fmi2Component,
             vr: *const $crate::fmi2::exports::sys::fmi2ValueReference,
             nvr: usize,
             value: *mut $crate::fmi2::exports::sys::fmi2Boolean,
-        ) -> $crate::fmi2::exports::sys::fmi2Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe { $crate::fmi2::exports::fmi2GetBoolean::<$model>(c, vr, nvr, value) }
-        }
-        const _: $crate::fmi2::exports::sys::fmi2GetBooleanTYPE = Some(fmi2GetBoolean);
-        /// See `fmi_export::fmi2::exports::fmi2GetString`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2GetString(
+            ) -> $crate::fmi2::exports::sys::fmi2Status
+        );
+        $crate::forward_export!(
+            fmi2, $model,
+            fmi2GetString: fmi2GetStringTYPE,
+            (
             c: $crate::fmi2::exports::sys::fmi2Component,
             vr: *const $crate::fmi2::exports::sys::fmi2ValueReference,
             nvr: usize,
             value: *mut $crate::fmi2::exports::sys::fmi2String,
-        ) -> $crate::fmi2::exports::sys::fmi2Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe { $crate::fmi2::exports::fmi2GetString::<$model>(c, vr, nvr, value) }
-        }
-        const _: $crate::fmi2::exports::sys::fmi2GetStringTYPE = Some(fmi2GetString);
-        /// See `fmi_export::fmi2::exports::fmi2SetReal`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2SetReal(
+            ) -> $crate::fmi2::exports::sys::fmi2Status
+        );
+        $crate::forward_export!(
+            fmi2, $model,
+            fmi2SetReal: fmi2SetRealTYPE,
+            (
             c: $crate::fmi2::exports::sys::fmi2Component,
             vr: *const $crate::fmi2::exports::sys::fmi2ValueReference,
             nvr: usize,
             value: *const $crate::fmi2::exports::sys::fmi2Real,
-        ) -> $crate::fmi2::exports::sys::fmi2Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe { $crate::fmi2::exports::fmi2SetReal::<$model>(c, vr, nvr, value) }
-        }
-        const _: $crate::fmi2::exports::sys::fmi2SetRealTYPE = Some(fmi2SetReal);
-        /// See `fmi_export::fmi2::exports::fmi2SetInteger`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2SetInteger(
+            ) -> $crate::fmi2::exports::sys::fmi2Status
+        );
+        $crate::forward_export!(
+            fmi2, $model,
+            fmi2SetInteger: fmi2SetIntegerTYPE,
+            (
             c: $crate::fmi2::exports::sys::fmi2Component,
             vr: *const $crate::fmi2::exports::sys::fmi2ValueReference,
             nvr: usize,
             value: *const $crate::fmi2::exports::sys::fmi2Integer,
-        ) -> $crate::fmi2::exports::sys::fmi2Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe { $crate::fmi2::exports::fmi2SetInteger::<$model>(c, vr, nvr, value) }
-        }
-        const _: $crate::fmi2::exports::sys::fmi2SetIntegerTYPE = Some(fmi2SetInteger);
-        /// See `fmi_export::fmi2::exports::fmi2SetBoolean`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2SetBoolean(
+            ) -> $crate::fmi2::exports::sys::fmi2Status
+        );
+        $crate::forward_export!(
+            fmi2, $model,
+            fmi2SetBoolean: fmi2SetBooleanTYPE,
+            (
             c: $crate::fmi2::exports::sys::fmi2Component,
             vr: *const $crate::fmi2::exports::sys::fmi2ValueReference,
             nvr: usize,
             value: *const $crate::fmi2::exports::sys::fmi2Boolean,
-        ) -> $crate::fmi2::exports::sys::fmi2Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe { $crate::fmi2::exports::fmi2SetBoolean::<$model>(c, vr, nvr, value) }
-        }
-        const _: $crate::fmi2::exports::sys::fmi2SetBooleanTYPE = Some(fmi2SetBoolean);
-        /// See `fmi_export::fmi2::exports::fmi2SetString`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2SetString(
+            ) -> $crate::fmi2::exports::sys::fmi2Status
+        );
+        $crate::forward_export!(
+            fmi2, $model,
+            fmi2SetString: fmi2SetStringTYPE,
+            (
             c: $crate::fmi2::exports::sys::fmi2Component,
             vr: *const $crate::fmi2::exports::sys::fmi2ValueReference,
             nvr: usize,
             value: *const $crate::fmi2::exports::sys::fmi2String,
-        ) -> $crate::fmi2::exports::sys::fmi2Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe { $crate::fmi2::exports::fmi2SetString::<$model>(c, vr, nvr, value) }
-        }
-        const _: $crate::fmi2::exports::sys::fmi2SetStringTYPE = Some(fmi2SetString);
-        /// See `fmi_export::fmi2::exports::fmi2GetFMUstate`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2GetFMUstate(
+            ) -> $crate::fmi2::exports::sys::fmi2Status
+        );
+        $crate::forward_export!(
+            fmi2, $model,
+            fmi2GetFMUstate: fmi2GetFMUstateTYPE,
+            (
             c: $crate::fmi2::exports::sys::fmi2Component,
             FMUstate: *mut $crate::fmi2::exports::sys::fmi2FMUstate,
-        ) -> $crate::fmi2::exports::sys::fmi2Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe { $crate::fmi2::exports::fmi2GetFMUstate::<$model>(c, FMUstate) }
-        }
-        const _: $crate::fmi2::exports::sys::fmi2GetFMUstateTYPE = Some(fmi2GetFMUstate);
-        /// See `fmi_export::fmi2::exports::fmi2SetFMUstate`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2SetFMUstate(
+            ) -> $crate::fmi2::exports::sys::fmi2Status
+        );
+        $crate::forward_export!(
+            fmi2, $model,
+            fmi2SetFMUstate: fmi2SetFMUstateTYPE,
+            (
             c: $crate::fmi2::exports::sys::fmi2Component,
             FMUstate: $crate::fmi2::exports::sys::fmi2FMUstate,
-        ) -> $crate::fmi2::exports::sys::fmi2Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe { $crate::fmi2::exports::fmi2SetFMUstate::<$model>(c, FMUstate) }
-        }
-        const _: $crate::fmi2::exports::sys::fmi2SetFMUstateTYPE = Some(fmi2SetFMUstate);
-        /// See `fmi_export::fmi2::exports::fmi2FreeFMUstate`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2FreeFMUstate(
+            ) -> $crate::fmi2::exports::sys::fmi2Status
+        );
+        $crate::forward_export!(
+            fmi2, $model,
+            fmi2FreeFMUstate: fmi2FreeFMUstateTYPE,
+            (
             c: $crate::fmi2::exports::sys::fmi2Component,
             FMUstate: *mut $crate::fmi2::exports::sys::fmi2FMUstate,
-        ) -> $crate::fmi2::exports::sys::fmi2Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe { $crate::fmi2::exports::fmi2FreeFMUstate::<$model>(c, FMUstate) }
-        }
-        const _: $crate::fmi2::exports::sys::fmi2FreeFMUstateTYPE = Some(fmi2FreeFMUstate);
-        /// See `fmi_export::fmi2::exports::fmi2SerializedFMUstateSize`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2SerializedFMUstateSize(
+            ) -> $crate::fmi2::exports::sys::fmi2Status
+        );
+        $crate::forward_export!(
+            fmi2, $model,
+            fmi2SerializedFMUstateSize: fmi2SerializedFMUstateSizeTYPE,
+            (
             c: $crate::fmi2::exports::sys::fmi2Component,
             FMUstate: $crate::fmi2::exports::sys::fmi2FMUstate,
             size: *mut usize,
-        ) -> $crate::fmi2::exports::sys::fmi2Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi2::exports::fmi2SerializedFMUstateSize::<$model>(c, FMUstate, size)
-            }
-        }
-        const _: $crate::fmi2::exports::sys::fmi2SerializedFMUstateSizeTYPE =
-            Some(fmi2SerializedFMUstateSize);
-        /// See `fmi_export::fmi2::exports::fmi2SerializeFMUstate`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2SerializeFMUstate(
+            ) -> $crate::fmi2::exports::sys::fmi2Status
+        );
+        $crate::forward_export!(
+            fmi2, $model,
+            fmi2SerializeFMUstate: fmi2SerializeFMUstateTYPE,
+            (
             c: $crate::fmi2::exports::sys::fmi2Component,
             FMUstate: $crate::fmi2::exports::sys::fmi2FMUstate,
             serializedState: *mut $crate::fmi2::exports::sys::fmi2Byte,
             size: usize,
-        ) -> $crate::fmi2::exports::sys::fmi2Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi2::exports::fmi2SerializeFMUstate::<$model>(
-                    c,
-                    FMUstate,
-                    serializedState,
-                    size,
-                )
-            }
-        }
-        const _: $crate::fmi2::exports::sys::fmi2SerializeFMUstateTYPE =
-            Some(fmi2SerializeFMUstate);
-        /// See `fmi_export::fmi2::exports::fmi2DeSerializeFMUstate`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2DeSerializeFMUstate(
+            ) -> $crate::fmi2::exports::sys::fmi2Status
+        );
+        $crate::forward_export!(
+            fmi2, $model,
+            fmi2DeSerializeFMUstate: fmi2DeSerializeFMUstateTYPE,
+            (
             c: $crate::fmi2::exports::sys::fmi2Component,
             serializedState: *const $crate::fmi2::exports::sys::fmi2Byte,
             size: usize,
             FMUstate: *mut $crate::fmi2::exports::sys::fmi2FMUstate,
-        ) -> $crate::fmi2::exports::sys::fmi2Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi2::exports::fmi2DeSerializeFMUstate::<$model>(
-                    c,
-                    serializedState,
-                    size,
-                    FMUstate,
-                )
-            }
-        }
-        const _: $crate::fmi2::exports::sys::fmi2DeSerializeFMUstateTYPE =
-            Some(fmi2DeSerializeFMUstate);
-        /// See `fmi_export::fmi2::exports::fmi2GetDirectionalDerivative`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2GetDirectionalDerivative(
+            ) -> $crate::fmi2::exports::sys::fmi2Status
+        );
+        $crate::forward_export!(
+            fmi2, $model,
+            fmi2GetDirectionalDerivative: fmi2GetDirectionalDerivativeTYPE,
+            (
             c: $crate::fmi2::exports::sys::fmi2Component,
             _vUnknown_ref: *const $crate::fmi2::exports::sys::fmi2ValueReference,
             _nUnknown: usize,
@@ -322,140 +234,111 @@ macro_rules! export_fmi2 {
             _nKnown: usize,
             _dvKnown: *const $crate::fmi2::exports::sys::fmi2Real,
             _dvUnknown: *mut $crate::fmi2::exports::sys::fmi2Real,
-        ) -> $crate::fmi2::exports::sys::fmi2Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi2::exports::fmi2GetDirectionalDerivative::<$model>(
-                    c,
-                    _vUnknown_ref,
-                    _nUnknown,
-                    _vKnown_ref,
-                    _nKnown,
-                    _dvKnown,
-                    _dvUnknown,
-                )
-            }
-        }
-        const _: $crate::fmi2::exports::sys::fmi2GetDirectionalDerivativeTYPE =
-            Some(fmi2GetDirectionalDerivative);
-        /// See `fmi_export::fmi2::exports::fmi2SetRealInputDerivatives`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2SetRealInputDerivatives(
+            ) -> $crate::fmi2::exports::sys::fmi2Status
+        );
+        $crate::forward_export!(
+            fmi2, $model,
+            fmi2SetRealInputDerivatives: fmi2SetRealInputDerivativesTYPE,
+            (
             c: $crate::fmi2::exports::sys::fmi2Component,
             vr: *const $crate::fmi2::exports::sys::fmi2ValueReference,
             nvr: usize,
             order: *const $crate::fmi2::exports::sys::fmi2Integer,
             value: *const $crate::fmi2::exports::sys::fmi2Real,
-        ) -> $crate::fmi2::exports::sys::fmi2Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi2::exports::fmi2SetRealInputDerivatives::<$model>(
-                    c, vr, nvr, order, value,
-                )
-            }
-        }
-        const _: $crate::fmi2::exports::sys::fmi2SetRealInputDerivativesTYPE =
-            Some(fmi2SetRealInputDerivatives);
-        /// See `fmi_export::fmi2::exports::fmi2GetRealOutputDerivatives`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2GetRealOutputDerivatives(
+            ) -> $crate::fmi2::exports::sys::fmi2Status
+        );
+        $crate::forward_export!(
+            fmi2, $model,
+            fmi2GetRealOutputDerivatives: fmi2GetRealOutputDerivativesTYPE,
+            (
             c: $crate::fmi2::exports::sys::fmi2Component,
             vr: *const $crate::fmi2::exports::sys::fmi2ValueReference,
             nvr: usize,
             order: *const $crate::fmi2::exports::sys::fmi2Integer,
             value: *mut $crate::fmi2::exports::sys::fmi2Real,
-        ) -> $crate::fmi2::exports::sys::fmi2Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi2::exports::fmi2GetRealOutputDerivatives::<$model>(
-                    c, vr, nvr, order, value,
-                )
-            }
-        }
-        const _: $crate::fmi2::exports::sys::fmi2GetRealOutputDerivativesTYPE =
-            Some(fmi2GetRealOutputDerivatives);
-        /// See `fmi_export::fmi2::exports::fmi2DoStep`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2DoStep(
+            ) -> $crate::fmi2::exports::sys::fmi2Status
+        );
+        $crate::forward_export!(
+            fmi2, $model,
+            fmi2DoStep: fmi2DoStepTYPE,
+            (
             c: $crate::fmi2::exports::sys::fmi2Component,
             currentCommunicationPoint: $crate::fmi2::exports::sys::fmi2Real,
             communicationStepSize: $crate::fmi2::exports::sys::fmi2Real,
             _noSetFMUStatePriorToCurrentPoint: $crate::fmi2::exports::sys::fmi2Boolean,
-        ) -> $crate::fmi2::exports::sys::fmi2Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi2::exports::fmi2DoStep::<$model>(
-                    c,
-                    currentCommunicationPoint,
-                    communicationStepSize,
-                    _noSetFMUStatePriorToCurrentPoint,
-                )
-            }
-        }
-        const _: $crate::fmi2::exports::sys::fmi2DoStepTYPE = Some(fmi2DoStep);
-        /// See `fmi_export::fmi2::exports::fmi2CancelStep`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2CancelStep(
+            ) -> $crate::fmi2::exports::sys::fmi2Status
+        );
+        $crate::forward_export!(
+            fmi2, $model,
+            fmi2CancelStep: fmi2CancelStepTYPE,
+            (
             c: $crate::fmi2::exports::sys::fmi2Component,
-        ) -> $crate::fmi2::exports::sys::fmi2Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe { $crate::fmi2::exports::fmi2CancelStep::<$model>(c) }
-        }
-        const _: $crate::fmi2::exports::sys::fmi2CancelStepTYPE = Some(fmi2CancelStep);
-        /// See `fmi_export::fmi2::exports::fmi2GetStatus`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2GetStatus(
+            ) -> $crate::fmi2::exports::sys::fmi2Status
+        );
+        $crate::forward_export!(
+            fmi2, $model,
+            fmi2GetStatus: fmi2GetStatusTYPE,
+            (
             c: $crate::fmi2::exports::sys::fmi2Component,
             _s: $crate::fmi2::exports::sys::fmi2StatusKind,
             value: *mut $crate::fmi2::exports::sys::fmi2Status,
-        ) -> $crate::fmi2::exports::sys::fmi2Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe { $crate::fmi2::exports::fmi2GetStatus::<$model>(c, _s, value) }
-        }
-        const _: $crate::fmi2::exports::sys::fmi2GetStatusTYPE = Some(fmi2GetStatus);
-        /// See `fmi_export::fmi2::exports::fmi2GetRealStatus`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2GetRealStatus(
+            ) -> $crate::fmi2::exports::sys::fmi2Status
+        );
+        $crate::forward_export!(
+            fmi2, $model,
+            fmi2GetRealStatus: fmi2GetRealStatusTYPE,
+            (
             c: $crate::fmi2::exports::sys::fmi2Component,
             s: $crate::fmi2::exports::sys::fmi2StatusKind,
             value: *mut $crate::fmi2::exports::sys::fmi2Real,
-        ) -> $crate::fmi2::exports::sys::fmi2Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe { $crate::fmi2::exports::fmi2GetRealStatus::<$model>(c, s, value) }
-        }
-        const _: $crate::fmi2::exports::sys::fmi2GetRealStatusTYPE = Some(fmi2GetRealStatus);
-        /// See `fmi_export::fmi2::exports::fmi2GetIntegerStatus`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2GetIntegerStatus(
+            ) -> $crate::fmi2::exports::sys::fmi2Status
+        );
+        $crate::forward_export!(
+            fmi2, $model,
+            fmi2GetIntegerStatus: fmi2GetIntegerStatusTYPE,
+            (
             c: $crate::fmi2::exports::sys::fmi2Component,
             _s: $crate::fmi2::exports::sys::fmi2StatusKind,
             value: *mut $crate::fmi2::exports::sys::fmi2Integer,
-        ) -> $crate::fmi2::exports::sys::fmi2Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe { $crate::fmi2::exports::fmi2GetIntegerStatus::<$model>(c, _s, value) }
-        }
-        const _: $crate::fmi2::exports::sys::fmi2GetIntegerStatusTYPE = Some(fmi2GetIntegerStatus);
-        /// See `fmi_export::fmi2::exports::fmi2GetBooleanStatus`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2GetBooleanStatus(
+            ) -> $crate::fmi2::exports::sys::fmi2Status
+        );
+        $crate::forward_export!(
+            fmi2, $model,
+            fmi2GetBooleanStatus: fmi2GetBooleanStatusTYPE,
+            (
             c: $crate::fmi2::exports::sys::fmi2Component,
             s: $crate::fmi2::exports::sys::fmi2StatusKind,
             value: *mut $crate::fmi2::exports::sys::fmi2Boolean,
-        ) -> $crate::fmi2::exports::sys::fmi2Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe { $crate::fmi2::exports::fmi2GetBooleanStatus::<$model>(c, s, value) }
-        }
-        const _: $crate::fmi2::exports::sys::fmi2GetBooleanStatusTYPE = Some(fmi2GetBooleanStatus);
-        /// See `fmi_export::fmi2::exports::fmi2GetStringStatus`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2GetStringStatus(
+            ) -> $crate::fmi2::exports::sys::fmi2Status
+        );
+        $crate::forward_export!(
+            fmi2, $model,
+            fmi2GetStringStatus: fmi2GetStringStatusTYPE,
+            (
             c: $crate::fmi2::exports::sys::fmi2Component,
             _s: $crate::fmi2::exports::sys::fmi2StatusKind,
             value: *mut $crate::fmi2::exports::sys::fmi2String,
-        ) -> $crate::fmi2::exports::sys::fmi2Status {
+            ) -> $crate::fmi2::exports::sys::fmi2Status
+        );
+    };
+}
+
+/// One exported function of either version that forwards its C arguments, unchanged, to the
+/// generic function of the same name over the model (`$crate::$version::exports::$name::<$model>`),
+/// its signature pinned to the header's `$pinned`; for [`crate::export_fmi2!`] and
+/// [`crate::export_fmi3!`].
+#[doc(hidden)]
+#[macro_export]
+macro_rules! forward_export {
+    ($version:ident, $model:ty, $name:ident: $pinned:ident, ($($arg:ident: $ty:ty,)*) -> $ret:ty) => {
+        #[doc = concat!(
+            "See `fmi_export::", stringify!($version), "::exports::", stringify!($name), "`."
+        )]
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $name($($arg: $ty,)*) -> $ret {
             // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe { $crate::fmi2::exports::fmi2GetStringStatus::<$model>(c, _s, value) }
+            unsafe { $crate::$version::exports::$name::<$model>($($arg,)*) }
         }
-        const _: $crate::fmi2::exports::sys::fmi2GetStringStatusTYPE = Some(fmi2GetStringStatus);
+        const _: $crate::$version::exports::sys::$pinned = Some($name);
     };
 }

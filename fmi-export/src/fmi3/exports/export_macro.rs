@@ -37,9 +37,10 @@ macro_rules! export_fmi3 {
         }
         const _: $crate::fmi3::exports::sys::fmi3InstantiateModelExchangeTYPE =
             Some(fmi3InstantiateModelExchange);
-        /// See `fmi_export::fmi3::exports::fmi3InstantiateCoSimulation`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3InstantiateCoSimulation(
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3InstantiateCoSimulation: fmi3InstantiateCoSimulationTYPE,
+            (
             instanceName: $crate::fmi3::exports::sys::fmi3String,
             instantiationToken: $crate::fmi3::exports::sys::fmi3String,
             resourcePath: $crate::fmi3::exports::sys::fmi3String,
@@ -52,27 +53,8 @@ macro_rules! export_fmi3 {
             instanceEnvironment: $crate::fmi3::exports::sys::fmi3InstanceEnvironment,
             logMessage: $crate::fmi3::exports::sys::fmi3LogMessageCallback,
             intermediateUpdate: $crate::fmi3::exports::sys::fmi3IntermediateUpdateCallback,
-        ) -> $crate::fmi3::exports::sys::fmi3Instance {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::fmi3InstantiateCoSimulation::<$model>(
-                    instanceName,
-                    instantiationToken,
-                    resourcePath,
-                    visible,
-                    loggingOn,
-                    eventModeUsed,
-                    earlyReturnAllowed,
-                    requiredIntermediateVariables,
-                    nRequiredIntermediateVariables,
-                    instanceEnvironment,
-                    logMessage,
-                    intermediateUpdate,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3InstantiateCoSimulationTYPE =
-            Some(fmi3InstantiateCoSimulation);
+            ) -> $crate::fmi3::exports::sys::fmi3Instance
+        );
         /// Not provided: logs why and returns NULL.
         #[unsafe(no_mangle)]
         pub unsafe extern "C" fn fmi3InstantiateScheduledExecution(
@@ -104,166 +86,106 @@ macro_rules! export_fmi3 {
             unsafe { $crate::fmi3::exports::fmi3FreeInstance::<$model>(instance) }
         }
         const _: $crate::fmi3::exports::sys::fmi3FreeInstanceTYPE = Some(fmi3FreeInstance);
-        /// See `fmi_export::fmi3::exports::fmi3SetDebugLogging`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3SetDebugLogging(
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3SetDebugLogging: fmi3SetDebugLoggingTYPE,
+            (
             instance: $crate::fmi3::exports::sys::fmi3Instance,
             loggingOn: $crate::fmi3::exports::sys::fmi3Boolean,
             nCategories: usize,
             categories: *const $crate::fmi3::exports::sys::fmi3String,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::fmi3SetDebugLogging::<$model>(
-                    instance,
-                    loggingOn,
-                    nCategories,
-                    categories,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3SetDebugLoggingTYPE = Some(fmi3SetDebugLogging);
-        /// See `fmi_export::fmi3::exports::fmi3EnterInitializationMode`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3EnterInitializationMode(
+            ) -> $crate::fmi3::exports::sys::fmi3Status
+        );
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3EnterInitializationMode: fmi3EnterInitializationModeTYPE,
+            (
             instance: $crate::fmi3::exports::sys::fmi3Instance,
             toleranceDefined: $crate::fmi3::exports::sys::fmi3Boolean,
             tolerance: $crate::fmi3::exports::sys::fmi3Float64,
             startTime: $crate::fmi3::exports::sys::fmi3Float64,
             stopTimeDefined: $crate::fmi3::exports::sys::fmi3Boolean,
             stopTime: $crate::fmi3::exports::sys::fmi3Float64,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::fmi3EnterInitializationMode::<$model>(
-                    instance,
-                    toleranceDefined,
-                    tolerance,
-                    startTime,
-                    stopTimeDefined,
-                    stopTime,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3EnterInitializationModeTYPE =
-            Some(fmi3EnterInitializationMode);
-        /// See `fmi_export::fmi3::exports::fmi3ExitInitializationMode`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3ExitInitializationMode(
+            ) -> $crate::fmi3::exports::sys::fmi3Status
+        );
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3ExitInitializationMode: fmi3ExitInitializationModeTYPE,
+            (
             instance: $crate::fmi3::exports::sys::fmi3Instance,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe { $crate::fmi3::exports::fmi3ExitInitializationMode::<$model>(instance) }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3ExitInitializationModeTYPE =
-            Some(fmi3ExitInitializationMode);
-        /// See `fmi_export::fmi3::exports::fmi3Terminate`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3Terminate(
+            ) -> $crate::fmi3::exports::sys::fmi3Status
+        );
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3Terminate: fmi3TerminateTYPE,
+            (
             instance: $crate::fmi3::exports::sys::fmi3Instance,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe { $crate::fmi3::exports::fmi3Terminate::<$model>(instance) }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3TerminateTYPE = Some(fmi3Terminate);
-        /// See `fmi_export::fmi3::exports::fmi3Reset`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3Reset(
+            ) -> $crate::fmi3::exports::sys::fmi3Status
+        );
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3Reset: fmi3ResetTYPE,
+            (
             instance: $crate::fmi3::exports::sys::fmi3Instance,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe { $crate::fmi3::exports::fmi3Reset::<$model>(instance) }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3ResetTYPE = Some(fmi3Reset);
-        /// See `fmi_export::fmi3::exports::fmi3GetFMUState`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3GetFMUState(
+            ) -> $crate::fmi3::exports::sys::fmi3Status
+        );
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3GetFMUState: fmi3GetFMUStateTYPE,
+            (
             instance: $crate::fmi3::exports::sys::fmi3Instance,
             FMUState: *mut $crate::fmi3::exports::sys::fmi3FMUState,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe { $crate::fmi3::exports::fmi3GetFMUState::<$model>(instance, FMUState) }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3GetFMUStateTYPE = Some(fmi3GetFMUState);
-        /// See `fmi_export::fmi3::exports::fmi3SetFMUState`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3SetFMUState(
+            ) -> $crate::fmi3::exports::sys::fmi3Status
+        );
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3SetFMUState: fmi3SetFMUStateTYPE,
+            (
             instance: $crate::fmi3::exports::sys::fmi3Instance,
             FMUState: $crate::fmi3::exports::sys::fmi3FMUState,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe { $crate::fmi3::exports::fmi3SetFMUState::<$model>(instance, FMUState) }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3SetFMUStateTYPE = Some(fmi3SetFMUState);
-        /// See `fmi_export::fmi3::exports::fmi3FreeFMUState`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3FreeFMUState(
+            ) -> $crate::fmi3::exports::sys::fmi3Status
+        );
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3FreeFMUState: fmi3FreeFMUStateTYPE,
+            (
             instance: $crate::fmi3::exports::sys::fmi3Instance,
             FMUState: *mut $crate::fmi3::exports::sys::fmi3FMUState,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe { $crate::fmi3::exports::fmi3FreeFMUState::<$model>(instance, FMUState) }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3FreeFMUStateTYPE = Some(fmi3FreeFMUState);
-        /// See `fmi_export::fmi3::exports::fmi3SerializedFMUStateSize`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3SerializedFMUStateSize(
+            ) -> $crate::fmi3::exports::sys::fmi3Status
+        );
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3SerializedFMUStateSize: fmi3SerializedFMUStateSizeTYPE,
+            (
             instance: $crate::fmi3::exports::sys::fmi3Instance,
             FMUState: $crate::fmi3::exports::sys::fmi3FMUState,
             size: *mut usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::fmi3SerializedFMUStateSize::<$model>(
-                    instance, FMUState, size,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3SerializedFMUStateSizeTYPE =
-            Some(fmi3SerializedFMUStateSize);
-        /// See `fmi_export::fmi3::exports::fmi3SerializeFMUState`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3SerializeFMUState(
+            ) -> $crate::fmi3::exports::sys::fmi3Status
+        );
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3SerializeFMUState: fmi3SerializeFMUStateTYPE,
+            (
             instance: $crate::fmi3::exports::sys::fmi3Instance,
             FMUState: $crate::fmi3::exports::sys::fmi3FMUState,
             serializedState: *mut $crate::fmi3::exports::sys::fmi3Byte,
             size: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::fmi3SerializeFMUState::<$model>(
-                    instance,
-                    FMUState,
-                    serializedState,
-                    size,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3SerializeFMUStateTYPE =
-            Some(fmi3SerializeFMUState);
-        /// See `fmi_export::fmi3::exports::fmi3DeserializeFMUState`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3DeserializeFMUState(
+            ) -> $crate::fmi3::exports::sys::fmi3Status
+        );
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3DeserializeFMUState: fmi3DeserializeFMUStateTYPE,
+            (
             instance: $crate::fmi3::exports::sys::fmi3Instance,
             serializedState: *const $crate::fmi3::exports::sys::fmi3Byte,
             size: usize,
             FMUState: *mut $crate::fmi3::exports::sys::fmi3FMUState,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::fmi3DeserializeFMUState::<$model>(
-                    instance,
-                    serializedState,
-                    size,
-                    FMUState,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3DeserializeFMUStateTYPE =
-            Some(fmi3DeserializeFMUState);
-        /// See `fmi_export::fmi3::exports::fmi3GetDirectionalDerivative`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3GetDirectionalDerivative(
+            ) -> $crate::fmi3::exports::sys::fmi3Status
+        );
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3GetDirectionalDerivative: fmi3GetDirectionalDerivativeTYPE,
+            (
             instance: $crate::fmi3::exports::sys::fmi3Instance,
             unknowns: *const $crate::fmi3::exports::sys::fmi3ValueReference,
             nUnknowns: usize,
@@ -273,51 +195,24 @@ macro_rules! export_fmi3 {
             nSeed: usize,
             sensitivity: *mut $crate::fmi3::exports::sys::fmi3Float64,
             nSensitivity: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::fmi3GetDirectionalDerivative::<$model>(
-                    instance,
-                    unknowns,
-                    nUnknowns,
-                    knowns,
-                    nKnowns,
-                    seed,
-                    nSeed,
-                    sensitivity,
-                    nSensitivity,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3GetDirectionalDerivativeTYPE =
-            Some(fmi3GetDirectionalDerivative);
-        /// See `fmi_export::fmi3::exports::fmi3GetOutputDerivatives`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3GetOutputDerivatives(
+            ) -> $crate::fmi3::exports::sys::fmi3Status
+        );
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3GetOutputDerivatives: fmi3GetOutputDerivativesTYPE,
+            (
             instance: $crate::fmi3::exports::sys::fmi3Instance,
             valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
             nValueReferences: usize,
             orders: *const $crate::fmi3::exports::sys::fmi3Int32,
             values: *mut $crate::fmi3::exports::sys::fmi3Float64,
             nValues: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::fmi3GetOutputDerivatives::<$model>(
-                    instance,
-                    valueReferences,
-                    nValueReferences,
-                    orders,
-                    values,
-                    nValues,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3GetOutputDerivativesTYPE =
-            Some(fmi3GetOutputDerivatives);
-        /// See `fmi_export::fmi3::exports::fmi3DoStep`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3DoStep(
+            ) -> $crate::fmi3::exports::sys::fmi3Status
+        );
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3DoStep: fmi3DoStepTYPE,
+            (
             instance: $crate::fmi3::exports::sys::fmi3Instance,
             currentCommunicationPoint: $crate::fmi3::exports::sys::fmi3Float64,
             communicationStepSize: $crate::fmi3::exports::sys::fmi3Float64,
@@ -326,21 +221,7 @@ macro_rules! export_fmi3 {
             terminateSimulation: *mut $crate::fmi3::exports::sys::fmi3Boolean,
             earlyReturn: *mut $crate::fmi3::exports::sys::fmi3Boolean,
             lastSuccessfulTime: *mut $crate::fmi3::exports::sys::fmi3Float64,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::fmi3DoStep::<$model>(
-                    instance,
-                    currentCommunicationPoint,
-                    communicationStepSize,
-                    noSetFMUStatePriorToCurrentPoint,
-                    eventHandlingNeeded,
-                    terminateSimulation,
-                    earlyReturn,
-                    lastSuccessfulTime,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3DoStepTYPE = Some(fmi3DoStep);
+            ) -> $crate::fmi3::exports::sys::fmi3Status
+        );
     };
 }

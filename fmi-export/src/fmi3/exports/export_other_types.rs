@@ -50,27 +50,17 @@ macro_rules! export_fmi3_other_types {
             _values: *mut $crate::fmi3::exports::sys::fmi3UInt32,
             _nValues: usize,
         );
-        /// Reads the structural parameters (FMI 3's only UInt64 variables).
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3GetUInt64(
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3GetUInt64: fmi3GetUInt64TYPE,
+            (
             instance: $crate::fmi3::exports::sys::fmi3Instance,
             valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
             nValueReferences: usize,
             values: *mut $crate::fmi3::exports::sys::fmi3UInt64,
             nValues: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::fmi3GetUInt64::<$model>(
-                    instance,
-                    valueReferences,
-                    nValueReferences,
-                    values,
-                    nValues,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3GetUInt64TYPE = Some(fmi3GetUInt64);
+            ) -> $crate::fmi3::exports::sys::fmi3Status
+        );
         $crate::fmi3_no_variable_of_type!(
             $model,
             fmi3GetBinary: fmi3GetBinaryTYPE,
@@ -127,27 +117,17 @@ macro_rules! export_fmi3_other_types {
             _values: *const $crate::fmi3::exports::sys::fmi3UInt32,
             _nValues: usize,
         );
-        /// Sets the structural parameters (FMI 3's only UInt64 variables).
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3SetUInt64(
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3SetUInt64: fmi3SetUInt64TYPE,
+            (
             instance: $crate::fmi3::exports::sys::fmi3Instance,
             valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
             nValueReferences: usize,
             values: *const $crate::fmi3::exports::sys::fmi3UInt64,
             nValues: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::fmi3SetUInt64::<$model>(
-                    instance,
-                    valueReferences,
-                    nValueReferences,
-                    values,
-                    nValues,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3SetUInt64TYPE = Some(fmi3SetUInt64);
+            ) -> $crate::fmi3::exports::sys::fmi3Status
+        );
         $crate::fmi3_no_variable_of_type!(
             $model,
             fmi3SetBinary: fmi3SetBinaryTYPE,

@@ -9,15 +9,13 @@
 #[macro_export]
 macro_rules! export_fmi3_unsupported {
     ($model:ty) => {
-        /// Enters Event Mode (a model with hasEventMode, an instance with eventModeUsed).
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3EnterEventMode(
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3EnterEventMode: fmi3EnterEventModeTYPE,
+            (
             instance: $crate::fmi3::exports::sys::fmi3Instance,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's argument, passed on unchanged under the same contract.
-            unsafe { $crate::fmi3::exports::fmi3EnterEventMode::<$model>(instance) }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3EnterEventModeTYPE = Some(fmi3EnterEventMode);
+            ) -> $crate::fmi3::exports::sys::fmi3Status
+        );
         $crate::fmi3_unsupported!(
             $model,
             fmi3GetNumberOfVariableDependencies: fmi3GetNumberOfVariableDependenciesTYPE,
@@ -49,26 +47,20 @@ macro_rules! export_fmi3_unsupported {
             _sensitivity: *mut $crate::fmi3::exports::sys::fmi3Float64,
             _nSensitivity: usize,
         );
-        /// Enters Configuration Mode (a model with structural parameters).
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3EnterConfigurationMode(
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3EnterConfigurationMode: fmi3EnterConfigurationModeTYPE,
+            (
             instance: $crate::fmi3::exports::sys::fmi3Instance,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's argument, passed on unchanged under the same contract.
-            unsafe { $crate::fmi3::exports::fmi3EnterConfigurationMode::<$model>(instance) }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3EnterConfigurationModeTYPE =
-            Some(fmi3EnterConfigurationMode);
-        /// Leaves Configuration Mode.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3ExitConfigurationMode(
+            ) -> $crate::fmi3::exports::sys::fmi3Status
+        );
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3ExitConfigurationMode: fmi3ExitConfigurationModeTYPE,
+            (
             instance: $crate::fmi3::exports::sys::fmi3Instance,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's argument, passed on unchanged under the same contract.
-            unsafe { $crate::fmi3::exports::fmi3ExitConfigurationMode::<$model>(instance) }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3ExitConfigurationModeTYPE =
-            Some(fmi3ExitConfigurationMode);
+            ) -> $crate::fmi3::exports::sys::fmi3Status
+        );
         $crate::fmi3_unsupported!(
             $model,
             fmi3GetIntervalDecimal: fmi3GetIntervalDecimalTYPE,
@@ -144,9 +136,10 @@ macro_rules! export_fmi3_unsupported {
             fmi3EvaluateDiscreteStates: fmi3EvaluateDiscreteStatesTYPE,
             "the discrete states are not evaluated apart (providesEvaluateDiscreteStates = false)",
         );
-        /// Settles the discrete states in Event Mode.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3UpdateDiscreteStates(
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3UpdateDiscreteStates: fmi3UpdateDiscreteStatesTYPE,
+            (
             instance: $crate::fmi3::exports::sys::fmi3Instance,
             discreteStatesNeedUpdate: *mut $crate::fmi3::exports::sys::fmi3Boolean,
             terminateSimulation: *mut $crate::fmi3::exports::sys::fmi3Boolean,
@@ -154,22 +147,8 @@ macro_rules! export_fmi3_unsupported {
             valuesOfContinuousStatesChanged: *mut $crate::fmi3::exports::sys::fmi3Boolean,
             nextEventTimeDefined: *mut $crate::fmi3::exports::sys::fmi3Boolean,
             nextEventTime: *mut $crate::fmi3::exports::sys::fmi3Float64,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::fmi3UpdateDiscreteStates::<$model>(
-                    instance,
-                    discreteStatesNeedUpdate,
-                    terminateSimulation,
-                    nominalsOfContinuousStatesChanged,
-                    valuesOfContinuousStatesChanged,
-                    nextEventTimeDefined,
-                    nextEventTime,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3UpdateDiscreteStatesTYPE =
-            Some(fmi3UpdateDiscreteStates);
+            ) -> $crate::fmi3::exports::sys::fmi3Status
+        );
         $crate::fmi3_unsupported!(
             $model,
             fmi3EnterContinuousTimeMode: fmi3EnterContinuousTimeModeTYPE,
@@ -236,15 +215,13 @@ macro_rules! export_fmi3_unsupported {
             "model exchange is not provided",
             _nContinuousStates: *mut usize,
         );
-        /// Leaves Event Mode for Step Mode.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3EnterStepMode(
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3EnterStepMode: fmi3EnterStepModeTYPE,
+            (
             instance: $crate::fmi3::exports::sys::fmi3Instance,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's argument, passed on unchanged under the same contract.
-            unsafe { $crate::fmi3::exports::fmi3EnterStepMode::<$model>(instance) }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3EnterStepModeTYPE = Some(fmi3EnterStepMode);
+            ) -> $crate::fmi3::exports::sys::fmi3Status
+        );
         $crate::fmi3_unsupported!(
             $model,
             fmi3ActivateModelPartition: fmi3ActivateModelPartitionTYPE,

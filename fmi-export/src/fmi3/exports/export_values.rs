@@ -7,215 +7,115 @@
 #[macro_export]
 macro_rules! export_fmi3_values {
     ($model:ty) => {
-        /// See `fmi_export::fmi3::exports::fmi3GetFloat64`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3GetFloat64(
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3GetFloat64: fmi3GetFloat64TYPE,
+            (
             instance: $crate::fmi3::exports::sys::fmi3Instance,
             valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
             nValueReferences: usize,
             values: *mut $crate::fmi3::exports::sys::fmi3Float64,
             nValues: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::fmi3GetFloat64::<$model>(
-                    instance,
-                    valueReferences,
-                    nValueReferences,
-                    values,
-                    nValues,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3GetFloat64TYPE = Some(fmi3GetFloat64);
-        /// See `fmi_export::fmi3::exports::fmi3GetInt32`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3GetInt32(
+            ) -> $crate::fmi3::exports::sys::fmi3Status
+        );
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3GetInt32: fmi3GetInt32TYPE,
+            (
             instance: $crate::fmi3::exports::sys::fmi3Instance,
             valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
             nValueReferences: usize,
             values: *mut $crate::fmi3::exports::sys::fmi3Int32,
             nValues: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::fmi3GetInt32::<$model>(
-                    instance,
-                    valueReferences,
-                    nValueReferences,
-                    values,
-                    nValues,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3GetInt32TYPE = Some(fmi3GetInt32);
-        /// See `fmi_export::fmi3::exports::fmi3GetInt64`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3GetInt64(
+            ) -> $crate::fmi3::exports::sys::fmi3Status
+        );
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3GetInt64: fmi3GetInt64TYPE,
+            (
             instance: $crate::fmi3::exports::sys::fmi3Instance,
             valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
             nValueReferences: usize,
             values: *mut $crate::fmi3::exports::sys::fmi3Int64,
             nValues: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::fmi3GetInt64::<$model>(
-                    instance,
-                    valueReferences,
-                    nValueReferences,
-                    values,
-                    nValues,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3GetInt64TYPE = Some(fmi3GetInt64);
-        /// See `fmi_export::fmi3::exports::fmi3GetBoolean`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3GetBoolean(
+            ) -> $crate::fmi3::exports::sys::fmi3Status
+        );
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3GetBoolean: fmi3GetBooleanTYPE,
+            (
             instance: $crate::fmi3::exports::sys::fmi3Instance,
             valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
             nValueReferences: usize,
             values: *mut $crate::fmi3::exports::sys::fmi3Boolean,
             nValues: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::fmi3GetBoolean::<$model>(
-                    instance,
-                    valueReferences,
-                    nValueReferences,
-                    values,
-                    nValues,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3GetBooleanTYPE = Some(fmi3GetBoolean);
-        /// See `fmi_export::fmi3::exports::fmi3GetString`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3GetString(
+            ) -> $crate::fmi3::exports::sys::fmi3Status
+        );
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3GetString: fmi3GetStringTYPE,
+            (
             instance: $crate::fmi3::exports::sys::fmi3Instance,
             valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
             nValueReferences: usize,
             values: *mut $crate::fmi3::exports::sys::fmi3String,
             nValues: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::fmi3GetString::<$model>(
-                    instance,
-                    valueReferences,
-                    nValueReferences,
-                    values,
-                    nValues,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3GetStringTYPE = Some(fmi3GetString);
-        /// See `fmi_export::fmi3::exports::fmi3SetFloat64`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3SetFloat64(
+            ) -> $crate::fmi3::exports::sys::fmi3Status
+        );
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3SetFloat64: fmi3SetFloat64TYPE,
+            (
             instance: $crate::fmi3::exports::sys::fmi3Instance,
             valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
             nValueReferences: usize,
             values: *const $crate::fmi3::exports::sys::fmi3Float64,
             nValues: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::fmi3SetFloat64::<$model>(
-                    instance,
-                    valueReferences,
-                    nValueReferences,
-                    values,
-                    nValues,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3SetFloat64TYPE = Some(fmi3SetFloat64);
-        /// See `fmi_export::fmi3::exports::fmi3SetInt32`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3SetInt32(
+            ) -> $crate::fmi3::exports::sys::fmi3Status
+        );
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3SetInt32: fmi3SetInt32TYPE,
+            (
             instance: $crate::fmi3::exports::sys::fmi3Instance,
             valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
             nValueReferences: usize,
             values: *const $crate::fmi3::exports::sys::fmi3Int32,
             nValues: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::fmi3SetInt32::<$model>(
-                    instance,
-                    valueReferences,
-                    nValueReferences,
-                    values,
-                    nValues,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3SetInt32TYPE = Some(fmi3SetInt32);
-        /// See `fmi_export::fmi3::exports::fmi3SetInt64`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3SetInt64(
+            ) -> $crate::fmi3::exports::sys::fmi3Status
+        );
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3SetInt64: fmi3SetInt64TYPE,
+            (
             instance: $crate::fmi3::exports::sys::fmi3Instance,
             valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
             nValueReferences: usize,
             values: *const $crate::fmi3::exports::sys::fmi3Int64,
             nValues: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::fmi3SetInt64::<$model>(
-                    instance,
-                    valueReferences,
-                    nValueReferences,
-                    values,
-                    nValues,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3SetInt64TYPE = Some(fmi3SetInt64);
-        /// See `fmi_export::fmi3::exports::fmi3SetBoolean`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3SetBoolean(
+            ) -> $crate::fmi3::exports::sys::fmi3Status
+        );
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3SetBoolean: fmi3SetBooleanTYPE,
+            (
             instance: $crate::fmi3::exports::sys::fmi3Instance,
             valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
             nValueReferences: usize,
             values: *const $crate::fmi3::exports::sys::fmi3Boolean,
             nValues: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::fmi3SetBoolean::<$model>(
-                    instance,
-                    valueReferences,
-                    nValueReferences,
-                    values,
-                    nValues,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3SetBooleanTYPE = Some(fmi3SetBoolean);
-        /// See `fmi_export::fmi3::exports::fmi3SetString`.
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3SetString(
+            ) -> $crate::fmi3::exports::sys::fmi3Status
+        );
+        $crate::forward_export!(
+            fmi3, $model,
+            fmi3SetString: fmi3SetStringTYPE,
+            (
             instance: $crate::fmi3::exports::sys::fmi3Instance,
             valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
             nValueReferences: usize,
             values: *const $crate::fmi3::exports::sys::fmi3String,
             nValues: usize,
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe {
-                $crate::fmi3::exports::fmi3SetString::<$model>(
-                    instance,
-                    valueReferences,
-                    nValueReferences,
-                    values,
-                    nValues,
-                )
-            }
-        }
-        const _: $crate::fmi3::exports::sys::fmi3SetStringTYPE = Some(fmi3SetString);
+            ) -> $crate::fmi3::exports::sys::fmi3Status
+        );
     };
 }
