@@ -60,7 +60,7 @@ impl SliderCrank {
     /// with `joint_force` the rod–slider joint's force on the journal.
     pub fn loads(&mut self, y: &[f64], dy: &[f64], joint_force: Vector2<f64>) -> Loads {
         let l = self.layout;
-        let crank_pin = self.crank_pin_force(y, dy, joint_force);
+        let (crank_pin, pin_moment) = self.crank_pin_load(y, dy, joint_force);
         let crank_centre_acceleration = match l.crank_centre() {
             Some(g) => pair(dy, l.rate_of(g)),
             None => {
@@ -76,7 +76,7 @@ impl SliderCrank {
         } else {
             self.crank.mass * crank_centre_acceleration + crank_pin - self.crank.mass * self.gravity
         };
-        let load = self.rod_load(y, dy, crank_pin, joint_force);
+        let load = self.rod_load(dy, (crank_pin, pin_moment), joint_force);
         let deformation = match &mut self.rod {
             RodBody::Rigid { .. } => {
                 let (r_a, r_b) = (pair(y, PIN_A), pair(y, l.pin_b()));
@@ -118,8 +118,8 @@ impl SliderCrank {
         out: &mut [f64],
     ) {
         let l = self.layout;
-        let crank_pin = self.crank_pin_force(y, dy, joint_force);
-        let load = self.rod_load(y, dy, crank_pin, joint_force);
+        let crank_pin = self.crank_pin_load(y, dy, joint_force);
+        let load = self.rod_load(dy, crank_pin, joint_force);
         if let RodBody::Flexible(model) = &mut self.rod {
             model.sections(&y[l.rod()], &dy[l.rod_rates()], &load, result, out);
             return;
@@ -142,16 +142,19 @@ impl SliderCrank {
         }
     }
 
-    /// The force of the crank on the rod at the crank pin in state `y` with time derivative `dy`:
-    /// from the rod's momentum, or from a worn crank pin's joint law.
-    fn crank_pin_force(
+    /// The force of the crank on the rod at the crank pin in state `y` with time derivative `dy`,
+    /// from the rod's momentum or from a worn crank pin's joint law, and the worn pin's moment on
+    /// the rod's eye (its film's or contact's friction and the force's lever about the eye's
+    /// centre; 0 for an ideal pin), from one evaluation of the joint law.
+    fn crank_pin_load(
         &mut self,
         y: &[f64],
         dy: &[f64],
         joint_force: Vector2<f64>,
-    ) -> Vector2<f64> {
+    ) -> (Vector2<f64>, f64) {
         if self.has_clearance(JointRole::CrankPin) {
-            return -self.joint_force(JointRole::CrankPin, y).0.force;
+            let (law, _) = self.joint_force(JointRole::CrankPin, y);
+            return (-law.force, law.bearing_moment);
         }
         let p_ddot = &dy[self.layout.rod_rates()];
         let momentum = |d: usize| -> f64 {
@@ -161,25 +164,22 @@ impl SliderCrank {
                 .map(|(u, a)| u * a)
                 .sum()
         };
-        Vector2::new(momentum(0), momentum(1)) - joint_force - self.rod_data.mass * self.gravity
+        let force = Vector2::new(momentum(0), momentum(1))
+            - joint_force
+            - self.rod_data.mass * self.gravity;
+        (force, 0.0)
     }
 
     /// What the rod's section resultants balance besides its inertia and weight: the force on its
-    /// shank at the crank pin ([`SliderCrank::shank_forces`]) and a worn crank pin's moment on its
-    /// eye (the film's or the contact's friction and the force's lever about the eye's centre).
+    /// shank at the crank pin ([`SliderCrank::shank_forces`]) and the crank pin's moment on its
+    /// eye, from the crank pin's load `(force, moment)` ([`SliderCrank::crank_pin_load`]).
     fn rod_load(
         &self,
-        y: &[f64],
         dy: &[f64],
-        crank_pin: Vector2<f64>,
+        (crank_pin, start_moment): (Vector2<f64>, f64),
         joint_force: Vector2<f64>,
     ) -> RodLoad {
         let [start_force, _] = self.shank_forces(dy, crank_pin, joint_force);
-        let start_moment = if self.has_clearance(JointRole::CrankPin) {
-            self.joint_force(JointRole::CrankPin, y).0.bearing_moment
-        } else {
-            0.0
-        };
         RodLoad {
             start_force,
             start_moment,
