@@ -178,6 +178,22 @@ impl<M: Model> Slave<M> {
         Ok(values)
     }
 
+    /// Each FMI 3 array of the model ([`Model::FMI3`]) with its values at the current point
+    /// (fmi3GetFloat64 of the array), at the size its structural parameter's start value gives.
+    pub fn array_values(&mut self) -> Result<Vec<(&'static str, Vec<f64>)>, FmuError> {
+        let fmi3 = M::FMI3;
+        fmi3.arrays
+            .iter()
+            .enumerate()
+            .map(|(k, a)| {
+                let n = fmi3.structural_parameters[a.dimension].start;
+                let mut values = vec![0.0; usize::try_from(n).unwrap_or(0)];
+                self.model.get_array(&self.log, k, &mut values)?;
+                Ok((a.name, values))
+            })
+            .collect()
+    }
+
     /// fmi2ExitInitializationMode.
     pub fn exit_initialization(&mut self) -> Result<(), FmuError> {
         self.model.exit_initialization(&self.log)?;
