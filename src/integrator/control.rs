@@ -182,7 +182,7 @@ pub(super) fn scaled_norm(
 
 /// Initial step size (Hairer, Nørsett & Wanner 1993, §II.4) for a method of order `order`:
 /// h₀ from ‖y‖/‖f‖, then one Euler step to estimate the second derivative. `f0` holds f(t, y);
-/// `y1` and `f1` are workspace.
+/// `y1` and `f1` are workspace. Fails where f is not defined at the Euler step's end.
 #[allow(clippy::too_many_arguments)]
 pub(super) fn initial_step<F: OdeSystem>(
     f: &mut F,
@@ -195,7 +195,7 @@ pub(super) fn initial_step<F: OdeSystem>(
     order: i32,
     y1: &mut [f64],
     f1: &mut [f64],
-) -> f64 {
+) -> Result<f64, ModelError> {
     let n = y.len().max(1) as f64;
     let scale = |i: usize, v: f64| scales.weight(i, tol, v, v);
     let rms = |it: &mut dyn Iterator<Item = f64>| (it.map(|v| v * v).sum::<f64>() / n).sqrt();
@@ -214,7 +214,7 @@ pub(super) fn initial_step<F: OdeSystem>(
     for ((y1, &v), &d) in y1.iter_mut().zip(y).zip(f0) {
         *y1 = v + h0 * d;
     }
-    f.rhs(t + h0, y1, f1);
+    f.rhs(t + h0, y1, f1)?;
     let d2 = rms(&mut y
         .iter()
         .zip(f1.iter().zip(f0))
@@ -226,7 +226,7 @@ pub(super) fn initial_step<F: OdeSystem>(
     } else {
         crate::math::powf(0.01 / d1.max(d2), 1.0 / f64::from(order))
     };
-    (100.0 * h0).min(h1).min(tol.max_step)
+    Ok((100.0 * h0).min(h1).min(tol.max_step))
 }
 
 #[cfg(test)]

@@ -189,7 +189,7 @@ impl DormandPrince {
         max_attempts: u64,
     ) -> Result<bool, ModelError> {
         if !self.fsal {
-            f.rhs(*t, y, &mut self.k[0]);
+            f.rhs(*t, y, &mut self.k[0])?;
             self.stats.evaluations += 1;
             self.fsal = true;
         }
@@ -206,7 +206,7 @@ impl DormandPrince {
                 ORDER,
                 &mut self.y_stage,
                 &mut rest[0],
-            );
+            )?;
             self.stats.evaluations += 1;
         }
         let tolerances = self.tolerances;
@@ -214,15 +214,22 @@ impl DormandPrince {
     }
 
     /// One trial step of size `h` from (t, y); the candidate is left in `y_stage` and k[6] holds
-    /// f at it. Returns the scaled error norm (∞ for a non-finite candidate).
-    fn try_step<F: OdeSystem>(&mut self, f: &mut F, t: f64, y: &[f64], h: f64) -> f64 {
+    /// f at it. Returns the scaled error norm (∞ for a non-finite candidate), or the error of a
+    /// stage where f is not defined.
+    fn try_step<F: OdeSystem>(
+        &mut self,
+        f: &mut F,
+        t: f64,
+        y: &[f64],
+        h: f64,
+    ) -> Result<f64, ModelError> {
         for s in 1..7 {
             for (i, (stage, &y_i)) in self.y_stage.iter_mut().zip(y).enumerate() {
                 let incr: f64 = (0..s).map(|j| A[s][j] * self.k[j][i]).sum();
                 *stage = y_i + h * incr;
             }
-            f.rhs(t + C[s] * h, &self.y_stage, &mut self.k[s]);
             self.stats.evaluations += 1;
+            f.rhs(t + C[s] * h, &self.y_stage, &mut self.k[s])?;
         }
         let Tolerances {
             relative, absolute, ..
@@ -235,11 +242,11 @@ impl DormandPrince {
             sum += (err / scale).powi(2);
         }
         let norm = (sum / y.len().max(1) as f64).sqrt();
-        if norm.is_finite() {
+        Ok(if norm.is_finite() {
             norm
         } else {
             f64::INFINITY
-        }
+        })
     }
 }
 
@@ -256,8 +263,12 @@ impl<F: OdeSystem> Method<F> for DormandPrince {
         ORDER
     }
 
+    /// A stage where f is not defined rejects the step as a non-finite error estimate would.
     fn trial(&mut self, f: &mut F, t: f64, y: &[f64], h: f64) -> Trial {
-        Trial::Error(self.try_step(f, t, y, h))
+        match self.try_step(f, t, y, h) {
+            Ok(err) => Trial::Error(err),
+            Err(e) => Trial::Undefined(step_size::rejected(f64::INFINITY, ORDER), e),
+        }
     }
 
     fn candidate(&self) -> &[f64] {

@@ -13,13 +13,16 @@ use crate::error::{ModelError, Num};
 pub(super) const LIMIT_REACH: f64 = 1.01;
 
 /// The outcome of one trial step.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub(super) enum Trial {
     /// The candidate's scaled error norm (∞ when not finite); it passes at most 1.
     Error(f64),
     /// The trial failed before an error estimate (Newton did not converge): retry with the step
     /// multiplied by this factor (1: the same step, with a fresh Jacobian).
     Failed(f64),
+    /// The system is not defined at a point of the trial (its error says why, a singular
+    /// configuration): retry with the step multiplied by this factor.
+    Undefined(f64, ModelError),
 }
 
 /// A method's part in the loop, for a system `F`.
@@ -61,36 +64,38 @@ pub(super) fn step<F: OdeSystem, M: Method<F>>(
             _ => (proposal, *t + proposal),
         };
         let trial = method.trial(f, *t, y, h);
-        let factor = match trial {
-            Trial::Error(err) if err <= 1.0 => match f.check_step(*t, y, t_new, method.candidate())
-            {
-                Some(veto) => step_size::vetoed(veto),
-                None => {
-                    method.stats().steps += 1;
-                    let next_limit = f.accept_step(*t, y, t_new, method.candidate());
-                    *t = t_new;
-                    let factor = method.commit(y, h, err, rejected_last);
-                    let proposed = method.proposal();
-                    // Keep the unclamped proposal when the step was shortened to hit the limit.
-                    if !last || h >= *proposed {
-                        *proposed = h * factor;
+        let factor = match &trial {
+            &Trial::Error(err) if err <= 1.0 => {
+                match f.check_step(*t, y, t_new, method.candidate()) {
+                    Some(veto) => step_size::vetoed(veto),
+                    None => {
+                        method.stats().steps += 1;
+                        let next_limit = f.accept_step(*t, y, t_new, method.candidate());
+                        *t = t_new;
+                        let factor = method.commit(y, h, err, rejected_last);
+                        let proposed = method.proposal();
+                        // Keep the unclamped proposal when the step was shortened to hit the limit.
+                        if !last || h >= *proposed {
+                            *proposed = h * factor;
+                        }
+                        if let Some(next_limit) = next_limit {
+                            *proposed = proposed.min(next_limit);
+                        }
+                        return Ok(true);
                     }
-                    if let Some(next_limit) = next_limit {
-                        *proposed = proposed.min(next_limit);
-                    }
-                    return Ok(true);
                 }
-            },
-            Trial::Error(err) => step_size::rejected(err, method.error_order()),
-            Trial::Failed(factor) => factor,
+            }
+            &Trial::Error(err) => step_size::rejected(err, method.error_order()),
+            &Trial::Failed(factor) | &Trial::Undefined(factor, _) => factor,
         };
         method.stats().rejected += 1;
         rejected_last = true;
         *method.proposal() = h * factor;
         if *method.proposal() < tolerances.min_step {
-            let why = match trial {
-                Trial::Error(err) => format!("error estimate {}", Num(err)),
+            let why = match &trial {
+                Trial::Error(err) => format!("error estimate {}", Num(*err)),
                 Trial::Failed(_) => "Newton did not converge".to_string(),
+                Trial::Undefined(_, e) => e.to_string(),
             };
             return Err(ModelError::Numerical(format!(
                 "step size {} s fell below the minimum {} s at t = {} s ({why})",
@@ -121,7 +126,7 @@ mod tests {
             Self {
                 proposal,
                 stats: Stats::default(),
-                outcomes: outcomes.iter().rev().copied().collect(),
+                outcomes: outcomes.iter().rev().cloned().collect(),
                 tried: Vec::new(),
                 candidate: vec![0.0],
             }
@@ -158,8 +163,9 @@ mod tests {
     }
 
     impl OdeSystem for Vetoing {
-        fn rhs(&mut self, _t: f64, _y: &[f64], dy: &mut [f64]) {
+        fn rhs(&mut self, _t: f64, _y: &[f64], dy: &mut [f64]) -> Result<(), ModelError> {
             dy.fill(1.0);
+            Ok(())
         }
         fn check_step(&mut self, _t0: f64, _y0: &[f64], _t1: f64, _y1: &[f64]) -> Option<f64> {
             (self.vetoes > 0).then(|| {
@@ -203,21 +209,26 @@ mod tests {
         assert_eq!(m.proposal, 0.9);
     }
 
-    /// A failed error test retries with the controller's factor, a failed trial with its own,
+    /// A failed error test retries with the controller's factor, a failed trial (or one that met
+    /// a point where the system is not defined) with its own,
     /// a veto with the system's; each counts as a rejection, and the step after them does not
     /// grow.
     #[test]
     fn rejections_retry_shorter_and_count() {
-        let outcomes = [Trial::Error(32.0), Trial::Failed(0.25), Trial::Error(0.5)];
+        let undefined = Trial::Undefined(0.2, ModelError::Numerical("locked".into()));
+        let outcomes = [
+            Trial::Error(32.0),
+            Trial::Failed(0.25),
+            undefined,
+            Trial::Error(0.5),
+        ];
         let mut m = Scripted::new(0.1, &outcomes);
-        assert_eq!(
-            run(&mut m, 1, None, 10),
-            (Ok(true), 0.1 * 0.45 * 0.25 * 0.5)
-        );
-        let expected = [0.1, 0.1 * 0.45, 0.1 * 0.45 * 0.25, 0.1 * 0.45 * 0.25 * 0.5];
+        let last = 0.1 * 0.45 * 0.25 * 0.2;
+        assert_eq!(run(&mut m, 1, None, 10), (Ok(true), last * 0.5));
+        let expected = [0.1, 0.1 * 0.45, 0.1 * 0.45 * 0.25, last, last * 0.5];
         assert_eq!(m.tried, expected);
-        assert_eq!((m.stats.steps, m.stats.rejected), (1, 3));
-        assert_eq!(m.proposal, expected[3]);
+        assert_eq!((m.stats.steps, m.stats.rejected), (1, 4));
+        assert_eq!(m.proposal, expected[4]);
     }
 
     /// Attempts running out leave the point where it was; a step below the smallest is an error
@@ -231,5 +242,11 @@ mod tests {
         let message = result.unwrap_err().to_string();
         assert!(message.contains("Newton did not converge"), "{message}");
         assert_eq!(t, 0.0);
+        // A system not defined along the step names why.
+        let why = "singular constraint Jacobian (locked configuration)";
+        let undefined = Trial::Undefined(0.25, ModelError::Numerical(why.into()));
+        let mut m = Scripted::new(1e-14, &[undefined]);
+        let message = run(&mut m, 0, None, 10).0.unwrap_err().to_string();
+        assert!(message.contains(why), "{message}");
     }
 }

@@ -1,15 +1,18 @@
 //! What the integrators integrate: a first-order system with step hooks, and a mechanical one
 //! with its coordinates first.
 
-/// A first-order system y' = f(t, y) with optional hooks on step acceptance.
+use crate::error::ModelError;
+
+/// A first-order system y' = f(t, y) with optional hooks on step acceptance; f may be undefined
+/// at a point (a singular configuration), which it says.
 ///
 /// The hooks let a system with impacts refuse a step that would start a contact too deep
 /// (Flores & Ambrósio 2010: keep the first penetration small), aim the next step at an
 /// approaching contact instead of overshooting it, and update discrete state (the impact
 /// velocity of a contact event) only at accepted steps, never at trial stages.
 pub trait OdeSystem {
-    /// Writes f(t, y) to `dy`.
-    fn rhs(&mut self, t: f64, y: &[f64], dy: &mut [f64]);
+    /// Writes f(t, y) to `dy`, or says why f is not defined there (`dy` is then unspecified).
+    fn rhs(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), ModelError>;
 
     /// Called for a step (t₀, y₀) → (t₁, y₁) that passed the error test: `None` accepts it,
     /// `Some(factor)` rejects it and retries with the step size multiplied by `factor` ∈ (0, 1).
@@ -24,9 +27,11 @@ pub trait OdeSystem {
     }
 }
 
+/// A closure is a system defined everywhere.
 impl<F: FnMut(f64, &[f64], &mut [f64])> OdeSystem for F {
-    fn rhs(&mut self, t: f64, y: &[f64], dy: &mut [f64]) {
-        self(t, y, dy)
+    fn rhs(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), ModelError> {
+        self(t, y, dy);
+        Ok(())
     }
 }
 

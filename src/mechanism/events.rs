@@ -3,6 +3,7 @@
 //! and the mechanism as the integrators' first-order system.
 
 use super::slider_crank::SliderCrank;
+use crate::error::ModelError;
 use crate::integrator::OdeSystem;
 use crate::joint::{ContactState, JointKinematics, JointRole, MIN_IMPACT_VELOCITY};
 
@@ -44,12 +45,11 @@ impl SliderCrank {
 }
 
 impl OdeSystem for SliderCrank {
-    fn rhs(&mut self, t: f64, y: &[f64], dy: &mut [f64]) {
+    /// The derivative at (t, y), or the singular configuration that has none (a locked
+    /// mechanism: the integrator retries the step shorter and names it if it cannot pass).
+    fn rhs(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), ModelError> {
         self.set_time(t);
-        if self.derivative(y, dy).is_err() {
-            // A locked configuration: make the step fail through the error estimate.
-            dy.fill(f64::NAN);
-        }
+        self.derivative(y, dy)
     }
 
     /// Rejects a step that starts a contact deeper than [`CONTACT_ONSET_PENETRATION`] at any

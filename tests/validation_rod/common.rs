@@ -2,6 +2,7 @@
 //! (static Newton solve, free dynamics), eigenfrequencies on a coordinate subset, a tiny PRNG.
 
 use faer::{Mat, MatRef, Side, linalg::solvers::Solve};
+use flexible_slider_crank::ModelError;
 use flexible_slider_crank::ancf::{Rod, RodProperties};
 use flexible_slider_crank::integrator::{DormandPrince, OdeSystem, Tolerances};
 use flexible_slider_crank::reduction::{RodModel, generalized_eigen};
@@ -217,7 +218,8 @@ impl HeldRod {
 }
 
 impl OdeSystem for HeldRod {
-    fn rhs(&mut self, _t: f64, y: &[f64], dy: &mut [f64]) {
+    fn rhs(&mut self, _t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), ModelError> {
         self.derivative(y, dy);
+        Ok(())
     }
 }

@@ -65,6 +65,8 @@ enum Failure {
     Newton,
     /// The iteration matrix could not be factorised.
     Singular,
+    /// The system is not defined at an iterate (a singular configuration).
+    Undefined(ModelError),
 }
 
 /// The one-step scheme of an [`Implicit`] integrator.
@@ -288,7 +290,7 @@ impl Implicit {
         y: &[f64],
         h: f64,
     ) -> Result<(), ModelError> {
-        self.jacobian(f, t, y);
+        self.jacobian(f, t, y)?;
         self.factorize(h)
     }
 
@@ -310,7 +312,7 @@ impl Implicit {
         max_attempts: u64,
     ) -> Result<bool, ModelError> {
         if self.state.derivative.is_empty() {
-            f.rhs(*t, y, &mut self.k[0]);
+            f.rhs(*t, y, &mut self.k[0])?;
             self.state.stats.evaluations += 1;
         } else {
             self.k[0].copy_from_slice(&self.state.derivative);
@@ -329,7 +331,7 @@ impl Implicit {
                 self.scheme.error_order(),
                 &mut self.stage,
                 &mut rest[0],
-            );
+            )?;
             self.state.stats.evaluations += 1;
         }
         let tolerances = self.tolerances;
@@ -410,21 +412,28 @@ impl<F: MechanicalSystem> Method<F> for Implicit {
         self.scheme.error_order()
     }
 
-    /// The trial step with the Jacobian renewed first if stale. A failed Newton iteration is
-    /// retried with the same step and a fresh Jacobian, or, if the Jacobian was fresh or the
-    /// matrix singular, with [`NEWTON_FAILURE_FACTOR`] times the step.
+    /// The trial step with the Jacobian renewed first if stale. A failed Newton iteration, or
+    /// one that reached a point where the system is not defined, is retried with the same step
+    /// and a fresh Jacobian, or, if the Jacobian was fresh or the matrix singular, with
+    /// [`NEWTON_FAILURE_FACTOR`] times the step (a Jacobian that cannot be evaluated, too).
     fn trial(&mut self, f: &mut F, t: f64, y: &[f64], h: f64) -> Trial {
         if self.state.jacobian_stale {
-            self.jacobian(f, t, y);
+            if let Err(e) = self.jacobian(f, t, y) {
+                return Trial::Undefined(NEWTON_FAILURE_FACTOR, e);
+            }
         }
+        let retry = |failure: Failure, factor: f64| match failure {
+            Failure::Undefined(e) => Trial::Undefined(factor, e),
+            _ => Trial::Failed(factor),
+        };
         match self.try_step(f, t, y, h, true) {
             Ok(err) => Trial::Error(err),
             Err(failure) if self.jacobian_fresh || matches!(failure, Failure::Singular) => {
-                Trial::Failed(NEWTON_FAILURE_FACTOR)
+                retry(failure, NEWTON_FAILURE_FACTOR)
             }
-            Err(_) => {
+            Err(failure) => {
                 self.state.jacobian_stale = true;
-                Trial::Failed(1.0)
+                retry(failure, 1.0)
             }
         }
     }
@@ -474,10 +483,11 @@ mod tests {
     }
 
     impl OdeSystem for Oscillator {
-        fn rhs(&mut self, _t: f64, y: &[f64], dy: &mut [f64]) {
+        fn rhs(&mut self, _t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), ModelError> {
             dy[0] = y[1];
             dy[1] = -self.omega * self.omega * y[0] - self.damping * y[1];
             dy[2] = -self.damping * y[1] * y[1];
+            Ok(())
         }
     }
 

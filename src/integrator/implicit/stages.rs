@@ -15,9 +15,14 @@ impl Implicit {
     /// ∂q̈/∂(q, q̇) at (t, y) by forward differences from f(t, y), evaluated afresh (the
     /// first-same-as-last stage derivative satisfies the stage equation only to the Newton
     /// tolerance, too coarse a base for differences).
-    pub(super) fn jacobian<F: MechanicalSystem>(&mut self, f: &mut F, t: f64, y: &[f64]) {
+    pub(super) fn jacobian<F: MechanicalSystem>(
+        &mut self,
+        f: &mut F,
+        t: f64,
+        y: &[f64],
+    ) -> Result<(), ModelError> {
         let n_q = self.n_q;
-        f.rhs(t, y, &mut self.base);
+        f.rhs(t, y, &mut self.base)?;
         self.stage.copy_from_slice(y);
         for (j, (&y_j, &scale)) in y
             .iter()
@@ -27,7 +32,7 @@ impl Implicit {
         {
             let delta = f64::EPSILON.sqrt() * y_j.abs().max(scale);
             self.stage[j] = y_j + delta;
-            f.rhs(t, &self.stage, &mut self.rates);
+            f.rhs(t, &self.stage, &mut self.rates)?;
             self.stage[j] = y_j;
             let column = if j < n_q {
                 &mut self.state.jacobian_q[j * n_q..(j + 1) * n_q]
@@ -47,6 +52,7 @@ impl Implicit {
         self.state.jacobian_stale = false;
         self.state.h_factored = 0.0;
         self.jacobian_fresh = true;
+        Ok(())
     }
 
     /// Factorises E = I − λ ∂a/∂q̇ − λκ ∂a/∂q for step h (not counted: restoring a state
@@ -313,9 +319,10 @@ impl Implicit {
             for m in 2 * n_q..n {
                 self.stage[m] = self.base[m] + mu * self.rates[m];
             }
-            f.rhs(t, &self.stage, &mut self.rates);
             self.state.stats.evaluations += 1;
             self.state.stats.newton_iterations += 1;
+            f.rhs(t, &self.stage, &mut self.rates)
+                .map_err(Failure::Undefined)?;
             for m in 0..n_q {
                 self.update[m] =
                     self.base[n_q + m] + lambda * self.rates[n_q + m] - self.stage[n_q + m];
