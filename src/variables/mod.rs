@@ -15,6 +15,7 @@ mod crank;
 mod energy;
 mod enumerations;
 mod gravity;
+mod joint_rows;
 mod joints;
 mod rod;
 mod sections;
