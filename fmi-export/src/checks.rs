@@ -182,43 +182,10 @@ pub fn check_set_boolean<V>(state: State, vars: &[Var<V>]) -> Result<(), FmuErro
     Ok(())
 }
 
-/// Tolerance on the communication point: |t − t_expected| ≤ 1e-9 (1 + |t|).
-pub const TIME_TOLERANCE: f64 = 1e-9;
-
 /// Checks that each of the String variables `vars` is settable in `state`.
 pub fn check_set_string<V>(state: State, vars: &[Var<V>]) -> Result<(), FmuError> {
     for v in vars {
         check_settable(state, v)?;
     }
     Ok(())
-}
-
-/// Checks fmi2DoStep's arguments against an instance at `time` with stop time `stop`: the
-/// communication point is the current time (within [`TIME_TOLERANCE`]), the step is positive and
-/// finite, and t + h is not past the stop time.
-pub fn check_step(time: f64, t: f64, h: f64, stop: Option<f64>) -> Result<(), FmuError> {
-    if (t - time).abs() > TIME_TOLERANCE * (1.0 + t.abs()) {
-        return Err(FmuError::Invalid(format!(
-            "expected currentCommunicationPoint = {} s but was {} s",
-            Num(time),
-            Num(t)
-        )));
-    }
-    if !(h > 0.0 && h.is_finite()) {
-        return Err(FmuError::Invalid(format!(
-            "communicationStepSize must be > 0 and finite but was {} s",
-            Num(h)
-        )));
-    }
-    let end = t + h;
-    match stop {
-        Some(stop) if end > stop + TIME_TOLERANCE * (1.0 + stop.abs()) => {
-            Err(FmuError::Invalid(format!(
-                "currentCommunicationPoint + communicationStepSize = {} s is past stopTime = {} s",
-                Num(end),
-                Num(stop)
-            )))
-        }
-        _ => Ok(()),
-    }
 }

@@ -1,15 +1,13 @@
 //! The experiment a master sets up and the clock of the communication steps, the same for every
 //! model and both FMI versions: the checks of the tolerance, start and stop time
 //! (fmi2SetupExperiment, fmi3EnterInitializationMode), the check of each step's communication
-//! point and size ([`crate::checks::check_step`]), and the time reached after each step
+//! point and size ([`check_step`]), and the time reached after each step
 //! (FMI 2's fmi2LastSuccessfulTime, FMI 3's lastSuccessfulTime), kept from what the model's step
-//! says ([`StepOutcome`]). A model sees only checked values ([`Experiment`], [`Step`]).
+//! says ([`StepOutcome`]). A model sees only checked values ([`Experiment`], [`Step`]); the clock
+//! calls it through the closures the instance passes.
 
-use crate::checks::check_step;
 use crate::codec::{ByteReader, ByteWriter, CodecError};
 use crate::error::FmuError;
-use crate::logger::Logger;
-use crate::model::{Model, StepOutcome};
 use crate::number::Num;
 
 /// The experiment, checked: a finite start, a finite stop not before it, a finite positive
@@ -74,6 +72,62 @@ pub struct Step {
     pub pause: bool,
 }
 
+/// How a step that succeeded ended.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum StepOutcome {
+    /// At the communication point.
+    Completed {
+        /// The time reached \[s\]: t + h, or the point on the clock grid nearest it for a model
+        /// that keeps its time there.
+        time: f64,
+    },
+    /// Paused inside it after an internal step (FMI 3 intermediate update, [`Step::pause`]).
+    Paused {
+        /// The internal step's end \[s\].
+        time: f64,
+    },
+    /// Before it, at an event of the model (FMI 3 early return).
+    ReturnedEarly {
+        /// The time reached \[s\], on the clock grid.
+        time: f64,
+        /// What happened there, for the log ("contact onset in crankPin").
+        event: &'static str,
+    },
+}
+
+/// Tolerance on the communication point: |t − t_expected| ≤ 1e-9 (1 + |t|).
+pub const TIME_TOLERANCE: f64 = 1e-9;
+
+/// Checks fmi2DoStep's arguments against an instance at `time` with stop time `stop`: the
+/// communication point is the current time (within [`TIME_TOLERANCE`]), the step is positive and
+/// finite, and t + h is not past the stop time.
+pub fn check_step(time: f64, t: f64, h: f64, stop: Option<f64>) -> Result<(), FmuError> {
+    if (t - time).abs() > TIME_TOLERANCE * (1.0 + t.abs()) {
+        return Err(FmuError::Invalid(format!(
+            "expected currentCommunicationPoint = {} s but was {} s",
+            Num(time),
+            Num(t)
+        )));
+    }
+    if !(h > 0.0 && h.is_finite()) {
+        return Err(FmuError::Invalid(format!(
+            "communicationStepSize must be > 0 and finite but was {} s",
+            Num(h)
+        )));
+    }
+    let end = t + h;
+    match stop {
+        Some(stop) if end > stop + TIME_TOLERANCE * (1.0 + stop.abs()) => {
+            Err(FmuError::Invalid(format!(
+                "currentCommunicationPoint + communicationStepSize = {} s is past stopTime = {} s",
+                Num(end),
+                Num(stop)
+            )))
+        }
+        _ => Ok(()),
+    }
+}
+
 /// The experiment and how far the communication steps got.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Clock {
@@ -88,18 +142,15 @@ pub struct Clock {
 }
 
 impl Clock {
-    /// Checks and sets up the experiment of `tolerance`, `start` and `stop`, and tells the model;
-    /// the clock starts at `start`.
-    pub fn setup<M: Model>(
+    /// Checks and sets up the experiment of `tolerance`, `start` and `stop`, and tells the model
+    /// (`tell`, [`crate::Model::setup_experiment`]); the clock starts at `start`.
+    pub fn setup(
         &mut self,
-        model: &mut M,
-        log: &Logger,
-        tolerance: Option<f64>,
-        start: f64,
-        stop: Option<f64>,
+        (tolerance, start, stop): (Option<f64>, f64, Option<f64>),
+        tell: impl FnOnce(&Experiment) -> Result<(), FmuError>,
     ) -> Result<(), FmuError> {
         let experiment = Experiment::new(tolerance, start, stop)?;
-        model.setup_experiment(log, &experiment)?;
+        tell(&experiment)?;
         *self = Self {
             experiment,
             time: start,
@@ -109,20 +160,19 @@ impl Clock {
         Ok(())
     }
 
-    /// The model's step from `t` over `h` (checked against the clock and the stop time, unless
-    /// it resumes a paused step), the clock moved to where it ended: the communication point the
-    /// model reached, the early return's time, the time a discarded step reached; a pause moves
-    /// only the last successful time.
-    pub fn step<M: Model>(
+    /// The model's step `step` (`run`, [`crate::Model::do_step`]), checked against the clock and
+    /// the stop time unless it resumes a paused step, the clock moved to where it ended: the
+    /// communication point the model reached, the early return's time, the time a discarded step
+    /// reached; a pause moves only the last successful time.
+    pub fn step(
         &mut self,
-        model: &mut M,
-        log: &Logger,
         step: Step,
+        run: impl FnOnce(&Step) -> Result<StepOutcome, FmuError>,
     ) -> Result<StepOutcome, FmuError> {
         if !self.paused {
             check_step(self.time, step.t, step.h, self.experiment.stop)?;
         }
-        let outcome = model.do_step(log, &step);
+        let outcome = run(&step);
         self.paused = false;
         match &outcome {
             Ok(StepOutcome::Completed { time } | StepOutcome::ReturnedEarly { time, .. })
@@ -136,19 +186,13 @@ impl Clock {
         outcome
     }
 
-    /// Ends a paused step at the pause, if the model can ([`Model::return_at_pause`]): the time
-    /// reached, or None (the step stays paused).
-    pub fn return_at_pause<M: Model>(
-        &mut self,
-        model: &mut M,
-        log: &Logger,
-    ) -> Result<Option<f64>, FmuError> {
-        let reached = model.return_at_pause(log)?;
+    /// A paused step ended at the pause (`reached`, [`crate::Model::return_at_pause`]), or not
+    /// (None: it stays paused).
+    pub fn return_at_pause(&mut self, reached: Option<f64>) {
         if let Some(time) = reached {
             self.paused = false;
             self.reach(time);
         }
-        Ok(reached)
     }
 
     fn reach(&mut self, time: f64) {

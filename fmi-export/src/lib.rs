@@ -48,11 +48,11 @@ pub mod status;
 #[cfg(feature = "runtime")]
 pub use error::FmuError;
 #[cfg(feature = "runtime")]
-pub use experiment::{Experiment, Step};
+pub use experiment::{Experiment, Step, StepOutcome};
 #[cfg(feature = "runtime")]
 pub use logger::Logger;
 #[cfg(feature = "runtime")]
-pub use model::{Instance, Model, StepOutcome};
+pub use model::{Instance, Model};
 #[cfg(feature = "runtime")]
 pub use state::{Call, State, Version};
 #[cfg(feature = "runtime")]

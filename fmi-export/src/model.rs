@@ -3,7 +3,7 @@
 
 use crate::codec::{ByteReader, ByteWriter};
 use crate::error::FmuError;
-use crate::experiment::{Clock, Experiment, Step};
+use crate::experiment::{Clock, Experiment, Step, StepOutcome};
 use crate::interface::Fmi3Interface;
 use crate::logger::Logger;
 use crate::state::{State, Version};
@@ -216,29 +216,6 @@ pub trait Model: Sized + 'static {
     /// Parses and checks bytes written by [`Model::save`] and, if `apply`, resumes from them.
     /// Nothing changes when they are rejected.
     fn load(&mut self, log: &Logger, bytes: &[u8], apply: bool) -> Result<(), FmuError>;
-}
-
-/// How a step that succeeded ended.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum StepOutcome {
-    /// At the communication point.
-    Completed {
-        /// The time reached \[s\]: t + h, or the point on the clock grid nearest it for a model
-        /// that keeps its time there.
-        time: f64,
-    },
-    /// Paused inside it after an internal step (FMI 3 intermediate update, [`Step::pause`]).
-    Paused {
-        /// The internal step's end \[s\].
-        time: f64,
-    },
-    /// Before it, at an event of the model (FMI 3 early return).
-    ReturnedEarly {
-        /// The time reached \[s\], on the clock grid.
-        time: f64,
-        /// What happened there, for the log ("contact onset in crankPin").
-        event: &'static str,
-    },
 }
 
 /// The refusal of input derivatives by a model that takes none.

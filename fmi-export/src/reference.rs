@@ -85,8 +85,9 @@ impl<M: Model> Slave<M> {
         start: f64,
         stop: Option<f64>,
     ) -> Result<(), FmuError> {
+        let (model, log) = (&mut self.model, &self.log);
         self.clock
-            .setup(&mut self.model, &self.log, tolerance, start, stop)
+            .setup((tolerance, start, stop), |e| model.setup_experiment(log, e))
     }
 
     /// fmi2EnterInitializationMode.
@@ -209,9 +210,8 @@ impl<M: Model> Slave<M> {
             early_return: false,
             pause: false,
         };
-        self.clock
-            .step(&mut self.model, &self.log, step)
-            .map(|_| ())
+        let (model, log) = (&mut self.model, &self.log);
+        self.clock.step(step, |s| model.do_step(log, s)).map(|_| ())
     }
 }
 

@@ -104,14 +104,14 @@ pub unsafe fn fmi2SetupExperiment<M: Model>(
     stopTime: fmi2Real,
 ) -> fmi2Status {
     with_instance::<M>(c, Call::SetupExperiment, |inst| {
+        let experiment = (
+            (toleranceDefined != 0).then_some(tolerance),
+            startTime,
+            (stopTimeDefined != 0).then_some(stopTime),
+        );
+        let (model, log) = (&mut inst.model, &inst.logger);
         inst.clock
-            .setup(
-                &mut inst.model,
-                &inst.logger,
-                (toleranceDefined != 0).then_some(tolerance),
-                startTime,
-                (stopTimeDefined != 0).then_some(stopTime),
-            )
+            .setup(experiment, |e| model.setup_experiment(log, e))
             .map(ok)
     })
 }

@@ -24,8 +24,9 @@ pub unsafe fn fmi2DoStep<M: Model>(
             early_return: false,
             pause: false,
         };
+        let (model, log) = (&mut inst.model, &inst.logger);
         inst.clock
-            .step(&mut inst.model, &inst.logger, step)
+            .step(step, |s| model.do_step(log, s))
             .map(|_| Status::Ok)
     })
 }

@@ -140,13 +140,14 @@ pub unsafe fn fmi3EnterInitializationMode<M: Model>(
     stopTime: fmi3Float64,
 ) -> fmi3Status {
     with_instance::<M>(instance, Call::EnterInitializationMode, |inst| {
-        inst.clock.setup(
-            &mut inst.model,
-            &inst.logger,
+        let experiment = (
             toleranceDefined.then_some(tolerance),
             startTime,
             stopTimeDefined.then_some(stopTime),
-        )?;
+        );
+        let (model, log) = (&mut inst.model, &inst.logger);
+        inst.clock
+            .setup(experiment, |e| model.setup_experiment(log, e))?;
         inst.state = State::InitializationMode;
         Ok(Status::Ok)
     })

@@ -11,8 +11,9 @@ use super::values::refuse;
 use crate::calls;
 use crate::error::FmuError;
 use crate::experiment::Step;
+use crate::experiment::StepOutcome;
 use crate::ffi::{slice, slice_mut};
-use crate::model::{Instance, IntermediateUpdate, Model, StepOutcome};
+use crate::model::{Instance, IntermediateUpdate, Model};
 use crate::number::Num;
 use crate::state::{Call, State};
 use crate::status::Status;
@@ -72,7 +73,9 @@ pub unsafe fn fmi3DoStep<M: Model>(
         status = with_instance::<M>(instance, Call::ResumeStep, |inst| {
             inst.state = State::StepComplete;
             if requested && can_return_early {
-                if let Some(reached) = inst.clock.return_at_pause(&mut inst.model, &inst.logger)? {
+                let reached = inst.model.return_at_pause(&inst.logger)?;
+                inst.clock.return_at_pause(reached);
+                if let Some(reached) = reached {
                     inst.logger.event(&format!(
                         "fmi3DoStep: returned early at t = {} s: requested by the master",
                         Num(reached)
@@ -144,7 +147,8 @@ unsafe fn step<M: Model>(
         early_return: early_allowed,
         pause: inst.intermediate_update.is_some(),
     };
-    let result = inst.clock.step(&mut inst.model, &inst.logger, step);
+    let (model, log) = (&mut inst.model, &inst.logger);
+    let result = inst.clock.step(step, |s| model.do_step(log, s));
     if let (Ok(StepOutcome::Paused { time }), Some(update)) = (&result, inst.intermediate_update) {
         inst.state = State::IntermediateUpdate;
         let can_return_early =
