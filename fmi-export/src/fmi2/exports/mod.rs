@@ -1,7 +1,7 @@
 //! The 34 `fmi2*` functions of a co-simulation FMU (FMI 2.0.4 §2.1, §4.2), generic over the
 //! [`crate::Model`]; [`crate::export_fmi2!`] exports them under their C names. Each is a shim: pointers
 //! become slices through [`crate::ffi`], the state machine is checked there, and the work happens
-//! in the [`crate::Instance`] and its model.
+//! in the core ([`crate::calls`], [`crate::experiment`]), the [`crate::Instance`] and its model.
 
 /// The C types of the FMI 2.0 headers, for [`crate::export_fmi2!`].
 pub mod sys {

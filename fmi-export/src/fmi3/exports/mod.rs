@@ -1,7 +1,8 @@
 //! The `fmi3*` functions of a co-simulation FMU (FMI 3.0 §2.3, §4), generic over the same
-//! [`crate::Model`] as FMI 2's; [`crate::export_fmi3!`] exports them under their C names. Where
-//! FMI 3 only renames or re-types an FMI 2 function, it forwards to it; the instance's
-//! [`crate::Version`] names the calls in its messages.
+//! [`crate::Model`] as FMI 2's; [`crate::export_fmi3!`] exports them under their C names. Each
+//! checks its own pointer arguments and calls the core: [`crate::calls`] for what FMI 2 does alike,
+//! the instance and the model for what only FMI 3 has; the instance's [`crate::Version`] names the
+//! calls in its messages.
 
 /// The C types of the FMI 3.0 headers, for [`crate::export_fmi3!`].
 pub mod sys {
