@@ -1,5 +1,6 @@
 //! The unsafe edge of the FMI layer: raw pointers to slices and strings (NULL-checked), the
-//! instance guard with `catch_unwind`.
+//! instance guard with `catch_unwind`, and the shim that exports a C function of either version by
+//! forwarding its arguments to the generic one ([`crate::forward_export!`]).
 #![allow(unsafe_code)]
 
 use std::ffi::{CStr, c_char, c_void};
@@ -149,4 +150,24 @@ pub fn with_instance<M: Model>(
             Status::Error
         }
     }
+}
+
+/// One exported function of either version that forwards its C arguments, unchanged, to the
+/// generic function of the same name over the model (`$crate::$version::exports::$name::<$model>`),
+/// its signature pinned to the header's `$pinned`; for [`crate::export_fmi2!`] and
+/// [`crate::export_fmi3!`].
+#[doc(hidden)]
+#[macro_export]
+macro_rules! forward_export {
+    ($version:ident, $model:ty, $name:ident: $pinned:ident, ($($arg:ident: $ty:ty,)*) -> $ret:ty) => {
+        #[doc = concat!(
+            "See `fmi_export::", stringify!($version), "::exports::", stringify!($name), "`."
+        )]
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $name($($arg: $ty,)*) -> $ret {
+            // SAFETY: the master's arguments, passed on unchanged under the same contract.
+            unsafe { $crate::$version::exports::$name::<$model>($($arg,)*) }
+        }
+        const _: $crate::$version::exports::sys::$pinned = Some($name);
+    };
 }

@@ -322,23 +322,3 @@ macro_rules! export_fmi2 {
         );
     };
 }
-
-/// One exported function of either version that forwards its C arguments, unchanged, to the
-/// generic function of the same name over the model (`$crate::$version::exports::$name::<$model>`),
-/// its signature pinned to the header's `$pinned`; for [`crate::export_fmi2!`] and
-/// [`crate::export_fmi3!`].
-#[doc(hidden)]
-#[macro_export]
-macro_rules! forward_export {
-    ($version:ident, $model:ty, $name:ident: $pinned:ident, ($($arg:ident: $ty:ty,)*) -> $ret:ty) => {
-        #[doc = concat!(
-            "See `fmi_export::", stringify!($version), "::exports::", stringify!($name), "`."
-        )]
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn $name($($arg: $ty,)*) -> $ret {
-            // SAFETY: the master's arguments, passed on unchanged under the same contract.
-            unsafe { $crate::$version::exports::$name::<$model>($($arg,)*) }
-        }
-        const _: $crate::$version::exports::sys::$pinned = Some($name);
-    };
-}

@@ -48,9 +48,6 @@ unsafe fn set_args<'a, T>(
     n: usize,
 ) -> Result<(&'a [u32], &'a [T]), FmuError> {
     scalars(nvr, n)?;
-    if vr.is_null() && nvr > 0 {
-        return Err(FmuError::Null("valueReferences"));
-    }
     // SAFETY: the caller's contract.
     unsafe {
         Ok((
