@@ -19,7 +19,7 @@ const N_PARAMETERS: usize = Vr::ShaftSpeed as usize;
 const MAX_STEPS: f64 = 1e8;
 
 /// The inputs (load speed, set-point) over a communication step.
-type Signal = Polynomial<2>;
+type Signal = Polynomial<[f64; 2]>;
 
 /// The motor's inputs at `t`.
 fn inputs(signal: &Signal, t: f64) -> MotorInputs {
@@ -209,11 +209,8 @@ impl Model for DcMotorFmu {
         self.time = end;
         // Input derivatives hold for one communication step; the inputs are then held at the
         // values their polynomials reached.
-        self.inputs = Signal {
-            start: self.time,
-            value: signal.at(self.time),
-            derivatives: [[0.0; 2]; 2],
-        };
+        self.inputs = signal;
+        self.inputs.hold_at(self.time);
         Ok(StepOutcome::Completed { time: end })
     }
 
@@ -347,10 +344,7 @@ impl Model for DcMotorFmu {
     fn save(&self, out: &mut Vec<u8>) {
         let mut w = ByteWriter(out);
         self.parameters.iter().for_each(|&p| w.f64(p));
-        let s = &self.inputs;
-        w.f64(s.start);
-        s.value.iter().for_each(|&v| w.f64(v));
-        s.derivatives.iter().flatten().for_each(|&v| w.f64(v));
+        self.inputs.write(&mut w);
         let x = self.state.unwrap_or([f64::NAN; 4]);
         x.iter().for_each(|&v| w.f64(v));
         w.f64(self.time);
@@ -366,15 +360,7 @@ impl Model for DcMotorFmu {
             *p = r.f64()?;
             check_real(v, *p)?;
         }
-        let mut signal = [0.0; 7];
-        for v in &mut signal {
-            *v = r.f64()?;
-        }
-        let inputs = Signal {
-            start: signal[0],
-            value: [signal[1], signal[2]],
-            derivatives: [[signal[3], signal[4]], [signal[5], signal[6]]],
-        };
+        let inputs = Signal::read(&mut r)?;
         let state = [r.f64()?, r.f64()?, r.f64()?, r.f64()?];
         let initialised = state.iter().all(|v| v.is_finite());
         let time = r.f64()?;
@@ -382,7 +368,7 @@ impl Model for DcMotorFmu {
         if r.remaining() != 0 {
             return bad(&format!("{} bytes too many", r.remaining()));
         }
-        if !(signal.iter().all(|v| v.is_finite())
+        if !(inputs.is_finite()
             && (initialised || state.iter().all(|v| v.is_nan()))
             && time.is_finite()
             && !checked.is_infinite())

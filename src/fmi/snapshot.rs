@@ -13,7 +13,7 @@ use crate::params::{
     Parameters, integer_parameter, real_parameter, set_integer_parameter, set_real_parameter,
     set_string_parameter, string_parameter,
 };
-use crate::simulation::codec::{ByteReader, ByteWriter, ReadRecords, WriteRecords};
+use crate::simulation::codec::{ByteReader, ByteWriter};
 use crate::simulation::{InputSignal, Snapshot};
 use crate::variables::{Causality, Kind, VARIABLES, Vr};
 
@@ -103,7 +103,7 @@ impl FmuSnapshot {
         }
         // Whether crank.initialSpeed was set (unset, the crank starts at drive.speed).
         w.u8(u8::from(self.parameters.crank_initial_speed.is_some()));
-        w.signal(&self.inputs);
+        self.inputs.write(&mut w);
         w.f64(self.start_time);
         w.u8(u8::from(self.tolerance.is_some()));
         w.f64(self.tolerance.unwrap_or(0.0));
@@ -148,7 +148,7 @@ impl FmuSnapshot {
                 n_modes, parameters.n_modes
             )));
         }
-        let inputs = r.signal()?;
+        let inputs = InputSignal::read(&mut r)?;
         let start_time = r.f64()?;
         let has_tolerance = r.flag()?;
         let tolerance = r.f64()?;

@@ -1,6 +1,6 @@
 //! The mechanism's inputs, as values and as functions of time over a communication interval.
 
-use fmi_core::signal;
+use fmi_core::signal::{InputValues, Polynomial};
 
 /// Inputs that the caller may change between steps.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -13,7 +13,7 @@ pub struct Inputs {
     pub slider_force: f64,
 }
 
-/// One of the [`Inputs`].
+/// One of the [`Inputs`], in the order of the input variables.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Input {
     /// [`Inputs::drive_speed`].
@@ -22,6 +22,11 @@ pub enum Input {
     DriveTorque,
     /// [`Inputs::slider_force`].
     SliderForce,
+}
+
+impl Input {
+    /// Every input, in the order of the input variables.
+    pub const ALL: [Self; 3] = [Self::DriveSpeed, Self::DriveTorque, Self::SliderForce];
 }
 
 impl Inputs {
@@ -54,13 +59,20 @@ impl Inputs {
             Input::SliderForce => &mut self.slider_force,
         }
     }
+}
 
-    fn combine(a: &Self, b: &Self, c: &Self, f: impl Fn(f64, f64, f64) -> f64) -> Self {
-        Self {
-            drive_speed: f(a.drive_speed, b.drive_speed, c.drive_speed),
-            drive_torque: f(a.drive_torque, b.drive_torque, c.drive_torque),
-            slider_force: f(a.slider_force, b.slider_force, c.slider_force),
-        }
+impl InputValues for Inputs {
+    const LEN: usize = 3;
+    const ZERO: Self = Self {
+        drive_speed: 0.0,
+        drive_torque: 0.0,
+        slider_force: 0.0,
+    };
+    fn value(&self, k: usize) -> f64 {
+        self.get(Input::ALL[k])
+    }
+    fn value_mut(&mut self, k: usize) -> &mut f64 {
+        self.get_mut(Input::ALL[k])
     }
 }
 
@@ -69,51 +81,8 @@ impl Inputs {
 /// ```text
 /// u(t) = u + u̇ (t − t₀) + ü (t − t₀)²/2
 /// ```
-/// (the polynomial input of FMI 2.0 co-simulation; held inputs have zero derivatives).
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct InputSignal {
-    /// t₀ \[s\].
-    pub start: f64,
-    /// u(t₀).
-    pub value: Inputs,
-    /// u̇(t₀) and ü(t₀).
-    pub derivatives: [Inputs; 2],
-}
-
-impl InputSignal {
-    /// Inputs held at `value`.
-    pub fn held(value: Inputs) -> Self {
-        Self {
-            value,
-            ..Self::default()
-        }
-    }
-
-    /// Values u(t) and rates u̇(t).
-    pub fn at(&self, t: f64) -> (Inputs, Inputs) {
-        let dt = t - self.start;
-        let [first, second] = &self.derivatives;
-        let value = Inputs::combine(&self.value, first, second, |u, d1, d2| {
-            signal::value(u, d1, d2, dt)
-        });
-        let rate = Inputs::combine(first, second, second, |d1, d2, _| signal::rate(d1, d2, dt));
-        (value, rate)
-    }
-
-    /// Whether the inputs that act (`acts`) are the same functions of time from `t` on in both.
-    pub fn same_from(&self, other: &Self, t: f64, acts: impl Fn(Input) -> bool) -> bool {
-        let (a, a_rate) = self.at(t);
-        let (b, b_rate) = other.at(t);
-        [Input::DriveSpeed, Input::DriveTorque, Input::SliderForce]
-            .into_iter()
-            .filter(|&i| acts(i))
-            .all(|i| {
-                a.get(i) == b.get(i)
-                    && a_rate.get(i) == b_rate.get(i)
-                    && self.derivatives[1].get(i) == other.derivatives[1].get(i)
-            })
-    }
-}
+/// (the polynomial input of FMI co-simulation; held inputs have zero derivatives).
+pub type InputSignal = Polynomial<Inputs>;
 
 /// What loads the mechanism: the inputs as functions of time, their values at the current time,
 /// the load on the slider tied to the crank angle (`slider.forceTable`, added to the input), and

@@ -243,7 +243,7 @@ impl SliderCrank {
 
     /// The inputs at `t`: evaluations outside the integrator (outputs, peaks) use them.
     pub fn set_time(&mut self, t: f64) {
-        let (inputs, rates) = self.loading.signal.at(t);
+        let (inputs, rates) = (self.loading.signal.at(t), self.loading.signal.rate(t));
         self.loading.inputs = inputs;
         self.loading.drive_acceleration = rates.drive_speed;
     }

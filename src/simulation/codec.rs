@@ -9,20 +9,7 @@ use super::peaks::Peaks;
 use super::sample::{SERIES, Sample};
 use super::step::StepPoint;
 use crate::integrator::Stats;
-use crate::mechanism::{ContactState, Contacts, InputSignal, Inputs};
-
-/// The ten numbers of an input signal: start, then value, first and second derivatives, each
-/// as (drive speed, drive torque, slider force).
-pub fn signal_values(s: &InputSignal) -> [f64; 10] {
-    let mut v = [s.start; 10];
-    for (k, i) in [s.value, s.derivatives[0], s.derivatives[1]]
-        .iter()
-        .enumerate()
-    {
-        v[1 + 3 * k..4 + 3 * k].copy_from_slice(&[i.drive_speed, i.drive_torque, i.slider_force]);
-    }
-    v
-}
+use crate::mechanism::{ContactState, Contacts};
 
 /// Writes the slider-crank's records.
 pub trait WriteRecords {
@@ -32,8 +19,6 @@ pub trait WriteRecords {
     fn step_point(&mut self, p: &StepPoint);
     /// Writes peak values.
     fn peaks(&mut self, p: &Peaks);
-    /// Writes an input signal ([`signal_values`]).
-    fn signal(&mut self, s: &InputSignal);
     /// Writes integrator statistics.
     fn stats(&mut self, s: &Stats);
     /// Writes the cycle results.
@@ -87,12 +72,6 @@ impl WriteRecords for ByteWriter<'_> {
         }
         for onsets in p.contact_onsets {
             self.u64(onsets);
-        }
-    }
-    /// Writes an input signal ([`signal_values`]).
-    fn signal(&mut self, s: &InputSignal) {
-        for x in signal_values(s) {
-            self.f64(x);
         }
     }
     /// Writes integrator statistics.
@@ -185,8 +164,6 @@ pub trait ReadRecords {
     fn step_point(&mut self) -> Result<StepPoint, CodecError>;
     /// Reads peak values.
     fn peaks(&mut self) -> Result<Peaks, CodecError>;
-    /// Reads an input signal.
-    fn signal(&mut self) -> Result<InputSignal, CodecError>;
     /// Reads integrator statistics.
     fn stats(&mut self) -> Result<Stats, CodecError>;
     /// Reads the cycle results.
@@ -225,24 +202,6 @@ impl ReadRecords for ByteReader<'_> {
             sample,
             [self.u64()?, self.u64()?, self.u64()?],
         ))
-    }
-    /// Reads an input signal.
-    fn signal(&mut self) -> Result<InputSignal, CodecError> {
-        let start = self.f64()?;
-        let mut inputs = [Inputs::default(); 3];
-        for i in &mut inputs {
-            *i = Inputs {
-                drive_speed: self.f64()?,
-                drive_torque: self.f64()?,
-                slider_force: self.f64()?,
-            };
-        }
-        let [value, first, second] = inputs;
-        Ok(InputSignal {
-            start,
-            value,
-            derivatives: [first, second],
-        })
     }
     /// Reads integrator statistics.
     fn stats(&mut self) -> Result<Stats, CodecError> {

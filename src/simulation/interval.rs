@@ -11,7 +11,6 @@ use super::failure;
 use super::peaks::Peaks;
 use super::step::{Advance, Interval, Onset};
 use crate::error::{ModelError, Num};
-use crate::mechanism::{InputSignal, Inputs};
 
 /// How the steps through an interval ended.
 enum Progress {
@@ -228,12 +227,7 @@ impl Simulation {
     /// After an interval the inputs are held at the values their polynomials reached (the
     /// derivatives of [`Simulation::set_input_derivative`] hold for one interval).
     fn hold_inputs(&mut self) {
-        if self.next.derivatives != [Inputs::default(); 2] {
-            self.next = InputSignal {
-                start: self.time,
-                ..InputSignal::held(self.next.at(self.time).0)
-            };
-        }
+        self.next.hold_at(self.time);
     }
 
     /// Ends a failed interval at the last accepted step (where the simulation stays usable) and

@@ -278,11 +278,11 @@ impl Simulation {
         };
         let current = *self.mechanism.input_signal();
         let speed_jump =
-            acts(Input::DriveSpeed) && current.at(t_start).0.drive_speed != next.value.drive_speed;
+            acts(Input::DriveSpeed) && current.at(t_start).drive_speed != next.value.drive_speed;
         // After a change from outside (an input, typically from a coupled model at every
         // communication point) the steps end exactly at t_end: the next interval restarts there
         // anyway, and a step beyond it would be computed only to be cut back by dense output.
-        let restart = !current.same_from(&next, t_start, acts);
+        let restart = !current.same_from(&next, t_start, |k| acts(Input::ALL[k]));
         let limit = restart.then_some(t_end);
         if restart {
             self.mechanism.set_input_signal(next, t_start);
@@ -296,7 +296,7 @@ impl Simulation {
                      impulsive change through the constraints, booked as drive work); leave \
                      crank.initialSpeed unset (the crank then starts at drive.speed) or set it to \
                      drive.speed for a smooth start",
-                    Num(current.at(t_start).0.drive_speed),
+                    Num(current.at(t_start).drive_speed),
                     Num(next.value.drive_speed)
                 ));
             }

@@ -1,6 +1,6 @@
 //! A complete, restorable state of a simulation, and its bytes.
 
-use super::codec::{ByteReader, ByteWriter, CodecError, ReadRecords, WriteRecords, signal_values};
+use super::codec::{ByteReader, ByteWriter, CodecError, ReadRecords, WriteRecords};
 use super::peaks::PeakHold;
 use super::step::StepPoint;
 use crate::integrator::{ImplicitState, IntegratorState};
@@ -43,9 +43,8 @@ impl Snapshot {
             && finite(&self.state)
             && self.step_start.is_finite()
             && self.step_end.is_finite()
-            && [&self.signal, &self.next]
-                .iter()
-                .all(|s| finite(&signal_values(s)))
+            && self.signal.is_finite()
+            && self.next.is_finite()
     }
 
     /// Appends the pointer-free bytes of the snapshot.
@@ -83,8 +82,8 @@ impl Snapshot {
             }
         }
         w.contact(&self.contact);
-        w.signal(&self.signal);
-        w.signal(&self.next);
+        self.signal.write(w);
+        self.next.write(w);
         w.u8(u8::from(self.inputs_set));
         w.peaks(&self.peaks.interval);
         w.peaks(&self.peaks.step_end);
@@ -141,8 +140,8 @@ impl Snapshot {
             step_end,
             integrator,
             contact,
-            signal: r.signal()?,
-            next: r.signal()?,
+            signal: InputSignal::read(r)?,
+            next: InputSignal::read(r)?,
             inputs_set: r.flag()?,
             peaks: PeakHold {
                 interval: r.peaks()?,
