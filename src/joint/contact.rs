@@ -338,6 +338,18 @@ impl DryContact {
         self.contact(k, impact_velocity)
             .map_or(0.0, |c| -c.f_t * c.v_t)
     }
+
+    /// The rate at which the hysteresis damping of the normal force dissipates energy,
+    /// (F_N − F_e(δ)) δ̇ ≥ 0 \[W\] (0 out of contact), F_e the elastic force of
+    /// [`DryContact::normal_force`]: F_e χ δ̇²/v₀, or −F_e δ̇ where the force is cut at zero as
+    /// the journal leaves the wall. The normal force does the work −F_N δ̇ on the journal, of which
+    /// −F_e δ̇ is stored in the contact (its potential V(δ)); with [`DryContact::friction_power`]
+    /// this is everything the contact loses.
+    pub fn hysteresis_power(&self, k: &JointKinematics, impact_velocity: f64) -> f64 {
+        self.contact(k, impact_velocity).map_or(0.0, |c| {
+            (c.f_n - self.elastic.force(c.delta)) * k.e_dot.dot(&c.n)
+        })
+    }
 }
 
 #[cfg(test)]

@@ -192,6 +192,7 @@ impl Joint {
             film_pressure,
             friction_torque: force.moment,
             friction_power: film_loss + dry.friction_power(k, impact_velocity),
+            hysteresis_power: dry.hysteresis_power(k, impact_velocity),
             oil_flow,
         }
     }
@@ -241,6 +242,9 @@ pub struct BearingState {
     /// The rate at which the joint's friction dissipates energy, ≥ 0: the film's viscous loss
     /// ([`JournalBearing::film_loss`]) and dry friction's −F_T v_T \[W\].
     pub friction_power: f64,
+    /// The rate at which the dry contact's hysteresis damping dissipates energy, ≥ 0 \[W\]
+    /// ([`DryContact::hysteresis_power`]).
+    pub hysteresis_power: f64,
     /// The oil flow out of both ends of the pressurised film, 0 without a film \[m³/s\]
     /// ([`JournalBearing::side_flow`]).
     pub oil_flow: f64,

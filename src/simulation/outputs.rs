@@ -172,6 +172,9 @@ pub struct BearingOutputs {
     pub friction_torque: f64,
     /// The rate at which the joint's friction dissipates energy, ≥ 0 \[W\].
     pub friction_power: f64,
+    /// The rate at which the dry contact's hysteresis damping dissipates energy, ≥ 0 \[W\]:
+    /// with [`BearingOutputs::friction_power`], the rate of [`BearingOutputs::energy_dissipated`].
+    pub hysteresis_power: f64,
     /// The energy the joint has dissipated since the start \[J\].
     pub energy_dissipated: f64,
     /// The oil flow out of both ends of the pressurised film \[m³/s\].
@@ -286,6 +289,7 @@ pub(super) fn outputs(
             film_pressure_peak_since_start: since_start.film_pressure[i].max(pressure),
             friction_torque: now.friction_torque,
             friction_power: now.friction_power,
+            hysteresis_power: now.hysteresis_power,
             energy_dissipated: energies.joints[i].dissipated(),
             oil_flow: now.oil_flow,
             film_thickness_min_cycle: film_thickness(clearance, ratio_cycle),

@@ -1,4 +1,4 @@
-//! The joints as a bearing designer reads them: each joint's dissipation and the total, the
+//! The joints as a bearing designer reads them: each joint's dissipation and its account, the
 //! ideal joint's outputs, the line contact of a pin under a steady load, and the lubricated
 //! joints' peaks at the default tolerance against converged runs (an engine cycle with a sharp
 //! combustion rise, and the lubricated benchmarks).
@@ -31,10 +31,9 @@ fn worn() -> Parameters {
     }
 }
 
-/// Each joint's own dissipation: the three sum to `energy.dissipated` (to round-off) at every
-/// communication point of one revolution with all three joints worn, each is positive at the end
-/// (the films' shear, the dry joint's impacts and friction all dissipate), the friction powers are
-/// never negative, and the account closes (the outputs' balance residual below 1e-3 of the
+/// Each joint's own dissipation over one revolution with all three joints worn: each is positive
+/// at the end (the films' shear, the dry joint's impacts and friction all dissipate), the friction
+/// and hysteresis powers are never negative, and the account closes (the outputs' balance residual below 1e-3 of the
 /// kinetic energy at rtol 1e-6). The ideal joints of the defaults report zeros but their load
 /// over the cycle.
 #[test]
@@ -48,15 +47,9 @@ fn each_joint_dissipates_its_share_of_the_total() {
         120,
     );
     for o in &rows {
-        let sum: f64 = o.bearings.iter().map(|b| b.energy_dissipated).sum();
-        assert!(
-            (sum - o.dissipated_energy).abs() <= 1e-12 * o.dissipated_energy.abs().max(1e-3),
-            "t = {}: {sum} vs {}",
-            o.time,
-            o.dissipated_energy
-        );
         for b in &o.bearings {
             assert!(b.friction_power >= 0.0, "t = {}: {b:?}", o.time);
+            assert!(b.hysteresis_power >= 0.0, "t = {}: {b:?}", o.time);
         }
     }
     let last = rows[rows.len() - 1];
@@ -338,5 +331,49 @@ fn the_friction_power_integrates_to_the_dissipated_energy() {
             integral[k]
         );
         assert!((integral[k] - dissipated).abs() < 0.01 * dissipated);
+    }
+}
+
+/// An account of a dry joint's dissipation independent of the work integral of its force that
+/// the state carries (`energy_dissipated`): the trapezoidal integral of the powers the contact
+/// loses, its hysteresis ((F_N − F_e) δ̇) and its friction (−F_T v_T), sampled every microsecond
+/// over the first 60°, where the rod–slider joint impacts: the benchmark's frictionless joint
+/// (hysteresis alone) and a joint with friction 0.1 beside two lubricated ones (friction
+/// dominant), both at rtol 1e-6, to 1e-4 (measured 2e-5 and 2e-8). It fails if the contact's
+/// force, its potential or the moments on journal and bearing are booked apart from what they
+/// lose.
+#[test]
+fn a_dry_joints_dissipation_is_the_integral_of_its_hysteresis_and_friction_powers() {
+    let n = 2000;
+    let dt = REVOLUTION / 6.0 / n as f64;
+    for (p, share) in [(Parameters::default(), 1.0), (worn(), 0.0)] {
+        let (_, rows) = run(
+            Parameters {
+                relative_tolerance: 1e-6,
+                ..p
+            },
+            REVOLUTION / 6.0,
+            n,
+        );
+        let b = |o: &Outputs| o.bearings[JointRole::RodSlider as usize];
+        let power = |o: &Outputs| b(o).friction_power + b(o).hysteresis_power;
+        let trapezoid = |f: &dyn Fn(&Outputs) -> f64| -> f64 {
+            rows.windows(2)
+                .map(|w| 0.5 * dt * (f(&w[0]) + f(&w[1])))
+                .sum()
+        };
+        let (integral, hysteresis) = (trapezoid(&power), trapezoid(&|o| b(o).hysteresis_power));
+        // from the start: a journal settled against its bearing starts at −(its stored energy)
+        let dissipated = b(&rows[n]).energy_dissipated - b(&rows[0]).energy_dissipated;
+        println!(
+            "∫ (hysteresis + friction) dt = {integral:.7e} J (hysteresis {:.1} %), \
+             energyDissipated {dissipated:.7e} J ({:+.1e})",
+            100.0 * hysteresis / integral,
+            integral / dissipated - 1.0
+        );
+        assert!(dissipated > 0.0);
+        assert!((integral - dissipated).abs() < 1e-4 * dissipated);
+        // the frictionless joint loses by hysteresis alone; with friction it dominates
+        assert!((hysteresis / integral - share).abs() < 0.01);
     }
 }
