@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Coverage-guided fuzzing (libFuzzer through cargo-fuzz) of the FMU's state deserialization and of
-# fmi2* and fmi3* call sequences, each target for a fixed time (seconds, default 60) from the corpus kept
-# in fuzz/corpus. New inputs go to a scratch directory, so a run leaves the repository as it was;
-# a crash fails the run and leaves its input under fuzz/artifacts/. With --update-corpus the kept
-# corpus is regenerated instead: the inputs of the run, the kept ones and (for fmu_state) states of
-# the current format from examples/fuzz_seeds.rs, merged into a smallest set with their coverage
-# (libFuzzer's -set_cover_merge=1).
+# fmi2* and fmi3* call sequences, each target for a fixed time (seconds, default 60; two targets at
+# a time, one core each) from the corpus kept in fuzz/corpus. New inputs go to a scratch directory,
+# so a run leaves the repository as it was; a crash fails the run and leaves its input under
+# fuzz/artifacts/. With --update-corpus the kept corpus is regenerated instead (one target at a
+# time): the inputs of the run, the kept ones and (for fmu_state) states of the current format from
+# examples/fuzz_seeds.rs, merged into a smallest set with their coverage (libFuzzer's
+# -set_cover_merge=1).
 #
 #   bash packaging/fuzz.sh [seconds] [--update-corpus]
 #
@@ -34,7 +35,8 @@ if ! "${fuzz[@]}" build -s "$sanitizer" --fuzz-dir fuzz >target/fuzz-build.log 2
   cat target/fuzz-build.log >&2
   exit 1
 fi
-for target in fmu_state call_sequence fmi3_call_sequence; do
+fuzz_target() {
+  local target=$1 scratch merged status
   scratch=$(mktemp -d)
   echo "== fuzz $target for ${seconds} s"
   status=0
@@ -61,4 +63,15 @@ for target in fmu_state call_sequence fmi3_call_sequence; do
     echo "fuzz target $target failed (input under fuzz/artifacts/$target)" >&2
     exit 1
   fi
-done
+}
+
+if [ "$update" = "--update-corpus" ]; then
+  for target in fmu_state call_sequence fmi3_call_sequence; do fuzz_target "$target"; done
+else
+  # libFuzzer runs on one core: two targets at a time, each for its full time.
+  fuzz_target fmu_state &
+  first=$!
+  fuzz_target call_sequence
+  wait "$first"
+  fuzz_target fmi3_call_sequence
+fi
