@@ -12,7 +12,7 @@ use std::cell::Cell;
 
 use flexible_slider_crank::params::JointParameters;
 use flexible_slider_crank::params::{FilmModel, JointModel, RodFormulation};
-use flexible_slider_crank::{Input, Parameters, Simulation};
+use flexible_slider_crank::{Parameters, Simulation};
 
 /// Counts the allocations of each thread while its [`COUNT`] is `Some` (tests run in parallel).
 struct Counting;
@@ -87,11 +87,13 @@ fn stepping_does_not_allocate() {
             let mut sim = Simulation::new(p).unwrap();
             sim.advance_to(1e-4).unwrap();
             sim.outputs().unwrap();
+            let mut inputs = *sim.inputs();
             let n = allocations_in(|| {
                 for i in 1..=40 {
-                    sim.set_input(Input::DriveSpeed, 520.0 + f64::from(i));
-                    sim.advance_to(1e-4 + 5e-5 * f64::from(i)).unwrap();
-                    sim.outputs().unwrap();
+                    inputs.value.drive_speed = 520.0 + f64::from(i);
+                    sim.advance_with(&inputs, 1e-4 + 5e-5 * f64::from(i))
+                        .unwrap();
+                    sim.outputs_seeing(&inputs).unwrap();
                 }
             });
             assert_eq!(
@@ -139,11 +141,13 @@ fn stepping_a_machine_with_every_option_does_not_allocate() {
     std::fs::remove_file(&table).unwrap();
     sim.advance_to(1e-4).unwrap();
     sim.outputs().unwrap();
+    let mut inputs = *sim.inputs();
     let n = allocations_in(|| {
         for i in 1..=40 {
-            sim.set_input(Input::SliderForce, -10.0 * f64::from(i));
-            sim.advance_to(1e-4 + 5e-5 * f64::from(i)).unwrap();
-            sim.outputs().unwrap();
+            inputs.value.slider_force = -10.0 * f64::from(i);
+            sim.advance_with(&inputs, 1e-4 + 5e-5 * f64::from(i))
+                .unwrap();
+            sim.outputs_seeing(&inputs).unwrap();
         }
     });
     assert_eq!(n, 0, "{n} allocations in 40 steps");

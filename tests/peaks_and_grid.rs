@@ -8,7 +8,7 @@
 use flexible_slider_crank::integrator::Method;
 use flexible_slider_crank::math;
 use flexible_slider_crank::params::RodFormulation;
-use flexible_slider_crank::{Input, Parameters, Simulation};
+use flexible_slider_crank::{InputSignal, Parameters, Simulation};
 
 /// The DefaultExperiment's stop time \[s\].
 const STOP: f64 = 0.024;
@@ -35,8 +35,9 @@ struct Run {
     steps: u64,
 }
 
-fn run(p: Parameters, dt: f64, mut input: impl FnMut(&mut Simulation, f64)) -> Run {
+fn run(p: Parameters, dt: f64, mut input: impl FnMut(&mut InputSignal, f64)) -> Run {
     let mut sim = Simulation::new(p).unwrap();
+    let mut inputs = *sim.inputs();
     let n = (STOP / dt).round() as usize;
     let mut r = Run {
         force_peak: 0.0,
@@ -52,8 +53,8 @@ fn run(p: Parameters, dt: f64, mut input: impl FnMut(&mut Simulation, f64)) -> R
     };
     for i in 1..=n {
         let t = STOP * i as f64 / n as f64;
-        input(&mut sim, t);
-        sim.advance_to(t).unwrap();
+        input(&mut inputs, t);
+        sim.advance_with(&inputs, t).unwrap();
         let o = sim.outputs().unwrap();
         assert!(o.joint_force_peak >= o.joint_force);
         assert!(o.slider_acceleration_peak >= o.slider_acceleration.abs());
@@ -81,7 +82,7 @@ fn run(p: Parameters, dt: f64, mut input: impl FnMut(&mut Simulation, f64)) -> R
     r
 }
 
-fn constant_input(_: &mut Simulation, _: f64) {}
+fn constant_input(_: &mut InputSignal, _: f64) {}
 
 /// On benchmark B the maxima of the peak-hold outputs (joint, crank-pin, main-bearing and guide
 /// forces, slider acceleration, rod stress) agree within 2 % between communication steps 1e-4 and
@@ -206,8 +207,8 @@ fn constant_inputs_give_grid_independent_results() {
     }
     let start = p.start_speed(flexible_slider_crank::params::BENCHMARK_SPEED);
     let speed = |t: f64| start * (1.0 + 0.01 * math::sin(2e3 * t));
-    let varying = run(p.clone(), 1e-4, |sim, t| {
-        sim.set_input(Input::DriveSpeed, speed(t))
+    let varying = run(p.clone(), 1e-4, |inputs, t| {
+        inputs.value.drive_speed = speed(t);
     });
     println!(
         "speed input changed at every communication point: {} steps (constant input: {}), \

@@ -1,13 +1,14 @@
-//! [`DcMotorFmu`]: the motor as an FMI 2.0 [`Model`] of `fmi-export` — parameters, inputs as
-//! polynomials over the communication step, the state, the clock and the state codec.
+//! [`DcMotorFmu`]: the motor as a [`Model`] of `fmi-export` — parameters, the state and the state
+//! codec; its inputs (polynomials over the communication step), the experiment and the clock are
+//! the instance's ([`Context`]).
 
 use fmi_core::clock::on_clock_grid;
 use fmi_core::codec::{ByteReader, ByteWriter};
 use fmi_core::number::Num;
 use fmi_core::signal::Polynomial;
 use fmi_export::checks::check_real;
-use fmi_export::model::Var;
-use fmi_export::{Experiment, FmuError, Logger, Model, State, Step, StepOutcome};
+use fmi_export::model::{Context, Var};
+use fmi_export::{FmuError, Logger, Model, State, Step, StepOutcome};
 
 use crate::coupling::{self, Exchange};
 use crate::motor::{MotorInputs, MotorOutputs, MotorParameters, MotorState, substeps};
@@ -20,6 +21,9 @@ const MAX_STEPS: f64 = 1e8;
 
 /// The inputs (load speed, set-point) over a communication step.
 type Signal = Polynomial<[f64; 2]>;
+
+/// What the instance holds for the motor: the logger, the inputs and the clock.
+type Cx<'a> = Context<'a, [f64; 2]>;
 
 /// The motor's inputs at `t`.
 fn inputs(signal: &Signal, t: f64) -> MotorInputs {
@@ -34,11 +38,9 @@ fn inputs(signal: &Signal, t: f64) -> MotorInputs {
 #[derive(Clone, Debug, PartialEq)]
 pub struct DcMotorFmu {
     parameters: [f64; N_PARAMETERS],
-    inputs: Signal,
-    /// [i, ω, φ, z], once initialised.
+    /// [i, ω, φ, z], from the end of initialization (until then the steady state at the
+    /// set-point, which follows the inputs).
     state: Option<MotorState>,
-    /// The motor's time: the communication point on the clock grid \[s\].
-    time: f64,
     /// Warnings since the start (unstable communication steps).
     warnings: u32,
     /// The communication step whose coupling stability was checked last.
@@ -70,18 +72,12 @@ impl DcMotorFmu {
         }
     }
 
-    /// The state, initialised in steady state at the set-point if not yet.
-    fn state(&mut self) -> MotorState {
-        match self.state {
-            Some(x) => x,
-            None => {
-                let set_point = self.inputs.value[1];
-                let torque = self.parameters[Vr::ShaftInitialTorque as usize];
-                let x = self.motor().steady_state(set_point, torque);
-                self.state = Some(x);
-                x
-            }
-        }
+    /// The state: until initialization ends, the steady state at the set-point of `inputs`.
+    fn state(&self, inputs: &Signal) -> MotorState {
+        self.state.unwrap_or_else(|| {
+            let torque = self.parameters[Vr::ShaftInitialTorque as usize];
+            self.motor().steady_state(inputs.value[1], torque)
+        })
     }
 
     /// With `shaft.loadInertia` set, checks a communication step (as `given` by the master, `h`
@@ -117,14 +113,11 @@ impl DcMotorFmu {
             Num(limit(Exchange::MotorFirst))
         ));
     }
+}
 
-    fn input_index(vr: Vr) -> Option<usize> {
-        match vr {
-            Vr::ShaftSpeed => Some(0),
-            Vr::SpeedSetPoint => Some(1),
-            _ => None,
-        }
-    }
+/// The motor's time: the communication point on the clock grid \[s\].
+fn time(cx: &Cx) -> f64 {
+    on_clock_grid(cx.time)
 }
 
 /// The output `vr` among the motor's outputs (None for any other variable).
@@ -143,39 +136,28 @@ impl Model for DcMotorFmu {
     const GUID: &'static str = crate::GUID;
     const FMI3_TOKENS: [&'static str; 2] = [crate::FMI3_TOKEN, crate::FMI3_TOKEN];
     type Vr = Vr;
+    type Inputs = [f64; 2];
     const VARIABLES: &'static [Variable] = VARIABLES;
     const MAX_INPUT_DERIVATIVE_ORDER: u32 =
         crate::variables::DESCRIPTION.max_input_derivative_order;
     const LOG_CATEGORIES: &'static [(&'static str, &'static str)] = LOG_CATEGORIES;
     const STATE_MAGIC: [u8; 4] = *b"DCMS";
-    const STATE_VERSION: u32 = 3;
+    const STATE_VERSION: u32 = 4;
 
     fn new() -> Self {
         Self {
             parameters: std::array::from_fn(start),
-            inputs: Signal {
-                value: [
-                    start(Vr::ShaftSpeed as usize),
-                    start(Vr::SpeedSetPoint as usize),
-                ],
-                ..Signal::default()
-            },
             state: None,
-            time: 0.0,
             warnings: 0,
             checked_step: None,
         }
     }
 
-    fn setup_experiment(&mut self, _log: &Logger, e: &Experiment) -> Result<(), FmuError> {
-        self.time = on_clock_grid(e.start);
-        self.inputs.start = self.time;
-        Ok(())
-    }
-
-    fn exit_initialization(&mut self, log: &Logger) -> Result<(), FmuError> {
-        let x = self.state();
-        log.event(&format!(
+    /// The motor starts in steady state at the set-point the inputs have now.
+    fn exit_initialization(&mut self, cx: &Cx) -> Result<(), FmuError> {
+        let x = self.state(cx.inputs);
+        self.state = Some(x);
+        cx.log.event(&format!(
             "motor initialised in steady state: current {} A, speed {} rad/s",
             Num(x[0]),
             Num(x[1])
@@ -184,7 +166,7 @@ impl Model for DcMotorFmu {
     }
 
     /// The motor has no events: every step reaches the communication point.
-    fn do_step(&mut self, log: &Logger, step: &Step) -> Result<StepOutcome, FmuError> {
+    fn do_step(&mut self, cx: &Cx, step: &Step) -> Result<StepOutcome, FmuError> {
         let (t, h) = (step.t, step.h);
         // On the clock grid, every master's representation of the same points gives the same
         // step.
@@ -197,39 +179,27 @@ impl Model for DcMotorFmu {
                 Num(MAX_STEPS)
             )));
         }
-        self.check_coupling(log, (h, end - t), n);
-        let mut x = self.state();
+        self.check_coupling(cx.log, (h, end - t), n);
+        let mut x = self.state(cx.inputs);
         let signal = Signal {
             start: t,
-            ..self.inputs
+            ..*cx.inputs
         };
         self.motor()
             .advance(&mut x, end - t, n, |tau| inputs(&signal, t + tau));
         self.state = Some(x);
-        self.time = end;
-        // Input derivatives hold for one communication step; the inputs are then held at the
-        // values their polynomials reached.
-        self.inputs = signal;
-        self.inputs.hold_at(self.time);
         Ok(StepOutcome::Completed { time: end })
     }
 
-    fn get_real(
-        &mut self,
-        _log: &Logger,
-        vars: &[Var<Vr>],
-        values: &mut [f64],
-    ) -> Result<(), FmuError> {
+    fn get_real(&mut self, cx: &Cx, vars: &[Var<Vr>], values: &mut [f64]) -> Result<(), FmuError> {
         for (&v, value) in vars.iter().zip(values.iter_mut()) {
-            let read = match v.causality {
-                Causality::Parameter => Some(self.parameters[v.vr as usize]),
-                Causality::Input => Self::input_index(v.vr).map(|k| self.inputs.value[k]),
-                _ => {
-                    let x = self.state();
-                    output(
-                        &self.motor().outputs(&x, &inputs(&self.inputs, self.time)),
-                        v.vr,
-                    )
+            let read = match (v.causality, v.vr) {
+                (Causality::Parameter, vr) => Some(self.parameters[vr as usize]),
+                (Causality::Input, Vr::ShaftSpeed) => Some(cx.inputs.value[0]),
+                (Causality::Input, _) => Some(cx.inputs.value[1]),
+                (_, vr) => {
+                    let x = self.state(cx.inputs);
+                    output(&self.motor().outputs(&x, &inputs(cx.inputs, time(cx))), vr)
                 }
             };
             *value = read.ok_or_else(|| FmuError::Invalid(format!("{} cannot be read", v.name)))?;
@@ -237,22 +207,16 @@ impl Model for DcMotorFmu {
         Ok(())
     }
 
-    fn set_real(&mut self, state: State, vars: &[Var<Vr>], values: &[f64]) -> Result<(), FmuError> {
+    /// The parameters (the inputs are the instance's).
+    fn set_real(
+        &mut self,
+        _state: State,
+        vars: &[Var<Vr>],
+        values: &[f64],
+    ) -> Result<(), FmuError> {
         for (&v, &value) in vars.iter().zip(values) {
-            match Self::input_index(v.vr) {
-                Some(k) => {
-                    self.inputs.value[k] = value;
-                    self.inputs.start = self.time;
-                    // Until initialization ends the steady start follows the set-point.
-                    if matches!(state, State::Instantiated | State::InitializationMode) {
-                        self.state = None;
-                    }
-                }
-                None => {
-                    self.parameters[v.vr as usize] = value;
-                    self.state = None;
-                }
-            }
+            self.parameters[v.vr as usize] = value;
+            self.state = None;
         }
         Ok(())
     }
@@ -260,7 +224,7 @@ impl Model for DcMotorFmu {
     /// fmi2GetInteger: solver.warnings, the one Integer variable.
     fn get_integer(
         &mut self,
-        _log: &Logger,
+        _cx: &Cx,
         _vars: &[Var<Vr>],
         values: &mut [i32],
     ) -> Result<(), FmuError> {
@@ -268,37 +232,17 @@ impl Model for DcMotorFmu {
         Ok(())
     }
 
-    fn set_real_input_derivatives(
-        &mut self,
-        vars: &[Var<Vr>],
-        orders: &[i32],
-        values: &[f64],
-    ) -> Result<(), FmuError> {
-        for ((&v, &order), &value) in vars.iter().zip(orders).zip(values) {
-            let k = Self::input_index(v.vr)
-                .ok_or_else(|| FmuError::Invalid(format!("{} is not an input", v.name)))?;
-            let d = self
-                .inputs
-                .derivatives
-                .get_mut(order as usize - 1)
-                .ok_or_else(|| FmuError::Invalid(format!("order {order}")))?;
-            d[k] = value;
-            self.inputs.start = self.time;
-        }
-        Ok(())
-    }
-
     fn get_real_output_derivatives(
         &mut self,
-        _log: &Logger,
+        cx: &Cx,
         vars: &[Var<Vr>],
         orders: &[i32],
         values: &mut [f64],
     ) -> Result<(), FmuError> {
-        let x = self.state();
+        let x = self.state(cx.inputs);
         let motor = self.motor();
-        let now = inputs(&self.inputs, self.time);
-        let load_rate = self.inputs.rate(self.time)[0];
+        let now = inputs(cx.inputs, time(cx));
+        let load_rate = cx.inputs.rate(time(cx))[0];
         let d = motor.derivative(&x, &now);
         for ((&v, &order), value) in vars.iter().zip(orders).zip(values.iter_mut()) {
             *value = match (v.vr, order) {
@@ -322,16 +266,16 @@ impl Model for DcMotorFmu {
     /// ∂y/∂u from the motor's equations (`MotorParameters::output_derivatives`).
     fn output_sensitivity(
         &mut self,
-        _log: &Logger,
+        cx: &Cx,
         known: Var<Vr>,
         unknowns: &[Var<Vr>],
         column: &mut [f64],
     ) -> Result<(), FmuError> {
         let set_point = known.vr == Vr::SpeedSetPoint;
-        let x = self.state();
+        let x = self.state(cx.inputs);
         let d = self
             .motor()
-            .output_derivatives(&x, &inputs(&self.inputs, self.time), set_point);
+            .output_derivatives(&x, &inputs(cx.inputs, time(cx)), set_point);
         for (v, c) in unknowns.iter().zip(column.iter_mut()) {
             *c = output(&d, v.vr)
                 .ok_or_else(|| FmuError::Invalid(format!("{} is not an output", v.name)))?;
@@ -339,20 +283,18 @@ impl Model for DcMotorFmu {
         Ok(())
     }
 
-    /// The parameters, the input signal, the state (NaN before initialization), the time, the
-    /// warnings count and the last checked step (NaN if none).
+    /// The parameters, the state (NaN before initialization), the warnings count and the last
+    /// checked step (NaN if none).
     fn save(&self, out: &mut Vec<u8>) {
         let mut w = ByteWriter(out);
         self.parameters.iter().for_each(|&p| w.f64(p));
-        self.inputs.write(&mut w);
         let x = self.state.unwrap_or([f64::NAN; 4]);
         x.iter().for_each(|&v| w.f64(v));
-        w.f64(self.time);
         w.u32(self.warnings);
         w.f64(self.checked_step.unwrap_or(f64::NAN));
     }
 
-    fn load(&mut self, _log: &Logger, bytes: &[u8], apply: bool) -> Result<(), FmuError> {
+    fn load(&mut self, _cx: &Cx, bytes: &[u8], apply: bool) -> Result<(), FmuError> {
         let bad = |what: &str| Err(FmuError::Invalid(format!("FMU state rejected: {what}")));
         let mut r = ByteReader::new(bytes);
         let mut parameters = [0.0; N_PARAMETERS];
@@ -360,26 +302,18 @@ impl Model for DcMotorFmu {
             *p = r.f64()?;
             check_real(v, *p)?;
         }
-        let inputs = Signal::read(&mut r)?;
         let state = [r.f64()?, r.f64()?, r.f64()?, r.f64()?];
         let initialised = state.iter().all(|v| v.is_finite());
-        let time = r.f64()?;
         let (warnings, checked) = (r.u32()?, r.f64()?);
         if r.remaining() != 0 {
             return bad(&format!("{} bytes too many", r.remaining()));
         }
-        if !(inputs.is_finite()
-            && (initialised || state.iter().all(|v| v.is_nan()))
-            && time.is_finite()
-            && !checked.is_infinite())
-        {
-            return bad("a non-finite input, state, time or checked step");
+        if !((initialised || state.iter().all(|v| v.is_nan())) && !checked.is_infinite()) {
+            return bad("a non-finite state or checked step");
         }
         if apply {
             self.parameters = parameters;
-            self.inputs = inputs;
             self.state = initialised.then_some(state);
-            self.time = time;
             self.warnings = warnings;
             self.checked_step = (!checked.is_nan()).then_some(checked);
         }

@@ -339,8 +339,7 @@ pub fn directional_derivative<M: Model>(
     let mut column = vec![0.0; unknowns.len()];
     let mut sum = vec![0.0; unknowns.len()];
     for (known, dv) in knowns {
-        inst.model
-            .output_sensitivity(&inst.logger, known, &inst.variables, &mut column)?;
+        inst.output_sensitivity(known, &mut column)?;
         for (s, c) in sum.iter_mut().zip(&column) {
             *s += c * dv;
         }
@@ -357,7 +356,5 @@ pub fn output_derivatives<M: Model>(
     value: &mut [f64],
 ) -> Result<Status, FmuError> {
     resolve::<M>(vr, "Real", &mut inst.variables)?;
-    inst.model
-        .get_real_output_derivatives(&inst.logger, &inst.variables, order, value)
-        .map(ok)
+    inst.get_output_derivatives(order, value).map(ok)
 }

@@ -142,15 +142,13 @@ pub struct Clock {
 }
 
 impl Clock {
-    /// Checks and sets up the experiment of `tolerance`, `start` and `stop`, and tells the model
-    /// (`tell`, [`crate::Model::setup_experiment`]); the clock starts at `start`.
+    /// Checks and sets up the experiment of `tolerance`, `start` and `stop` (the model reads it
+    /// in its [`crate::model::Context`]); the clock starts at `start`.
     pub fn setup(
         &mut self,
         (tolerance, start, stop): (Option<f64>, f64, Option<f64>),
-        tell: impl FnOnce(&Experiment) -> Result<(), FmuError>,
     ) -> Result<(), FmuError> {
         let experiment = Experiment::new(tolerance, start, stop)?;
-        tell(&experiment)?;
         *self = Self {
             experiment,
             time: start,

@@ -1,13 +1,44 @@
 //! [`Model`]: what a model supplies; [`Instance`]: one FMU instance of it — the model, the
-//! master's logger and the state machine — and the framing of its serialized states.
+//! master's logger, the state machine, the clock and the inputs — the calls every version makes
+//! on it, and the framing of its serialized states.
 
+use crate::clock::on_clock_grid;
 use crate::codec::{ByteReader, ByteWriter};
 use crate::error::FmuError;
 use crate::experiment::{Clock, Experiment, Step, StepOutcome};
 use crate::interface::Fmi3Interface;
 use crate::logger::Logger;
+use crate::signal::{InputValues, Polynomial};
 use crate::state::{State, Version};
-use crate::table::{Enumeration, ValueReference, Variable};
+use crate::table::{Causality, Enumeration, Kind, ValueReference, Variable};
+
+/// What the instance holds that a model reads when it computes: the master's logger, the inputs
+/// (values and derivatives, set by the master through the instance), the experiment and the
+/// current communication point.
+#[derive(Clone, Copy, Debug)]
+pub struct Context<'a, I> {
+    /// The master's logger.
+    pub log: &'a Logger,
+    /// The inputs: their values at the current communication point and the derivatives set for
+    /// the next step, by their index among the model's inputs ([`crate::signal`]).
+    pub inputs: &'a Polynomial<I>,
+    /// The experiment set up (start, stop, tolerance).
+    pub experiment: Experiment,
+    /// The current communication point \[s\].
+    pub time: f64,
+}
+
+/// The [`Context`] of an instance (a macro, so that the model may be borrowed mutably beside it).
+macro_rules! context {
+    ($inst:expr) => {
+        Context {
+            log: &$inst.logger,
+            inputs: &$inst.inputs,
+            experiment: $inst.clock.experiment,
+            time: $inst.clock.time,
+        }
+    };
+}
 
 /// A co-simulation model behind the FMI functions. The generic layer resolves every value
 /// reference to the model's [`Variable`] before a getter or setter sees it ([`crate::checks::resolve`]: it
@@ -25,6 +56,9 @@ pub trait Model: Sized + 'static {
     const STATE_VERSION: u32;
     /// The model's value references.
     type Vr: ValueReference;
+    /// Its input values, by their index among its input variables in table order (the
+    /// instance holds them, [`Context::inputs`]).
+    type Inputs: InputValues;
     /// The model's variable table, in value-reference order (the generic checks read it).
     const VARIABLES: &'static [Variable<Self::Vr>];
     /// The switch types its enumeration variables refer to.
@@ -41,43 +75,35 @@ pub trait Model: Sized + 'static {
     /// A model with every start value (instantiation, Reset).
     fn new() -> Self;
 
-    /// The experiment the master set up (fmi2SetupExperiment, fmi3EnterInitializationMode),
-    /// checked ([`Experiment::new`]); the clock is the generic layer's ([`crate::experiment`]).
-    /// By default the model takes no notice.
-    fn setup_experiment(
-        &mut self,
-        _log: &Logger,
-        _experiment: &Experiment,
-    ) -> Result<(), FmuError> {
-        Ok(())
-    }
-
     /// ExitInitializationMode: every parameter check happens here at the latest.
-    fn exit_initialization(&mut self, log: &Logger) -> Result<(), FmuError>;
+    fn exit_initialization(&mut self, cx: &Context<Self::Inputs>) -> Result<(), FmuError>;
 
     /// fmi2DoStep and fmi3DoStep: the step `step` (checked against the clock), to its end, or
     /// early at an event of the model where `step.early_return` allows it (on the clock grid,
     /// [`crate::clock`]), or paused after an internal step where `step.pause` allows it (its state
     /// there the one the getters read; called again with the same step, it resumes); what
     /// happened is the outcome, and [`FmuError::Discard`] says where a failed step stopped.
-    fn do_step(&mut self, log: &Logger, step: &Step) -> Result<StepOutcome, FmuError>;
+    fn do_step(&mut self, cx: &Context<Self::Inputs>, step: &Step)
+    -> Result<StepOutcome, FmuError>;
 
     /// Ends a paused step at the pause, as an early return (on the clock grid): the time
     /// reached, or None where the step cannot end there (it then stays paused). By default no
     /// step pauses.
-    fn return_at_pause(&mut self, _log: &Logger) -> Result<Option<f64>, FmuError> {
+    fn return_at_pause(&mut self, _cx: &Context<Self::Inputs>) -> Result<Option<f64>, FmuError> {
         Ok(None)
     }
 
-    /// fmi2GetReal, fmi3GetFloat64.
+    /// fmi2GetReal, fmi3GetFloat64 (of every Real variable but the inputs, which the instance
+    /// answers).
     fn get_real(
         &mut self,
-        log: &Logger,
+        cx: &Context<Self::Inputs>,
         vars: &[Var<Self::Vr>],
         value: &mut [f64],
     ) -> Result<(), FmuError>;
 
-    /// fmi2SetReal, fmi3SetFloat64 in machine state `state`.
+    /// fmi2SetReal, fmi3SetFloat64 in machine state `state` (of every Real variable but the
+    /// inputs, which the instance holds).
     fn set_real(
         &mut self,
         state: State,
@@ -90,7 +116,7 @@ pub trait Model: Sized + 'static {
     /// implements it; the generic layer calls it for no other.
     fn get_array(
         &mut self,
-        _log: &Logger,
+        _cx: &Context<Self::Inputs>,
         array: usize,
         _value: &mut [f64],
     ) -> Result<(), FmuError> {
@@ -100,7 +126,7 @@ pub trait Model: Sized + 'static {
     /// fmi2GetInteger, fmi3GetInt32 and fmi3GetInt64 (the switches).
     fn get_integer(
         &mut self,
-        log: &Logger,
+        cx: &Context<Self::Inputs>,
         vars: &[Var<Self::Vr>],
         value: &mut [i32],
     ) -> Result<(), FmuError>;
@@ -119,7 +145,7 @@ pub trait Model: Sized + 'static {
     /// and [`crate::checks::resolve`] refuses every value reference before this is called).
     fn get_boolean(
         &mut self,
-        _log: &Logger,
+        _cx: &Context<Self::Inputs>,
         vars: &[Var<Self::Vr>],
         _value: &mut [i32],
     ) -> Result<(), FmuError> {
@@ -168,22 +194,10 @@ pub trait Model: Sized + 'static {
     /// for a model that reads files from it. By default it is not kept.
     fn set_resource_directory(&mut self, _directory: Option<std::path::PathBuf>) {}
 
-    /// fmi2SetRealInputDerivatives, the arguments checked ([`crate::checks::check_input_derivatives`]); called
-    /// only for a model with [`Model::MAX_INPUT_DERIVATIVE_ORDER`] > 0 (the generic layer refuses
-    /// the call otherwise), which implements it.
-    fn set_real_input_derivatives(
-        &mut self,
-        _vars: &[Var<Self::Vr>],
-        _order: &[i32],
-        _value: &[f64],
-    ) -> Result<(), FmuError> {
-        Err(no_input_derivatives())
-    }
-
     /// fmi2GetRealOutputDerivatives, fmi3GetOutputDerivatives; by default none are provided.
     fn get_real_output_derivatives(
         &mut self,
-        _log: &Logger,
+        _cx: &Context<Self::Inputs>,
         _vars: &[Var<Self::Vr>],
         _order: &[i32],
         _value: &mut [f64],
@@ -199,7 +213,7 @@ pub trait Model: Sized + 'static {
     /// an input. By default none are provided.
     fn output_sensitivity(
         &mut self,
-        _log: &Logger,
+        _cx: &Context<Self::Inputs>,
         _known: Var<Self::Vr>,
         _unknowns: &[Var<Self::Vr>],
         _column: &mut [f64],
@@ -213,9 +227,15 @@ pub trait Model: Sized + 'static {
     /// Appends the model's complete state (pointer-free) to `out`.
     fn save(&self, out: &mut Vec<u8>);
 
-    /// Parses and checks bytes written by [`Model::save`] and, if `apply`, resumes from them.
-    /// Nothing changes when they are rejected.
-    fn load(&mut self, log: &Logger, bytes: &[u8], apply: bool) -> Result<(), FmuError>;
+    /// Parses and checks bytes written by [`Model::save`] and, if `apply`, resumes from them, in
+    /// the context (experiment, clock, inputs) restored with them. Nothing changes when they are
+    /// rejected.
+    fn load(
+        &mut self,
+        cx: &Context<Self::Inputs>,
+        bytes: &[u8],
+        apply: bool,
+    ) -> Result<(), FmuError>;
 }
 
 /// The refusal of input derivatives by a model that takes none.
@@ -251,6 +271,8 @@ pub struct Instance<M: Model> {
     pub model: M,
     /// The experiment and the communication clock.
     pub clock: Clock,
+    /// The inputs: values as set, and derivatives for the next step (held after it).
+    pub inputs: Polynomial<M::Inputs>,
     /// The variables of the current call, resolved from its value references ([`crate::checks::resolve`]).
     pub variables: Vec<Var<M::Vr>>,
     /// The String values GetString returned last: the master may read them until the next
@@ -326,6 +348,7 @@ impl<M: Model> Instance<M> {
             cause: None,
             model,
             clock: Clock::default(),
+            inputs: Self::start_inputs(),
             variables: Vec::new(),
             strings: Vec::new(),
             resources,
@@ -358,17 +381,162 @@ impl<M: Model> Instance<M> {
         self.model = M::new();
         self.model.set_resource_directory(self.resources.clone());
         self.clock = Clock::default();
+        self.inputs = Self::start_inputs();
         self.structural = Self::structural_starts(self.fmi3);
     }
 
-    /// The serialized state: magic, version, state machine, clock, the model's bytes, and an
-    /// FNV-1a 64 checksum of everything before it (a corrupted byte is rejected, never restored).
+    /// The model's input variables, in table order.
+    fn input_variables() -> impl Iterator<Item = Var<M::Vr>> {
+        M::VARIABLES
+            .iter()
+            .filter(|v| v.causality == Causality::Input)
+    }
+
+    /// The inputs at their start values, held.
+    fn start_inputs() -> Polynomial<M::Inputs> {
+        let mut value = <M::Inputs as InputValues>::ZERO;
+        for (k, v) in Self::input_variables().enumerate().take(M::Inputs::LEN) {
+            if let Kind::Real { start: Some(s), .. } = v.kind {
+                *value.value_mut(k) = s;
+            }
+        }
+        Polynomial::held(value)
+    }
+
+    /// The index of the input variable `v` among the model's inputs.
+    fn input_index(v: Var<M::Vr>) -> Result<usize, FmuError> {
+        let k = M::VARIABLES[..v.vr.index() as usize]
+            .iter()
+            .filter(|w| w.causality == Causality::Input)
+            .count();
+        if v.causality == Causality::Input && k < M::Inputs::LEN {
+            Ok(k)
+        } else {
+            Err(FmuError::Invalid(format!("{} is not an input", v.name)))
+        }
+    }
+
+    /// fmi2SetupExperiment, fmi3EnterInitializationMode: the experiment checked and set up, the
+    /// clock at its start.
+    pub fn setup_experiment(
+        &mut self,
+        experiment: (Option<f64>, f64, Option<f64>),
+    ) -> Result<(), FmuError> {
+        self.clock.setup(experiment)
+    }
+
+    /// ExitInitializationMode (the model's checks).
+    pub fn exit_initialization(&mut self) -> Result<(), FmuError> {
+        self.model.exit_initialization(&context!(self))
+    }
+
+    /// The step `step` checked against the clock ([`Clock::step`]); where it ends (completed,
+    /// returned early or discarded, not paused) the inputs are held from there at the values their
+    /// polynomials reached (input derivatives hold for one step).
+    pub fn step(&mut self, step: Step) -> Result<StepOutcome, FmuError> {
+        let cx = context!(self);
+        let model = &mut self.model;
+        let outcome = self.clock.step(step, |s| model.do_step(&cx, s));
+        if let Ok(StepOutcome::Completed { time } | StepOutcome::ReturnedEarly { time, .. })
+        | Err(FmuError::Discard { time, .. }) = &outcome
+        {
+            self.inputs.hold_at(on_clock_grid(*time));
+        }
+        outcome
+    }
+
+    /// Ends a paused step at the pause ([`Model::return_at_pause`]): the time reached, or None
+    /// (it stays paused).
+    pub fn return_at_pause(&mut self) -> Result<Option<f64>, FmuError> {
+        let reached = self.model.return_at_pause(&context!(self))?;
+        self.clock.return_at_pause(reached);
+        if let Some(time) = reached {
+            self.inputs.hold_at(on_clock_grid(time));
+        }
+        Ok(reached)
+    }
+
+    /// GetReal, GetFloat64 of the variables of the call ([`Instance::variables`]).
+    pub fn get_real(&mut self, value: &mut [f64]) -> Result<(), FmuError> {
+        self.model.get_real(&context!(self), &self.variables, value)
+    }
+
+    /// SetReal, SetFloat64 of the variables of the call, checked ([`crate::checks::check_set_real`]):
+    /// the inputs kept here, the others set in the model.
+    pub fn set_real(&mut self, value: &[f64]) -> Result<(), FmuError> {
+        for (&v, &x) in self.variables.iter().zip(value) {
+            if v.causality == Causality::Input {
+                *self.inputs.value.value_mut(Self::input_index(v)?) = x;
+            } else {
+                self.model.set_real(self.state, &[v], &[x])?;
+            }
+        }
+        Ok(())
+    }
+
+    /// SetRealInputDerivatives, SetInputDerivatives of the variables of the call, checked
+    /// ([`crate::checks::check_input_derivatives`]): the `order`-th derivatives at the current
+    /// communication point, for the next step.
+    pub fn set_input_derivatives(&mut self, order: &[i32], value: &[f64]) -> Result<(), FmuError> {
+        for ((&v, &order), &x) in self.variables.iter().zip(order).zip(value) {
+            let k = Self::input_index(v)?;
+            let derivative = usize::try_from(order - 1)
+                .ok()
+                .and_then(|i| self.inputs.derivatives.get_mut(i))
+                .ok_or_else(|| FmuError::Invalid(format!("order {order}")))?;
+            *derivative.value_mut(k) = x;
+            self.inputs.start = self.clock.time;
+        }
+        Ok(())
+    }
+
+    /// GetInteger (FMI 3: GetInt32, GetInt64) of the variables of the call.
+    pub fn get_integer(&mut self, value: &mut [i32]) -> Result<(), FmuError> {
+        self.model
+            .get_integer(&context!(self), &self.variables, value)
+    }
+
+    /// GetBoolean of the variables of the call.
+    pub fn get_boolean(&mut self, value: &mut [i32]) -> Result<(), FmuError> {
+        self.model
+            .get_boolean(&context!(self), &self.variables, value)
+    }
+
+    /// FMI 3: GetFloat64 of the array `array` ([`Model::get_array`]).
+    pub fn get_array(&mut self, array: usize, value: &mut [f64]) -> Result<(), FmuError> {
+        self.model.get_array(&context!(self), array, value)
+    }
+
+    /// The output derivatives of the variables of the call ([`Model::get_real_output_derivatives`]).
+    pub fn get_output_derivatives(
+        &mut self,
+        order: &[i32],
+        value: &mut [f64],
+    ) -> Result<(), FmuError> {
+        self.model
+            .get_real_output_derivatives(&context!(self), &self.variables, order, value)
+    }
+
+    /// ∂y/∂u of the outputs of the call with respect to `known` ([`Model::output_sensitivity`]).
+    pub fn output_sensitivity(
+        &mut self,
+        known: Var<M::Vr>,
+        column: &mut [f64],
+    ) -> Result<(), FmuError> {
+        self.model
+            .output_sensitivity(&context!(self), known, &self.variables, column)
+    }
+
+    /// The serialized state: magic, version, state machine, clock, inputs, the model's bytes,
+    /// and an FNV-1a 64 checksum of everything before it (a corrupted byte is rejected, never
+    /// restored).
     pub fn serialize(&self) -> Vec<u8> {
         let mut out = Vec::with_capacity(1024);
         out.extend_from_slice(&M::STATE_MAGIC);
         out.extend_from_slice(&M::STATE_VERSION.to_le_bytes());
         out.push(STATES.iter().position(|s| *s == self.state).unwrap_or(0) as u8);
         self.clock.write(&mut ByteWriter(&mut out));
+        self.inputs.write(&mut ByteWriter(&mut out));
         self.model.save(&mut out);
         let checksum = state_checksum(&out);
         out.extend_from_slice(&checksum.to_le_bytes());
@@ -404,11 +572,25 @@ impl<M: Model> Instance<M> {
             .ok_or_else(|| bad("invalid state".into()))?;
         let mut reader = ByteReader::new(&body[9..]);
         let clock = Clock::read(&mut reader)?;
+        let inputs = Polynomial::<M::Inputs>::read(&mut reader)?;
+        if !inputs.is_finite() {
+            return Err(bad("a non-finite input or input derivative".into()));
+        }
+        for (k, v) in Self::input_variables().enumerate().take(M::Inputs::LEN) {
+            crate::checks::check_real(v, inputs.value.value(k)).map_err(|e| bad(e.to_string()))?;
+        }
         let model = &body[body.len() - reader.remaining()..];
-        self.model.load(&self.logger, model, apply)?;
+        let cx = Context {
+            log: &self.logger,
+            inputs: &inputs,
+            experiment: clock.experiment,
+            time: clock.time,
+        };
+        self.model.load(&cx, model, apply)?;
         if apply {
             self.state = state;
             self.clock = clock;
+            self.inputs = inputs;
         }
         Ok(())
     }

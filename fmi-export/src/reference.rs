@@ -12,9 +12,9 @@ use std::fmt::Write as _;
 
 use crate::checks::{check_set_integer, check_set_real, check_set_string, lookup};
 use crate::error::FmuError;
-use crate::experiment::{Clock, Step};
+use crate::experiment::Step;
 use crate::logger::Logger;
-use crate::model::{Model, Var};
+use crate::model::{Instance, Model, Var};
 use crate::state::State;
 use crate::table::{Causality, Kind, ValueReference};
 
@@ -43,22 +43,17 @@ pub struct Results {
     pub rows: Vec<(f64, Vec<f64>)>,
 }
 
-/// One model driven by variable names, the way a master drives an FMU.
+/// One model driven by variable names, the way a master drives an FMU: an [`Instance`] with a
+/// silent logger, called as the exported functions call it.
 pub struct Slave<M: Model> {
-    model: M,
-    log: Logger,
-    state: State,
-    clock: Clock,
+    instance: Instance<M>,
 }
 
 impl<M: Model> Slave<M> {
     /// A new instance with every start value.
     pub fn new() -> Self {
         Self {
-            model: M::new(),
-            log: Logger::silent(M::LOG_CATEGORIES),
-            state: State::Instantiated,
-            clock: Clock::default(),
+            instance: Instance::new(Logger::silent(M::LOG_CATEGORIES), None),
         }
     }
 
@@ -78,6 +73,17 @@ impl<M: Model> Slave<M> {
             .ok_or_else(|| FmuError::Invalid(format!("no variable {name}")))
     }
 
+    /// Makes the variables of `names` those of the next call, resolved as type `base`.
+    fn call_on(&mut self, names: &[&str], base: &str) -> Result<(), FmuError> {
+        let inst = &mut self.instance;
+        inst.variables.clear();
+        for name in names {
+            let v = lookup(M::VARIABLES, Self::variable(name)?.vr.index(), base)?;
+            inst.variables.push(v);
+        }
+        Ok(())
+    }
+
     /// fmi2SetupExperiment.
     pub fn setup(
         &mut self,
@@ -85,23 +91,23 @@ impl<M: Model> Slave<M> {
         start: f64,
         stop: Option<f64>,
     ) -> Result<(), FmuError> {
-        let (model, log) = (&mut self.model, &self.log);
-        self.clock
-            .setup((tolerance, start, stop), |e| model.setup_experiment(log, e))
+        self.instance.setup_experiment((tolerance, start, stop))
     }
 
     /// fmi2EnterInitializationMode.
     pub fn enter_initialization(&mut self) {
-        self.state = State::InitializationMode;
+        self.instance.state = State::InitializationMode;
     }
 
     /// Sets a Real variable, or an Integer one to `value` (a whole number).
     pub fn set(&mut self, name: &str, value: f64) -> Result<(), FmuError> {
         let v = Self::variable(name)?;
+        let state = self.instance.state;
         match v.kind {
             Kind::Real { .. } => {
-                check_set_real(self.state, &[v], &[value])?;
-                self.model.set_real(self.state, &[v], &[value])
+                self.call_on(&[name], "Real")?;
+                check_set_real(state, &[v], &[value])?;
+                self.instance.set_real(&[value])
             }
             _ => {
                 let n = value as i32;
@@ -110,8 +116,8 @@ impl<M: Model> Slave<M> {
                         "{name} = {value} is not a whole number"
                     )));
                 }
-                check_set_integer::<M>(self.state, &[v], &[n])?;
-                self.model.set_integer(self.state, &[v], &[n])
+                check_set_integer::<M>(state, &[v], &[n])?;
+                self.instance.model.set_integer(state, &[v], &[n])
             }
         }
     }
@@ -119,18 +125,16 @@ impl<M: Model> Slave<M> {
     /// Sets a String variable.
     pub fn set_string(&mut self, name: &str, value: &str) -> Result<(), FmuError> {
         let v = Self::variable(name)?;
-        check_set_string(self.state, &[v])?;
-        self.model.set_string(self.state, &[v], &[value])
+        let state = self.instance.state;
+        check_set_string(state, &[v])?;
+        self.instance.model.set_string(state, &[v], &[value])
     }
 
     /// The values of the Real variables `names`.
     pub fn get(&mut self, names: &[&str]) -> Result<Vec<f64>, FmuError> {
-        let vars = names
-            .iter()
-            .map(|n| lookup(M::VARIABLES, Self::variable(n)?.vr.index(), "Real"))
-            .collect::<Result<Vec<_>, _>>()?;
-        let mut values = vec![0.0; vars.len()];
-        self.model.get_real(&self.log, &vars, &mut values)?;
+        self.call_on(names, "Real")?;
+        let mut values = vec![0.0; names.len()];
+        self.instance.get_real(&mut values)?;
         Ok(values)
     }
 
@@ -153,25 +157,19 @@ impl<M: Model> Slave<M> {
             .iter()
             .filter(|v| v.causality == Causality::Output)
         {
-            let vr = v.vr.index();
             values.push(match v.kind {
-                Kind::Real { .. } => {
-                    let mut x = [0.0];
-                    let var = lookup(M::VARIABLES, vr, "Real")?;
-                    self.model.get_real(&self.log, &[var], &mut x)?;
-                    x[0]
-                }
+                Kind::Real { .. } => self.get(&[v.name])?[0],
                 Kind::Integer { .. } | Kind::Enumeration { .. } => {
                     let mut n = [0];
-                    let var = lookup(M::VARIABLES, vr, "Integer")?;
-                    self.model.get_integer(&self.log, &[var], &mut n)?;
+                    self.call_on(&[v.name], "Integer")?;
+                    self.instance.get_integer(&mut n)?;
                     f64::from(n[0])
                 }
                 Kind::String { .. } => continue,
                 Kind::Boolean => {
                     let mut b = [0];
-                    let var = lookup(M::VARIABLES, vr, "Boolean")?;
-                    self.model.get_boolean(&self.log, &[var], &mut b)?;
+                    self.call_on(&[v.name], "Boolean")?;
+                    self.instance.get_boolean(&mut b)?;
                     f64::from(b[0])
                 }
             });
@@ -189,7 +187,7 @@ impl<M: Model> Slave<M> {
             .map(|(k, a)| {
                 let n = fmi3.structural_parameters[a.dimension].start;
                 let mut values = vec![0.0; usize::try_from(n).unwrap_or(0)];
-                self.model.get_array(&self.log, k, &mut values)?;
+                self.instance.get_array(k, &mut values)?;
                 Ok((a.name, values))
             })
             .collect()
@@ -197,8 +195,8 @@ impl<M: Model> Slave<M> {
 
     /// fmi2ExitInitializationMode.
     pub fn exit_initialization(&mut self) -> Result<(), FmuError> {
-        self.model.exit_initialization(&self.log)?;
-        self.state = State::StepComplete;
+        self.instance.exit_initialization()?;
+        self.instance.state = State::StepComplete;
         Ok(())
     }
 
@@ -210,8 +208,7 @@ impl<M: Model> Slave<M> {
             early_return: false,
             pause: false,
         };
-        let (model, log) = (&mut self.model, &self.log);
-        self.clock.step(step, |s| model.do_step(log, s)).map(|_| ())
+        self.instance.step(step).map(|_| ())
     }
 }
 

@@ -15,9 +15,9 @@ use fmi_export::clock::{CLOCK_RESOLUTION, on_clock_grid};
 use fmi_export::codec::{ByteReader, ByteWriter};
 use fmi_export::fmi3::description::TIME_VALUE_REFERENCE;
 use fmi_export::fmi3::interface::{ArrayVariable, Fmi3Interface, StructuralParameter};
-use fmi_export::model::Var;
+use fmi_export::model::{Context, Var};
 use fmi_export::table::{Causality, ValueReference, Variable};
-use fmi_export::{Experiment, FmuError, Logger, Model, State, Step, StepOutcome};
+use fmi_export::{FmuError, Model, State, Step, StepOutcome};
 use fmi_sys::fmi2::{fmi2CallbackFunctions, fmi2Type_fmi2CoSimulation};
 use fmi_sys::fmi3::{fmi3InstanceEnvironment, fmi3Status, fmi3String};
 
@@ -83,14 +83,15 @@ const FMI3: Fmi3Interface = Fmi3Interface {
     terminals: &[],
 };
 
+/// What the instance holds for the lag: its input u among them.
+type Cx<'a> = Context<'a, [f64; 1]>;
+
 /// The lag's state; y(0) = 0.
 #[derive(Debug, Default)]
 struct Lag {
     tau: f64,
     threshold: f64,
-    u: f64,
     y: f64,
-    time: f64,
     crossings: i32,
     /// Whether the output has crossed the threshold (it then stays above: ẏ > 0 for u = 1).
     above: bool,
@@ -103,6 +104,7 @@ impl Model for Lag {
     const STATE_MAGIC: [u8; 4] = *b"TLAG";
     const STATE_VERSION: u32 = 1;
     type Vr = Vr;
+    type Inputs = [f64; 1];
     const VARIABLES: &'static [Variable<Vr>] = VARIABLES;
     const FMI3: Fmi3Interface = FMI3;
 
@@ -110,27 +112,22 @@ impl Model for Lag {
         Self {
             tau: 0.2,
             threshold: 0.5,
-            u: 1.0,
             ..Self::default()
         }
     }
 
-    fn setup_experiment(&mut self, _log: &Logger, e: &Experiment) -> Result<(), FmuError> {
-        self.time = on_clock_grid(e.start);
-        Ok(())
-    }
-
-    fn exit_initialization(&mut self, _log: &Logger) -> Result<(), FmuError> {
+    fn exit_initialization(&mut self, _cx: &Cx) -> Result<(), FmuError> {
         Ok(())
     }
 
     /// y(t + h) = u + (y − u) e^(−h/τ); the upward crossing of the threshold at
     /// t + τ ln((y − u)/(threshold − u)), on the clock grid rounded down.
-    fn do_step(&mut self, _log: &Logger, step: &Step) -> Result<StepOutcome, FmuError> {
+    fn do_step(&mut self, cx: &Cx, step: &Step) -> Result<StepOutcome, FmuError> {
         let (t, h, early_return) = (step.t, step.h, step.early_return);
         let end = on_clock_grid(t + h);
-        let below = !self.above && self.threshold < self.u;
-        let crossing = t + self.tau * ((self.y - self.u) / (self.threshold - self.u)).ln();
+        let [u] = cx.inputs.value;
+        let below = !self.above && self.threshold < u;
+        let crossing = t + self.tau * ((self.y - u) / (self.threshold - u)).ln();
         let at = (crossing / CLOCK_RESOLUTION).floor() * CLOCK_RESOLUTION;
         let (reach, outcome) = if below && early_return && t < at && at < end {
             let event = "threshold crossed";
@@ -142,22 +139,16 @@ impl Model for Lag {
             self.crossings += 1;
             self.above = true;
         }
-        self.y = self.u + (self.y - self.u) * (-(reach - t) / self.tau).exp();
-        self.time = reach;
+        self.y = u + (self.y - u) * (-(reach - t) / self.tau).exp();
         Ok(outcome)
     }
 
-    fn get_real(
-        &mut self,
-        _log: &Logger,
-        vars: &[Var<Vr>],
-        value: &mut [f64],
-    ) -> Result<(), FmuError> {
+    fn get_real(&mut self, cx: &Cx, vars: &[Var<Vr>], value: &mut [f64]) -> Result<(), FmuError> {
         for (v, x) in vars.iter().zip(value) {
             *x = match v.vr {
                 Vr::Tau => self.tau,
                 Vr::Threshold => self.threshold,
-                Vr::U => self.u,
+                Vr::U => cx.inputs.value[0],
                 Vr::Y => self.y,
                 Vr::Crossings => unreachable!("an Integer"),
             };
@@ -165,12 +156,7 @@ impl Model for Lag {
         Ok(())
     }
 
-    fn get_array(
-        &mut self,
-        _log: &Logger,
-        array: usize,
-        value: &mut [f64],
-    ) -> Result<(), FmuError> {
+    fn get_array(&mut self, _cx: &Cx, array: usize, value: &mut [f64]) -> Result<(), FmuError> {
         assert_eq!(array, 0);
         for (k, x) in (1..).zip(value) {
             *x = self.y.powi(k);
@@ -183,7 +169,6 @@ impl Model for Lag {
             match v.vr {
                 Vr::Tau => self.tau = x,
                 Vr::Threshold => self.threshold = x,
-                Vr::U => self.u = x,
                 _ => unreachable!("checked settable"),
             }
         }
@@ -192,7 +177,7 @@ impl Model for Lag {
 
     fn get_integer(
         &mut self,
-        _log: &Logger,
+        _cx: &Cx,
         vars: &[Var<Vr>],
         value: &mut [i32],
     ) -> Result<(), FmuError> {
@@ -202,19 +187,19 @@ impl Model for Lag {
 
     fn save(&self, out: &mut Vec<u8>) {
         let mut w = ByteWriter(out);
-        for x in [self.tau, self.threshold, self.u, self.y, self.time] {
+        for x in [self.tau, self.threshold, self.y] {
             w.f64(x);
         }
         w.u64(self.crossings as u64);
         w.flag(self.above);
     }
 
-    fn load(&mut self, _log: &Logger, bytes: &[u8], apply: bool) -> Result<(), FmuError> {
+    fn load(&mut self, _cx: &Cx, bytes: &[u8], apply: bool) -> Result<(), FmuError> {
         let mut r = ByteReader::new(bytes);
-        let x = [r.f64()?, r.f64()?, r.f64()?, r.f64()?, r.f64()?];
+        let x = [r.f64()?, r.f64()?, r.f64()?];
         let (crossings, above) = (r.u64()? as i32, r.flag()?);
         if apply {
-            [self.tau, self.threshold, self.u, self.y, self.time] = x;
+            [self.tau, self.threshold, self.y] = x;
             (self.crossings, self.above) = (crossings, above);
         }
         Ok(())

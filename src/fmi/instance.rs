@@ -4,9 +4,9 @@
 //! `fmi-export`. Values are read and written by an exhaustive `match` on [`Vr`].
 
 use fmi_export::interface::Fmi3Interface;
-use fmi_export::model::Var;
+use fmi_export::model::{Context, Var};
 use fmi_export::table::Enumeration;
-use fmi_export::{Experiment, FmuError, Logger, Model, State, Step, StepOutcome};
+use fmi_export::{FmuError, Model, State, Step, StepOutcome};
 
 use super::outputs::{count_output, real_output, section_array, sensitivity};
 use super::snapshot::FmuSnapshot;
@@ -15,7 +15,7 @@ use crate::params::{
     Parameters, integer_parameter, real_parameter, set_integer_parameter, set_real_parameter,
     set_string_parameter, string_parameter,
 };
-use crate::simulation::{Input, InputSignal, Inputs, Outputs, Simulation};
+use crate::simulation::{Input, Inputs, Outputs, Simulation};
 use crate::variables::{Causality, ENUMERATIONS, Kind, LOG_CATEGORIES, VARIABLES, Variable, Vr};
 
 impl From<ModelError> for FmuError {
@@ -24,53 +24,44 @@ impl From<ModelError> for FmuError {
     }
 }
 
-/// The inputs at their start values, held.
-fn start_inputs() -> InputSignal {
-    let start = |vr: Vr| match VARIABLES[vr as usize].kind {
-        Kind::Real { start: Some(s), .. } => s,
-        _ => 0.0,
-    };
-    InputSignal::held(Inputs {
-        drive_speed: start(Vr::DriveSpeed),
-        drive_torque: start(Vr::DriveTorque),
-        slider_force: start(Vr::SliderForce),
-    })
-}
-
-/// The model input of an input variable.
-fn input(vr: Vr) -> Option<Input> {
-    match vr {
-        Vr::DriveSpeed => Some(Input::DriveSpeed),
-        Vr::DriveTorque => Some(Input::DriveTorque),
-        Vr::SliderForce => Some(Input::SliderForce),
-        _ => None,
+/// The model input of the input variable `v` (the generic layer has checked that it is one).
+fn input_of(v: Var<Vr>) -> Result<Input, FmuError> {
+    match v.vr {
+        Vr::DriveSpeed => Ok(Input::DriveSpeed),
+        Vr::DriveTorque => Ok(Input::DriveTorque),
+        Vr::SliderForce => Ok(Input::SliderForce),
+        _ => Err(FmuError::Invalid(format!("{} is not an input", v.name))),
     }
 }
 
-/// The model input of the input variable `v` (the generic layer has checked that it is one).
-fn input_of(v: Var<Vr>) -> Result<Input, FmuError> {
-    input(v.vr).ok_or_else(|| FmuError::Invalid(format!("{} is not an input", v.name)))
-}
+/// What the instance holds for the slider-crank: the master's logger, the inputs, the experiment
+/// and the clock's time.
+pub(super) type Cx<'a> = Context<'a, Inputs>;
 
-/// The slider-crank behind the FMI functions: parameters, inputs, the simulation and the
-/// experiment it is built for (the clock is the generic layer's).
+/// The slider-crank behind the FMI functions: parameters and the simulation (the inputs, the
+/// experiment and the clock are the generic layer's, [`Context`]).
 #[derive(Debug)]
 pub struct SliderCrankFmu {
     pub(crate) parameters: Parameters,
-    /// Input values, and the derivatives set for the next step (fmi2SetRealInputDerivatives).
-    pub(crate) inputs: InputSignal,
     pub(crate) simulation: Option<Simulation>,
-    /// The experiment's start time, where the simulation is built \[s\].
-    pub(crate) start_time: f64,
-    /// The master's tolerance, if it gave one.
-    pub(crate) tolerance: Option<f64>,
 }
 
 impl SliderCrankFmu {
-    /// The simulation, built from the current parameters if needed.
-    pub(super) fn simulation(&mut self, log: &Logger) -> Result<&mut Simulation, FmuError> {
+    /// The simulation, built from the current parameters at the experiment's start if needed;
+    /// until it runs, its start follows the inputs (it is built again in equilibrium with inputs
+    /// that changed).
+    pub(super) fn simulation(&mut self, cx: &Cx) -> Result<&mut Simulation, FmuError> {
+        let inputs = cx.inputs.value;
+        if self
+            .simulation
+            .as_ref()
+            .is_some_and(|sim| sim.start_differs(&inputs))
+        {
+            self.simulation = None;
+        }
         if self.simulation.is_none() {
-            let parameters = model_parameters(&self.parameters, self.tolerance);
+            let log = cx.log;
+            let parameters = model_parameters(&self.parameters, cx.experiment.tolerance);
             if parameters.relative_tolerance != self.parameters.relative_tolerance {
                 log.event(&format!(
                     "solver.relativeTolerance = {} tightened to {} by the tolerance of \
@@ -79,13 +70,8 @@ impl SliderCrankFmu {
                     Num(parameters.relative_tolerance)
                 ));
             }
-            let mut sim = Simulation::with_inputs(parameters, self.inputs.value)?;
-            sim.set_time(self.start_time);
-            for i in [Input::DriveSpeed, Input::DriveTorque, Input::SliderForce] {
-                for (k, d) in self.inputs.derivatives.iter().enumerate() {
-                    sim.set_input_derivative(i, k + 1, d.get(i))?;
-                }
-            }
+            let mut sim = Simulation::with_inputs(parameters, inputs)?;
+            sim.set_time(cx.experiment.start);
             log.event(&format!(
                 "model built: {:?} rod, {:?} joint, {:?} drive, {} states",
                 self.parameters.rod_formulation,
@@ -103,8 +89,9 @@ impl SliderCrankFmu {
             .ok_or_else(|| FmuError::Invalid("no simulation".into()))
     }
 
-    fn outputs(&mut self, log: &Logger) -> Result<Outputs, FmuError> {
-        Ok(self.simulation(log)?.outputs()?)
+    /// The outputs at the current time, with the inputs as the master set them.
+    fn outputs(&mut self, cx: &Cx) -> Result<Outputs, FmuError> {
+        Ok(self.simulation(cx)?.outputs_seeing(cx.inputs)?)
     }
 }
 
@@ -112,8 +99,9 @@ impl Model for SliderCrankFmu {
     const GUID: &'static str = super::model_description::GUID;
     const LOG_CATEGORIES: &'static [(&'static str, &'static str)] = LOG_CATEGORIES;
     const STATE_MAGIC: [u8; 4] = *b"FSCS";
-    const STATE_VERSION: u32 = 17;
+    const STATE_VERSION: u32 = 18;
     type Vr = Vr;
+    type Inputs = Inputs;
     const VARIABLES: &'static [Variable] = VARIABLES;
     const ENUMERATIONS: &'static [Enumeration] = ENUMERATIONS;
     const MAX_INPUT_DERIVATIVE_ORDER: u32 =
@@ -127,52 +115,40 @@ impl Model for SliderCrankFmu {
     fn new() -> Self {
         Self {
             parameters: Parameters::default(),
-            inputs: start_inputs(),
             simulation: None,
-            start_time: 0.0,
-            tolerance: None,
         }
     }
 
     /// ∂y/∂u at the current state ([`super::outputs::sensitivity`]).
     fn output_sensitivity(
         &mut self,
-        log: &Logger,
+        cx: &Cx,
         known: Var<Vr>,
         unknowns: &[Var<Vr>],
         column: &mut [f64],
     ) -> Result<(), FmuError> {
         let i = input_of(known)?;
-        let u = self.inputs.value.get(i);
-        sensitivity(self.simulation(log)?, i, u, unknowns, column)
+        sensitivity(self.simulation(cx)?, cx.inputs, i, unknowns, column)
     }
 
     fn save(&self, out: &mut Vec<u8>) {
         self.snapshot().write(out);
     }
 
-    fn load(&mut self, _log: &Logger, bytes: &[u8], apply: bool) -> Result<(), FmuError> {
+    fn load(&mut self, cx: &Cx, bytes: &[u8], apply: bool) -> Result<(), FmuError> {
         let mut snapshot = FmuSnapshot::read(bytes)?;
         // A load table is looked up where this instance's resources are.
         snapshot.parameters.resource_directory = self.parameters.resource_directory.clone();
         snapshot.validate()?;
         if apply {
-            self.restore(&snapshot)?;
+            self.restore(cx, &snapshot)?;
         }
         Ok(())
     }
 
-    /// The experiment: its start time is where the simulation is built, and a defined tolerance
-    /// takes part in the integrator's relative tolerance (see [`model_parameters`]).
-    fn setup_experiment(&mut self, _log: &Logger, e: &Experiment) -> Result<(), FmuError> {
-        self.start_time = e.start;
-        self.tolerance = e.tolerance;
-        Ok(())
-    }
-
     /// fmi2ExitInitializationMode: builds the model (all parameter checks happen here).
-    fn exit_initialization(&mut self, log: &Logger) -> Result<(), FmuError> {
-        self.simulation(log)?;
+    fn exit_initialization(&mut self, cx: &Cx) -> Result<(), FmuError> {
+        self.simulation(cx)?;
         Ok(())
     }
 
@@ -180,30 +156,25 @@ impl Model for SliderCrankFmu {
     /// at the end of the first internal step in which a joint comes into contact
     /// ([`crate::Simulation::advance_to_onset`]); with `pause`, it pauses after every internal
     /// step before its end ([`crate::Simulation::advance_pausing`]).
-    fn do_step(&mut self, log: &Logger, step: &Step) -> Result<StepOutcome, FmuError> {
-        self.step(log, step)
+    fn do_step(&mut self, cx: &Cx, step: &Step) -> Result<StepOutcome, FmuError> {
+        self.step(cx, step)
     }
 
-    fn return_at_pause(&mut self, log: &Logger) -> Result<Option<f64>, FmuError> {
-        self.end_at_pause(log)
+    fn return_at_pause(&mut self, cx: &Cx) -> Result<Option<f64>, FmuError> {
+        self.end_at_pause(cx)
     }
 
-    fn get_array(&mut self, log: &Logger, array: usize, value: &mut [f64]) -> Result<(), FmuError> {
+    fn get_array(&mut self, cx: &Cx, array: usize, value: &mut [f64]) -> Result<(), FmuError> {
         let rod_length = self.parameters.rod.length;
-        section_array(array, value, rod_length, || self.simulation(log))
+        section_array(array, value, rod_length, cx.inputs, || self.simulation(cx))
     }
 
     /// fmi2GetReal.
-    fn get_real(
-        &mut self,
-        log: &Logger,
-        vars: &[Var<Vr>],
-        values: &mut [f64],
-    ) -> Result<(), FmuError> {
+    fn get_real(&mut self, cx: &Cx, vars: &[Var<Vr>], values: &mut [f64]) -> Result<(), FmuError> {
         let mut outputs: Option<Outputs> = None;
         for (&v, value) in vars.iter().zip(values.iter_mut()) {
             if v.causality == Causality::Output && outputs.is_none() {
-                outputs = Some(self.outputs(log)?);
+                outputs = Some(self.outputs(cx)?);
             }
             let o = outputs.unwrap_or_default();
             if let Some(x) = real_parameter(&self.parameters, v.vr) {
@@ -217,16 +188,16 @@ impl Model for SliderCrankFmu {
             let p = &self.parameters;
             *value = match v.vr {
                 Vr::JointContactStiffness => Simulation::contact_stiffness(p),
-                Vr::DriveSpeed => self.inputs.value.drive_speed,
-                Vr::DriveTorque => self.inputs.value.drive_torque,
-                Vr::SliderForce => self.inputs.value.slider_force,
+                Vr::DriveSpeed => cx.inputs.value.drive_speed,
+                Vr::DriveTorque => cx.inputs.value.drive_torque,
+                Vr::SliderForce => cx.inputs.value.slider_force,
                 _ => unreachable_type(v)?,
             };
         }
         Ok(())
     }
 
-    /// fmi2SetReal.
+    /// fmi2SetReal of the Real parameters (the inputs are the generic layer's).
     fn set_real(
         &mut self,
         _state: State,
@@ -234,25 +205,11 @@ impl Model for SliderCrankFmu {
         values: &[f64],
     ) -> Result<(), FmuError> {
         for (&v, &value) in vars.iter().zip(values) {
-            if set_real_parameter(&mut self.parameters, v.vr, value) {
-                // A parameter changed: the model is rebuilt when next needed.
-                self.simulation = None;
-                continue;
+            if !set_real_parameter(&mut self.parameters, v.vr, value) {
+                return unreachable_type(v);
             }
-            match input(v.vr) {
-                Some(i) => {
-                    let changed = self.inputs.value.get(i) != value;
-                    *self.inputs.value.get_mut(i) = value;
-                    match &mut self.simulation {
-                        // Before the first step the start follows the inputs: it is rebuilt in
-                        // equilibrium with them (and the crank at the new drive.speed).
-                        Some(sim) if changed && sim.stats().steps == 0 => self.simulation = None,
-                        Some(sim) => sim.set_input(i, value),
-                        None => {}
-                    }
-                }
-                None => unreachable_type(v)?,
-            }
+            // A parameter changed: the model is rebuilt when next needed.
+            self.simulation = None;
         }
         Ok(())
     }
@@ -263,12 +220,12 @@ impl Model for SliderCrankFmu {
     /// crank.angle, slider.position). Other outputs (forces, peaks, counters) have none.
     fn get_real_output_derivatives(
         &mut self,
-        log: &Logger,
+        cx: &Cx,
         vars: &[Var<Vr>],
         orders: &[i32],
         values: &mut [f64],
     ) -> Result<(), FmuError> {
-        let o = self.outputs(log)?;
+        let o = self.outputs(cx)?;
         for ((&v, &order), value) in vars.iter().zip(orders).zip(values.iter_mut()) {
             *value = match (v.vr, order) {
                 (Vr::CrankAngle, 1) => o.crank_speed,
@@ -292,33 +249,10 @@ impl Model for SliderCrankFmu {
         Ok(())
     }
 
-    /// fmi2SetRealInputDerivatives: the `order`-th derivative (1 or 2) of inputs at the current
-    /// communication point, for the next fmi2DoStep only (see [`Simulation::set_input_derivative`]).
-    fn set_real_input_derivatives(
-        &mut self,
-        vars: &[Var<Vr>],
-        orders: &[i32],
-        values: &[f64],
-    ) -> Result<(), FmuError> {
-        for ((&v, &order), &value) in vars.iter().zip(orders).zip(values) {
-            let i = input_of(v)?;
-            let d = self
-                .inputs
-                .derivatives
-                .get_mut(order as usize - 1)
-                .ok_or_else(|| FmuError::Invalid(format!("order {order}")))?;
-            *d.get_mut(i) = value;
-            if let Some(sim) = &mut self.simulation {
-                sim.set_input_derivative(i, order as usize, value)?;
-            }
-        }
-        Ok(())
-    }
-
     /// fmi2GetInteger (Integer variables, the switches among them).
     fn get_integer(
         &mut self,
-        log: &Logger,
+        cx: &Cx,
         vars: &[Var<Vr>],
         values: &mut [i32],
     ) -> Result<(), FmuError> {
@@ -329,14 +263,14 @@ impl Model for SliderCrankFmu {
             }
             *value = match v.vr {
                 Vr::SolverSteps => {
-                    let steps = self.simulation(log)?.stats().steps;
+                    let steps = self.simulation(cx)?.stats().steps;
                     i32::try_from(steps).unwrap_or(i32::MAX)
                 }
                 Vr::SolverEvaluations => {
-                    let evaluations = self.simulation(log)?.stats().evaluations;
+                    let evaluations = self.simulation(cx)?.stats().evaluations;
                     i32::try_from(evaluations).unwrap_or(i32::MAX)
                 }
-                vr => match count_output(&self.outputs(log)?, vr) {
+                vr => match count_output(&self.outputs(cx)?, vr) {
                     Some(count) => i32::try_from(count).unwrap_or(i32::MAX),
                     None => unreachable_type(v)?,
                 },
@@ -397,15 +331,15 @@ impl Model for SliderCrankFmu {
     /// fmi2GetBoolean.
     fn get_boolean(
         &mut self,
-        log: &Logger,
+        cx: &Cx,
         vars: &[Var<Vr>],
         values: &mut [i32],
     ) -> Result<(), FmuError> {
         for (&v, value) in vars.iter().zip(values.iter_mut()) {
             *value = match v.vr {
-                Vr::JointInContact => i32::from(self.outputs(log)?.in_contact),
-                Vr::CrankPinInContact => i32::from(self.outputs(log)?.crank_pin_in_contact),
-                Vr::MainBearingInContact => i32::from(self.outputs(log)?.main_bearing_in_contact),
+                Vr::JointInContact => i32::from(self.outputs(cx)?.in_contact),
+                Vr::CrankPinInContact => i32::from(self.outputs(cx)?.crank_pin_in_contact),
+                Vr::MainBearingInContact => i32::from(self.outputs(cx)?.main_bearing_in_contact),
                 _ => unreachable_type(v)?,
             };
         }
@@ -440,13 +374,21 @@ fn unreachable_type<T>(v: &Variable) -> Result<T, FmuError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use fmi_export::signal::InputValues;
 
     /// Every start value in the XML is bit-identical to the library default, so a master that
     /// applies all start values runs exactly the model of `Parameters::default()`.
     #[test]
     fn table_start_values_equal_the_library_defaults() {
         let p = Parameters::default();
-        let inputs = start_inputs().value;
+        let start = |vr: Vr| match VARIABLES[vr as usize].kind {
+            Kind::Real { start: Some(s), .. } => s,
+            _ => 0.0,
+        };
+        let inputs = Inputs {
+            drive_speed: start(Vr::DriveSpeed),
+            ..Inputs::default()
+        };
         assert_eq!(
             inputs.drive_speed.to_bits(),
             p.start_speed(inputs.drive_speed).to_bits()
@@ -477,6 +419,20 @@ mod tests {
                 }
                 _ => panic!("{} has no start value", v.name),
             }
+        }
+    }
+
+    /// The generic layer holds the inputs by their index among the input variables: that order
+    /// is the model's (`Input::ALL`, the fields of `Inputs`).
+    #[test]
+    fn the_input_variables_are_the_models_inputs_in_order() {
+        let inputs: Vec<&Variable> = VARIABLES
+            .iter()
+            .filter(|v| v.causality == Causality::Input)
+            .collect();
+        assert_eq!(inputs.len(), <Inputs as InputValues>::LEN);
+        for (k, v) in inputs.into_iter().enumerate() {
+            assert_eq!(input_of(v).unwrap(), Input::ALL[k], "{}", v.name);
         }
     }
 

@@ -3,28 +3,28 @@
 
 use fmi_export::FmuError;
 
-use super::instance::{SliderCrankFmu, model_parameters};
+use super::instance::{Cx, SliderCrankFmu, model_parameters};
 use super::snapshot::FmuSnapshot;
 use crate::simulation::Simulation;
 
 impl SliderCrankFmu {
-    /// Captures the complete state (parameters, inputs, the experiment it was built for,
-    /// simulation).
+    /// Captures the complete state (parameters, simulation; the inputs and the experiment are
+    /// the generic layer's).
     pub(super) fn snapshot(&self) -> FmuSnapshot {
         FmuSnapshot {
             parameters: self.parameters.clone(),
-            inputs: self.inputs,
-            start_time: self.start_time,
-            tolerance: self.tolerance,
             simulation: self.simulation.as_ref().map(Simulation::snapshot),
         }
     }
 
-    /// Restores a captured state; the model is rebuilt only if its parameters differ.
-    pub(super) fn restore(&mut self, s: &FmuSnapshot) -> Result<(), FmuError> {
-        let same_model = self.parameters == s.parameters
-            && self.tolerance == s.tolerance
-            && self.simulation.is_some();
+    /// Restores a captured state, with `cx` the context (experiment, inputs) restored with it;
+    /// the model is rebuilt only if the parameters it is built with differ.
+    pub(super) fn restore(&mut self, cx: &Cx, s: &FmuSnapshot) -> Result<(), FmuError> {
+        let parameters = model_parameters(&s.parameters, cx.experiment.tolerance);
+        let same_model = self
+            .simulation
+            .as_ref()
+            .is_some_and(|sim| *sim.parameters() == parameters);
         let mut simulation = if same_model {
             self.simulation.take()
         } else {
@@ -32,10 +32,7 @@ impl SliderCrankFmu {
         };
         if let Some(snap) = &s.simulation {
             if simulation.is_none() {
-                simulation = Some(Simulation::new(model_parameters(
-                    &s.parameters,
-                    s.tolerance,
-                ))?);
+                simulation = Some(Simulation::new(parameters)?);
             }
             if let Some(sim) = &mut simulation {
                 sim.restore(snap)?;
@@ -45,9 +42,6 @@ impl SliderCrankFmu {
         }
         self.simulation = simulation;
         self.parameters = s.parameters.clone();
-        self.inputs = s.inputs;
-        self.start_time = s.start_time;
-        self.tolerance = s.tolerance;
         Ok(())
     }
 }

@@ -4,16 +4,19 @@
 use fmi_export::FmuError;
 use fmi_export::model::Var;
 
-use crate::simulation::{BearingOutputs, Input, Outputs, SectionResult, Simulation, section_place};
+use crate::simulation::{
+    BearingOutputs, Input, InputSignal, Outputs, SectionResult, Simulation, section_place,
+};
 use crate::variables::{SectionArray, Vr};
 
 /// The rod.section array `array` (its index in [`SectionArray::ALL`]) at `value.len()` sections
 /// along a rod of reference length `rod_length` \[m\]; the results other than the positions
-/// come from the current state of `simulation`.
+/// come from the current state of `simulation` with the master's `inputs`.
 pub fn section_array<'a>(
     array: usize,
     value: &mut [f64],
     rod_length: f64,
+    inputs: &InputSignal,
     simulation: impl FnOnce() -> Result<&'a mut Simulation, FmuError>,
 ) -> Result<(), FmuError> {
     let result = match SectionArray::ALL.get(array) {
@@ -29,7 +32,7 @@ pub fn section_array<'a>(
         Some(SectionArray::BendingMoment) => SectionResult::BendingMoment,
         None => return Err(FmuError::Invalid(format!("no array {array}"))),
     };
-    Ok(simulation()?.rod_sections(result, value)?)
+    Ok(simulation()?.rod_sections(inputs, result, value)?)
 }
 
 /// Relative size of the input steps of [`sensitivity`].
@@ -53,9 +56,9 @@ const PEAKS: &[(Vr, Vr)] = &[
     (Vr::RodStressPeak, Vr::RodStress),
 ];
 
-/// ∂y/∂u: the derivatives of the Real outputs `unknowns` with respect to `input` (now at `u`) at
-/// the current state, by central differences of the outputs with the input moved by
-/// ±h = ±10⁻³ max(1, |u|) and the state held. At a given state the accelerations, torques,
+/// ∂y/∂u: the derivatives of the Real outputs `unknowns` with respect to `input` (now at `u`
+/// among the master's `inputs`) at the current state, by central differences of the outputs
+/// with the input moved by ±h = ±10⁻³ max(1, |u|) and the state held. At a given state the accelerations, torques,
 /// constraint forces and their components are affine in the inputs (the equations of motion and
 /// the drive constraint are linear in the applied torque, the slider force and the speed
 /// drive's velocity error), so their differences are exact up to round-off; a force magnitude
@@ -65,15 +68,15 @@ const PEAKS: &[(Vr, Vr)] = &[
 /// smallest value) likewise, with the value's derivative itself.
 pub fn sensitivity(
     simulation: &mut Simulation,
+    inputs: &InputSignal,
     input: Input,
-    u: f64,
     unknowns: &[Var<Vr>],
     column: &mut [f64],
 ) -> Result<(), FmuError> {
-    let h = INPUT_STEP * u.abs().max(1.0);
-    let now = simulation.outputs()?;
-    let plus = simulation.outputs_with_input_moved(input, h)?;
-    let minus = simulation.outputs_with_input_moved(input, -h)?;
+    let h = INPUT_STEP * inputs.value.get(input).abs().max(1.0);
+    let now = simulation.outputs_seeing(inputs)?;
+    let plus = simulation.outputs_with_input_moved(inputs, input, h)?;
+    let minus = simulation.outputs_with_input_moved(inputs, input, -h)?;
     let derivative = |vr: Vr| -> Option<f64> {
         Some((real_output(&plus, vr)? - real_output(&minus, vr)?) / (2.0 * h))
     };

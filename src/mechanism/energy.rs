@@ -16,6 +16,9 @@ pub struct Energies {
     pub strain: f64,
     /// Elastic energy stored in the contacts \[J\].
     pub contact: f64,
+    /// Elastic energy the contacts stored at the start (journals settled against their
+    /// bearings start with some) \[J\].
+    pub contact_at_start: f64,
     /// Gravitational potential energy (zero at y = 0) \[J\].
     pub gravity: f64,
     /// Work done by the drive \[J\].
@@ -38,21 +41,24 @@ pub struct JointEnergy {
     pub work: f64,
     /// Elastic energy stored in its contact \[J\].
     pub contact: f64,
+    /// Elastic energy stored in its contact at the start \[J\].
+    pub contact_at_start: f64,
 }
 
 impl JointEnergy {
-    /// Energy the joint has dissipated: −W − stored contact energy (≥ 0 up to integration
-    /// error).
+    /// Energy the joint has dissipated since the start: −W − (V_c − V_c(0)), the work of its
+    /// forces less the change of its contact's stored energy (≥ 0 up to integration error; 0 at
+    /// the start, also for a journal settled against its bearing).
     pub fn dissipated(&self) -> f64 {
-        -self.work - self.contact
+        -self.work - (self.contact - self.contact_at_start)
     }
 }
 
 impl Energies {
-    /// Energy lost in the joints: −W_joint − stored contact energy (≥ 0 up to integration
-    /// error), the sum of the joints' [`JointEnergy::dissipated`].
+    /// Energy lost in the joints since the start: −W_joint − (V_c − V_c(0)) (≥ 0 up to
+    /// integration error), the sum of the joints' [`JointEnergy::dissipated`].
     pub fn dissipated(&self) -> f64 {
-        -self.joint_work - self.contact
+        -self.joint_work - (self.contact - self.contact_at_start)
     }
 
     /// Balance T + U + V_g + D_material − W_drive − W_external − W_joint, constant in exact
@@ -126,6 +132,7 @@ impl SliderCrank {
             Some(i) => JointEnergy {
                 work: y[i],
                 contact: self.joint_force(role, y).0.potential,
+                contact_at_start: self.contact_at_start[role as usize],
             },
             None => JointEnergy::default(),
         });
@@ -133,6 +140,7 @@ impl SliderCrank {
             kinetic: self.kinetic_energy(y),
             strain: self.rod.strain_energy(p),
             contact: self.contact_potential(y),
+            contact_at_start: self.contact_at_start.iter().sum(),
             gravity: self.gravity_potential(y) - rod_gravity,
             drive_work: y[l.drive_work()],
             joint_work: y[l.joint_works()].iter().sum(),

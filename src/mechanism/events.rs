@@ -1,10 +1,12 @@
 //! Contact events: the discrete contact state, the onset control of the integrator's steps
 //! (no contact starts deep inside the wall; the impact velocity is latched at the located onset),
-//! and the mechanism as the integrators' first-order system.
+//! and the mechanism as the integrators' first-order system ([`Driven`]: the mechanism with its
+//! inputs as functions of time).
 
+use super::inputs::InputSignal;
 use super::slider_crank::SliderCrank;
 use crate::error::ModelError;
-use crate::integrator::OdeSystem;
+use crate::integrator::{MechanicalSystem, OdeSystem};
 use crate::joint::{ContactState, JointKinematics, JointRole, MIN_IMPACT_VELOCITY};
 
 /// Largest penetration accepted at the first step of a contact event \[m\]: 1e-3 of the Hertz
@@ -44,11 +46,47 @@ impl SliderCrank {
     }
 }
 
-impl OdeSystem for SliderCrank {
-    /// The derivative at (t, y), or the singular configuration that has none (a locked
-    /// mechanism: the integrator retries the step shorter and names it if it cannot pass).
+/// The mechanism driven by its inputs as functions of time, as the integrators step it: a
+/// short-lived view that borrows the mechanism and the inputs and sets the inputs at each
+/// evaluation's time.
+pub struct Driven<'a> {
+    /// The mechanism.
+    pub mechanism: &'a mut SliderCrank,
+    /// Its inputs.
+    pub signal: &'a InputSignal,
+}
+
+impl OdeSystem for Driven<'_> {
+    /// The derivative at (t, y) with the inputs at t ([`SliderCrank::set_inputs`]).
     fn rhs(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), ModelError> {
-        self.set_time(t);
+        self.mechanism.set_inputs(self.signal, t);
+        self.mechanism.derivative(y, dy)
+    }
+
+    fn check_step(&mut self, t0: f64, y0: &[f64], t1: f64, y1: &[f64]) -> Option<f64> {
+        self.mechanism.check_step(t0, y0, t1, y1)
+    }
+
+    fn accept_step(&mut self, t0: f64, y0: &[f64], t1: f64, y1: &[f64]) -> Option<f64> {
+        self.mechanism.accept_step(t0, y0, t1, y1)
+    }
+}
+
+impl MechanicalSystem for Driven<'_> {
+    fn n_coordinates(&self) -> usize {
+        self.mechanism.n_coordinates()
+    }
+
+    fn held_errors(&self, y: &[f64], err: &[f64], out: &mut [f64]) {
+        MechanicalSystem::held_errors(&*self.mechanism, y, err, out);
+    }
+}
+
+impl OdeSystem for SliderCrank {
+    /// The derivative at (t, y) with the inputs as last set ([`SliderCrank::set_inputs`]; held
+    /// whatever t), or the singular configuration that has none (a locked mechanism: the
+    /// integrator retries the step shorter and names it if it cannot pass).
+    fn rhs(&mut self, _t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), ModelError> {
         self.derivative(y, dy)
     }
 

@@ -84,14 +84,12 @@ impl InputValues for Inputs {
 /// (the polynomial input of FMI co-simulation; held inputs have zero derivatives).
 pub type InputSignal = Polynomial<Inputs>;
 
-/// What loads the mechanism: the inputs as functions of time, their values at the current time,
-/// the load on the slider tied to the crank angle (`slider.forceTable`, added to the input), and
-/// the speed drive's acceleration at the current time.
+/// What loads the mechanism: the inputs at the time of the evaluation, the load on the slider
+/// tied to the crank angle (`slider.forceTable`, added to the input), and the speed drive's
+/// acceleration at that time.
 #[derive(Clone, Debug)]
 pub(super) struct Loading {
-    /// The inputs as functions of time.
-    pub signal: InputSignal,
-    /// The inputs at the time of the last `SliderCrank::set_time`.
+    /// The inputs at the time of the last `SliderCrank::set_inputs`.
     pub inputs: Inputs,
     /// The crank-angle load table, if any.
     pub table: Option<crate::load_table::LoadTable>,

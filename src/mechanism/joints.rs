@@ -203,6 +203,30 @@ impl SliderCrank {
         })
     }
 
+    /// The elastic energy each joint's contact stores in state `y`, by [`JointRole`] (0 for an
+    /// ideal joint) \[J\].
+    pub fn contact_energies(&self, y: &[f64]) -> [f64; 3] {
+        JointRole::ALL.map(|role| {
+            if self.has_clearance(role) {
+                self.joint_force(role, y).0.potential
+            } else {
+                0.0
+            }
+        })
+    }
+
+    /// The elastic energy each joint's contact stored at the start, by [`JointRole`] \[J\]
+    /// ([`super::JointEnergy::contact_at_start`]).
+    pub fn contact_at_start(&self) -> [f64; 3] {
+        self.contact_at_start
+    }
+
+    /// Sets the energies of [`SliderCrank::contact_at_start`]: those of the start state (a
+    /// simulation's start, or a restored one's).
+    pub fn set_contact_at_start(&mut self, energies: [f64; 3]) {
+        self.contact_at_start = energies;
+    }
+
     /// Elastic energy stored in the contacts of every clearance joint in state `y` \[J\].
     pub fn contact_potential(&self, y: &[f64]) -> f64 {
         JointRole::ALL

@@ -63,6 +63,8 @@ pub struct SliderCrank {
     /// The inputs and the load table, and their values at the current time.
     pub(super) loading: Loading,
     pub(super) contacts: Contacts,
+    /// The elastic energy each joint's contact stored at the start, by [`JointRole`] \[J\].
+    pub(super) contact_at_start: [f64; 3],
     pub(super) force: Vec<f64>,
     pub(super) evaluation: Evaluation,
 }
@@ -174,12 +176,12 @@ impl SliderCrank {
             },
             w,
             loading: Loading {
-                signal: InputSignal::held(inputs),
                 inputs,
                 table: load,
                 drive_acceleration: 0.0,
             },
             contacts: Contacts::default(),
+            contact_at_start: [0.0; 3],
             force: vec![0.0; n_rod],
             evaluation: Evaluation::default(),
             rod,
@@ -229,26 +231,14 @@ impl SliderCrank {
         result
     }
 
-    /// The inputs as functions of time.
-    pub fn input_signal(&self) -> &InputSignal {
-        &self.loading.signal
+    /// The inputs of `signal` at `t` (their values, and the prescribed speed's rate): the
+    /// evaluations from now on use them ([`super::Driven`] sets them at each stage's time).
+    pub fn set_inputs(&mut self, signal: &InputSignal, t: f64) {
+        self.loading.inputs = signal.at(t);
+        self.loading.drive_acceleration = signal.rate(t).drive_speed;
     }
 
-    /// Sets the inputs as functions of time; evaluations from now on use them at the current
-    /// time of [`SliderCrank::set_time`] (the integrator's stage time for its evaluations).
-    pub fn set_input_signal(&mut self, signal: InputSignal, t: f64) {
-        self.loading.signal = signal;
-        self.set_time(t);
-    }
-
-    /// The inputs at `t`: evaluations outside the integrator (outputs, peaks) use them.
-    pub fn set_time(&mut self, t: f64) {
-        let (inputs, rates) = (self.loading.signal.at(t), self.loading.signal.rate(t));
-        self.loading.inputs = inputs;
-        self.loading.drive_acceleration = rates.drive_speed;
-    }
-
-    /// The inputs at the time of the last [`SliderCrank::set_time`].
+    /// The inputs of the last [`SliderCrank::set_inputs`] (at the start: those it was built with).
     pub fn inputs(&self) -> Inputs {
         self.loading.inputs
     }

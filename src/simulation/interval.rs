@@ -6,11 +6,12 @@
 
 use fmi_core::clock::{on_clock_grid, on_clock_grid_below};
 
-use super::Simulation;
 use super::failure;
 use super::peaks::Peaks;
 use super::step::{Advance, Interval, Onset};
+use super::{InputSignal, Simulation};
 use crate::error::{ModelError, Num};
+use crate::mechanism::Driven;
 
 /// How the steps through an interval ended.
 enum Progress {
@@ -20,36 +21,61 @@ enum Progress {
 }
 
 impl Simulation {
-    /// Integrates to `t_end` (rounded to the clock grid). On failure the simulation stays at the
-    /// last accepted point ([`Simulation::time`]) and the error says why.
+    /// Integrates to `t_end` (rounded to the clock grid) with the inputs held as they are (those
+    /// of the current step sequence, at the values they reach now). On failure the simulation
+    /// stays at the last accepted point ([`Simulation::time`]) and the error says why.
     pub fn advance_to(&mut self, t_end: f64) -> Result<(), ModelError> {
-        self.advance(t_end, false, false).map(|_| ())
+        let held = self.held_inputs();
+        self.advance_with(&held, t_end)
     }
 
-    /// Integrates towards `t_end` as [`Simulation::advance_to`] does, but stops early at the end
+    /// Integrates to `t_end` as [`Simulation::advance_to`] does, with `inputs` (their values
+    /// and derivatives at the current time: the polynomials of [`InputSignal`] over the
+    /// interval). A change of an input that acts in the drive mode restarts the step sequence
+    /// here; a change of the prescribed speed is applied as an impulsive velocity adjustment
+    /// through the constraints. An input that does not act (the torque with the speed drive, the
+    /// speed with the torque drive) restarts nothing.
+    pub fn advance_with(&mut self, inputs: &InputSignal, t_end: f64) -> Result<(), ModelError> {
+        self.advance(inputs, t_end, false, false).map(|_| ())
+    }
+
+    /// Integrates towards `t_end` as [`Simulation::advance_with`] does, but stops early at the end
     /// of the first internal step in which a joint comes into contact (where the contact law
     /// switches on), if that is before `t_end`: returns the joint and the time reached, the step's
     /// end rounded down to the clock grid (at most one clock tick earlier; the step's extremes and
     /// onset belong to the interval that ends there). The step sequence is the one
-    /// [`Simulation::advance_to`] takes: continuing from the time reached loses nothing.
-    pub fn advance_to_onset(&mut self, t_end: f64) -> Result<Option<Onset>, ModelError> {
-        match self.advance(t_end, true, false)? {
+    /// [`Simulation::advance_with`] takes: continuing from the time reached loses nothing.
+    pub fn advance_to_onset(
+        &mut self,
+        inputs: &InputSignal,
+        t_end: f64,
+    ) -> Result<Option<Onset>, ModelError> {
+        match self.advance(inputs, t_end, true, false)? {
             Advance::Onset(onset) => Ok(Some(onset)),
             _ => Ok(None),
         }
     }
 
-    /// [`Simulation::advance_to`] (or [`Simulation::advance_to_onset`] if `stop_at_onset`) that
+    /// [`Simulation::advance_with`] (or [`Simulation::advance_to_onset`] if `stop_at_onset`) that
     /// pauses after every accepted step ending before `t_end` (by a clock tick at least), with the state and the time at
     /// the step's end the current ones ([`Simulation::outputs`] reads them). Called again with the
-    /// same `t_end` it resumes the paused interval; its steps, peaks and results are those of an
-    /// interval that never paused. [`Simulation::end_at_pause`] ends it at the pause instead.
+    /// same `t_end` it resumes the paused interval (with the inputs it began with); its steps,
+    /// peaks and results are those of an interval that never paused. [`Simulation::end_at_pause`]
+    /// ends it at the pause instead.
     pub fn advance_pausing(
         &mut self,
+        inputs: &InputSignal,
         t_end: f64,
         stop_at_onset: bool,
     ) -> Result<Advance, ModelError> {
-        self.advance(t_end, stop_at_onset, true)
+        self.advance(inputs, t_end, stop_at_onset, true)
+    }
+
+    /// The inputs of the current step sequence held from now on at the values they reach now.
+    pub(super) fn held_inputs(&self) -> InputSignal {
+        let mut held = self.signal;
+        held.hold_at(self.time);
+        held
     }
 
     /// Whether an interval is paused ([`Simulation::advance_pausing`]).
@@ -76,6 +102,7 @@ impl Simulation {
     /// The interval to `t_end`: the paused one if it ends there, else a new one from now.
     fn advance(
         &mut self,
+        inputs: &InputSignal,
         t_end: f64,
         stop_at_onset: bool,
         pause: bool,
@@ -83,7 +110,7 @@ impl Simulation {
         let t_end = on_clock_grid(t_end);
         let (interval, resumed) = match self.paused.take() {
             Some(paused) if paused.t_end == t_end => (paused, true),
-            _ => (self.begin_interval(t_end)?, false),
+            _ => (self.begin_interval(inputs, t_end)?, false),
         };
         match self.step_through(interval, resumed, stop_at_onset, pause)? {
             Progress::Paused => {
@@ -103,9 +130,8 @@ impl Simulation {
         }
     }
 
-    /// Starts the interval from now to `t_end`: the inputs set for it applied, the interval's
-    /// peaks cleared.
-    fn begin_interval(&mut self, t_end: f64) -> Result<Interval, ModelError> {
+    /// Starts the interval from now to `t_end`: `inputs` applied, the interval's peaks cleared.
+    fn begin_interval(&mut self, inputs: &InputSignal, t_end: f64) -> Result<Interval, ModelError> {
         if !(t_end.is_finite() && t_end >= self.time) {
             return Err(ModelError::Numerical(format!(
                 "cannot advance from t = {} s to t = {} s",
@@ -114,7 +140,7 @@ impl Simulation {
             )));
         }
         let t_start = self.time;
-        let limit = self.apply_next_inputs(t_start, t_end)?;
+        let limit = self.apply_inputs(inputs, t_start, t_end)?;
         self.peaks.interval = Peaks::default();
         Ok(Interval {
             t_start,
@@ -155,8 +181,12 @@ impl Simulation {
             self.start.time = self.end.time;
             self.start.y.copy_from_slice(&self.end.y);
             self.contact_start = self.mechanism.contact_state();
+            let mut driven = Driven {
+                mechanism: &mut self.mechanism,
+                signal: &self.signal,
+            };
             match self.integrator.step(
-                &mut self.mechanism,
+                &mut driven,
                 &mut self.end.time,
                 &mut self.end.y,
                 limit,
@@ -196,19 +226,18 @@ impl Simulation {
     }
 
     /// Ends the interval at `t_end`: the state there (the dense output of the last step when it
-    /// ends beyond), the inputs held from there.
+    /// ends beyond).
     fn finish_interval(&mut self, t_end: f64) -> Result<(), ModelError> {
         self.time = t_end;
-        self.hold_inputs();
-        self.inputs_set = false;
         if t_end == self.end.time {
             self.state.copy_from_slice(&self.end.y);
         } else {
             let h = self.end.time - self.start.time;
+            let signal = &self.signal;
             self.mechanism
                 .with_contact_state(self.contact_start, |mechanism| {
                     self.integrator.state_within(
-                        mechanism,
+                        &mut Driven { mechanism, signal },
                         self.start.time,
                         h,
                         &self.start.y,
@@ -224,18 +253,10 @@ impl Simulation {
         Ok(())
     }
 
-    /// After an interval the inputs are held at the values their polynomials reached (the
-    /// derivatives of [`Simulation::set_input_derivative`] hold for one interval).
-    fn hold_inputs(&mut self) {
-        self.next.hold_at(self.time);
-    }
-
     /// Ends a failed interval at the last accepted step (where the simulation stays usable) and
     /// passes the error on.
     fn stop_at_step_end(&mut self, error: ModelError) -> ModelError {
         self.time = self.end.time;
-        self.hold_inputs();
-        self.inputs_set = false;
         self.state.copy_from_slice(&self.end.y);
         error
     }
@@ -254,11 +275,12 @@ mod tests {
     fn pausing_after_every_step_changes_nothing() {
         let mut plain = Simulation::new(Parameters::default()).unwrap();
         let mut paused = plain.clone();
+        let inputs = *plain.inputs();
         let mut pauses = 0;
         for k in 1..=6 {
             let (t_start, t_end) = (f64::from(k - 1) * 5e-4, f64::from(k) * 5e-4);
             plain.advance_to(t_end).unwrap();
-            while let Advance::Paused(t) = paused.advance_pausing(t_end, false).unwrap() {
+            while let Advance::Paused(t) = paused.advance_pausing(&inputs, t_end, false).unwrap() {
                 assert!(t_start < t && t < t_end, "{t}");
                 assert!(paused.is_paused());
                 assert_eq!(paused.time(), t);
@@ -279,7 +301,8 @@ mod tests {
     #[test]
     fn ending_at_a_pause_is_an_early_return_on_the_clock_grid() {
         let mut sim = Simulation::new(Parameters::default()).unwrap();
-        let Advance::Paused(t) = sim.advance_pausing(1e-3, false).unwrap() else {
+        let inputs = *sim.inputs();
+        let Advance::Paused(t) = sim.advance_pausing(&inputs, 1e-3, false).unwrap() else {
             panic!("no pause");
         };
         let reached = sim.end_at_pause().unwrap().unwrap();

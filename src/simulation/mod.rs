@@ -38,7 +38,10 @@ pub use fmi_core::clock::{CLOCK_RESOLUTION, on_clock_grid};
 /// ends at or past t and reads the state at t from the dense output of that step, so the steps
 /// (and the results) do not depend on how a master cuts time into communication intervals. The
 /// sequence restarts exactly at the current time only when the model is changed from outside:
-/// an input changes value, or a snapshot is restored.
+/// an input changes ([`Simulation::advance_with`]), or a snapshot is restored.
+///
+/// The caller holds the inputs and passes them to each interval; the simulation keeps only the
+/// ones its current step sequence was integrated with.
 #[derive(Clone, Debug)]
 pub struct Simulation {
     parameters: Parameters,
@@ -54,10 +57,9 @@ pub struct Simulation {
     y_sample: Vec<f64>,
     /// Accelerations of the dense output at a peak-hold sample (velocity rows).
     a_sample: Vec<f64>,
-    /// The inputs for the next interval (from `start`, the last communication point).
-    next: InputSignal,
-    /// Whether an input or input derivative was set since the last communication point.
-    inputs_set: bool,
+    /// The inputs of the current step sequence, as functions of time (at the start: the
+    /// start's, the prescribed speed the crank's initial speed).
+    signal: InputSignal,
     peaks: PeakHold,
     monitor: Monitor,
     /// The interval paused inside ([`Simulation::advance_pausing`]), if any.
@@ -80,8 +82,10 @@ impl Simulation {
 
     /// A simulation at t = 0 whose inputs start at `inputs`: the start is in equilibrium with
     /// them (the rod's quasi-static deformation carries the slider force and the drive torque as
-    /// well as the inertial loads), the crank at [`Parameters::start_speed`]. A start speed that
-    /// differs from the prescribed one jumps to it at the first step, with a warning.
+    /// well as the inertial loads), the crank at [`Parameters::start_speed`]. The simulation runs
+    /// with these inputs, the prescribed speed at the crank's start speed, until others are
+    /// passed ([`Simulation::advance_with`]): a start speed that differs from the one passed jumps
+    /// to it at the first step, with a warning.
     pub fn with_inputs(parameters: Parameters, inputs: Inputs) -> Result<Self, ModelError> {
         let (angle, speed) = (
             parameters.crank_initial_angle,
@@ -112,6 +116,7 @@ impl Simulation {
             }
         }
         .map_err(|e| failure::unequilibrated(&parameters, &e))?;
+        mechanism.set_contact_at_start(mechanism.contact_energies(&state));
         let integrator = Integrator::new(
             parameters.method,
             parameters.spectral_radius,
@@ -120,7 +125,6 @@ impl Simulation {
             parameters.tolerances(),
             mechanism.error_scales(),
         )?;
-        let next = InputSignal::held(inputs);
         let mut monitor = Monitor::default();
         for warning in parameters.warnings() {
             monitor.warn(warning);
@@ -138,8 +142,7 @@ impl Simulation {
             start: StepPoint::at_rest(0.0, &state),
             end: StepPoint::at_rest(0.0, &state),
             state,
-            next,
-            inputs_set: false,
+            signal: InputSignal::held(start),
             peaks,
             monitor,
             paused: None,
@@ -183,42 +186,20 @@ impl Simulation {
         &self.state
     }
 
-    /// The inputs set for the next [`Simulation::advance_to`] (values and derivatives).
-    pub fn next_inputs(&self) -> &InputSignal {
-        &self.next
+    /// The inputs of the current step sequence, as functions of time.
+    pub fn inputs(&self) -> &InputSignal {
+        &self.signal
     }
 
-    /// Sets an input from the current time on. A change of an input that acts in the drive mode
-    /// restarts the step sequence at the next [`Simulation::advance_to`]; a change of the
-    /// prescribed speed is applied there as an impulsive velocity adjustment through the
-    /// constraints. An input that does not act (the torque with the speed drive, the speed with
-    /// the torque drive) is kept but restarts nothing.
-    pub fn set_input(&mut self, input: Input, value: f64) {
-        *self.next.value.get_mut(input) = value;
-        self.inputs_set = true;
-    }
-
-    /// Sets the `order`-th time derivative (1 or 2) of an input at the current time. It holds for
-    /// the next [`Simulation::advance_to`] only, over which the input is the polynomial of
-    /// [`InputSignal`]; afterwards the input is held at the value the polynomial reached.
-    pub fn set_input_derivative(
-        &mut self,
-        input: Input,
-        order: usize,
-        value: f64,
-    ) -> Result<(), ModelError> {
-        match self.next.derivatives.get_mut(order.wrapping_sub(1)) {
-            Some(d) if value.is_finite() => {
-                *d.get_mut(input) = value;
-                self.inputs_set = true;
-                Ok(())
-            }
-            _ => Err(ModelError::Numerical(format!(
-                "derivative of order {order} = {} of {input:?}: the order must be 1 or 2 and the \
-                 value finite",
-                Num(value)
-            ))),
-        }
+    /// Whether no step was attempted yet and the start is not the one `inputs` give (the start
+    /// is in equilibrium with its inputs, [`Simulation::with_inputs`]): a simulation whose start
+    /// follows its inputs until it runs is then built again.
+    pub fn start_differs(&self, inputs: &Inputs) -> bool {
+        let start = Inputs {
+            drive_speed: self.parameters.start_speed(inputs.drive_speed),
+            ..*inputs
+        };
+        self.work() == 0 && self.signal != InputSignal::held(start)
     }
 
     /// Integrator statistics since the start.
@@ -264,19 +245,27 @@ impl Simulation {
         self.integrator.restart();
     }
 
-    /// Makes the inputs set for the interval [`t_start`, `t_end`] the mechanism's: a change that
-    /// acts restarts the step sequence here (the steps then end exactly at `t_end`, the returned
-    /// limit), a changed prescribed speed jumps the velocities through the constraints.
-    fn apply_next_inputs(&mut self, t_start: f64, t_end: f64) -> Result<Option<f64>, ModelError> {
-        self.next.start = t_start;
-        let next = self.next;
+    /// Makes `inputs` (their values and derivatives at `t_start`) those of the interval
+    /// [`t_start`, `t_end`]: a change that acts restarts the step sequence here (the steps then
+    /// end exactly at `t_end`, the returned limit), a changed prescribed speed jumps the
+    /// velocities through the constraints.
+    fn apply_inputs(
+        &mut self,
+        inputs: &InputSignal,
+        t_start: f64,
+        t_end: f64,
+    ) -> Result<Option<f64>, ModelError> {
+        let next = InputSignal {
+            start: t_start,
+            ..*inputs
+        };
         let drive = self.parameters.drive_mode;
         let acts = |input| match input {
             Input::DriveSpeed => drive == DriveMode::Speed,
             Input::DriveTorque => drive == DriveMode::Torque,
             Input::SliderForce => true,
         };
-        let current = *self.mechanism.input_signal();
+        let current = self.signal;
         let speed_jump =
             acts(Input::DriveSpeed) && current.at(t_start).drive_speed != next.value.drive_speed;
         // After a change from outside (an input, typically from a coupled model at every
@@ -285,7 +274,8 @@ impl Simulation {
         let restart = !current.same_from(&next, t_start, |k| acts(Input::ALL[k]));
         let limit = restart.then_some(t_end);
         if restart {
-            self.mechanism.set_input_signal(next, t_start);
+            self.signal = next;
+            self.mechanism.set_inputs(&self.signal, t_start);
             self.restart_here();
         }
         if speed_jump {
@@ -356,11 +346,12 @@ mod tests {
     fn an_input_that_does_not_act_restarts_nothing() {
         let mut held = Simulation::new(Parameters::default()).unwrap();
         let mut changed = held.clone();
+        let mut inputs = *held.inputs();
         for k in 1..=20 {
-            changed.set_input(Input::DriveTorque, f64::from(k));
+            inputs.value.drive_torque = f64::from(k);
             let t = f64::from(k) * 1e-4;
             held.advance_to(t).unwrap();
-            changed.advance_to(t).unwrap();
+            changed.advance_with(&inputs, t).unwrap();
         }
         assert_eq!(held.state(), changed.state());
         assert_eq!(held.stats(), changed.stats());
@@ -368,19 +359,17 @@ mod tests {
 
     /// Input derivatives make the prescribed speed the polynomial ω + ω̇ (t − t₀) + ω̈ (t − t₀)²/2
     /// over one interval: the crank follows it (to the constraint stabilisation's accuracy), and
-    /// afterwards the input is held at the value the polynomial reached.
+    /// held afterwards at the value the polynomial reached, it stays there.
     #[test]
     fn input_derivatives_make_the_input_a_polynomial_for_one_interval() {
         let mut sim = Simulation::new(Parameters::default()).unwrap();
         sim.advance_to(1e-4).unwrap();
-        let speed = sim.next_inputs().value.drive_speed;
+        let mut inputs = *sim.inputs();
+        let speed = inputs.value.drive_speed;
         let (rate, curvature, h) = (2.0e4, -3.0e7, 2e-4);
-        sim.set_input_derivative(Input::DriveSpeed, 1, rate)
-            .unwrap();
-        sim.set_input_derivative(Input::DriveSpeed, 2, curvature)
-            .unwrap();
-        assert!(sim.set_input_derivative(Input::DriveSpeed, 3, 1.0).is_err());
-        sim.advance_to(1e-4 + h).unwrap();
+        inputs.derivatives[0].drive_speed = rate;
+        inputs.derivatives[1].drive_speed = curvature;
+        sim.advance_with(&inputs, 1e-4 + h).unwrap();
         let expected = speed + rate * h + 0.5 * curvature * h * h;
         let speed = sim.mechanism().layout().crank_speed();
         let crank_speed = sim.state()[speed];
@@ -388,11 +377,11 @@ mod tests {
             (crank_speed - expected).abs() < 1e-6 * expected,
             "{crank_speed} vs {expected}"
         );
-        assert_eq!(sim.next_inputs().derivatives, [Inputs::default(); 2]);
         // (to the rounding of the communication points to the clock grid)
-        let reached = sim.next_inputs().value.drive_speed;
+        let reached = sim.inputs().at(sim.time()).drive_speed;
         assert!((reached - expected).abs() < 1e-10 * expected, "{reached}");
         sim.advance_to(1e-4 + 2.0 * h).unwrap();
+        assert!(!sim.inputs().varies());
         let held = sim.state()[speed];
         assert!(
             (held - expected).abs() < 1e-9 * expected,

@@ -10,7 +10,7 @@ use super::sample::{
 use super::step::StepPoint;
 use crate::integrator::dense;
 use crate::joint::JointRole;
-use crate::mechanism::{Contacts, Loads, SliderCrank};
+use crate::mechanism::{Contacts, InputSignal, Loads, SliderCrank};
 
 /// Extremes of the solution over a stretch of time, and the contact onsets in it (−∞ for an
 /// extreme not yet seen: some are signed).
@@ -256,6 +256,8 @@ pub(super) struct AcceptedStep<'a> {
     pub(super) start: &'a StepPoint,
     pub(super) end: &'a StepPoint,
     pub(super) contact_start: Contacts,
+    /// The inputs it was integrated with.
+    pub(super) signal: &'a InputSignal,
 }
 
 /// The largest peak-held magnitudes inside the step just accepted, if the journal touches the
@@ -385,7 +387,7 @@ fn load_within(
     let (start, end) = (step.start, step.end);
     let h = end.time - start.time;
     let theta = k / (PEAK_SAMPLES + 1) as f64;
-    mechanism.set_time(start.time + theta * h);
+    mechanism.set_inputs(step.signal, start.time + theta * h);
     let n_q = mechanism.n_coordinates();
     let (y0, f0, y1, f1) = (&start.y, &start.f, &end.y, &end.f);
     dense::interpolate(n_q, h, y0, f0, y1, f1, theta, sample);

@@ -7,6 +7,7 @@ use super::peaks::{self, AcceptedStep, Peaks};
 use super::sample::{Sample, force_series};
 use crate::error::ModelError;
 use crate::joint::{Joint, JointRole};
+use crate::mechanism::Driven;
 use crate::mechanism::layout::CRANK_ANGLE;
 
 impl Simulation {
@@ -15,7 +16,7 @@ impl Simulation {
         let end = self.mechanism.contact_state();
         let onsets = JointRole::ALL
             .map(|role| u64::from(!self.contact_start[role].in_contact && end[role].in_contact));
-        self.mechanism.set_time(self.end.time);
+        self.mechanism.set_inputs(&self.signal, self.end.time);
         let film = self.mechanism.film_extremes(&self.end.y);
         let at_end = match self.mechanism.clearance_joint_load(&self.end.y) {
             Some((force, acceleration)) => {
@@ -34,6 +35,7 @@ impl Simulation {
             start: &self.start,
             end: &self.end,
             contact_start: self.contact_start,
+            signal: &self.signal,
         };
         let within = peaks::within_step(
             &mut self.mechanism,
@@ -86,11 +88,20 @@ impl Simulation {
             let h = end.time - start.time;
             let s = within.place[i];
             let contact = self.contact_start;
-            let (integrator, y) = (&mut self.integrator, &mut self.y_sample);
+            let (integrator, y, signal) = (&mut self.integrator, &mut self.y_sample, &self.signal);
             let integrated = self.mechanism.with_contact_state(contact, |mechanism| {
-                mechanism.set_time(start.time + s * h);
+                mechanism.set_inputs(signal, start.time + s * h);
+                let mut driven = Driven { mechanism, signal };
                 integrator.state_within(
-                    mechanism, start.time, h, &start.y, &start.f, &end.y, &end.f, s, y,
+                    &mut driven,
+                    start.time,
+                    h,
+                    &start.y,
+                    &start.f,
+                    &end.y,
+                    &end.f,
+                    s,
+                    y,
                 )?;
                 Ok::<f64, ModelError>(mechanism.joint_force(role, y).0.force.norm())
             })?;

@@ -15,9 +15,8 @@ impl Simulation {
             step_end: self.end.clone(),
             integrator: self.integrator.state(),
             contact: self.mechanism.contact_state(),
-            signal: *self.mechanism.input_signal(),
-            next: self.next,
-            inputs_set: self.inputs_set,
+            contact_at_start: self.mechanism.contact_at_start(),
+            signal: self.signal,
             peaks: self.peaks,
             warnings: self.monitor.total,
         }
@@ -47,9 +46,9 @@ impl Simulation {
         self.end.copy_from(&snapshot.step_end);
         self.mechanism.set_contact_state(snapshot.contact);
         self.mechanism
-            .set_input_signal(snapshot.signal, snapshot.time);
-        self.next = snapshot.next;
-        self.inputs_set = snapshot.inputs_set;
+            .set_contact_at_start(snapshot.contact_at_start);
+        self.signal = snapshot.signal;
+        self.mechanism.set_inputs(&self.signal, snapshot.time);
         self.peaks = snapshot.peaks;
         self.monitor.total = snapshot.warnings;
         Ok(())

@@ -23,12 +23,10 @@ pub struct Snapshot {
     pub integrator: IntegratorState,
     /// Contact states at the step end.
     pub contact: Contacts,
+    /// The elastic energy each joint's contact stored at the start \[J\].
+    pub contact_at_start: [f64; 3],
     /// The inputs of the current step sequence.
     pub signal: InputSignal,
-    /// The inputs set for the next interval.
-    pub next: InputSignal,
-    /// Whether an input was set since the last communication point.
-    pub inputs_set: bool,
     /// Peak-hold outputs.
     pub peaks: PeakHold,
     /// Warnings raised since the start.
@@ -41,10 +39,10 @@ impl Snapshot {
         let finite = |v: &[f64]| v.iter().all(|x| x.is_finite());
         self.time.is_finite()
             && finite(&self.state)
+            && finite(&self.contact_at_start)
             && self.step_start.is_finite()
             && self.step_end.is_finite()
             && self.signal.is_finite()
-            && self.next.is_finite()
     }
 
     /// Appends the pointer-free bytes of the snapshot.
@@ -82,9 +80,8 @@ impl Snapshot {
             }
         }
         w.contact(&self.contact);
+        self.contact_at_start.iter().for_each(|&e| w.f64(e));
         self.signal.write(w);
-        self.next.write(w);
-        w.u8(u8::from(self.inputs_set));
         w.peaks(&self.peaks.interval);
         w.peaks(&self.peaks.step_end);
         w.u8(u8::from(self.peaks.pending));
@@ -132,6 +129,7 @@ impl Snapshot {
             }
         };
         let contact = r.contact()?;
+        let contact_at_start = [r.f64()?, r.f64()?, r.f64()?];
         Ok(Self {
             time: sim_time,
             state: state_vector,
@@ -140,9 +138,8 @@ impl Snapshot {
             step_end,
             integrator,
             contact,
+            contact_at_start,
             signal: InputSignal::read(r)?,
-            next: InputSignal::read(r)?,
-            inputs_set: r.flag()?,
             peaks: PeakHold {
                 interval: r.peaks()?,
                 step_end: r.peaks()?,

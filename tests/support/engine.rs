@@ -19,7 +19,7 @@ use std::f64::consts::PI;
 use flexible_slider_crank::ancf::RodProperties;
 use flexible_slider_crank::math;
 use flexible_slider_crank::params::{JointModel, JointParameters, JournalStart};
-use flexible_slider_crank::{Input, ModelError, Outputs, Parameters, Simulation};
+use flexible_slider_crank::{InputSignal, ModelError, Outputs, Parameters, Simulation};
 
 /// Crank speed: 3000 rpm \[rad/s\].
 pub const SPEED: f64 = 3000.0 * 2.0 * PI / 60.0;
@@ -99,16 +99,12 @@ pub fn firing_load(theta: f64) -> f64 {
 /// and second time derivatives at t. Exact for a quadratic; at the cycle's kinks (the valve
 /// events) its error is of the order of the load's change over one step, where derivatives
 /// taken at one point would grow without bound as their difference step shrinks.
-pub fn set_load(sim: &mut Simulation, t: f64) -> Result<(), ModelError> {
+pub fn set_load(inputs: &mut InputSignal, t: f64) {
     let at = |s: f64| firing_load(SPEED * (t + s * STEP));
     let (f0, f1, f2) = (at(0.0), at(0.5), at(1.0));
-    sim.set_input(Input::SliderForce, f0);
-    sim.set_input_derivative(Input::SliderForce, 1, (4.0 * f1 - 3.0 * f0 - f2) / STEP)?;
-    sim.set_input_derivative(
-        Input::SliderForce,
-        2,
-        4.0 * (f0 - 2.0 * f1 + f2) / (STEP * STEP),
-    )
+    inputs.value.slider_force = f0;
+    inputs.derivatives[0].slider_force = (4.0 * f1 - 3.0 * f0 - f2) / STEP;
+    inputs.derivatives[1].slider_force = 4.0 * (f0 - 2.0 * f1 + f2) / (STEP * STEP);
 }
 
 /// Runs `cycles` cycles of the engine with the parameters `p`, calling `each` with the time and
@@ -119,11 +115,12 @@ pub fn run(
     mut each: impl FnMut(f64, &Outputs),
 ) -> Result<Simulation, ModelError> {
     let mut sim = Simulation::new(p)?;
+    let mut inputs = *sim.inputs();
     let n = (cycles as f64 * CYCLE / STEP).round() as usize;
     for k in 0..n {
-        set_load(&mut sim, k as f64 * STEP)?;
+        set_load(&mut inputs, k as f64 * STEP);
         let t = (k + 1) as f64 * STEP;
-        sim.advance_to(t)?;
+        sim.advance_with(&inputs, t)?;
         each(t, &sim.outputs()?);
     }
     Ok(sim)

@@ -14,7 +14,7 @@ use flexible_slider_crank::joint::{
 };
 use flexible_slider_crank::math;
 use flexible_slider_crank::params::{DriveMode, JointRole, RodFormulation};
-use flexible_slider_crank::{Input, Parameters, Simulation};
+use flexible_slider_crank::{Parameters, Simulation};
 use nalgebra::Vector2;
 
 /// A steel journal of radius 10 mm in a bearing of clearance 50 µm, length 20 mm × `lambda`,
@@ -256,8 +256,6 @@ fn a_main_bearing_under_a_steady_load_carries_the_reference_films_load() {
         inputs.drive_speed = speed;
         inputs.slider_force = -100.0;
         let mut sim = Simulation::with_inputs(p, inputs).unwrap();
-        sim.set_input(Input::DriveSpeed, speed);
-        sim.set_input(Input::SliderForce, -100.0);
         sim.advance_to(0.02).unwrap();
         let o = sim.outputs().unwrap();
         let role = JointRole::MainBearing;

@@ -123,11 +123,13 @@ fn energy_balance_converges_with_the_tolerance() {
                 ..p.clone()
             })
             .unwrap();
-            sim.set_input(Input::DriveTorque, torque);
-            sim.set_input(Input::SliderForce, slider_force);
-            let mut rows = vec![sim.outputs().unwrap()];
+            let mut inputs = *sim.inputs();
+            inputs.value.drive_torque = torque;
+            inputs.value.slider_force = slider_force;
+            let mut rows = vec![sim.outputs_seeing(&inputs).unwrap()];
             for i in 1..=60 {
-                sim.advance_to(REVOLUTION * f64::from(i) / 60.0).unwrap();
+                sim.advance_with(&inputs, REVOLUTION * f64::from(i) / 60.0)
+                    .unwrap();
                 rows.push(sim.outputs().unwrap());
             }
             let last = rows[rows.len() - 1];

@@ -3,10 +3,16 @@
 use super::*;
 
 /// Validity warnings over 2 ms in steps of 0.1 ms (until a step fails).
-fn warnings_over_2_ms(mut sim: Simulation) -> Vec<String> {
+fn warnings_over_2_ms(sim: Simulation) -> Vec<String> {
+    let inputs = *sim.inputs();
+    warnings_over_2_ms_with(sim, &inputs)
+}
+
+/// [`warnings_over_2_ms`] with the inputs `inputs`.
+fn warnings_over_2_ms_with(mut sim: Simulation, inputs: &InputSignal) -> Vec<String> {
     let mut warnings = Vec::new();
     for i in 1..=20 {
-        if sim.advance_to(1e-4 * f64::from(i)).is_err() {
+        if sim.advance_with(inputs, 1e-4 * f64::from(i)).is_err() {
             break;
         }
         warnings.extend(sim.take_warnings());
@@ -77,9 +83,10 @@ fn leaving_the_domain_is_reported_once_per_cause() {
         .unwrap(),
     );
     assert!(!at_limit.iter().any(|w| w.contains("crank speed")));
-    let mut sim = Simulation::new(stiff_drive).unwrap();
-    sim.set_input(Input::DriveTorque, 1e6);
-    let warnings = warnings_over_2_ms(sim);
+    let sim = Simulation::new(stiff_drive).unwrap();
+    let mut inputs = *sim.inputs();
+    inputs.value.drive_torque = 1e6;
+    let warnings = warnings_over_2_ms_with(sim, &inputs);
     assert!(
         warnings.iter().any(|w| w.contains("crank speed")),
         "{warnings:?}"

@@ -76,14 +76,15 @@ fn against_a_master_feed(
         ..inputs
     };
     let mut fed = Simulation::with_inputs(p.clone(), first).unwrap();
+    let mut fed_inputs = *fed.inputs();
     let values = |o: &Outputs| [o.joint_force, o.rod_axial_force_slider_pin, o.crank_speed];
     let (mut worst, mut largest) = ([0.0f64; 3], [0.0f64; 3]);
     let mut rows = vec![by_table.outputs().unwrap()];
     let mut angle = fed.outputs().unwrap().crank_angle;
     for i in 1..=n {
         let t = REVOLUTION * i as f64 / n as f64;
-        fed.set_input(Input::SliderForce, load.at(angle));
-        fed.advance_to(t).unwrap();
+        fed_inputs.value.slider_force = load.at(angle);
+        fed.advance_with(&fed_inputs, t).unwrap();
         by_table.advance_to(t).unwrap();
         let (a, b) = (by_table.outputs().unwrap(), fed.outputs().unwrap());
         angle = b.crank_angle;

@@ -27,7 +27,7 @@ use flexible_slider_crank::params::{
     RodFormulation,
 };
 use flexible_slider_crank::reduction::Quadrature;
-use flexible_slider_crank::{Input, Outputs, Parameters, Simulation};
+use flexible_slider_crank::{InputSignal, Outputs, Parameters, Simulation};
 
 pub(crate) const REVOLUTION: f64 = std::f64::consts::TAU / BENCHMARK_SPEED;
 

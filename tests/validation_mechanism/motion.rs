@@ -303,16 +303,16 @@ fn outputs_follow_a_ramped_drive_speed() {
         ..Default::default()
     };
     let mut sim = Simulation::with_inputs(p, inputs).unwrap();
+    let mut inputs = *sim.inputs();
     let h = 1e-4;
     let peak = r * omega1 * omega1 * (1.0 + r / l);
     let mut worst = 0.0f64;
     for k in 0..600 {
         let t = f64::from(k) * h;
         let rate = if t < ramp - 1e-12 { alpha } else { 0.0 };
-        sim.set_input(Input::DriveSpeed, speed(t));
-        sim.set_input_derivative(Input::DriveSpeed, 1, rate)
-            .unwrap();
-        sim.advance_to(t + h).unwrap();
+        inputs.value.drive_speed = speed(t);
+        inputs.derivatives[0].drive_speed = rate;
+        sim.advance_with(&inputs, t + h).unwrap();
         let o = sim.outputs().unwrap();
         let error = (o.slider_acceleration - slider_acceleration(t + h, rate)).abs() / peak;
         worst = worst.max(error);

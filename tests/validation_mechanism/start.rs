@@ -156,7 +156,8 @@ fn a_settled_journal_carries_the_ideal_joints_reaction() {
 
 /// Setting only the prescribed speed starts the crank at it: no jump at the first step (crank
 /// speed at the first communication point within 0.1 % of drive.speed) and no warning; with
-/// crank.initialSpeed set to another value the crank jumps and the run warns.
+/// crank.initialSpeed set to another value the crank jumps at the first step with the inputs
+/// passed, and the run warns.
 #[test]
 fn the_crank_starts_at_the_prescribed_speed() {
     let drive_speed = 157.0;
@@ -181,6 +182,12 @@ fn the_crank_starts_at_the_prescribed_speed() {
         inputs,
     )
     .unwrap();
-    jump.advance_to(1e-4).unwrap();
-    assert_eq!(jump.outputs().unwrap().warnings, 1);
+    jump.advance_with(&InputSignal::held(inputs), 1e-4).unwrap();
+    let o = jump.outputs().unwrap();
+    assert_eq!(o.warnings, 1);
+    assert!(
+        (o.crank_speed - drive_speed).abs() < 1e-3 * drive_speed,
+        "{}",
+        o.crank_speed
+    );
 }

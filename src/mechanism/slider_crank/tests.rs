@@ -131,7 +131,7 @@ fn clearance_joint_load_equals_the_right_hand_side() {
                 slider_force: -150.0,
                 ..m.inputs()
             };
-            m.set_input_signal(InputSignal::held(inputs), 0.0);
+            m.set_inputs(&InputSignal::held(inputs), 0.0);
             let mut y = m.initial_state(0.3, 400.0);
             let l = m.layout();
             // Journal 20 µm into the wall, moving into it.

@@ -109,10 +109,7 @@ pub unsafe fn fmi2SetupExperiment<M: Model>(
             startTime,
             (stopTimeDefined != 0).then_some(stopTime),
         );
-        let (model, log) = (&mut inst.model, &inst.logger);
-        inst.clock
-            .setup(experiment, |e| model.setup_experiment(log, e))
-            .map(ok)
+        inst.setup_experiment(experiment).map(ok)
     })
 }
 
@@ -127,7 +124,7 @@ pub unsafe fn fmi2EnterInitializationMode<M: Model>(c: fmi2Component) -> fmi2Sta
 /// Builds the model from the parameters; outputs are valid afterwards.
 pub unsafe fn fmi2ExitInitializationMode<M: Model>(c: fmi2Component) -> fmi2Status {
     with_instance::<M>(c, Call::ExitInitializationMode, |inst| {
-        inst.model.exit_initialization(&inst.logger)?;
+        inst.exit_initialization()?;
         inst.state = State::StepComplete;
         Ok(Status::Ok)
     })

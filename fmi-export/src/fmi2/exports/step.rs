@@ -24,10 +24,7 @@ pub unsafe fn fmi2DoStep<M: Model>(
             early_return: false,
             pause: false,
         };
-        let (model, log) = (&mut inst.model, &inst.logger);
-        inst.clock
-            .step(step, |s| model.do_step(log, s))
-            .map(|_| Status::Ok)
+        inst.step(step).map(|_| Status::Ok)
     })
 }
 

@@ -24,9 +24,7 @@ pub unsafe fn fmi2GetReal<M: Model>(
         // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
         let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?) };
         resolve::<M>(vr, "Real", &mut inst.variables)?;
-        inst.model
-            .get_real(&inst.logger, &inst.variables, value)
-            .map(ok)
+        inst.get_real(value).map(ok)
     })
 }
 
@@ -41,9 +39,7 @@ pub unsafe fn fmi2GetInteger<M: Model>(
         // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
         let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?) };
         resolve::<M>(vr, "Integer", &mut inst.variables)?;
-        inst.model
-            .get_integer(&inst.logger, &inst.variables, value)
-            .map(ok)
+        inst.get_integer(value).map(ok)
     })
 }
 
@@ -58,9 +54,7 @@ pub unsafe fn fmi2GetBoolean<M: Model>(
         // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
         let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?) };
         resolve::<M>(vr, "Boolean", &mut inst.variables)?;
-        inst.model
-            .get_boolean(&inst.logger, &inst.variables, value)
-            .map(ok)
+        inst.get_boolean(value).map(ok)
     })
 }
 
@@ -90,9 +84,7 @@ pub unsafe fn fmi2SetReal<M: Model>(
         let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice(value, nvr, "value")?) };
         resolve::<M>(vr, "Real", &mut inst.variables)?;
         check_set_real(inst.state, &inst.variables, value)?;
-        inst.model
-            .set_real(inst.state, &inst.variables, value)
-            .map(ok)
+        inst.set_real(value).map(ok)
     })
 }
 
@@ -201,9 +193,7 @@ pub unsafe fn fmi2SetRealInputDerivatives<M: Model>(
             return Err(no_input_derivatives());
         }
         check_input_derivatives::<M>(vr, order, value, &mut inst.variables)?;
-        inst.model
-            .set_real_input_derivatives(&inst.variables, order, value)
-            .map(ok)
+        inst.set_input_derivatives(order, value).map(ok)
     })
 }
 

@@ -171,8 +171,7 @@ pub fn get_float64<M: Model>(
             (i, at) = (i + 1, at + 1);
         } else if let Some((index, _)) = inst.fmi3.array(r) {
             let n = size(inst, r);
-            inst.model
-                .get_array(&inst.logger, index, &mut values[at..at + n])?;
+            inst.get_array(index, &mut values[at..at + n])?;
             (i, at) = (i + 1, at + n);
         } else {
             let run = vr[i..]
@@ -180,8 +179,7 @@ pub fn get_float64<M: Model>(
                 .take_while(|&&r| r != TIME_VALUE_REFERENCE && inst.fmi3.array(r).is_none())
                 .count();
             resolve::<M>(&vr[i..i + run], "Float64", &mut inst.variables)?;
-            inst.model
-                .get_real(&inst.logger, &inst.variables, &mut values[at..at + run])?;
+            inst.get_real(&mut values[at..at + run])?;
             (i, at) = (i + run, at + run);
         }
     }

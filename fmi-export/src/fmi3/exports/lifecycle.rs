@@ -145,9 +145,7 @@ pub unsafe fn fmi3EnterInitializationMode<M: Model>(
             startTime,
             stopTimeDefined.then_some(stopTime),
         );
-        let (model, log) = (&mut inst.model, &inst.logger);
-        inst.clock
-            .setup(experiment, |e| model.setup_experiment(log, e))?;
+        inst.setup_experiment(experiment)?;
         inst.state = State::InitializationMode;
         Ok(Status::Ok)
     })
@@ -157,7 +155,7 @@ pub unsafe fn fmi3EnterInitializationMode<M: Model>(
 /// outputs are valid afterwards.
 pub unsafe fn fmi3ExitInitializationMode<M: Model>(instance: fmi3Instance) -> fmi3Status {
     with_instance::<M>(instance, Call::ExitInitializationMode, |inst| {
-        inst.model.exit_initialization(&inst.logger)?;
+        inst.exit_initialization()?;
         inst.state = if inst.event_mode_used {
             State::EventMode
         } else {

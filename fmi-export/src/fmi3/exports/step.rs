@@ -73,8 +73,7 @@ pub unsafe fn fmi3DoStep<M: Model>(
         status = with_instance::<M>(instance, Call::ResumeStep, |inst| {
             inst.state = State::StepComplete;
             if requested && can_return_early {
-                let reached = inst.model.return_at_pause(&inst.logger)?;
-                inst.clock.return_at_pause(reached);
+                let reached = inst.return_at_pause()?;
                 if let Some(reached) = reached {
                     inst.logger.event(&format!(
                         "fmi3DoStep: returned early at t = {} s: requested by the master",
@@ -147,8 +146,7 @@ unsafe fn step<M: Model>(
         early_return: early_allowed,
         pause: inst.intermediate_update.is_some(),
     };
-    let (model, log) = (&mut inst.model, &inst.logger);
-    let result = inst.clock.step(step, |s| model.do_step(log, s));
+    let result = inst.step(step);
     if let (Ok(StepOutcome::Paused { time }), Some(update)) = (&result, inst.intermediate_update) {
         inst.state = State::IntermediateUpdate;
         let can_return_early =

@@ -12,8 +12,7 @@ use crate::checks::{check_set_boolean, check_set_integer, check_set_real, lookup
 use crate::error::FmuError;
 use crate::ffi::{slice, slice_mut};
 use crate::fmi3::description::TIME_VALUE_REFERENCE;
-use crate::logger::Logger;
-use crate::model::{Instance, Model, Var};
+use crate::model::{Instance, Model};
 use crate::state::Call;
 use crate::status::{Status, ok};
 
@@ -99,9 +98,7 @@ pub unsafe fn fmi3SetFloat64<M: Model>(
         }
         resolve::<M>(vr, "Float64", &mut inst.variables)?;
         check_set_real(inst.state, &inst.variables, values)?;
-        inst.model
-            .set_real(inst.state, &inst.variables, values)
-            .map(ok)
+        inst.set_real(values).map(ok)
     })
 }
 
@@ -117,9 +114,7 @@ pub unsafe fn fmi3GetInt32<M: Model>(
         // SAFETY: nValueReferences and nValues elements (FMI 3.0 §2.3.6).
         let (vr, values) = unsafe { get_args(valueReferences, nValueReferences, values, nValues) }?;
         resolve::<M>(vr, "Int32", &mut inst.variables)?;
-        inst.model
-            .get_integer(&inst.logger, &inst.variables, values)
-            .map(ok)
+        inst.get_integer(values).map(ok)
     })
 }
 
@@ -142,8 +137,9 @@ pub unsafe fn fmi3SetInt32<M: Model>(
     })
 }
 
-/// The model's callback that reads variables as the i32 of FMI 2 (Integer, Boolean).
-type ReadI32<M> = fn(&mut M, &Logger, &[Var<<M as Model>::Vr>], &mut [i32]) -> Result<(), FmuError>;
+/// The instance's call that reads the variables of the call as the i32 of FMI 2 (Integer,
+/// Boolean).
+type ReadI32<M> = fn(&mut Instance<M>, &mut [i32]) -> Result<(), FmuError>;
 
 /// Reads the variables `vr` of type `base` through the model's i32 callback `read`, each value
 /// converted to the FMI 3 type by `convert`.
@@ -156,18 +152,15 @@ fn read_as<M: Model, T>(
     convert: fn(i32) -> T,
 ) -> Result<Status, FmuError> {
     resolve::<M>(vr, base, &mut inst.variables)?;
-    inst.integers.clear();
-    inst.integers.resize(values.len(), 0);
-    read(
-        &mut inst.model,
-        &inst.logger,
-        &inst.variables,
-        &mut inst.integers,
-    )?;
-    for (value, &x) in values.iter_mut().zip(&inst.integers) {
+    let mut integers = std::mem::take(&mut inst.integers);
+    integers.clear();
+    integers.resize(values.len(), 0);
+    let read = read(inst, &mut integers);
+    for (value, &x) in values.iter_mut().zip(&integers) {
         *value = convert(x);
     }
-    Ok(Status::Ok)
+    inst.integers = integers;
+    read.map(|()| Status::Ok)
 }
 
 /// Reads the switches (FMI 3 Enumerations, exchanged as Int64).
@@ -181,7 +174,7 @@ pub unsafe fn fmi3GetInt64<M: Model>(
     with_instance::<M>(instance, Call::GetInt64, |inst| {
         // SAFETY: nValueReferences and nValues elements (FMI 3.0 §2.3.6).
         let (vr, values) = unsafe { get_args(valueReferences, nValueReferences, values, nValues) }?;
-        read_as(inst, vr, values, "Int64", M::get_integer, i64::from)
+        read_as(inst, vr, values, "Int64", Instance::get_integer, i64::from)
     })
 }
 
@@ -222,7 +215,7 @@ pub unsafe fn fmi3GetBoolean<M: Model>(
     with_instance::<M>(instance, Call::GetBoolean, |inst| {
         // SAFETY: nValueReferences and nValues elements (FMI 3.0 §2.3.6).
         let (vr, values) = unsafe { get_args(valueReferences, nValueReferences, values, nValues) }?;
-        read_as(inst, vr, values, "Boolean", M::get_boolean, |flag| {
+        read_as(inst, vr, values, "Boolean", Instance::get_boolean, |flag| {
             flag != 0
         })
     })
