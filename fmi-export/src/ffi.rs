@@ -7,7 +7,8 @@ use std::ffi::{CStr, c_char, c_void};
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
 use super::error::FmuError;
-use super::model::{Instance, Model};
+use super::instance::Instance;
+use super::model::Model;
 use super::state::{Call, State};
 use super::status::Status;
 

@@ -35,6 +35,8 @@ pub mod experiment;
 #[cfg(feature = "runtime")]
 pub mod ffi;
 #[cfg(feature = "runtime")]
+pub mod instance;
+#[cfg(feature = "runtime")]
 pub mod logger;
 #[cfg(feature = "runtime")]
 pub mod model;
@@ -50,9 +52,11 @@ pub use error::FmuError;
 #[cfg(feature = "runtime")]
 pub use experiment::{Experiment, Step, StepOutcome};
 #[cfg(feature = "runtime")]
+pub use instance::Instance;
+#[cfg(feature = "runtime")]
 pub use logger::Logger;
 #[cfg(feature = "runtime")]
-pub use model::{Instance, Model};
+pub use model::{Context, Model};
 #[cfg(feature = "runtime")]
 pub use state::{Call, State, Version};
 #[cfg(feature = "runtime")]

@@ -13,8 +13,9 @@ use std::fmt::Write as _;
 use crate::checks::{check_set_integer, check_set_real, check_set_string, lookup};
 use crate::error::FmuError;
 use crate::experiment::Step;
+use crate::instance::Instance;
 use crate::logger::Logger;
-use crate::model::{Instance, Model, Var};
+use crate::model::{Model, Var};
 use crate::state::State;
 use crate::table::{Causality, Kind, ValueReference};
 

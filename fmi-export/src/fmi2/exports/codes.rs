@@ -11,8 +11,9 @@ use fmi_sys::fmi2::{
 };
 
 use crate::error::FmuError;
+use crate::instance::Instance;
 use crate::logger::LogSink;
-use crate::model::{Instance, Model};
+use crate::model::Model;
 use crate::state::Call;
 use crate::status::Status;
 

@@ -10,7 +10,8 @@ use crate::checks::{lookup, resolve};
 use crate::error::FmuError;
 use crate::ffi::{slice, slice_mut};
 use crate::fmi3::description::TIME_VALUE_REFERENCE;
-use crate::model::{Instance, Model};
+use crate::instance::Instance;
+use crate::model::Model;
 use crate::state::{Call, State};
 use crate::status::Status;
 

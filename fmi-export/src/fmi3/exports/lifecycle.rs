@@ -13,8 +13,9 @@ use super::codes::{Fmi3Sink, with_instance};
 use crate::calls;
 use crate::error::FmuError;
 use crate::ffi::{slice, string};
+use crate::instance::{Instance, IntermediateUpdate};
 use crate::logger::Logger;
-use crate::model::{Instance, IntermediateUpdate, Model};
+use crate::model::Model;
 use crate::state::{Call, State, Version};
 use crate::status::Status;
 

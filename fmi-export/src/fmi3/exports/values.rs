@@ -12,7 +12,8 @@ use crate::checks::{check_set_boolean, check_set_integer, check_set_real, lookup
 use crate::error::FmuError;
 use crate::ffi::{slice, slice_mut};
 use crate::fmi3::description::TIME_VALUE_REFERENCE;
-use crate::model::{Instance, Model};
+use crate::instance::Instance;
+use crate::model::Model;
 use crate::state::Call;
 use crate::status::{Status, ok};
 

@@ -1,0 +1,367 @@
+//! [`Instance`]: one FMU instance of a [`Model`] — the model, the master's logger, the state
+//! machine, the clock and the inputs — the calls every FMI version makes on it, and the framing of
+//! its serialized states.
+
+use crate::clock::on_clock_grid;
+use crate::codec::{ByteReader, ByteWriter};
+use crate::error::FmuError;
+use crate::experiment::{Clock, Step, StepOutcome};
+use crate::interface::Fmi3Interface;
+use crate::logger::Logger;
+use crate::model::{Context, Model, Var};
+use crate::signal::{InputValues, Polynomial};
+use crate::state::{State, Version};
+use crate::table::{Causality, Kind, ValueReference};
+
+/// The [`Context`] of an instance (a macro, so that the model may be borrowed mutably beside it).
+macro_rules! context {
+    ($inst:expr) => {
+        Context {
+            log: &$inst.logger,
+            inputs: &$inst.inputs,
+            experiment: $inst.clock.experiment,
+            time: $inst.clock.time,
+        }
+    };
+}
+
+/// One FMU instance.
+#[derive(Debug)]
+pub struct Instance<M: Model> {
+    /// The master's logger.
+    pub logger: Logger,
+    /// State-machine state.
+    pub state: State,
+    /// Set after a caught panic: only Reset and FreeInstance are accepted.
+    pub poisoned: bool,
+    /// The message of the event that put the instance in the Error or StepFailed state (the
+    /// first error, the discarded step), for the calls refused there.
+    pub cause: Option<String>,
+    /// The model.
+    pub model: M,
+    /// The experiment and the communication clock.
+    pub clock: Clock,
+    /// The inputs: values as set, and derivatives for the next step (held after it).
+    pub inputs: Polynomial<M::Inputs>,
+    /// The variables of the current call, resolved from its value references ([`crate::checks::resolve`]).
+    pub variables: Vec<Var<M::Vr>>,
+    /// The String values GetString returned last: the master may read them until the next
+    /// call on this instance.
+    pub strings: Vec<std::ffi::CString>,
+    /// The FMU's resources directory, from the instantiation (given to every new model).
+    pub resources: Option<std::path::PathBuf>,
+    /// The FMI version it was instantiated through.
+    pub version: Version,
+    /// FMI 3: whether the master allows fmi3DoStep to return early (earlyReturnAllowed).
+    pub early_return_allowed: bool,
+    /// FMI 3: whether the master handles the model's events in Event Mode (eventModeUsed).
+    pub event_mode_used: bool,
+    /// FMI 3: the master's intermediate-update callback and its environment, for a model that
+    /// provides intermediate update.
+    pub intermediate_update: Option<IntermediateUpdate>,
+    /// Integers of the current call in the model's representation (FMI 3's Int64 switches and
+    /// Booleans); its capacity is reused.
+    pub integers: Vec<i32>,
+    /// FMI 3: the values of the model's structural parameters ([`Model::FMI3`]), set in
+    /// Configuration Mode; they size its arrays.
+    pub structural: Vec<u64>,
+    /// FMI 3: the interface of the description the instance was instantiated with
+    /// ([`Model::FMI3_TOKENS`]).
+    pub fmi3: Fmi3Interface,
+}
+
+/// The master's FMI 3 intermediate-update callback with the environment it is called with.
+#[derive(Clone, Copy, Debug)]
+pub struct IntermediateUpdate {
+    /// The callback.
+    pub callback: unsafe extern "C" fn(
+        *mut std::ffi::c_void,
+        f64,
+        bool,
+        bool,
+        bool,
+        bool,
+        *mut bool,
+        *mut f64,
+    ),
+    /// The master's instance environment.
+    pub environment: *mut std::ffi::c_void,
+}
+
+/// The states in the order of their byte in a serialized state.
+const STATES: [State; 7] = [
+    State::Instantiated,
+    State::InitializationMode,
+    State::StepComplete,
+    State::StepFailed,
+    State::Terminated,
+    State::Error,
+    State::EventMode,
+];
+
+/// The checksum that ends a serialized state: FNV-1a 64 of every byte before it.
+pub fn state_checksum(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| {
+        (h ^ u64::from(b)).wrapping_mul(0x100_0000_01b3)
+    })
+}
+
+impl<M: Model> Instance<M> {
+    /// A fresh instance with the start values, its model told the FMU's resources directory.
+    pub fn new(logger: Logger, resources: Option<std::path::PathBuf>) -> Self {
+        let mut model = M::new();
+        model.set_resource_directory(resources.clone());
+        Self {
+            logger,
+            state: State::Instantiated,
+            poisoned: false,
+            cause: None,
+            model,
+            clock: Clock::default(),
+            inputs: Self::start_inputs(),
+            variables: Vec::new(),
+            strings: Vec::new(),
+            resources,
+            version: Version::Fmi2,
+            early_return_allowed: false,
+            event_mode_used: false,
+            intermediate_update: None,
+            integers: Vec::new(),
+            structural: Self::structural_starts(M::FMI3),
+            fmi3: M::FMI3,
+        }
+    }
+
+    /// The start values of the structural parameters of `fmi3`.
+    fn structural_starts(fmi3: Fmi3Interface) -> Vec<u64> {
+        fmi3.structural_parameters.iter().map(|p| p.start).collect()
+    }
+
+    /// Serves the FMI 3 interface `fmi3` (the one of the description it was instantiated with).
+    pub fn serve(&mut self, fmi3: Fmi3Interface) {
+        self.fmi3 = fmi3;
+        self.structural = Self::structural_starts(fmi3);
+    }
+
+    /// Reset: back to Instantiated with every start value.
+    pub fn reset(&mut self) {
+        self.state = State::Instantiated;
+        self.poisoned = false;
+        self.cause = None;
+        self.model = M::new();
+        self.model.set_resource_directory(self.resources.clone());
+        self.clock = Clock::default();
+        self.inputs = Self::start_inputs();
+        self.structural = Self::structural_starts(self.fmi3);
+    }
+
+    /// The model's input variables, in table order.
+    fn input_variables() -> impl Iterator<Item = Var<M::Vr>> {
+        M::VARIABLES
+            .iter()
+            .filter(|v| v.causality == Causality::Input)
+    }
+
+    /// The inputs at their start values, held.
+    fn start_inputs() -> Polynomial<M::Inputs> {
+        let mut value = <M::Inputs as InputValues>::ZERO;
+        for (k, v) in Self::input_variables().enumerate().take(M::Inputs::LEN) {
+            if let Kind::Real { start: Some(s), .. } = v.kind {
+                *value.value_mut(k) = s;
+            }
+        }
+        Polynomial::held(value)
+    }
+
+    /// The index of the input variable `v` among the model's inputs.
+    fn input_index(v: Var<M::Vr>) -> Result<usize, FmuError> {
+        let k = M::VARIABLES[..v.vr.index() as usize]
+            .iter()
+            .filter(|w| w.causality == Causality::Input)
+            .count();
+        if v.causality == Causality::Input && k < M::Inputs::LEN {
+            Ok(k)
+        } else {
+            Err(FmuError::Invalid(format!("{} is not an input", v.name)))
+        }
+    }
+
+    /// fmi2SetupExperiment, fmi3EnterInitializationMode: the experiment checked and set up, the
+    /// clock at its start.
+    pub fn setup_experiment(
+        &mut self,
+        experiment: (Option<f64>, f64, Option<f64>),
+    ) -> Result<(), FmuError> {
+        self.clock.setup(experiment)
+    }
+
+    /// ExitInitializationMode (the model's checks).
+    pub fn exit_initialization(&mut self) -> Result<(), FmuError> {
+        self.model.exit_initialization(&context!(self))
+    }
+
+    /// The step `step` checked against the clock ([`Clock::step`]); where it ends (completed,
+    /// returned early or discarded, not paused) the inputs are held from there at the values their
+    /// polynomials reached (input derivatives hold for one step).
+    pub fn step(&mut self, step: Step) -> Result<StepOutcome, FmuError> {
+        let cx = context!(self);
+        let model = &mut self.model;
+        let outcome = self.clock.step(step, |s| model.do_step(&cx, s));
+        if let Ok(StepOutcome::Completed { time } | StepOutcome::ReturnedEarly { time, .. })
+        | Err(FmuError::Discard { time, .. }) = &outcome
+        {
+            self.inputs.hold_at(on_clock_grid(*time));
+        }
+        outcome
+    }
+
+    /// Ends a paused step at the pause ([`Model::return_at_pause`]): the time reached, or None
+    /// (it stays paused).
+    pub fn return_at_pause(&mut self) -> Result<Option<f64>, FmuError> {
+        let reached = self.model.return_at_pause(&context!(self))?;
+        self.clock.return_at_pause(reached);
+        if let Some(time) = reached {
+            self.inputs.hold_at(on_clock_grid(time));
+        }
+        Ok(reached)
+    }
+
+    /// GetReal, GetFloat64 of the variables of the call ([`Instance::variables`]).
+    pub fn get_real(&mut self, value: &mut [f64]) -> Result<(), FmuError> {
+        self.model.get_real(&context!(self), &self.variables, value)
+    }
+
+    /// SetReal, SetFloat64 of the variables of the call, checked ([`crate::checks::check_set_real`]):
+    /// the inputs kept here, the others set in the model.
+    pub fn set_real(&mut self, value: &[f64]) -> Result<(), FmuError> {
+        for (&v, &x) in self.variables.iter().zip(value) {
+            if v.causality == Causality::Input {
+                *self.inputs.value.value_mut(Self::input_index(v)?) = x;
+            } else {
+                self.model.set_real(self.state, &[v], &[x])?;
+            }
+        }
+        Ok(())
+    }
+
+    /// SetRealInputDerivatives, SetInputDerivatives of the variables of the call, checked
+    /// ([`crate::checks::check_input_derivatives`]): the `order`-th derivatives at the current
+    /// communication point, for the next step.
+    pub fn set_input_derivatives(&mut self, order: &[i32], value: &[f64]) -> Result<(), FmuError> {
+        for ((&v, &order), &x) in self.variables.iter().zip(order).zip(value) {
+            let k = Self::input_index(v)?;
+            let derivative = usize::try_from(order - 1)
+                .ok()
+                .and_then(|i| self.inputs.derivatives.get_mut(i))
+                .ok_or_else(|| FmuError::Invalid(format!("order {order}")))?;
+            *derivative.value_mut(k) = x;
+            self.inputs.start = self.clock.time;
+        }
+        Ok(())
+    }
+
+    /// GetInteger (FMI 3: GetInt32, GetInt64) of the variables of the call.
+    pub fn get_integer(&mut self, value: &mut [i32]) -> Result<(), FmuError> {
+        self.model
+            .get_integer(&context!(self), &self.variables, value)
+    }
+
+    /// GetBoolean of the variables of the call.
+    pub fn get_boolean(&mut self, value: &mut [i32]) -> Result<(), FmuError> {
+        self.model
+            .get_boolean(&context!(self), &self.variables, value)
+    }
+
+    /// FMI 3: GetFloat64 of the array `array` ([`Model::get_array`]).
+    pub fn get_array(&mut self, array: usize, value: &mut [f64]) -> Result<(), FmuError> {
+        self.model.get_array(&context!(self), array, value)
+    }
+
+    /// The output derivatives of the variables of the call ([`Model::get_real_output_derivatives`]).
+    pub fn get_output_derivatives(
+        &mut self,
+        order: &[i32],
+        value: &mut [f64],
+    ) -> Result<(), FmuError> {
+        self.model
+            .get_real_output_derivatives(&context!(self), &self.variables, order, value)
+    }
+
+    /// ∂y/∂u of the outputs of the call with respect to `known` ([`Model::output_sensitivity`]).
+    pub fn output_sensitivity(
+        &mut self,
+        known: Var<M::Vr>,
+        column: &mut [f64],
+    ) -> Result<(), FmuError> {
+        self.model
+            .output_sensitivity(&context!(self), known, &self.variables, column)
+    }
+
+    /// The serialized state: magic, version, state machine, clock, inputs, the model's bytes,
+    /// and an FNV-1a 64 checksum of everything before it (a corrupted byte is rejected, never
+    /// restored).
+    pub fn serialize(&self) -> Vec<u8> {
+        let mut out = Vec::with_capacity(1024);
+        out.extend_from_slice(&M::STATE_MAGIC);
+        out.extend_from_slice(&M::STATE_VERSION.to_le_bytes());
+        out.push(STATES.iter().position(|s| *s == self.state).unwrap_or(0) as u8);
+        self.clock.write(&mut ByteWriter(&mut out));
+        self.inputs.write(&mut ByteWriter(&mut out));
+        self.model.save(&mut out);
+        let checksum = state_checksum(&out);
+        out.extend_from_slice(&checksum.to_le_bytes());
+        out
+    }
+
+    /// Checks a serialized state and, if `apply`, resumes from it (state machine included).
+    pub fn deserialize(&mut self, bytes: &[u8], apply: bool) -> Result<(), FmuError> {
+        let bad = |what: String| FmuError::Invalid(format!("FMU state rejected: {what}"));
+        if bytes.len() < 4 + 4 + 1 + 8 {
+            return Err(bad(format!("{} bytes is too short", bytes.len())));
+        }
+        let (body, tail) = bytes.split_at(bytes.len() - 8);
+        let mut sum = [0; 8];
+        sum.copy_from_slice(tail);
+        if state_checksum(body) != u64::from_le_bytes(sum) {
+            return Err(bad("checksum mismatch (corrupted bytes)".into()));
+        }
+        if body[..4] != M::STATE_MAGIC {
+            return Err(bad("wrong magic (not a state of this FMU)".into()));
+        }
+        let mut version = [0; 4];
+        version.copy_from_slice(&body[4..8]);
+        let version = u32::from_le_bytes(version);
+        if version != M::STATE_VERSION {
+            return Err(bad(format!(
+                "format version {version}, expected {}",
+                M::STATE_VERSION
+            )));
+        }
+        let state = *STATES
+            .get(usize::from(body[8]))
+            .ok_or_else(|| bad("invalid state".into()))?;
+        let mut reader = ByteReader::new(&body[9..]);
+        let clock = Clock::read(&mut reader)?;
+        let inputs = Polynomial::<M::Inputs>::read(&mut reader)?;
+        if !inputs.is_finite() {
+            return Err(bad("a non-finite input or input derivative".into()));
+        }
+        for (k, v) in Self::input_variables().enumerate().take(M::Inputs::LEN) {
+            crate::checks::check_real(v, inputs.value.value(k)).map_err(|e| bad(e.to_string()))?;
+        }
+        let model = &body[body.len() - reader.remaining()..];
+        let cx = Context {
+            log: &self.logger,
+            inputs: &inputs,
+            experiment: clock.experiment,
+            time: clock.time,
+        };
+        self.model.load(&cx, model, apply)?;
+        if apply {
+            self.state = state;
+            self.clock = clock;
+            self.inputs = inputs;
+        }
+        Ok(())
+    }
+}
