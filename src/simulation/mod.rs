@@ -328,7 +328,7 @@ impl Simulation {
         &self.peaks
     }
 
-    /// Energies of the current state.
+    /// Energies of the current state (of the state alone: no input enters them).
     pub fn energies(&mut self) -> Energies {
         let (contact, state) = (self.contact_now(), &self.state);
         self.mechanism

@@ -69,8 +69,8 @@ impl Simulation {
 
     /// `read` of the mechanism in its current state and contact state, at the current time, with
     /// the inputs [`Simulation::reading_inputs`] gives (`moved` by a difference if given) and the
-    /// peak-hold values and warnings count; the mechanism is left with the step sequence's
-    /// inputs at the current time.
+    /// peak-hold values and warnings count. The inputs it sets stay the mechanism's until the
+    /// next evaluation sets its own (every evaluation of a step, and every reading, does).
     fn read<T>(
         &mut self,
         inputs: Option<&InputSignal>,
@@ -90,7 +90,7 @@ impl Simulation {
             *inputs.value.get_mut(input) += delta;
         }
         self.mechanism.set_inputs(&inputs, self.time);
-        let value = self.mechanism.with_contact_state(contact, |mechanism| {
+        self.mechanism.with_contact_state(contact, |mechanism| {
             read(
                 mechanism,
                 self.time,
@@ -99,8 +99,6 @@ impl Simulation {
                 &self.peaks,
                 self.monitor.total,
             )
-        });
-        self.mechanism.set_inputs(&self.signal, self.time);
-        value
+        })
     }
 }
