@@ -55,8 +55,8 @@ const ALL_INPUTS: &[Vr] = &[Vr::DriveSpeed, Vr::DriveTorque, Vr::SliderForce];
 /// positions, forces and energies depend on every physical parameter and every input (the
 /// speed drive's input through the drive constraint). The exceptions are the crank's prescribed
 /// start, the slider's applied force (the input and the load table at the start angle), the contact stiffness (a formula of four parameters), the model warnings (the
-/// short-bearing range of a lubricated joint) and the step counters and work integrals, which
-/// start at zero. The solver settings shape no start. The lists are the union over every drive,
+/// short-bearing range of a lubricated joint) and the step counters, work integrals and
+/// dissipated energies, which start at zero. The solver settings shape no start. The lists are the union over every drive,
 /// joint and rod model; `packaging/python/tests/test_fmu.py` checks them against perturbations
 /// in initialization mode.
 pub(super) fn initial_dependency(unknown: Vr, known: Vr) -> bool {
@@ -119,6 +119,10 @@ pub(super) fn initial_dependency(unknown: Vr, known: Vr) -> bool {
         | EnergyDriveWork
         | EnergySliderWork
         | EnergyMaterialDamping
+        | EnergyDissipated
+        | JointEnergyDissipated
+        | CrankPinEnergyDissipated
+        | MainBearingEnergyDissipated
         | JointContactOnsets
         | JointContactOnsetsTotal
         | CrankPinContactOnsets
