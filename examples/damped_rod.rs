@@ -5,9 +5,10 @@
 //! that peak is a converged quantity at all); and every impact of the first 60° against its
 //! converged run (`tests/support/load_spectrum.rs`).
 //!
-//! `cargo run --release --example damped_rod` prints the table; `… --example damped_rod -- time ζ n`
-//! only runs the defaults with that damping ratio n times (for timing whole processes,
-//! `packaging/benchmarks.sh damping`).
+//! `cargo run --release --example damped_rod` prints the table; `… --example damped_rod -- time ζ n
+//! [step]` only runs the defaults with that damping ratio n times, reading the outputs every
+//! `step` seconds (1e-4 unless given; for timing whole processes, `packaging/benchmarks.sh
+//! damping`).
 
 use std::error::Error;
 use std::time::Instant;
@@ -36,16 +37,17 @@ fn benchmark_b(zeta: f64) -> Parameters {
     p
 }
 
-fn run(zeta: f64, rtol: f64) -> Result<Run, Box<dyn Error>> {
+/// Two revolutions (24 ms) read every `points`-th of them.
+fn run(zeta: f64, rtol: f64, points: u32) -> Result<Run, Box<dyn Error>> {
     let mut p = benchmark_b(zeta);
     p.relative_tolerance = rtol;
     let start = Instant::now();
     let mut sim = Simulation::new(p)?;
     let (mut joint, mut stress) = ([0.0f64; 2], [0.0f64; 2]);
-    for k in 1..=240 {
-        sim.advance_to(f64::from(k) * 1e-4)?;
+    for k in 1..=points {
+        sim.advance_to(0.024 * f64::from(k) / f64::from(points))?;
         let o = sim.outputs()?;
-        let revolution = usize::from(k > 120);
+        let revolution = usize::from(2 * k > points);
         joint[revolution] = joint[revolution].max(o.joint_force_peak);
         stress[revolution] = stress[revolution].max(o.rod_stress_peak);
     }
@@ -60,10 +62,16 @@ fn run(zeta: f64, rtol: f64) -> Result<Run, Box<dyn Error>> {
 
 fn main() -> Result<(), Box<dyn Error>> {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    if let [mode, zeta, n] = args.as_slice() {
+    if let [mode, zeta, n, step @ ..] = args.as_slice() {
         if mode == "time" {
+            let step = step.first().map_or(Ok(1e-4), |s| s.parse::<f64>())?;
+            let points = (0.024 / step).round() as u32;
             for _ in 0..n.parse::<u32>()? {
-                run(zeta.parse()?, Parameters::default().relative_tolerance)?;
+                run(
+                    zeta.parse()?,
+                    Parameters::default().relative_tolerance,
+                    points,
+                )?;
             }
             return Ok(());
         }
@@ -76,10 +84,10 @@ fn main() -> Result<(), Box<dyn Error>> {
     );
     println!("|---|---|---|---|---|---|---|---|---|");
     for zeta in [0.0, 0.01, 0.02] {
-        let default = run(zeta, Parameters::default().relative_tolerance)?;
+        let default = run(zeta, Parameters::default().relative_tolerance, 240)?;
         let tight = references
             .iter()
-            .map(|&rtol| run(zeta, rtol))
+            .map(|&rtol| run(zeta, rtol, 240))
             .collect::<Result<Vec<_>, _>>()?;
         let span = |f: &dyn Fn(&Run) -> f64, scale: f64| {
             let (lo, hi) = tight

@@ -11,6 +11,8 @@
  * library's printf). --save-at K STATE serializes the FMU state at point K into the file STATE;
  * --restore-at K STATE starts instead by restoring that state and continues from point K.
  * --fmi3 drives the library's fmi3* functions instead (GUID is then the instantiation token).
+ * The environment variable FMU_RUN_SET="VR=VALUE,VR=VALUE…" sets those Real (Float64) variables
+ * after instantiation, before initialization (parameters such as rod.dampingRatio).
  * Exit status 0 on success; every failing call is reported on stderr with its status.
  */
 #include <stdarg.h>
@@ -63,6 +65,8 @@ typedef fmi2Component (*Instantiate3)(const char *, const char *, const char *, 
                                       const fmi2ValueReference *, size_t, void *, fmi3LogMessage, void *);
 typedef fmi2Status (*EnterInitialization3)(fmi2Component, bool, double, double, bool, double);
 typedef fmi2Status (*GetFloat64)(fmi2Component, const fmi2ValueReference *, size_t, double *, size_t);
+typedef fmi2Status (*SetReal)(fmi2Component, const fmi2ValueReference *, size_t, const double *);
+typedef fmi2Status (*SetFloat64)(fmi2Component, const fmi2ValueReference *, size_t, const double *, size_t);
 typedef fmi2Status (*DoStep3)(fmi2Component, double, double, bool, bool *, bool *, bool *, double *);
 
 static void logger3(void *env, int status, const char *category, const char *message) {
@@ -139,6 +143,21 @@ int main(int argc, char **argv) {
     if (!c) {
         fprintf(stderr, "fmu_run: instantiation failed\n");
         return 1;
+    }
+    const char *set = getenv("FMU_RUN_SET");
+    for (const char *p = set ? set : ""; *p;) {
+        char *end;
+        fmi2ValueReference vr = (fmi2ValueReference)strtoul(p, &end, 10);
+        if (*end != '=') {
+            fprintf(stderr, "fmu_run: FMU_RUN_SET wants VR=VALUE,…: %s\n", set);
+            return 2;
+        }
+        double value = strtod(end + 1, &end);
+        if (fmi3)
+            check(((SetFloat64)symbol("fmi3SetFloat64"))(c, &vr, 1, &value, 1), "fmi3SetFloat64");
+        else
+            check(((SetReal)symbol("fmi2SetReal"))(c, &vr, 1, &value), "fmi2SetReal");
+        p = *end == ',' ? end + 1 : end;
     }
     if (fmi3) {
         check(((EnterInitialization3)symbol("fmi3EnterInitializationMode"))(c, false, 0.0, 0.0, true, stop),

@@ -119,6 +119,13 @@ impl SliderCrank {
 
     /// Energies of a state (evaluates the joint forces for the stored contact energy).
     pub fn energies(&mut self, y: &[f64]) -> Energies {
+        let strain = self.rod.strain_energy(&y[self.layout.rod()]);
+        self.energies_with_strain(y, strain)
+    }
+
+    /// [`SliderCrank::energies`] with the rod's strain energy at `y` already known, `strain`
+    /// (as [`SliderCrank::loads`] gives it).
+    pub fn energies_with_strain(&mut self, y: &[f64], strain: f64) -> Energies {
         let l = self.layout;
         let p = &y[l.rod()];
         let rod_gravity: f64 = self
@@ -138,7 +145,7 @@ impl SliderCrank {
         });
         Energies {
             kinetic: self.kinetic_energy(y),
-            strain: self.rod.strain_energy(p),
+            strain,
             contact: self.contact_potential(y),
             contact_at_start: self.contact_at_start.iter().sum(),
             gravity: self.gravity_potential(y) - rod_gravity,

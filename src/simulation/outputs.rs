@@ -241,7 +241,7 @@ pub(super) fn outputs(
     };
     let (crank_pin, crank_pin_penetration) = clearance(JointRole::CrankPin);
     let (main_bearing, main_bearing_penetration) = clearance(JointRole::MainBearing);
-    let energies = mechanism.energies(y);
+    let energies = mechanism.energies_with_strain(y, loads.deformation_energy);
     let forces = [
         loads.main_bearing.norm(),
         loads.crank_pin.norm(),
