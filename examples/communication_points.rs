@@ -33,8 +33,11 @@ const NAMES: [&str; 5] = [
     "slider.velocity",
 ];
 
+/// The compared outputs at one point.
+type Values = [f64; NAMES.len()];
+
 /// The compared outputs at every point of a run with `points` points, and its wall time \[s\].
-fn run(p: &Parameters, points: u32) -> Result<(Vec<[f64; 5]>, f64), Box<dyn Error>> {
+fn run(p: &Parameters, points: u32) -> Result<(Vec<Values>, f64), Box<dyn Error>> {
     let start = Instant::now();
     let mut sim = Simulation::new(p.clone())?;
     let mut values = Vec::with_capacity(points as usize);
