@@ -11,6 +11,7 @@
  * library's printf). --save-at K STATE serializes the FMU state at point K into the file STATE;
  * --restore-at K STATE starts instead by restoring that state and continues from point K.
  * --fmi3 drives the library's fmi3* functions instead (GUID is then the instantiation token).
+ * OUT "-" reads the values at every point but writes nothing (for timing the FMU alone).
  * The environment variable FMU_RUN_SET="VR=VALUE,VR=VALUE…" sets those Real (Float64) variables
  * after instantiation, before initialization (parameters such as rod.dampingRatio).
  * Exit status 0 on success; every failing call is reported on stderr with its status.
@@ -184,8 +185,9 @@ int main(int argc, char **argv) {
         check(((SetState)symbol(set_state))(c, s), set_state);
         first = restore_at;
     }
-    FILE *out = fopen(argv[6], "w");
-    if (!out) {
+    bool quiet = strcmp(argv[6], "-") == 0;
+    FILE *out = quiet ? NULL : fopen(argv[6], "w");
+    if (!quiet && !out) {
         fprintf(stderr, "fmu_run: cannot write %s\n", argv[6]);
         return 2;
     }
@@ -199,13 +201,15 @@ int main(int argc, char **argv) {
             check(get_float64(c, vrs, nvr, values, nvr), "fmi3GetFloat64");
         else
             check(get_real(c, vrs, nvr, values), "fmi2GetReal");
-        fprintf(out, "%ld", k);
-        for (size_t i = 0; i < nvr; i++) {
-            uint64_t bits;
-            memcpy(&bits, &values[i], sizeof bits);
-            fprintf(out, " %016llx", (unsigned long long)bits);
+        if (!quiet) {
+            fprintf(out, "%ld", k);
+            for (size_t i = 0; i < nvr; i++) {
+                uint64_t bits;
+                memcpy(&bits, &values[i], sizeof bits);
+                fprintf(out, " %016llx", (unsigned long long)bits);
+            }
+            fputc('\n', out);
         }
-        fputc('\n', out);
         if (k == save_at) {
             fmi2FMUstate s = NULL;
             size_t size = 0;
@@ -231,7 +235,7 @@ int main(int argc, char **argv) {
             check(do_step(c, (double)k * h, h, 1), "fmi2DoStep");
         }
     }
-    fclose(out);
+    if (out) fclose(out);
     check(((OneArg)symbol(fmi3 ? "fmi3Terminate" : "fmi2Terminate"))(c), "Terminate");
     ((FreeInstance)symbol(fmi3 ? "fmi3FreeInstance" : "fmi2FreeInstance"))(c);
     return 0;

@@ -172,16 +172,17 @@ impl Model for SliderCrankFmu {
     /// fmi2GetReal.
     fn get_real(&mut self, cx: &Cx, vars: &[Var<Vr>], values: &mut [f64]) -> Result<(), FmuError> {
         let mut outputs: Option<Outputs> = None;
+        let none = Outputs::default();
         for (&v, value) in vars.iter().zip(values.iter_mut()) {
             if v.causality == Causality::Output && outputs.is_none() {
                 outputs = Some(self.outputs(cx)?);
             }
-            let o = outputs.unwrap_or_default();
+            let o = outputs.as_ref().unwrap_or(&none);
             if let Some(x) = real_parameter(&self.parameters, v.vr) {
                 *value = x;
                 continue;
             }
-            if let Some(x) = real_output(&o, v.vr) {
+            if let Some(x) = real_output(o, v.vr) {
                 *value = x;
                 continue;
             }

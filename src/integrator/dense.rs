@@ -53,6 +53,18 @@ pub fn interpolate(
     }
 }
 
+/// Writes to the coordinate and velocity rows `0 .. 2 n_q` of `out` the state at t₀ + s·h of the
+/// cubic Hermite interpolant of the positions through q₀, q̇₀, q₁, q̇₁ and of its derivative
+/// ([`cubic_velocities`]); other rows are untouched. It reads no accelerations. Position error
+/// O(h⁴), velocity error O(h³) of the resolved motion.
+pub fn cubic(n_q: usize, h: f64, y0: &[f64], y1: &[f64], s: f64, out: &mut [f64]) {
+    let [c00, c10, c01, c11] = cubic_hermite(s);
+    for i in 0..n_q {
+        out[i] = c00 * y0[i] + c10 * h * y0[n_q + i] + c01 * y1[i] + c11 * h * y1[n_q + i];
+    }
+    cubic_velocities(n_q, h, y0, y1, s, out);
+}
+
 /// The cubic Hermite basis at s ∈ [0, 1]: p(s) = b₀ p₀ + b₁ h ṗ₀ + b₂ p₁ + b₃ h ṗ₁ takes the
 /// values p₀, p₁ and the rates ṗ₀, ṗ₁ at the ends of an interval of length h.
 /// ```text

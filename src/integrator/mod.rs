@@ -26,7 +26,7 @@
 //! at its loosest accepted tolerance on every flexible rod, with every joint model (2.8–18× with
 //! the ideal and lubricated joints, 1.2–2.2× with the dry one, whose held journal velocity resolves
 //! the rod end's vibration; 4-mode rod, dry joint: 5 021 steps against 13 049; full rod,
-//! lubricated: 359 against 150 148), with peak joint forces within 0.6 % of converged runs. The
+//! lubricated: 359 against 150 148), with peak joint forces within 0.7 % of converged runs. The
 //! explicit method stays the reference (conservation tests) and is cheaper only for the rigid rod,
 //! where nothing is stiff. The generalized-α method is faster on the reduced rods with the dry
 //! joint, with peak forces within 1 %, but filters part of the rod's vibration (slider-acceleration
@@ -151,11 +151,12 @@ impl Integrator {
 
     /// Dense output: the state at t₀ + s·h inside the accepted step (t₀, y₀, f₀) → (t₀ + h, y₁,
     /// f₁), written to `out`. The explicit method, whose steps resolve every frequency, uses the
-    /// quintic Hermite interpolant ([`dense::interpolate`]); the implicit one takes one step of
-    /// its own from y₀ ([`Implicit::state_within`]), or the interpolant if its Newton iteration
-    /// fails.
+    /// quintic Hermite interpolant ([`dense::interpolate`]); the implicit ones the same
+    /// interpolant with its part beyond the cubic filtered by their Newton matrix
+    /// ([`Implicit::dense_output`]), which keeps it from amplifying what the step left
+    /// unresolved.
     #[allow(clippy::too_many_arguments)]
-    pub fn state_within<F: MechanicalSystem>(
+    pub fn dense_output<F: MechanicalSystem>(
         &mut self,
         f: &mut F,
         t0: f64,
@@ -172,14 +173,33 @@ impl Integrator {
                 dense::interpolate(f.n_coordinates(), h, y0, f0, y1, f1, s, out);
                 Ok(())
             }
-            Self::Implicit(es) => {
-                if es.state_within(f, t0, y0, f0, s * h, out).is_err() {
-                    // Newton failed with the step's Jacobian: the interpolant instead.
-                    dense::interpolate(f.n_coordinates(), h, y0, f0, y1, f1, s, out);
-                }
-                Ok(())
-            }
+            Self::Implicit(es) => es.dense_output(f, t0, h, y0, f0, y1, f1, s, out),
         }
+    }
+
+    /// The integrator's own solution at t₀ + s·h inside the accepted step (t₀, y₀, f₀) → (t₀ +
+    /// h, y₁, f₁), written to `out`: the explicit method's [`Self::dense_output`]; for the
+    /// implicit one, a step of its own from y₀ ([`Implicit::state_within`]), which costs a step,
+    /// or the dense output if its Newton iteration fails.
+    #[allow(clippy::too_many_arguments)]
+    pub fn state_within<F: MechanicalSystem>(
+        &mut self,
+        f: &mut F,
+        t0: f64,
+        h: f64,
+        y0: &[f64],
+        f0: &[f64],
+        y1: &[f64],
+        f1: &[f64],
+        s: f64,
+        out: &mut [f64],
+    ) -> Result<(), ModelError> {
+        if let Self::Implicit(es) = self
+            && es.state_within(f, t0, y0, f0, s * h, out).is_ok()
+        {
+            return Ok(());
+        }
+        self.dense_output(f, t0, h, y0, f0, y1, f1, s, out)
     }
 
     /// Forgets what depends on the current point (f there, step history) after the state was

@@ -236,7 +236,7 @@ impl Simulation {
             let signal = &self.signal;
             self.mechanism
                 .with_contact_state(self.contact_start, |mechanism| {
-                    self.integrator.state_within(
+                    self.integrator.dense_output(
                         &mut Driven { mechanism, signal },
                         self.start.time,
                         h,

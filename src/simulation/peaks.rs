@@ -177,7 +177,7 @@ const PEAK_SAMPLES: usize = 4;
 /// ([`dense::interpolate`]) and once more at the vertex of the parabola through the largest sample
 /// and its neighbours. That interpolant uses the end
 /// accelerations, which after a large implicit step carry amplified unresolved stiff content; on
-/// benchmark B its peaks agree within 0.1 % with sampling the implicit method's own dense output
+/// benchmark B its peaks agree within 0.1 % with sampling the implicit method's own solution
 /// (a partial step per sample, 3× the run's cost) at the default tolerance, for every rod, and
 /// exceed them by at most 3.5 % at rtol 1e-1.
 #[derive(Clone, Copy, Debug, PartialEq)]
