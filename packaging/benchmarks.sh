@@ -3,7 +3,7 @@
 # tables. Without arguments every section runs (about an hour and a half on the benchmark machine,
 # the fuzzing half an hour per target of it); with arguments only the named ones:
 #
-#   bash packaging/benchmarks.sh [fmu] [native] [impacts] [weight] [damping] [integrators]
+#   bash packaging/benchmarks.sh [fmu] [native] [impacts] [weight] [damping] [grid] [integrators]
 #                                [accuracy] [energy] [criterion] [modes] [bearings] [film] [coupling]
 #                                [system] [dask] [space] [platforms] [fuzz]
 #
@@ -13,7 +13,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 py=.venv/bin/python
 fmu=target/fmu/FlexibleSliderCrank.fmu
-all=(fmu native impacts weight damping integrators accuracy energy criterion modes bearings film coupling system dask space platforms fuzz)
+all=(fmu native impacts weight damping grid integrators accuracy energy criterion modes bearings film coupling system dask space platforms fuzz)
 sections=("$@")
 [ ${#sections[@]} -eq 0 ] && sections=("${all[@]}")
 
@@ -41,6 +41,20 @@ for s in "${sections[@]}"; do
         for zeta in 0 0.01 0.02; do
           printf 'zeta %s ' "$zeta"
           { time target/release/examples/damped_rod time "$zeta" 20 >/dev/null 2>&1; } 2>&1
+        done
+      done ;;
+    grid)
+      cargo run --release --quiet --example communication_points
+      # the FMU's library through the C master, 100 µs against 10 µs communication steps
+      cargo build --release --quiet --lib
+      gcc -O2 packaging/master/fmu_run.c -o target/fmu_run -ldl
+      guid=$(sed -n 's/.*guid="\([^"]*\)".*/\1/p' modelDescription/modelDescription.xml)
+      vrs=$("$py" -c 'import xml.etree.ElementTree as E; print(",".join(v.get("valueReference") for v in E.parse("modelDescription/modelDescription.xml").iter("ScalarVariable") if v.get("causality") == "output" and v.find("Real") is not None))')
+      TIMEFORMAT="%R s"
+      for set in 162=0 162=0.01 162=0.02 162=0,i15=3; do
+        for step in 1e-4 1e-5; do
+          printf '%s, step %s: ' "$set" "$step"
+          { time FMU_RUN_SET=$set target/fmu_run target/release/libflexible_slider_crank.so "$guid" 0.024 "$step" "$vrs" - ; } 2>&1
         done
       done ;;
     integrators) cargo run --release --quiet --example integrators ;;

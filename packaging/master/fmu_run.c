@@ -12,8 +12,9 @@
  * --restore-at K STATE starts instead by restoring that state and continues from point K.
  * --fmi3 drives the library's fmi3* functions instead (GUID is then the instantiation token).
  * OUT "-" reads the values at every point but writes nothing (for timing the FMU alone).
- * The environment variable FMU_RUN_SET="VR=VALUE,VR=VALUE…" sets those Real (Float64) variables
- * after instantiation, before initialization (parameters such as rod.dampingRatio).
+ * The environment variable FMU_RUN_SET="VR=VALUE,iVR=VALUE…" sets those Real (Float64) variables,
+ * and with the prefix i those Integer (Int32) ones, after instantiation, before initialization
+ * (parameters such as rod.dampingRatio or joint.model).
  * Exit status 0 on success; every failing call is reported on stderr with its status.
  */
 #include <stdarg.h>
@@ -68,6 +69,8 @@ typedef fmi2Status (*EnterInitialization3)(fmi2Component, bool, double, double, 
 typedef fmi2Status (*GetFloat64)(fmi2Component, const fmi2ValueReference *, size_t, double *, size_t);
 typedef fmi2Status (*SetReal)(fmi2Component, const fmi2ValueReference *, size_t, const double *);
 typedef fmi2Status (*SetFloat64)(fmi2Component, const fmi2ValueReference *, size_t, const double *, size_t);
+typedef fmi2Status (*SetInteger)(fmi2Component, const fmi2ValueReference *, size_t, const int *);
+typedef fmi2Status (*SetInt32)(fmi2Component, const fmi2ValueReference *, size_t, const int32_t *, size_t);
 typedef fmi2Status (*DoStep3)(fmi2Component, double, double, bool, bool *, bool *, bool *, double *);
 
 static void logger3(void *env, int status, const char *category, const char *message) {
@@ -147,14 +150,21 @@ int main(int argc, char **argv) {
     }
     const char *set = getenv("FMU_RUN_SET");
     for (const char *p = set ? set : ""; *p;) {
+        bool integer = *p == 'i';
         char *end;
-        fmi2ValueReference vr = (fmi2ValueReference)strtoul(p, &end, 10);
-        if (*end != '=') {
-            fprintf(stderr, "fmu_run: FMU_RUN_SET wants VR=VALUE,…: %s\n", set);
+        fmi2ValueReference vr = (fmi2ValueReference)strtoul(p + integer, &end, 10);
+        bool assigns = *end == '=';
+        double value = assigns ? strtod(end + 1, &end) : 0.0;
+        if (!assigns || (*end != ',' && *end != '\0')) {
+            fprintf(stderr, "fmu_run: FMU_RUN_SET wants VR=VALUE or iVR=VALUE, comma-separated: %s\n", set);
             return 2;
         }
-        double value = strtod(end + 1, &end);
-        if (fmi3)
+        int32_t n = (int32_t)value;
+        if (integer && fmi3)
+            check(((SetInt32)symbol("fmi3SetInt32"))(c, &vr, 1, &n, 1), "fmi3SetInt32");
+        else if (integer)
+            check(((SetInteger)symbol("fmi2SetInteger"))(c, &vr, 1, &n), "fmi2SetInteger");
+        else if (fmi3)
             check(((SetFloat64)symbol("fmi3SetFloat64"))(c, &vr, 1, &value, 1), "fmi3SetFloat64");
         else
             check(((SetReal)symbol("fmi2SetReal"))(c, &vr, 1, &value), "fmi2SetReal");

@@ -90,7 +90,7 @@ def test_directional_derivatives_agree_with_central_differences(fmu):
     those differences' round-off 16 eps |y| / h (measured on a line of 41 input values: the rod's
     stresses deviate from their straight line by up to 15 eps |y|, as their bending moment sums
     moments of the pin force and the rod's inertia up to F l, larger than itself; other outputs
-    6 eps |y|); exactly zero where no feedthrough is declared. A peak-hold output is compared
+    6 eps |y|; the mid-span bending moment's own round-off scales with F l, not |y|); exactly zero where no feedthrough is declared. A peak-hold output is compared
     where the master's differences stay on one side of its kink."""
     md = read_model_description(fmu)
     vr = {v.name: v.valueReference for v in md.modelVariables}
@@ -103,6 +103,13 @@ def test_directional_derivatives_agree_with_central_differences(fmu):
     compared = straddled = 0
     for model, s in every_model_at_2ms(fmu):
         y = np.array(s.getReal(ov))
+        # The round-off of each output: of its own size, but for the mid-span bending moment, a
+        # sum of moments of the pin force and of the rod's inertia much larger than itself (up to
+        # F l: measured, 2.8e-13 N m on a moment of 0.96 N m with F l about 2 kN m).
+        scale = np.abs(y)
+        scale[at["rod.bendingMomentMidspan"]] = max(
+            scale[at["rod.bendingMomentMidspan"]],
+            abs(y[at["crankPin.force"]]) * s.getReal([vr["rod.length"]])[0])
         for u in inputs:
             derivative = np.array(s.getDirectionalDerivative(ov, [vr[u]], [1.0]))
             # Linear in the seed.
@@ -116,7 +123,7 @@ def test_directional_derivatives_agree_with_central_differences(fmu):
             minus = np.array(s.getReal(ov))
             s.setReal([vr[u]], [x])
             difference = (plus - minus) / (2.0 * h)
-            bound = 1e-6 * np.abs(difference) + 16.0 * eps * np.abs(y) / h
+            bound = 1e-6 * np.abs(difference) + 16.0 * eps * scale / h
             for o, d, c, b in zip(outputs, derivative, difference, bound):
                 if o in PEAKS:
                     # Differences across a kink of max(held, |value|) average both sides:
