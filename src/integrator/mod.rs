@@ -180,7 +180,8 @@ impl Integrator {
     /// The integrator's own solution at t₀ + s·h inside the accepted step (t₀, y₀, f₀) → (t₀ +
     /// h, y₁, f₁), written to `out`: the explicit method's [`Self::dense_output`]; for the
     /// implicit one, a step of its own from y₀ ([`Implicit::state_within`]), which costs a step,
-    /// or the dense output if its Newton iteration fails.
+    /// or the quintic Hermite interpolant if its Newton iteration fails (the failed step leaves
+    /// no factorisation to filter it with).
     #[allow(clippy::too_many_arguments)]
     pub fn state_within<F: MechanicalSystem>(
         &mut self,
@@ -199,7 +200,8 @@ impl Integrator {
         {
             return Ok(());
         }
-        self.dense_output(f, t0, h, y0, f0, y1, f1, s, out)
+        dense::interpolate(f.n_coordinates(), h, y0, f0, y1, f1, s, out);
+        Ok(())
     }
 
     /// Forgets what depends on the current point (f there, step history) after the state was

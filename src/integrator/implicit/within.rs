@@ -117,7 +117,7 @@ impl Implicit {
                 Err(_) if pieces < 8 && done == 0 => pieces *= 2,
                 Err(_) => {
                     break Err(ModelError::Numerical(format!(
-                        "dense output at t = {} s: Newton did not converge",
+                        "partial step to t = {} s: Newton did not converge",
                         Num(t0 + dt)
                     )));
                 }
