@@ -57,6 +57,8 @@ pub struct Simulation {
     y_sample: Vec<f64>,
     /// Accelerations of the dense output at a peak-hold sample (velocity rows).
     a_sample: Vec<f64>,
+    /// The peak-hold sample at the last accepted step's end, for the next step's start.
+    end_sample: record::EndSample,
     /// The inputs of the current step sequence, as functions of time (at the start: the
     /// start's, the prescribed speed the crank's initial speed).
     signal: InputSignal,
@@ -134,6 +136,7 @@ impl Simulation {
             scratch: vec![0.0; state.len()],
             y_sample: vec![0.0; state.len()],
             a_sample: vec![0.0; state.len()],
+            end_sample: record::EndSample::new(state.len()),
             contact_start: mechanism.contact_state(),
             parameters,
             mechanism,

@@ -260,12 +260,21 @@ pub(super) struct AcceptedStep<'a> {
     pub(super) signal: &'a InputSignal,
 }
 
+/// The samples at a step's ends already taken (the last step's end and this one's), which the
+/// samples inside it at its start and end would repeat.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(super) struct KnownEnds {
+    pub(super) start: Option<Sample>,
+    pub(super) end: Option<Sample>,
+}
+
 /// The largest peak-held magnitudes inside the step just accepted, if the journal touches the
-/// bearing at either end of it (zeros otherwise); see [`PeakHold`]. `sample` and `acceleration`
-/// are scratch space of one state each.
+/// bearing at either end of it (zeros otherwise); see [`PeakHold`]. The samples at its ends are
+/// `known`'s where it has them; `sample` and `acceleration` are scratch space of one state each.
 pub(super) fn within_step(
     mechanism: &mut SliderCrank,
     step: &AcceptedStep<'_>,
+    known: KnownEnds,
     sample: &mut [f64],
     acceleration: &mut [f64],
 ) -> Within {
@@ -281,7 +290,14 @@ pub(super) fn within_step(
         _ => i < ALWAYS_REFINED,
     });
     mechanism.with_contact_state(step.contact_start, |mechanism| {
-        let mut at = |k: f64| load_within(mechanism, step, sample, acceleration, k);
+        let mut at = |k: f64| {
+            let end = k == (PEAK_SAMPLES + 1) as f64;
+            match (k == 0.0, end, known) {
+                (true, _, KnownEnds { start: Some(s), .. }) => s,
+                (_, true, KnownEnds { end: Some(s), .. }) => s,
+                _ => load_within(mechanism, step, sample, acceleration, k),
+            }
+        };
         largest_loads(&mut at, refined)
     })
 }

@@ -3,12 +3,60 @@
 
 use super::Simulation;
 use super::cycle::CycleStep;
-use super::peaks::{self, AcceptedStep, Peaks};
+use super::peaks::{self, AcceptedStep, KnownEnds, Peaks};
 use super::sample::{Sample, force_series};
+use super::step::StepPoint;
 use crate::error::ModelError;
-use crate::joint::{Joint, JointRole};
-use crate::mechanism::Driven;
+use crate::joint::{Contacts, Joint, JointRole};
 use crate::mechanism::layout::CRANK_ANGLE;
+use crate::mechanism::{Driven, InputSignal};
+
+/// The peak-hold sample at the end of the last accepted step with everything it is a function
+/// of: the point (time, state, derivative), the inputs and the contact state it was taken with.
+/// The next step's first sample inside ([`peaks::within_step`]) is this one wherever these are
+/// the same, bit for bit: the dense output's first sample is the step's start exactly.
+#[derive(Clone, Debug)]
+pub(super) struct EndSample {
+    point: StepPoint,
+    signal: Option<InputSignal>,
+    contacts: Contacts,
+    sample: Sample,
+}
+
+impl EndSample {
+    /// No sample yet, for states of length `n`.
+    pub(super) fn new(n: usize) -> Self {
+        Self {
+            point: StepPoint::at_rest(f64::NAN, &vec![0.0; n]),
+            signal: None,
+            contacts: Contacts::default(),
+            sample: [0.0; super::sample::SERIES],
+        }
+    }
+
+    /// The sample if it was taken at `point` with `signal` and `contacts`.
+    fn at(&self, point: &StepPoint, signal: &InputSignal, contacts: Contacts) -> Option<Sample> {
+        (self.signal.as_ref() == Some(signal) && self.contacts == contacts && self.point == *point)
+            .then_some(self.sample)
+    }
+
+    /// Keeps `sample`, taken at `point` with `signal` and `contacts` (None: a sample that a
+    /// step's inside would not reproduce).
+    fn store(
+        &mut self,
+        point: &StepPoint,
+        signal: &InputSignal,
+        contacts: Contacts,
+        sample: Option<Sample>,
+    ) {
+        self.signal = sample.map(|_| *signal);
+        if let Some(sample) = sample {
+            self.point.copy_from(point);
+            self.contacts = contacts;
+            self.sample = sample;
+        }
+    }
+}
 
 impl Simulation {
     /// Evaluates the end of the step just accepted for the peak-hold outputs.
@@ -18,17 +66,19 @@ impl Simulation {
             .map(|role| u64::from(!self.contact_start[role].in_contact && end[role].in_contact));
         self.mechanism.set_inputs(&self.signal, self.end.time);
         let film = self.mechanism.film_extremes(&self.end.y);
-        let at_end = match self.mechanism.clearance_joint_load(&self.end.y) {
+        // From the joint law, the sample is the one the dense output gives at the step's end.
+        let (at_end, from_joint_law) = match self.mechanism.clearance_joint_load(&self.end.y) {
             Some((force, acceleration)) => {
                 let loads = self.mechanism.loads(&self.end.y, &self.end.f, force);
-                peaks::sample(force, acceleration, &loads, film)
+                (peaks::sample(force, acceleration, &loads, film), true)
             }
             None => {
                 let ev = *self.mechanism.evaluate(&self.end.y, &mut self.scratch)?;
                 let loads = self
                     .mechanism
                     .loads(&self.end.y, &self.scratch, ev.joint_force);
-                peaks::sample(ev.joint_force, ev.slider_acceleration, &loads, film)
+                let sample = peaks::sample(ev.joint_force, ev.slider_acceleration, &loads, film);
+                (sample, false)
             }
         };
         let step = AcceptedStep {
@@ -37,11 +87,24 @@ impl Simulation {
             contact_start: self.contact_start,
             signal: &self.signal,
         };
+        let known = KnownEnds {
+            start: self
+                .end_sample
+                .at(&self.start, &self.signal, self.contact_start),
+            end: (from_joint_law && self.contact_start == end).then_some(at_end),
+        };
         let within = peaks::within_step(
             &mut self.mechanism,
             &step,
+            known,
             &mut self.y_sample,
             &mut self.a_sample,
+        );
+        self.end_sample.store(
+            &self.end,
+            &self.signal,
+            end,
+            from_joint_law.then_some(at_end),
         );
         self.doubt_film_peaks(&within)?;
         self.peaks.step_end = Peaks::from_sample(peaks::larger(at_end, within.largest), onsets);
