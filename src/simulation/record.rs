@@ -176,3 +176,51 @@ impl Simulation {
         Ok(())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::joint::ContactState;
+    use crate::mechanism::Inputs;
+    use crate::simulation::sample::SERIES;
+
+    /// The kept end sample is given back only for the point, inputs and contact state it was
+    /// taken with, each bit for bit, and not after a sample that a step's inside would not
+    /// reproduce was stored in its place.
+    #[test]
+    fn the_end_sample_is_reused_only_where_it_was_taken() {
+        let point = StepPoint {
+            time: 1e-3,
+            y: vec![0.1, -0.2, 0.3],
+            f: vec![1.0, 2.0, 3.0],
+        };
+        let signal = InputSignal::held(Inputs {
+            drive_speed: 523.6,
+            drive_torque: 0.0,
+            slider_force: 0.0,
+        });
+        let contacts = Contacts::default();
+        let sample = [1.5; SERIES];
+        let mut kept = EndSample::new(3);
+        assert_eq!(kept.at(&point, &signal, contacts), None);
+        kept.store(&point, &signal, contacts, Some(sample));
+        assert_eq!(kept.at(&point, &signal, contacts), Some(sample));
+        let mut moved = point.clone();
+        moved.y[2] = f64::from_bits(0.3f64.to_bits() + 1);
+        assert_eq!(kept.at(&moved, &signal, contacts), None);
+        let mut later = point.clone();
+        later.f[0] = 1.0 + f64::EPSILON;
+        assert_eq!(kept.at(&later, &signal, contacts), None);
+        let mut faster = signal;
+        faster.value.drive_speed += 1e-9;
+        assert_eq!(kept.at(&point, &faster, contacts), None);
+        let mut touching = contacts;
+        touching.0[2] = ContactState {
+            in_contact: true,
+            ..touching.0[2]
+        };
+        assert_eq!(kept.at(&point, &signal, touching), None);
+        kept.store(&point, &signal, contacts, None);
+        assert_eq!(kept.at(&point, &signal, contacts), None);
+    }
+}
