@@ -3,7 +3,7 @@
 # tables. Without arguments every section runs (about an hour and a half on the benchmark machine,
 # the fuzzing half an hour per target of it); with arguments only the named ones:
 #
-#   bash packaging/benchmarks.sh [fmu] [native] [impacts] [weight] [damping] [grid] [integrators]
+#   bash packaging/benchmarks.sh [fmu] [native] [impacts] [weight] [damping] [grid] [realtime] [integrators]
 #                                [accuracy] [energy] [criterion] [modes] [bearings] [film] [coupling]
 #                                [system] [dask] [space] [platforms] [fuzz]
 #
@@ -13,7 +13,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 py=.venv/bin/python
 fmu=target/fmu/FlexibleSliderCrank.fmu
-all=(fmu native impacts weight damping grid integrators accuracy energy criterion modes bearings film coupling system dask space platforms fuzz)
+all=(fmu native impacts weight damping grid realtime integrators accuracy energy criterion modes bearings film coupling system dask space platforms fuzz)
 sections=("$@")
 [ ${#sections[@]} -eq 0 ] && sections=("${all[@]}")
 
@@ -57,6 +57,9 @@ for s in "${sections[@]}"; do
           { time FMU_RUN_SET=$set target/fmu_run target/release/libflexible_slider_crank.so "$guid" 0.024 "$step" "$vrs" - ; } 2>&1
         done
       done ;;
+    realtime)
+      # the real-time cases through fmpy; BASELINE=OTHER.fmu adds another build, in the same rounds
+      "$py" -m fsc.benchmark "$fmu" --real-time ${BASELINE:+--baseline=$BASELINE} ;;
     integrators) cargo run --release --quiet --example integrators ;;
     accuracy) cargo run --release --quiet --example accuracy 1e-2 3e-2 ;;
     energy) cargo run --release --quiet --example energy_account ;;
