@@ -3,6 +3,7 @@
 
 pub mod codec;
 mod cycle;
+mod end_sample;
 mod failure;
 mod interval;
 mod onset;
@@ -58,7 +59,7 @@ pub struct Simulation {
     /// Accelerations of the dense output at a peak-hold sample (velocity rows).
     a_sample: Vec<f64>,
     /// The peak-hold sample at the last accepted step's end, for the next step's start.
-    end_sample: record::EndSample,
+    end_sample: end_sample::EndSample,
     /// The inputs of the current step sequence, as functions of time (at the start: the
     /// start's, the prescribed speed the crank's initial speed).
     signal: InputSignal,
@@ -136,7 +137,7 @@ impl Simulation {
             scratch: vec![0.0; state.len()],
             y_sample: vec![0.0; state.len()],
             a_sample: vec![0.0; state.len()],
-            end_sample: record::EndSample::new(state.len()),
+            end_sample: end_sample::EndSample::new(state.len()),
             contact_start: mechanism.contact_state(),
             parameters,
             mechanism,

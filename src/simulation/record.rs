@@ -5,58 +5,10 @@ use super::Simulation;
 use super::cycle::CycleStep;
 use super::peaks::{self, AcceptedStep, KnownEnds, Peaks};
 use super::sample::{Sample, force_series};
-use super::step::StepPoint;
 use crate::error::ModelError;
-use crate::joint::{Contacts, Joint, JointRole};
+use crate::joint::{Joint, JointRole};
+use crate::mechanism::Driven;
 use crate::mechanism::layout::CRANK_ANGLE;
-use crate::mechanism::{Driven, InputSignal};
-
-/// The peak-hold sample at the end of the last accepted step with everything it is a function
-/// of: the point (time, state, derivative), the inputs and the contact state it was taken with.
-/// The next step's first sample inside ([`peaks::within_step`]) is this one wherever these are
-/// the same, bit for bit: the dense output's first sample is the step's start exactly.
-#[derive(Clone, Debug)]
-pub(super) struct EndSample {
-    point: StepPoint,
-    signal: Option<InputSignal>,
-    contacts: Contacts,
-    sample: Sample,
-}
-
-impl EndSample {
-    /// No sample yet, for states of length `n`.
-    pub(super) fn new(n: usize) -> Self {
-        Self {
-            point: StepPoint::at_rest(f64::NAN, &vec![0.0; n]),
-            signal: None,
-            contacts: Contacts::default(),
-            sample: [0.0; super::sample::SERIES],
-        }
-    }
-
-    /// The sample if it was taken at `point` with `signal` and `contacts`.
-    fn at(&self, point: &StepPoint, signal: &InputSignal, contacts: Contacts) -> Option<Sample> {
-        (self.signal.as_ref() == Some(signal) && self.contacts == contacts && self.point == *point)
-            .then_some(self.sample)
-    }
-
-    /// Keeps `sample`, taken at `point` with `signal` and `contacts` (None: a sample that a
-    /// step's inside would not reproduce).
-    fn store(
-        &mut self,
-        point: &StepPoint,
-        signal: &InputSignal,
-        contacts: Contacts,
-        sample: Option<Sample>,
-    ) {
-        self.signal = sample.map(|_| *signal);
-        if let Some(sample) = sample {
-            self.point.copy_from(point);
-            self.contacts = contacts;
-            self.sample = sample;
-        }
-    }
-}
 
 impl Simulation {
     /// Evaluates the end of the step just accepted for the peak-hold outputs.
@@ -174,53 +126,5 @@ impl Simulation {
             }
         }
         Ok(())
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::joint::ContactState;
-    use crate::mechanism::Inputs;
-    use crate::simulation::sample::SERIES;
-
-    /// The kept end sample is given back only for the point, inputs and contact state it was
-    /// taken with, each bit for bit, and not after a sample that a step's inside would not
-    /// reproduce was stored in its place.
-    #[test]
-    fn the_end_sample_is_reused_only_where_it_was_taken() {
-        let point = StepPoint {
-            time: 1e-3,
-            y: vec![0.1, -0.2, 0.3],
-            f: vec![1.0, 2.0, 3.0],
-        };
-        let signal = InputSignal::held(Inputs {
-            drive_speed: 523.6,
-            drive_torque: 0.0,
-            slider_force: 0.0,
-        });
-        let contacts = Contacts::default();
-        let sample = [1.5; SERIES];
-        let mut kept = EndSample::new(3);
-        assert_eq!(kept.at(&point, &signal, contacts), None);
-        kept.store(&point, &signal, contacts, Some(sample));
-        assert_eq!(kept.at(&point, &signal, contacts), Some(sample));
-        let mut moved = point.clone();
-        moved.y[2] = f64::from_bits(0.3f64.to_bits() + 1);
-        assert_eq!(kept.at(&moved, &signal, contacts), None);
-        let mut later = point.clone();
-        later.f[0] = 1.0 + f64::EPSILON;
-        assert_eq!(kept.at(&later, &signal, contacts), None);
-        let mut faster = signal;
-        faster.value.drive_speed += 1e-9;
-        assert_eq!(kept.at(&point, &faster, contacts), None);
-        let mut touching = contacts;
-        touching.0[2] = ContactState {
-            in_contact: true,
-            ..touching.0[2]
-        };
-        assert_eq!(kept.at(&point, &signal, touching), None);
-        kept.store(&point, &signal, contacts, None);
-        assert_eq!(kept.at(&point, &signal, contacts), None);
     }
 }
