@@ -14,19 +14,29 @@
 //! - E. Hairer, S. P. Nørsett, G. Wanner (1993), Solving Ordinary Differential Equations I, 2nd ed.,
 //!   §II.6 (dense output, Hermite interpolation).
 
-/// Writes the state at t₀ + s·h (s ∈ [0, 1]) of the step (y₀, f₀) → (y₁, f₁) to `out`; the first
-/// `n_q` states are coordinates, the next `n_q` their velocities.
-#[allow(clippy::too_many_arguments)]
-pub fn interpolate(
-    n_q: usize,
-    h: f64,
-    y0: &[f64],
-    f0: &[f64],
-    y1: &[f64],
-    f1: &[f64],
-    s: f64,
-    out: &mut [f64],
-) {
+/// An accepted step (t₀, y₀, f₀) → (t₀ + h, y₁, f₁): its ends, what its dense output is made of.
+#[derive(Clone, Copy, Debug)]
+pub struct Span<'a> {
+    /// Start time t₀ \[s\].
+    pub t0: f64,
+    /// Step size h \[s\].
+    pub h: f64,
+    /// State at the start.
+    pub y0: &'a [f64],
+    /// Its derivative.
+    pub f0: &'a [f64],
+    /// State at the end.
+    pub y1: &'a [f64],
+    /// Its derivative.
+    pub f1: &'a [f64],
+}
+
+/// Writes the state at t₀ + s·h (s ∈ [0, 1]) of the step `span` to `out`; the first `n_q` states
+/// are coordinates, the next `n_q` their velocities.
+pub fn interpolate(n_q: usize, span: &Span<'_>, s: f64, out: &mut [f64]) {
+    let Span {
+        h, y0, f0, y1, f1, ..
+    } = *span;
     let (s2, s3) = (s * s, s * s * s);
     let (s4, s5) = (s3 * s, s3 * s2);
     let h0 = 1.0 - 10.0 * s3 + 15.0 * s4 - 6.0 * s5;
@@ -106,17 +116,10 @@ pub fn cubic_velocities(n_q: usize, h: f64, y0: &[f64], y1: &[f64], s: f64, out:
 
 /// Writes the accelerations at t₀ + s·h of the same interpolant (the second derivative of the
 /// quintic, a cubic in s) to the velocity rows `n_q .. 2 n_q` of `out`; other rows are untouched.
-#[allow(clippy::too_many_arguments)]
-pub fn acceleration(
-    n_q: usize,
-    h: f64,
-    y0: &[f64],
-    f0: &[f64],
-    y1: &[f64],
-    f1: &[f64],
-    s: f64,
-    out: &mut [f64],
-) {
+pub fn acceleration(n_q: usize, span: &Span<'_>, s: f64, out: &mut [f64]) {
+    let Span {
+        h, y0, f0, y1, f1, ..
+    } = *span;
     let (s2, s3) = (s * s, s * s * s);
     let e0 = -60.0 * s + 180.0 * s2 - 120.0 * s3;
     let e1 = -36.0 * s + 96.0 * s2 - 60.0 * s3;
@@ -151,14 +154,22 @@ mod tests {
         let f0 = [v(t0), a(t0), dw(t0)];
         let y1 = [q(t1), v(t1), w(t1)];
         let f1 = [v(t1), a(t1), dw(t1)];
+        let span = Span {
+            t0,
+            h,
+            y0: &y0,
+            f0: &f0,
+            y1: &y1,
+            f1: &f1,
+        };
         let mut out = [0.0; 3];
         for s in [0.0, 0.1, 0.5, 0.77, 1.0] {
-            interpolate(1, h, &y0, &f0, &y1, &f1, s, &mut out);
+            interpolate(1, &span, s, &mut out);
             let t = t0 + s * h;
             assert!((out[0] - q(t)).abs() < 1e-14, "q at s = {s}");
             assert!((out[1] - v(t)).abs() < 1e-13, "v at s = {s}");
             assert!((out[2] - w(t)).abs() < 1e-14, "w at s = {s}");
-            acceleration(1, h, &y0, &f0, &y1, &f1, s, &mut out);
+            acceleration(1, &span, s, &mut out);
             assert!((out[1] - a(t)).abs() < 1e-12, "a at s = {s}: {}", out[1]);
         }
     }

@@ -149,58 +149,47 @@ impl Integrator {
         }
     }
 
-    /// Dense output: the state at t₀ + s·h inside the accepted step (t₀, y₀, f₀) → (t₀ + h, y₁,
-    /// f₁), written to `out`. The explicit method, whose steps resolve every frequency, uses the
-    /// quintic Hermite interpolant ([`dense::interpolate`]); the implicit ones the same
-    /// interpolant with its part beyond the cubic filtered by their Newton matrix
-    /// ([`Implicit::dense_output`]), which keeps it from amplifying what the step left
-    /// unresolved.
-    #[allow(clippy::too_many_arguments)]
+    /// Dense output: the state at t₀ + s·h inside the accepted step `span`, written to `out`. The
+    /// explicit method, whose steps resolve every frequency, uses the quintic Hermite
+    /// interpolant ([`dense::interpolate`]); the implicit ones the same interpolant with its part
+    /// beyond the cubic filtered by their Newton matrix ([`Implicit::dense_output`]), which keeps
+    /// it from amplifying what the step left unresolved.
     pub fn dense_output<F: MechanicalSystem>(
         &mut self,
         f: &mut F,
-        t0: f64,
-        h: f64,
-        y0: &[f64],
-        f0: &[f64],
-        y1: &[f64],
-        f1: &[f64],
+        span: &dense::Span<'_>,
         s: f64,
         out: &mut [f64],
     ) -> Result<(), ModelError> {
         match self {
             Self::DormandPrince(_) => {
-                dense::interpolate(f.n_coordinates(), h, y0, f0, y1, f1, s, out);
+                dense::interpolate(f.n_coordinates(), span, s, out);
                 Ok(())
             }
-            Self::Implicit(es) => es.dense_output(f, t0, h, y0, f0, y1, f1, s, out),
+            Self::Implicit(es) => es.dense_output(f, span, s, out),
         }
     }
 
-    /// The integrator's own solution at t₀ + s·h inside the accepted step (t₀, y₀, f₀) → (t₀ +
-    /// h, y₁, f₁), written to `out`: the explicit method's [`Self::dense_output`]; for the
-    /// implicit one, a step of its own from y₀ ([`Implicit::state_within`]), which costs a step,
-    /// or the quintic Hermite interpolant if its Newton iteration fails (the failed step leaves
-    /// no factorisation to filter it with).
-    #[allow(clippy::too_many_arguments)]
+    /// The integrator's own solution at t₀ + s·h inside the accepted step `span`, written to
+    /// `out`: the explicit method's [`Self::dense_output`]; for the implicit one, a step of its
+    /// own from y₀ ([`Implicit::state_within`]), which costs a step, or the quintic Hermite
+    /// interpolant if its Newton iteration fails (the failed step leaves no factorisation to
+    /// filter it with).
     pub fn state_within<F: MechanicalSystem>(
         &mut self,
         f: &mut F,
-        t0: f64,
-        h: f64,
-        y0: &[f64],
-        f0: &[f64],
-        y1: &[f64],
-        f1: &[f64],
+        span: &dense::Span<'_>,
         s: f64,
         out: &mut [f64],
     ) -> Result<(), ModelError> {
         if let Self::Implicit(es) = self
-            && es.state_within(f, t0, y0, f0, s * h, out).is_ok()
+            && es
+                .state_within(f, span.t0, span.y0, span.f0, s * span.h, out)
+                .is_ok()
         {
             return Ok(());
         }
-        dense::interpolate(f.n_coordinates(), h, y0, f0, y1, f1, s, out);
+        dense::interpolate(f.n_coordinates(), span, s, out);
         Ok(())
     }
 

@@ -232,19 +232,14 @@ impl Simulation {
         if t_end == self.end.time {
             self.state.copy_from_slice(&self.end.y);
         } else {
-            let h = self.end.time - self.start.time;
+            let span = self.start.span_to(&self.end);
             let signal = &self.signal;
             self.mechanism
                 .with_contact_state(self.contact_start, |mechanism| {
                     self.integrator.dense_output(
                         &mut Driven { mechanism, signal },
-                        self.start.time,
-                        h,
-                        &self.start.y,
-                        &self.start.f,
-                        &self.end.y,
-                        &self.end.f,
-                        (t_end - self.start.time) / h,
+                        &span,
+                        (t_end - span.t0) / span.h,
                         &mut self.state,
                     )
                 })?;

@@ -400,16 +400,14 @@ fn load_within(
     acceleration: &mut [f64],
     k: f64,
 ) -> Sample {
-    let (start, end) = (step.start, step.end);
-    let h = end.time - start.time;
+    let span = step.start.span_to(step.end);
     let theta = k / (PEAK_SAMPLES + 1) as f64;
-    mechanism.set_inputs(step.signal, start.time + theta * h);
+    mechanism.set_inputs(step.signal, span.t0 + theta * span.h);
     let n_q = mechanism.n_coordinates();
-    let (y0, f0, y1, f1) = (&start.y, &start.f, &end.y, &end.f);
-    dense::interpolate(n_q, h, y0, f0, y1, f1, theta, sample);
-    dense::acceleration(n_q, h, y0, f0, y1, f1, theta, acceleration);
+    dense::interpolate(n_q, &span, theta, sample);
+    dense::acceleration(n_q, &span, theta, acceleration);
     if mechanism.has_film() {
-        dense::cubic_velocities(n_q, h, y0, y1, theta, sample);
+        dense::cubic_velocities(n_q, span.h, span.y0, span.y1, theta, sample);
     }
     let (force, slider_acceleration) = mechanism
         .clearance_joint_load(sample)

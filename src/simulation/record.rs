@@ -99,30 +99,19 @@ impl Simulation {
             if !(film && peaks::interpolated_peak(value, rise, known[i])) {
                 continue;
             }
-            let (start, end) = (&self.start, &self.end);
-            let h = end.time - start.time;
+            let span = self.start.span_to(&self.end);
+            let (t0, h) = (span.t0, span.h);
             let s = within.place[i];
             let contact = self.contact_start;
             let (integrator, y, signal) = (&mut self.integrator, &mut self.y_sample, &self.signal);
             let integrated = self.mechanism.with_contact_state(contact, |mechanism| {
-                mechanism.set_inputs(signal, start.time + s * h);
+                mechanism.set_inputs(signal, t0 + s * h);
                 let mut driven = Driven { mechanism, signal };
-                integrator.state_within(
-                    &mut driven,
-                    start.time,
-                    h,
-                    &start.y,
-                    &start.f,
-                    &end.y,
-                    &end.f,
-                    s,
-                    y,
-                )?;
+                integrator.state_within(&mut driven, &span, s, y)?;
                 Ok::<f64, ModelError>(mechanism.joint_force(role, y).0.force.norm())
             })?;
             if (integrated - value).abs() > peaks::PEAK_TOLERANCE * value {
-                self.monitor
-                    .doubt_peak(role, start.time + s * h, value, integrated);
+                self.monitor.doubt_peak(role, t0 + s * h, value, integrated);
             }
         }
         Ok(())

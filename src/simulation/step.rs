@@ -2,6 +2,7 @@
 //! the last accepted step; and the end of a step in which a joint came into contact, where an
 //! early return stops ([`Onset`]).
 
+use crate::integrator::dense::Span;
 use crate::joint::JointRole;
 
 /// A point of the integrator's step sequence: its time, the state there and the state's
@@ -29,6 +30,18 @@ impl StepPoint {
     /// Whether time, state and derivative are finite numbers.
     pub fn is_finite(&self) -> bool {
         self.time.is_finite() && self.y.iter().chain(&self.f).all(|x| x.is_finite())
+    }
+
+    /// The step from this point to `end`, whose dense output they make.
+    pub fn span_to<'a>(&'a self, end: &'a StepPoint) -> Span<'a> {
+        Span {
+            t0: self.time,
+            h: end.time - self.time,
+            y0: &self.y,
+            f0: &self.f,
+            y1: &end.y,
+            f1: &end.f,
+        }
     }
 
     /// Copies `other` into this point (of the same length).

@@ -183,10 +183,16 @@ fn dense_output_filters_only_the_unresolved() {
     };
     let ((y0, f0), (y1, f1)) = (end(t0), end(t0 + h));
     let s = 0.5;
+    let span = dense::Span {
+        t0,
+        h,
+        y0: &y0,
+        f0: &f0,
+        y1: &y1,
+        f1: &f1,
+    };
     let mut out = [0.0; 4];
-    integrator
-        .dense_output(&mut f, t0, h, &y0, &f0, &y1, &f1, s, &mut out)
-        .unwrap();
+    integrator.dense_output(&mut f, &span, s, &mut out).unwrap();
     let exact = crate::math::cos(3.0 * (t0 + s * h));
     assert!((out[0] - exact).abs() < 1e-11, "{}", out[0] - exact);
     assert!(out[1].abs() < 2e-6, "{}", out[1]);
@@ -194,6 +200,6 @@ fn dense_output_filters_only_the_unresolved() {
     dense::cubic(2, h, &y0, &y1, s, &mut cubic);
     assert!((cubic[0] - exact).abs() > 1e-9, "{}", cubic[0] - exact);
     let mut quintic = [0.0; 4];
-    dense::interpolate(2, h, &y0, &f0, &y1, &f1, s, &mut quintic);
+    dense::interpolate(2, &span, s, &mut quintic);
     assert!(quintic[1].abs() > 1e-4, "{}", quintic[1]);
 }

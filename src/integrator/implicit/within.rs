@@ -7,8 +7,8 @@ use crate::integrator::MechanicalSystem;
 use crate::integrator::dense;
 
 impl Implicit {
-    /// The dense output: the state at t₀ + s·h inside the last accepted step (t₀, y₀, f₀) →
-    /// (t₀ + h, y₁, f₁), written to `out`, from the quintic Hermite interpolant y₅
+    /// The dense output: the state at t₀ + s·h inside the last accepted step `span`, (t₀, y₀, f₀)
+    /// → (t₀ + h, y₁, f₁), written to `out`, from the quintic Hermite interpolant y₅
     /// ([`dense::interpolate`]) and the cubic one y₃ through the same ends without their
     /// accelerations ([`dense::cubic`]), their difference filtered by the Newton matrix:
     /// ```text
@@ -28,28 +28,25 @@ impl Implicit {
     /// of the error estimate (Hairer and Wanner, §IV.8) applied to the interpolant. Without a
     /// factorisation (none kept) it takes the method's own partial step,
     /// [`Implicit::state_within`].
-    #[allow(clippy::too_many_arguments)]
     pub fn dense_output<F: MechanicalSystem>(
         &mut self,
         f: &mut F,
-        t0: f64,
-        h: f64,
-        y0: &[f64],
-        f0: &[f64],
-        y1: &[f64],
-        f1: &[f64],
+        span: &dense::Span<'_>,
         s: f64,
         out: &mut [f64],
     ) -> Result<(), ModelError> {
         let h_factored = self.state.h_factored;
+        let dense::Span {
+            t0, h, y0, f0, y1, ..
+        } = *span;
         if h_factored == 0.0 {
             if self.state_within(f, t0, y0, f0, s * h, out).is_err() {
-                dense::interpolate(self.n_q, h, y0, f0, y1, f1, s, out);
+                dense::interpolate(self.n_q, span, s, out);
             }
             return Ok(());
         }
         let n_q = self.n_q;
-        dense::interpolate(n_q, h, y0, f0, y1, f1, s, out);
+        dense::interpolate(n_q, span, s, out);
         let cubic = &mut self.stage;
         dense::cubic(n_q, h, y0, y1, s, cubic);
         let (lambda, kappa) = self.scheme.newton_coefficients(h_factored);
