@@ -90,6 +90,16 @@ impl<V: InputValues> Polynomial<V> {
         out
     }
 
+    /// Whether `other` is the same polynomial, bit for bit (a zero's sign included).
+    pub fn same_bits(&self, other: &Self) -> bool {
+        let values = |p: &Self| [p.value, p.derivatives[0], p.derivatives[1]];
+        self.start.to_bits() == other.start.to_bits()
+            && values(self)
+                .iter()
+                .zip(&values(other))
+                .all(|(a, b)| (0..V::LEN).all(|k| a.value(k).to_bits() == b.value(k).to_bits()))
+    }
+
     /// Whether any derivative is set.
     pub fn varies(&self) -> bool {
         self.derivatives != [V::ZERO; 2]
@@ -176,6 +186,26 @@ mod tests {
         b.derivatives[1][1] = 1.0;
         assert!(a.same_from(&b, 0.0, |k| k == 0));
         assert!(!a.same_from(&b, 0.0, |_| true));
+    }
+
+    #[test]
+    fn the_same_bits_tell_apart_what_equality_does_not() {
+        let a = Polynomial::held([0.0, 2.0]).starting(0.5);
+        assert!(a.same_bits(&a.clone()));
+        let mut negative_zero = a;
+        negative_zero.value[0] = -0.0;
+        assert_eq!(a, negative_zero);
+        assert!(!a.same_bits(&negative_zero));
+        for change in [
+            |p: &mut Polynomial<[f64; 2]>| p.start = 0.25,
+            |p: &mut Polynomial<[f64; 2]>| p.value[1] = 3.0,
+            |p: &mut Polynomial<[f64; 2]>| p.derivatives[0][1] = 1.0,
+            |p: &mut Polynomial<[f64; 2]>| p.derivatives[1][0] = 1.0,
+        ] {
+            let mut b = a;
+            change(&mut b);
+            assert!(!a.same_bits(&b));
+        }
     }
 
     #[test]

@@ -94,6 +94,7 @@ impl Simulation {
         if reached <= interval.t_start {
             return Ok(None);
         }
+        self.last_read = None;
         self.paused = None;
         self.finish_interval(reached)?;
         Ok(Some(reached))
@@ -107,6 +108,7 @@ impl Simulation {
         stop_at_onset: bool,
         pause: bool,
     ) -> Result<Advance, ModelError> {
+        self.last_read = None;
         let t_end = on_clock_grid(t_end);
         let (interval, resumed) = match self.paused.take() {
             Some(paused) if paused.t_end == t_end => (paused, true),

@@ -67,6 +67,9 @@ pub struct Simulation {
     monitor: Monitor,
     /// The interval paused inside ([`Simulation::advance_pausing`]), if any.
     paused: Option<step::Interval>,
+    /// The outputs last read and the inputs they saw, until the simulation next moves
+    /// ([`Simulation::outputs_seeing`]).
+    last_read: Option<(InputSignal, Outputs)>,
 }
 
 impl Simulation {
@@ -150,6 +153,7 @@ impl Simulation {
             peaks,
             monitor,
             paused: None,
+            last_read: None,
         })
     }
 
@@ -167,6 +171,7 @@ impl Simulation {
     /// state; the time is rounded to the clock grid. Before the first step the integrator's clock
     /// moves with it.
     pub fn set_time(&mut self, time: f64) {
+        self.last_read = None;
         let time = on_clock_grid(time);
         if self.end.time == self.time {
             self.start.time = time;

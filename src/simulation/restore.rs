@@ -24,6 +24,7 @@ impl Simulation {
 
     /// Restores a snapshot taken from a simulation with the same parameters.
     pub fn restore(&mut self, snapshot: &Snapshot) -> Result<(), ModelError> {
+        self.last_read = None;
         let n = self.state.len();
         let lengths = [
             snapshot.state.len(),
