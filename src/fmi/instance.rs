@@ -172,21 +172,20 @@ impl Model for SliderCrankFmu {
     /// fmi2GetReal.
     fn get_real(&mut self, cx: &Cx, vars: &[Var<Vr>], values: &mut [f64]) -> Result<(), FmuError> {
         let mut outputs: Option<Outputs> = None;
-        let none = Outputs::default();
         for (&v, value) in vars.iter().zip(values.iter_mut()) {
-            if v.causality == Causality::Output && outputs.is_none() {
-                outputs = Some(self.outputs(cx)?);
-            }
-            let o = outputs.as_ref().unwrap_or(&none);
-            if let Some(x) = real_parameter(&self.parameters, v.vr) {
-                *value = x;
-                continue;
-            }
-            if let Some(x) = real_output(o, v.vr) {
-                *value = x;
+            if v.causality == Causality::Output {
+                let o = match &outputs {
+                    Some(o) => o,
+                    None => outputs.insert(self.outputs(cx)?),
+                };
+                *value = real_output(o, v.vr).map_or_else(|| unreachable_type(v), Ok)?;
                 continue;
             }
             let p = &self.parameters;
+            if let Some(x) = real_parameter(p, v.vr) {
+                *value = x;
+                continue;
+            }
             *value = match v.vr {
                 Vr::JointContactStiffness => Simulation::contact_stiffness(p),
                 Vr::DriveSpeed => cx.inputs.value.drive_speed,

@@ -7,7 +7,7 @@ use fmi_export::model::Var;
 use crate::simulation::{
     BearingOutputs, Input, InputSignal, Outputs, SectionResult, Simulation, section_place,
 };
-use crate::variables::{SectionArray, Vr};
+use crate::variables::{SectionArray, VARIABLES, Vr};
 
 /// The rod.section array `array` (its index in [`SectionArray::ALL`]) at `value.len()` sections
 /// along a rod of reference length `rod_length` \[m\]; the results other than the positions
@@ -253,15 +253,26 @@ fn bearing_values(b: &BearingOutputs) -> [f64; 18] {
     ]
 }
 
+/// Where each variable's value sits in [`BEARING_OUTPUTS`], by value reference: its joint's row
+/// and its place in the row, None for the other variables.
+const BEARING_PLACES: [Option<(usize, usize)>; VARIABLES.len()] = {
+    let mut places = [None; VARIABLES.len()];
+    let mut joint = 0;
+    while joint < BEARING_OUTPUTS.len() {
+        let mut k = 0;
+        while k < BEARING_OUTPUTS[joint].len() {
+            places[BEARING_OUTPUTS[joint][k] as usize] = Some((joint, k));
+            k += 1;
+        }
+        joint += 1;
+    }
+    places
+};
+
 /// The value of a joint's bearing-design output, None for other variables.
 fn bearing_output(o: &Outputs, vr: Vr) -> Option<f64> {
-    BEARING_OUTPUTS
-        .iter()
-        .zip(&o.bearings)
-        .find_map(|(vrs, b)| {
-            let k = vrs.iter().position(|&v| v == vr)?;
-            Some(bearing_values(b)[k])
-        })
+    let (joint, k) = BEARING_PLACES[vr as usize]?;
+    Some(bearing_values(&o.bearings[joint])[k])
 }
 
 /// The value of a count output (an Integer computed from the outputs), None for other variables.

@@ -82,6 +82,9 @@ pub struct RodModel {
     k_full: Mat<f64>,
     k_work: Mat<f64>,
     memo: ForceMemo,
+    /// The last mid-span deflection with its coordinates: the validity check at a communication
+    /// point and the outputs read there ask for the same one.
+    midspan: (Vec<f64>, Option<f64>),
 }
 
 /// The last internal force with its arguments. Most difference quotients of the integrator's
@@ -110,9 +113,9 @@ impl ForceMemo {
 
     /// The stored power if the arguments equal the stored ones bit for bit (force copied to `out`).
     fn recall(&self, p: &[f64], p_dot: &[f64], out: &mut [f64]) -> Option<f64> {
-        let same = |a: &[f64], b: &[f64]| a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits());
-        let hit =
-            self.valid && same(&self.p, p) && (self.p_dot.is_empty() || same(&self.p_dot, p_dot));
+        let hit = self.valid
+            && same_bits(&self.p, p)
+            && (self.p_dot.is_empty() || same_bits(&self.p_dot, p_dot));
         hit.then(|| {
             out.copy_from_slice(&self.force);
             self.power
@@ -186,6 +189,7 @@ impl RodModel {
             k_full: Mat::zeros(n_full, n_full),
             k_work: Mat::zeros(n_full, n),
             memo: ForceMemo::new(n),
+            midspan: (vec![0.0; n], None),
             rod,
         })
     }
@@ -351,8 +355,16 @@ impl RodModel {
     /// Mid-span deflection: displacement of the point at arc length L/2 perpendicular to the chord
     /// from node 0 to the last node, positive to the left of the chord direction \[m\].
     pub fn midspan_deflection(&mut self, p: &[f64]) -> f64 {
+        if let (key, Some(deflection)) = &self.midspan {
+            if same_bits(key, p) {
+                return *deflection;
+            }
+        }
         let e = nodal(self.reduction.as_ref(), &mut self.e, p);
-        self.rod.deflection(e, 0.5)
+        let deflection = self.rod.deflection(e, 0.5);
+        self.midspan.0.copy_from_slice(p);
+        self.midspan.1 = Some(deflection);
+        deflection
     }
 
     /// The rod's `result` at `out.len()` evenly spaced sections from its first node to its last
@@ -420,6 +432,11 @@ impl RodModel {
         self.solve_mass(&mut p);
         p
     }
+}
+
+/// Whether `a` and `b` hold the same numbers, bit for bit.
+fn same_bits(a: &[f64], b: &[f64]) -> bool {
+    a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits())
 }
 
 /// The nodal coordinates of the model coordinates `p`: expanded into `buffer` by the
