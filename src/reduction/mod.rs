@@ -434,7 +434,9 @@ impl RodModel {
     }
 }
 
-/// Whether `a` and `b` hold the same numbers, bit for bit.
+/// Whether `a` and `b` hold the same numbers, bit for bit. Inlined: the memo's recall is on the
+/// hot path, and a call there measured 2 % of the undamped rod's run.
+#[inline(always)]
 fn same_bits(a: &[f64], b: &[f64]) -> bool {
     a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits())
 }
