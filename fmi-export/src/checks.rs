@@ -18,52 +18,19 @@ pub fn lookup<V: ValueReference>(
     vr: u32,
     base: &str,
 ) -> Result<&'static Variable<V>, FmuError> {
-    lookup_admitted(table, vr, base, Admits::of(base))
-}
-
-/// The kinds of variable an FMI type's getters and setters take ([`lookup`]).
-#[derive(Clone, Copy)]
-struct Admits {
-    real: bool,
-    integer: bool,
-    enumeration: bool,
-    boolean: bool,
-    string: bool,
-}
-
-impl Admits {
-    fn of(base: &str) -> Self {
-        Self {
-            real: matches!(base, "Real" | "Float64"),
-            integer: matches!(base, "Integer" | "Int32"),
-            enumeration: matches!(base, "Integer" | "Int64"),
-            boolean: base == "Boolean",
-            string: base == "String",
-        }
-    }
-
-    fn kind(self, kind: &Kind) -> bool {
-        match kind {
-            Kind::Real { .. } => self.real,
-            Kind::Integer { .. } => self.integer,
-            Kind::Enumeration { .. } => self.enumeration,
-            Kind::Boolean => self.boolean,
-            Kind::String { .. } => self.string,
-        }
-    }
-}
-
-/// [`lookup`] with the kinds `base` admits worked out once.
-fn lookup_admitted<V: ValueReference>(
-    table: &'static [Variable<V>],
-    vr: u32,
-    base: &str,
-    admits: Admits,
-) -> Result<&'static Variable<V>, FmuError> {
     let v = table
         .get(vr as usize)
         .ok_or_else(|| FmuError::Invalid(format!("unknown value reference {vr}")))?;
-    if admits.kind(&v.kind) {
+    let matches = matches!(
+        (v.kind, base),
+        (Kind::Real { .. }, "Real" | "Float64")
+            | (Kind::Integer { .. } | Kind::Enumeration { .. }, "Integer")
+            | (Kind::Integer { .. }, "Int32")
+            | (Kind::Enumeration { .. }, "Int64")
+            | (Kind::Boolean, "Boolean")
+            | (Kind::String { .. }, "String")
+    );
+    if matches {
         Ok(v)
     } else {
         Err(FmuError::Invalid(format!(
@@ -119,9 +86,8 @@ pub fn resolve<M: Model>(
     out: &mut Vec<Var<M::Vr>>,
 ) -> Result<(), FmuError> {
     out.clear();
-    let admits = Admits::of(base);
     for &vr in vrs {
-        out.push(lookup_admitted(M::VARIABLES, vr, base, admits)?);
+        out.push(lookup(M::VARIABLES, vr, base)?);
     }
     Ok(())
 }
