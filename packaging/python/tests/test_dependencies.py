@@ -90,8 +90,9 @@ def test_directional_derivatives_agree_with_central_differences(fmu):
     those differences' round-off 16 eps |y| / h (measured on a line of 41 input values: the rod's
     stresses deviate from their straight line by up to 15 eps |y|, as their bending moment sums
     moments of the pin force and the rod's inertia up to F l, larger than itself; other outputs
-    6 eps |y|; the mid-span bending moment's own round-off scales with F l, not |y|); exactly zero where no feedthrough is declared. A peak-hold output is compared
-    where the master's differences stay on one side of its kink."""
+    6 eps |y|; the mid-span bending moment's own round-off scales with F l, not |y|); exactly
+    zero where no feedthrough is declared. A peak-hold output is compared where the master's
+    differences stay on one side of its kink."""
     md = read_model_description(fmu)
     vr = {v.name: v.valueReference for v in md.modelVariables}
     inputs = [v.name for v in md.modelVariables if v.causality == "input"]
