@@ -74,7 +74,8 @@ pub struct RodModel {
     /// r_ₓ at each end ([`RodEnd`]) = Σ (w · (p₂ⱼ, p₂ⱼ₊₁)) over (j, w): the end slopes as
     /// combinations of coordinate pairs.
     end_slopes: [Vec<(usize, f64)>; 2],
-    e: Vec<f64>,
+    /// Nodal coordinates of the last model coordinates expanded.
+    e: Expansion,
     e_dot: Vec<f64>,
     /// Nodal accelerations (section resultants).
     e_ddot: Vec<f64>,
@@ -182,7 +183,7 @@ impl RodModel {
             mass_factor,
             mass,
             end_masses: [0.0; 2],
-            e: vec![0.0; n_full],
+            e: Expansion::new(n, n_full),
             e_dot: vec![0.0; n_full],
             e_ddot: vec![0.0; n_full],
             q: vec![0.0; n_full],
@@ -272,13 +273,7 @@ impl RodModel {
 
     /// Nodal ANCF coordinates e of the model coordinates `p` (e = V p, or p itself).
     pub fn nodal_coordinates<'a>(&'a mut self, p: &'a [f64]) -> &'a [f64] {
-        match &self.reduction {
-            Some(cb) => {
-                cb.expand(p, &mut self.e);
-                &self.e
-            }
-            None => p,
-        }
+        self.e.of(self.reduction.as_ref(), p)
     }
 
     /// Internal (elastic + damping) force in model coordinates, written to `out`; returns the
@@ -291,12 +286,12 @@ impl RodModel {
         let power = match (&self.reduction, &self.sampled) {
             (_, Some(sampled)) => sampled.internal_force(p, p_dot, out),
             (Some(cb), None) => {
-                cb.expand(p, &mut self.e);
+                let e = self.e.of(Some(cb), p);
                 let power = if damped {
                     cb.expand(p_dot, &mut self.e_dot);
-                    self.rod.internal_force(&self.e, &self.e_dot, &mut self.q)
+                    self.rod.internal_force(e, &self.e_dot, &mut self.q)
                 } else {
-                    self.rod.elastic_force(&self.e, &mut self.q);
+                    self.rod.elastic_force(e, &mut self.q);
                     0.0
                 };
                 cb.project(&self.q, out);
@@ -313,8 +308,8 @@ impl RodModel {
     pub fn tangent_stiffness(&mut self, p: &[f64], out: MatMut<'_, f64>) {
         match &self.reduction {
             Some(cb) => {
-                cb.expand(p, &mut self.e);
-                self.rod.tangent_stiffness(&self.e, self.k_full.as_mut());
+                let e = self.e.of(Some(cb), p);
+                self.rod.tangent_stiffness(e, self.k_full.as_mut());
                 cb.project_matrix(self.k_full.as_ref(), self.k_work.as_mut(), out);
             }
             None => self.rod.tangent_stiffness(p, out),
@@ -326,19 +321,14 @@ impl RodModel {
         if let Some(sampled) = &self.sampled {
             return sampled.strain_energy(p);
         }
-        match &self.reduction {
-            Some(cb) => {
-                cb.expand(p, &mut self.e);
-                self.rod.strain_energy(&self.e)
-            }
-            None => self.rod.strain_energy(p),
-        }
+        let e = self.e.of(self.reduction.as_ref(), p);
+        self.rod.strain_energy(e)
     }
 
     /// The rod's strain energy, normal stresses and end tangents at `p` with accelerations
     /// `p_ddot` under `load`, from one expansion to nodal coordinates.
     pub fn deformation(&mut self, p: &[f64], p_ddot: &[f64], load: &RodLoad) -> Deformation {
-        let e = nodal(self.reduction.as_ref(), &mut self.e, p);
+        let e = self.e.of(self.reduction.as_ref(), p);
         let e_ddot = nodal(self.reduction.as_ref(), &mut self.e_ddot, p_ddot);
         let last = self.rod.last_node_offset();
         let unit = |at: usize| Vector2::new(e[at], e[at + 1]).normalize();
@@ -360,7 +350,7 @@ impl RodModel {
                 return *deflection;
             }
         }
-        let e = nodal(self.reduction.as_ref(), &mut self.e, p);
+        let e = self.e.of(self.reduction.as_ref(), p);
         let deflection = self.rod.deflection(e, 0.5);
         self.midspan.0.copy_from_slice(p);
         self.midspan.1 = Some(deflection);
@@ -377,7 +367,7 @@ impl RodModel {
         result: SectionResult,
         out: &mut [f64],
     ) {
-        let e = nodal(self.reduction.as_ref(), &mut self.e, p);
+        let e = self.e.of(self.reduction.as_ref(), p);
         let e_ddot = nodal(self.reduction.as_ref(), &mut self.e_ddot, p_ddot);
         self.rod.sections(e, e_ddot, load, result, out);
     }
@@ -441,6 +431,41 @@ fn same_bits(a: &[f64], b: &[f64]) -> bool {
     a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits())
 }
 
+/// The nodal coordinates e = V p of the model coordinates last expanded, with those
+/// coordinates: the validity check at a communication point, the equations of motion there and
+/// in the peak-hold's samples, and the loads read with them ask for the same expansion, and a
+/// Jacobian's difference quotients in a damped rod's velocities keep the positions.
+#[derive(Clone, Debug)]
+struct Expansion {
+    p: Vec<f64>,
+    e: Vec<f64>,
+    valid: bool,
+}
+
+impl Expansion {
+    fn new(n: usize, n_full: usize) -> Self {
+        Self {
+            p: vec![0.0; n],
+            e: vec![0.0; n_full],
+            valid: false,
+        }
+    }
+
+    /// The nodal coordinates of `p`: expanded by the reduction unless the stored ones are of
+    /// these coordinates bit for bit, or `p` itself for the full rod.
+    fn of<'a>(&'a mut self, reduction: Option<&CraigBampton>, p: &'a [f64]) -> &'a [f64] {
+        let Some(cb) = reduction else {
+            return p;
+        };
+        if !(self.valid && same_bits(&self.p, p)) {
+            cb.expand(p, &mut self.e);
+            self.p.copy_from_slice(p);
+            self.valid = true;
+        }
+        &self.e
+    }
+}
+
 /// The nodal coordinates of the model coordinates `p`: expanded into `buffer` by the
 /// reduction, or `p` itself for the full rod.
 fn nodal<'a>(reduction: Option<&CraigBampton>, buffer: &'a mut [f64], p: &'a [f64]) -> &'a [f64] {
@@ -450,5 +475,81 @@ fn nodal<'a>(reduction: Option<&CraigBampton>, buffer: &'a mut [f64], p: &'a [f6
             buffer
         }
         None => p,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ancf::RodProperties;
+    use crate::math;
+
+    /// What a reduced, damped rod gives at some coordinates is the same, bit for bit, whatever
+    /// coordinates it expanded before: two deformed states read in turn, through every method
+    /// that expands positions, against a model that reads each state afresh.
+    #[test]
+    fn a_reading_is_of_its_own_coordinates() {
+        let props = RodProperties {
+            stiffness_damping: 1e-5,
+            ..RodProperties::benchmark_b()
+        };
+        let model = || {
+            let rod = Rod::new(props, 4).unwrap();
+            RodModel::craig_bampton(rod, 4, Boundary::PositionsAndSlopes, Quadrature::Full).unwrap()
+        };
+        let straight = model().model_coordinates(
+            &model()
+                .rod()
+                .straight_configuration(Vector2::new(0.03, -0.01), 0.7),
+        );
+        let states: Vec<(Vec<f64>, Vec<f64>)> = [1.0, -2.0]
+            .iter()
+            .map(|&s| {
+                let p = straight
+                    .iter()
+                    .enumerate()
+                    .map(|(i, x)| x + s * 1e-4 * math::sin(i as f64 + 1.0))
+                    .collect();
+                let p_dot = (0..straight.len())
+                    .map(|i| s * math::cos(i as f64))
+                    .collect();
+                (p, p_dot)
+            })
+            .collect();
+        let load = RodLoad {
+            start_force: Vector2::new(120.0, -40.0),
+            start_moment: 0.0,
+            gravity: Vector2::new(0.0, -9.81),
+        };
+        let n = straight.len();
+        let read = |m: &mut RodModel, (p, p_dot): &(Vec<f64>, Vec<f64>)| {
+            let mut force = vec![0.0; n];
+            let power = m.internal_force(p, p_dot, &mut force);
+            let deformation = m.deformation(p, p_dot, &load);
+            let mut stiffness = Mat::zeros(n, n);
+            m.tangent_stiffness(p, stiffness.as_mut());
+            let stiffness: Vec<u64> = (0..n * n)
+                .map(|k| stiffness[(k % n, k / n)].to_bits())
+                .collect();
+            let energy = m.strain_energy(p);
+            let midspan = m.midspan_deflection(p);
+            let mut sections = vec![0.0; 5];
+            m.sections(p, p_dot, &load, SectionResult::AxialForce, &mut sections);
+            let nodal = m.nodal_coordinates(p).to_vec();
+            let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            (
+                bits(&force),
+                power.to_bits(),
+                format!("{deformation:?}"),
+                stiffness,
+                [energy, midspan].map(f64::to_bits),
+                bits(&sections),
+                bits(&nodal),
+            )
+        };
+        let mut in_turn = model();
+        for state in [&states[0], &states[1], &states[0], &states[1]] {
+            assert_eq!(read(&mut in_turn, state), read(&mut model(), state));
+        }
     }
 }
