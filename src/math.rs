@@ -10,6 +10,15 @@
 //! operators are correctly rounded by IEEE 754 and need no replacement; `clippy.toml` disallows
 //! the platform versions.
 
+/// Whether `a` and `b` hold the same numbers, bit for bit (a zero's sign and a NaN's payload
+/// included): what a memo compares its arguments by, where `==` would hold −0 and +0 equal and a
+/// NaN unequal to itself. Inlined: memos are on the hot path, and a call there measured 2 % of the
+/// undamped rod's run.
+#[inline(always)]
+pub fn same_bits(a: &[f64], b: &[f64]) -> bool {
+    a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits())
+}
+
 /// sin x.
 #[inline]
 pub fn sin(x: f64) -> f64 {

@@ -97,6 +97,14 @@ impl ContactState {
 pub struct Contacts(pub [ContactState; 3]);
 
 impl Contacts {
+    /// Whether `other` holds the same states, bit for bit.
+    pub fn same_bits(&self, other: &Contacts) -> bool {
+        self.0.iter().zip(&other.0).all(|(a, b)| {
+            a.in_contact == b.in_contact
+                && a.impact_velocity.to_bits() == b.impact_velocity.to_bits()
+        })
+    }
+
     /// Whether any journal touches its bearing.
     pub fn any(&self) -> bool {
         self.0.iter().any(|c| c.in_contact)

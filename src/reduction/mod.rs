@@ -22,6 +22,7 @@ use nalgebra::Vector2;
 use crate::ancf::RodLoad;
 use crate::ancf::{NormalStresses, Rod, SectionResult};
 use crate::error::ModelError;
+use crate::math::same_bits;
 
 /// How the reduced rod integrates its internal forces and strain energy.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -422,13 +423,6 @@ impl RodModel {
         self.solve_mass(&mut p);
         p
     }
-}
-
-/// Whether `a` and `b` hold the same numbers, bit for bit. Inlined: the memo's recall is on the
-/// hot path, and a call there measured 2 % of the undamped rod's run.
-#[inline(always)]
-fn same_bits(a: &[f64], b: &[f64]) -> bool {
-    a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits())
 }
 
 /// The nodal coordinates e = V p of the model coordinates last expanded, with those

@@ -36,7 +36,8 @@ impl EndSample {
         signal: &InputSignal,
         contacts: Contacts,
     ) -> Option<Sample> {
-        (self.signal.as_ref() == Some(signal) && self.contacts == contacts && self.point == *point)
+        let same_signal = self.signal.as_ref().is_some_and(|s| s.same_bits(signal));
+        (same_signal && self.contacts.same_bits(&contacts) && self.point.same_bits(point))
             .then_some(self.sample)
     }
 
@@ -65,7 +66,7 @@ mod tests {
     use crate::mechanism::Inputs;
 
     /// The kept end sample is given back only for the point, inputs and contact state it was
-    /// taken with, each bit for bit, and not after a sample that a step's inside would not
+    /// taken with, each bit for bit (a zero's sign included), and not after a sample that a step's inside would not
     /// reproduce was stored in its place.
     #[test]
     fn the_end_sample_is_reused_only_where_it_was_taken() {
@@ -100,6 +101,17 @@ mod tests {
             ..touching.0[2]
         };
         assert_eq!(kept.at(&point, &signal, touching), None);
+        // A zero's sign tells apart what == holds equal.
+        let mut at_zero = point.clone();
+        at_zero.y[0] = 0.0;
+        kept.store(&at_zero, &signal, contacts, Some(sample));
+        assert_eq!(kept.at(&at_zero, &signal, contacts), Some(sample));
+        let mut negative_zero = at_zero.clone();
+        negative_zero.y[0] = -0.0;
+        assert_eq!(kept.at(&negative_zero, &signal, contacts), None);
+        let mut reversed = signal;
+        reversed.value.slider_force = -0.0;
+        assert_eq!(kept.at(&at_zero, &reversed, contacts), None);
         kept.store(&point, &signal, contacts, None);
         assert_eq!(kept.at(&point, &signal, contacts), None);
     }

@@ -4,6 +4,7 @@
 
 use crate::integrator::dense::Span;
 use crate::joint::JointRole;
+use crate::math;
 
 /// A point of the integrator's step sequence: its time, the state there and the state's
 /// derivative (what the dense output between two points is made of).
@@ -25,6 +26,13 @@ impl StepPoint {
             y: y.to_vec(),
             f: vec![0.0; y.len()],
         }
+    }
+
+    /// Whether `other` has the same time, state and derivative, bit for bit.
+    pub fn same_bits(&self, other: &StepPoint) -> bool {
+        self.time.to_bits() == other.time.to_bits()
+            && math::same_bits(&self.y, &other.y)
+            && math::same_bits(&self.f, &other.f)
     }
 
     /// Whether time, state and derivative are finite numbers.
