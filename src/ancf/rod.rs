@@ -266,7 +266,6 @@ impl Rod {
         }
     }
 
-    /// The rod's normal stresses ([`NormalStresses`]): over the rod, σ = N/A ± |M| c/I =
     /// Strain energy U(e) = Σ element energies \[J\].
     pub fn strain_energy(&self, e: &[f64]) -> f64 {
         (0..self.n_elements)
