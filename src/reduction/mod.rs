@@ -84,9 +84,6 @@ pub struct RodModel {
     k_full: Mat<f64>,
     k_work: Mat<f64>,
     memo: ForceMemo,
-    /// The last mid-span deflection with its coordinates: the validity check at a communication
-    /// point and the outputs read there ask for the same one.
-    midspan: (Vec<f64>, Option<f64>),
 }
 
 /// The last internal force with its arguments. Most difference quotients of the integrator's
@@ -191,7 +188,6 @@ impl RodModel {
             k_full: Mat::zeros(n_full, n_full),
             k_work: Mat::zeros(n_full, n),
             memo: ForceMemo::new(n),
-            midspan: (vec![0.0; n], None),
             rod,
         })
     }
@@ -346,16 +342,8 @@ impl RodModel {
     /// Mid-span deflection: displacement of the point at arc length L/2 perpendicular to the chord
     /// from node 0 to the last node, positive to the left of the chord direction \[m\].
     pub fn midspan_deflection(&mut self, p: &[f64]) -> f64 {
-        if let (key, Some(deflection)) = &self.midspan {
-            if same_bits(key, p) {
-                return *deflection;
-            }
-        }
         let e = self.e.of(self.reduction.as_ref(), p);
-        let deflection = self.rod.deflection(e, 0.5);
-        self.midspan.0.copy_from_slice(p);
-        self.midspan.1 = Some(deflection);
-        deflection
+        self.rod.deflection(e, 0.5)
     }
 
     /// The rod's `result` at `out.len()` evenly spaced sections from its first node to its last
