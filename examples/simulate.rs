@@ -43,7 +43,6 @@ fn main() -> Result<(), ModelError> {
         if i > 0 {
             let next = i as f64 * interval;
             let h = next - t;
-            sim.set_time(t); // the FMU snaps its clock to each communication point
             sim.advance_to(t + h)?;
             t = next;
         }

@@ -5,7 +5,7 @@
 use fmi_core::clock::on_clock_grid;
 use fmi_core::codec::{ByteReader, ByteWriter};
 use fmi_core::number::Num;
-use fmi_core::signal::Polynomial;
+use fmi_core::signal::{InputRecord, Polynomial};
 use fmi_export::checks::check_real;
 use fmi_export::model::{Context, Var};
 use fmi_export::{FmuError, Logger, Model, State, Step, StepOutcome};
@@ -21,6 +21,9 @@ const MAX_STEPS: f64 = 1e8;
 
 /// The inputs (load speed, set-point) over a communication step.
 type Signal = Polynomial<[f64; 2]>;
+
+/// The instance's inputs ([`InputRecord`]).
+type Record = InputRecord<[f64; 2]>;
 
 /// What the instance holds for the motor: the logger, the inputs and the clock.
 type Cx<'a> = Context<'a, [f64; 2]>;
@@ -73,7 +76,8 @@ impl DcMotorFmu {
     }
 
     /// The state: until initialization ends, the steady state at the set-point of `inputs`.
-    fn state(&self, inputs: &Signal) -> MotorState {
+    fn state(&self, inputs: &Record) -> MotorState {
+        let inputs = inputs.stepping();
         self.state.unwrap_or_else(|| {
             let torque = self.parameters[Vr::ShaftInitialTorque as usize];
             self.motor().steady_state(inputs.value[1], torque)
@@ -118,6 +122,11 @@ impl DcMotorFmu {
 /// The motor's time: the communication point on the clock grid \[s\].
 fn time(cx: &Cx) -> f64 {
     on_clock_grid(cx.time)
+}
+
+/// The motor's inputs at the current point, as outputs read them.
+fn now(cx: &Cx) -> MotorInputs {
+    inputs(cx.inputs.reading(), time(cx))
 }
 
 /// The output `vr` among the motor's outputs (None for any other variable).
@@ -183,7 +192,7 @@ impl Model for DcMotorFmu {
         let mut x = self.state(cx.inputs);
         let signal = Signal {
             start: t,
-            ..*cx.inputs
+            ..*cx.inputs.stepping()
         };
         self.motor()
             .advance(&mut x, end - t, n, |tau| inputs(&signal, t + tau));
@@ -195,11 +204,11 @@ impl Model for DcMotorFmu {
         for (&v, value) in vars.iter().zip(values.iter_mut()) {
             let read = match (v.causality, v.vr) {
                 (Causality::Parameter, vr) => Some(self.parameters[vr as usize]),
-                (Causality::Input, Vr::ShaftSpeed) => Some(cx.inputs.value[0]),
-                (Causality::Input, _) => Some(cx.inputs.value[1]),
+                (Causality::Input, Vr::ShaftSpeed) => Some(cx.inputs.reading().value[0]),
+                (Causality::Input, _) => Some(cx.inputs.reading().value[1]),
                 (_, vr) => {
                     let x = self.state(cx.inputs);
-                    output(&self.motor().outputs(&x, &inputs(cx.inputs, time(cx))), vr)
+                    output(&self.motor().outputs(&x, &now(cx)), vr)
                 }
             };
             *value = read.ok_or_else(|| FmuError::Invalid(format!("{} cannot be read", v.name)))?;
@@ -241,8 +250,8 @@ impl Model for DcMotorFmu {
     ) -> Result<(), FmuError> {
         let x = self.state(cx.inputs);
         let motor = self.motor();
-        let now = inputs(cx.inputs, time(cx));
-        let load_rate = cx.inputs.rate(time(cx))[0];
+        let now = now(cx);
+        let load_rate = cx.inputs.reading().rate(time(cx))[0];
         let d = motor.derivative(&x, &now);
         for ((&v, &order), value) in vars.iter().zip(orders).zip(values.iter_mut()) {
             *value = match (v.vr, order) {
@@ -273,9 +282,7 @@ impl Model for DcMotorFmu {
     ) -> Result<(), FmuError> {
         let set_point = known.vr == Vr::SpeedSetPoint;
         let x = self.state(cx.inputs);
-        let d = self
-            .motor()
-            .output_derivatives(&x, &inputs(cx.inputs, time(cx)), set_point);
+        let d = self.motor().output_derivatives(&x, &now(cx), set_point);
         for (v, c) in unknowns.iter().zip(column.iter_mut()) {
             *c = output(&d, v.vr)
                 .ok_or_else(|| FmuError::Invalid(format!("{} is not an output", v.name)))?;

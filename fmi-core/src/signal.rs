@@ -105,14 +105,13 @@ impl<V: InputValues> Polynomial<V> {
         self.derivatives != [V::ZERO; 2]
     }
 
-    /// Holds the inputs from `t` on at the values the polynomials reach there (input derivatives
-    /// hold for one communication step). Held inputs stay as they are.
-    pub fn hold_at(&mut self, t: f64) {
-        if self.varies() {
-            *self = Self {
-                start: t,
-                ..Self::held(self.at(t))
-            };
+    /// The same functions of time, written from `t` on: the values and rates there, the second
+    /// derivatives as they are (a Taylor shift of each polynomial).
+    pub fn continued_at(&self, t: f64) -> Self {
+        Self {
+            start: t,
+            value: self.at(t),
+            derivatives: [self.rate(t), self.derivatives[1]],
         }
     }
 
@@ -159,13 +158,146 @@ impl<V: InputValues> Polynomial<V> {
     }
 }
 
+/// The inputs of one model instance, with one owner: what the master set at the current
+/// communication point for the next step, and what the last step was integrated with.
+///
+/// - Values and derivatives set at a communication point make the polynomial of the next step
+///   ([`InputRecord::stepping`]); an input whose derivatives are not set there is held over it (input
+///   derivatives hold for one communication step).
+/// - At the point a step ends, until an input or a derivative is set there, an output reads the
+///   inputs as that step ended: the values its polynomials reached and their rates
+///   ([`InputRecord::reading`]: the derivative the step was integrated with, so that an acceleration
+///   under a prescribed speed ramp includes the ramp's rate). Once the master sets an input there,
+///   outputs read what the next step will be integrated with.
+/// - Whether an input is the same function of time over the next step as over the last one
+///   ([`InputRecord::continues`]) tells a model whether its step sequence may go on.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct InputRecord<V> {
+    /// The next step's inputs, from the current point.
+    next: Polynomial<V>,
+    /// The last step's inputs, continued to the current point ([`Polynomial::continued_at`]).
+    last: Polynomial<V>,
+    /// Whether outputs read `last`: at a step's end, before anything is set there.
+    reading_last: bool,
+}
+
+impl<V: InputValues> InputRecord<V> {
+    /// Inputs held at `value` from `t` on, no step taken.
+    pub fn held(value: V, t: f64) -> Self {
+        let held = Polynomial {
+            start: t,
+            ..Polynomial::held(value)
+        };
+        Self {
+            next: held,
+            last: held,
+            reading_last: false,
+        }
+    }
+
+    /// The inputs the next step is integrated with (during a step: the step's).
+    pub fn stepping(&self) -> &Polynomial<V> {
+        &self.next
+    }
+
+    /// The inputs the last step was integrated with, continued to the current point (before the
+    /// first step: the start's).
+    pub fn last(&self) -> &Polynomial<V> {
+        &self.last
+    }
+
+    /// The inputs an output reads at the current point: as the last step ended there, until an
+    /// input or a derivative is set; else those of the next step.
+    pub fn reading(&self) -> &Polynomial<V> {
+        if self.reading_last {
+            &self.last
+        } else {
+            &self.next
+        }
+    }
+
+    /// Whether the input `k` is the same function of time from the current point `t` on over the
+    /// next step as it was over the last one (values, rates and second derivatives there).
+    pub fn continues(&self, k: usize, t: f64) -> bool {
+        self.last.same_from(&self.next, t, |j| j == k)
+    }
+
+    /// Sets the value of input `k` at the current point.
+    pub fn set_value(&mut self, k: usize, x: f64) {
+        *self.next.value.value_mut(k) = x;
+        self.reading_last = false;
+    }
+
+    /// Sets the `order`-th derivative (1 or 2) of input `k` at the current point; None for
+    /// another order.
+    pub fn set_derivative(&mut self, k: usize, order: usize, x: f64) -> Option<()> {
+        let derivative = self.next.derivatives.get_mut(order.checked_sub(1)?)?;
+        *derivative.value_mut(k) = x;
+        self.reading_last = false;
+        Some(())
+    }
+
+    /// Sets every value and derivative of the next step at once, to those of `inputs` at the
+    /// current point (`inputs.start` is not read).
+    pub fn set(&mut self, inputs: &Polynomial<V>) {
+        self.next = Polynomial {
+            start: self.next.start,
+            ..*inputs
+        };
+        self.reading_last = false;
+    }
+
+    /// Moves the current point to `t` before any step (the experiment's start): every input held
+    /// from there at its value.
+    pub fn start_at(&mut self, t: f64) {
+        *self = Self::held(self.next.value, t);
+    }
+
+    /// A step begins: outputs now read its inputs.
+    pub fn begin_step(&mut self) {
+        self.reading_last = false;
+    }
+
+    /// A step ended at `t`: the step's inputs, continued there, are what outputs read; the next
+    /// step holds each input at the value it reached until its derivatives are set again.
+    pub fn end_step(&mut self, t: f64) {
+        self.last = self.next.continued_at(t);
+        self.next = Polynomial {
+            start: t,
+            ..Polynomial::held(self.last.value)
+        };
+        self.reading_last = true;
+    }
+
+    /// Whether every number is finite.
+    pub fn is_finite(&self) -> bool {
+        self.next.is_finite() && self.last.is_finite()
+    }
+
+    /// Writes the next step's and the last step's polynomials and the reading flag.
+    pub fn write(&self, w: &mut ByteWriter) {
+        self.next.write(w);
+        self.last.write(w);
+        w.flag(self.reading_last);
+    }
+
+    /// Reads what [`InputRecord::write`] wrote.
+    pub fn read(r: &mut ByteReader) -> Result<Self, CodecError> {
+        Ok(Self {
+            next: Polynomial::read(r)?,
+            last: Polynomial::read(r)?,
+            reading_last: r.flag()?,
+        })
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     #[test]
-    fn a_polynomial_is_its_taylor_series_and_holds_where_it_ends() {
-        let mut s = Polynomial {
+    fn a_polynomial_is_its_taylor_series_and_continues_as_one() {
+        let s = Polynomial {
             start: 1.0,
             value: [2.0, -1.0],
             derivatives: [[3.0, 0.0], [4.0, 0.5]],
@@ -173,10 +305,11 @@ mod tests {
         // u(t₀ + 0.5) = u + u̇ 0.5 + ü 0.125, u̇ = u̇ + ü 0.5.
         assert_eq!(s.at(1.5), [2.0 + 1.5 + 0.5, -1.0 + 0.0625]);
         assert_eq!(s.rate(1.5), [3.0 + 2.0, 0.25]);
-        s.hold_at(1.5);
-        assert_eq!(s, Polynomial::held([4.0, -0.9375]).starting(1.5));
-        assert_eq!(s.at(7.0), [4.0, -0.9375]);
-        assert!(!s.varies());
+        let c = s.continued_at(1.5);
+        assert_eq!(c.value, [4.0, -0.9375]);
+        assert_eq!(c.derivatives, [[5.0, 0.25], [4.0, 0.5]]);
+        assert_eq!(c.at(1.5), s.at(1.5));
+        assert!((c.at(2.25)[1] - s.at(2.25)[1]).abs() < 1e-15);
     }
 
     #[test]

@@ -6,6 +6,7 @@
 //! says ([`StepOutcome`]). A model sees only checked values ([`Experiment`], [`Step`]); the clock
 //! calls it through the closures the instance passes.
 
+use crate::clock::on_clock_grid;
 use crate::codec::{ByteReader, ByteWriter, CodecError};
 use crate::error::FmuError;
 use crate::number::Num;
@@ -70,6 +71,8 @@ pub struct Step {
     /// FMI 3's intermediate update: the step may pause after an internal step before t + h
     /// ([`StepOutcome::Paused`]); called again with the same step, it resumes.
     pub pause: bool,
+    /// Whether the call resumes a paused step (set by the clock, [`Clock::step`]).
+    pub resume: bool,
 }
 
 /// How a step that succeeded ended.
@@ -170,7 +173,10 @@ impl Clock {
         if !self.paused {
             check_step(self.time, step.t, step.h, self.experiment.stop)?;
         }
-        let outcome = run(&step);
+        let outcome = run(&Step {
+            resume: self.paused,
+            ..step
+        });
         self.paused = false;
         match &outcome {
             Ok(StepOutcome::Completed { time } | StepOutcome::ReturnedEarly { time, .. })
@@ -191,6 +197,22 @@ impl Clock {
             self.paused = false;
             self.reach(time);
         }
+    }
+
+    /// The current point where a model computes: the communication point on the clock grid
+    /// ([`crate::clock`]: every master's representation of the same point gives the same
+    /// results), or while a step is paused inside, the time it paused at.
+    pub fn now(&self) -> f64 {
+        if self.paused {
+            self.last_successful_time
+        } else {
+            on_clock_grid(self.time)
+        }
+    }
+
+    /// Whether a step is paused inside (FMI 3 intermediate update).
+    pub fn is_paused(&self) -> bool {
+        self.paused
     }
 
     fn reach(&mut self, time: f64) {

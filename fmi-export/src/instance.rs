@@ -2,14 +2,13 @@
 //! machine, the clock and the inputs — the calls every FMI version makes on it, and the framing of
 //! its serialized states.
 
-use crate::clock::on_clock_grid;
 use crate::codec::{ByteReader, ByteWriter};
 use crate::error::FmuError;
 use crate::experiment::{Clock, Step, StepOutcome};
 use crate::interface::Fmi3Interface;
 use crate::logger::Logger;
 use crate::model::{Context, Model, Var};
-use crate::signal::{InputValues, Polynomial};
+use crate::signal::{InputRecord, InputValues};
 use crate::state::{State, Version};
 use crate::table::{Causality, Kind, ValueReference};
 
@@ -20,7 +19,7 @@ macro_rules! context {
             log: &$inst.logger,
             inputs: &$inst.inputs,
             experiment: $inst.clock.experiment,
-            time: $inst.clock.time,
+            time: $inst.clock.now(),
         }
     };
 }
@@ -41,8 +40,8 @@ pub struct Instance<M: Model> {
     pub model: M,
     /// The experiment and the communication clock.
     pub clock: Clock,
-    /// The inputs: values as set, and derivatives for the next step (held after it).
-    pub inputs: Polynomial<M::Inputs>,
+    /// The inputs: what the master set for the next step, and what the last step ran with.
+    pub inputs: InputRecord<M::Inputs>,
     /// The variables of the current call, resolved from its value references ([`crate::checks::resolve`]).
     pub variables: Vec<Var<M::Vr>>,
     /// The String values GetString returned last: the master may read them until the next
@@ -162,15 +161,15 @@ impl<M: Model> Instance<M> {
             .filter(|v| v.causality == Causality::Input)
     }
 
-    /// The inputs at their start values, held.
-    fn start_inputs() -> Polynomial<M::Inputs> {
+    /// The inputs at their start values, held from t = 0.
+    fn start_inputs() -> InputRecord<M::Inputs> {
         let mut value = <M::Inputs as InputValues>::ZERO;
         for (k, v) in Self::input_variables().enumerate().take(M::Inputs::LEN) {
             if let Kind::Real { start: Some(s), .. } = v.kind {
                 *value.value_mut(k) = s;
             }
         }
-        Polynomial::held(value)
+        InputRecord::held(value, 0.0)
     }
 
     /// The index of the input variable `v` among the model's inputs.
@@ -192,7 +191,9 @@ impl<M: Model> Instance<M> {
         &mut self,
         experiment: (Option<f64>, f64, Option<f64>),
     ) -> Result<(), FmuError> {
-        self.clock.setup(experiment)
+        self.clock.setup(experiment)?;
+        self.inputs.start_at(self.clock.now());
+        Ok(())
     }
 
     /// ExitInitializationMode (the model's checks).
@@ -201,16 +202,17 @@ impl<M: Model> Instance<M> {
     }
 
     /// The step `step` checked against the clock ([`Clock::step`]); where it ends (completed,
-    /// returned early or discarded, not paused) the inputs are held from there at the values their
-    /// polynomials reached (input derivatives hold for one step).
+    /// returned early or discarded, not paused) the inputs end their step there
+    /// ([`InputRecord::end_step`]: input derivatives hold for one step).
     pub fn step(&mut self, step: Step) -> Result<StepOutcome, FmuError> {
+        self.inputs.begin_step();
         let cx = context!(self);
         let model = &mut self.model;
         let outcome = self.clock.step(step, |s| model.do_step(&cx, s));
-        if let Ok(StepOutcome::Completed { time } | StepOutcome::ReturnedEarly { time, .. })
-        | Err(FmuError::Discard { time, .. }) = &outcome
+        if let Ok(StepOutcome::Completed { .. } | StepOutcome::ReturnedEarly { .. })
+        | Err(FmuError::Discard { .. }) = &outcome
         {
-            self.inputs.hold_at(on_clock_grid(*time));
+            self.inputs.end_step(self.clock.now());
         }
         outcome
     }
@@ -220,8 +222,8 @@ impl<M: Model> Instance<M> {
     pub fn return_at_pause(&mut self) -> Result<Option<f64>, FmuError> {
         let reached = self.model.return_at_pause(&context!(self))?;
         self.clock.return_at_pause(reached);
-        if let Some(time) = reached {
-            self.inputs.hold_at(on_clock_grid(time));
+        if reached.is_some() {
+            self.inputs.end_step(self.clock.now());
         }
         Ok(reached)
     }
@@ -236,7 +238,7 @@ impl<M: Model> Instance<M> {
     pub fn set_real(&mut self, value: &[f64]) -> Result<(), FmuError> {
         for (&v, &x) in self.variables.iter().zip(value) {
             if v.causality == Causality::Input {
-                *self.inputs.value.value_mut(Self::input_index(v)?) = x;
+                self.inputs.set_value(Self::input_index(v)?, x);
             } else {
                 self.model.set_real(self.state, &[v], &[x])?;
             }
@@ -250,12 +252,10 @@ impl<M: Model> Instance<M> {
     pub fn set_input_derivatives(&mut self, order: &[i32], value: &[f64]) -> Result<(), FmuError> {
         for ((&v, &order), &x) in self.variables.iter().zip(order).zip(value) {
             let k = Self::input_index(v)?;
-            let derivative = usize::try_from(order - 1)
+            usize::try_from(order)
                 .ok()
-                .and_then(|i| self.inputs.derivatives.get_mut(i))
+                .and_then(|order| self.inputs.set_derivative(k, order, x))
                 .ok_or_else(|| FmuError::Invalid(format!("order {order}")))?;
-            *derivative.value_mut(k) = x;
-            self.inputs.start = self.clock.time;
         }
         Ok(())
     }
@@ -342,19 +342,20 @@ impl<M: Model> Instance<M> {
             .ok_or_else(|| bad("invalid state".into()))?;
         let mut reader = ByteReader::new(&body[9..]);
         let clock = Clock::read(&mut reader)?;
-        let inputs = Polynomial::<M::Inputs>::read(&mut reader)?;
+        let inputs = InputRecord::<M::Inputs>::read(&mut reader)?;
         if !inputs.is_finite() {
             return Err(bad("a non-finite input or input derivative".into()));
         }
         for (k, v) in Self::input_variables().enumerate().take(M::Inputs::LEN) {
-            crate::checks::check_real(v, inputs.value.value(k)).map_err(|e| bad(e.to_string()))?;
+            crate::checks::check_real(v, inputs.stepping().value.value(k))
+                .map_err(|e| bad(e.to_string()))?;
         }
         let model = &body[body.len() - reader.remaining()..];
         let cx = Context {
             log: &self.logger,
             inputs: &inputs,
             experiment: clock.experiment,
-            time: clock.time,
+            time: clock.now(),
         };
         self.model.load(&cx, model, apply)?;
         if apply {

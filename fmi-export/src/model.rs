@@ -5,7 +5,7 @@ use crate::error::FmuError;
 use crate::experiment::{Experiment, Step, StepOutcome};
 use crate::interface::Fmi3Interface;
 use crate::logger::Logger;
-use crate::signal::{InputValues, Polynomial};
+use crate::signal::{InputRecord, InputValues};
 use crate::state::State;
 use crate::table::{Enumeration, ValueReference, Variable};
 
@@ -16,12 +16,14 @@ use crate::table::{Enumeration, ValueReference, Variable};
 pub struct Context<'a, I> {
     /// The master's logger.
     pub log: &'a Logger,
-    /// The inputs: their values at the current communication point and the derivatives set for
-    /// the next step, by their index among the model's inputs ([`crate::signal`]).
-    pub inputs: &'a Polynomial<I>,
+    /// The inputs, by their index among the model's inputs: those of the next step (during a
+    /// step: of the step), those outputs read, and whether the step sequence may go on
+    /// ([`InputRecord`]).
+    pub inputs: &'a InputRecord<I>,
     /// The experiment set up (start, stop, tolerance).
     pub experiment: Experiment,
-    /// The current communication point \[s\].
+    /// The current point \[s\]: the communication point on the clock grid, or while a step is
+    /// paused inside, the time it paused at ([`crate::experiment::Clock::now`]).
     pub time: f64,
 }
 

@@ -208,6 +208,7 @@ impl<M: Model> Slave<M> {
             h,
             early_return: false,
             pause: false,
+            resume: false,
         };
         self.instance.step(step).map(|_| ())
     }

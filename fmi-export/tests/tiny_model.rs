@@ -125,7 +125,7 @@ impl Model for Lag {
     fn do_step(&mut self, cx: &Cx, step: &Step) -> Result<StepOutcome, FmuError> {
         let (t, h, early_return) = (step.t, step.h, step.early_return);
         let end = on_clock_grid(t + h);
-        let [u] = cx.inputs.value;
+        let [u] = cx.inputs.stepping().value;
         let below = !self.above && self.threshold < u;
         let crossing = t + self.tau * ((self.y - u) / (self.threshold - u)).ln();
         let at = (crossing / CLOCK_RESOLUTION).floor() * CLOCK_RESOLUTION;
@@ -148,7 +148,7 @@ impl Model for Lag {
             *x = match v.vr {
                 Vr::Tau => self.tau,
                 Vr::Threshold => self.threshold,
-                Vr::U => cx.inputs.value[0],
+                Vr::U => cx.inputs.reading().value[0],
                 Vr::Y => self.y,
                 Vr::Crossings => unreachable!("an Integer"),
             };

@@ -15,7 +15,7 @@ use crate::params::{
     Parameters, integer_parameter, real_parameter, set_integer_parameter, set_real_parameter,
     set_string_parameter, string_parameter,
 };
-use crate::simulation::{Input, Inputs, Outputs, Simulation};
+use crate::simulation::{Engine, Input, Inputs, Outputs};
 use crate::variables::{Causality, ENUMERATIONS, Kind, LOG_CATEGORIES, VARIABLES, Variable, Vr};
 
 impl From<ModelError> for FmuError {
@@ -35,23 +35,23 @@ fn input_of(v: Var<Vr>) -> Result<Input, FmuError> {
 }
 
 /// What the instance holds for the slider-crank: the master's logger, the inputs, the experiment
-/// and the clock's time.
+/// and the current point (on the clock grid), where the engine is.
 pub(super) type Cx<'a> = Context<'a, Inputs>;
 
-/// The slider-crank behind the FMI functions: parameters and the simulation (the inputs, the
-/// experiment and the clock are the generic layer's, [`Context`]).
+/// The slider-crank behind the FMI functions: parameters and the simulation engine (the inputs,
+/// the experiment and the clock are the generic layer's, [`Context`]).
 #[derive(Debug)]
 pub struct SliderCrankFmu {
     pub(crate) parameters: Parameters,
-    pub(crate) simulation: Option<Simulation>,
+    pub(crate) simulation: Option<Engine>,
 }
 
 impl SliderCrankFmu {
-    /// The simulation, built from the current parameters at the experiment's start if needed;
+    /// The simulation engine, built from the current parameters at the current point if needed;
     /// until it runs, its start follows the inputs (it is built again in equilibrium with inputs
     /// that changed).
-    pub(super) fn simulation(&mut self, cx: &Cx) -> Result<&mut Simulation, FmuError> {
-        let inputs = cx.inputs.value;
+    pub(super) fn simulation(&mut self, cx: &Cx) -> Result<&mut Engine, FmuError> {
+        let inputs = cx.inputs.stepping().value;
         if self
             .simulation
             .as_ref()
@@ -70,8 +70,7 @@ impl SliderCrankFmu {
                     Num(parameters.relative_tolerance)
                 ));
             }
-            let mut sim = Simulation::with_inputs(parameters, inputs)?;
-            sim.set_time(cx.experiment.start);
+            let mut sim = Engine::new(parameters, inputs, cx.time)?;
             log.event(&format!(
                 "model built: {:?} rod, {:?} joint, {:?} drive, {} states",
                 self.parameters.rod_formulation,
@@ -89,9 +88,9 @@ impl SliderCrankFmu {
             .ok_or_else(|| FmuError::Invalid("no simulation".into()))
     }
 
-    /// The outputs at the current time, with the inputs as the master set them.
+    /// The outputs at the current point, with the inputs as outputs read them there.
     fn outputs(&mut self, cx: &Cx) -> Result<Outputs, FmuError> {
-        Ok(self.simulation(cx)?.outputs_seeing(cx.inputs)?)
+        Ok(self.simulation(cx)?.outputs(cx.time, cx.inputs.reading())?)
     }
 }
 
@@ -128,7 +127,7 @@ impl Model for SliderCrankFmu {
         column: &mut [f64],
     ) -> Result<(), FmuError> {
         let i = input_of(known)?;
-        sensitivity(self.simulation(cx)?, cx.inputs, i, unknowns, column)
+        sensitivity(self.simulation(cx)?, cx, i, unknowns, column)
     }
 
     fn save(&self, out: &mut Vec<u8>) {
@@ -166,7 +165,7 @@ impl Model for SliderCrankFmu {
 
     fn get_array(&mut self, cx: &Cx, array: usize, value: &mut [f64]) -> Result<(), FmuError> {
         let rod_length = self.parameters.rod.length;
-        section_array(array, value, rod_length, cx.inputs, || self.simulation(cx))
+        section_array(array, value, rod_length, cx, || self.simulation(cx))
     }
 
     /// fmi2GetReal.
@@ -187,10 +186,10 @@ impl Model for SliderCrankFmu {
                 continue;
             }
             *value = match v.vr {
-                Vr::JointContactStiffness => Simulation::contact_stiffness(p),
-                Vr::DriveSpeed => cx.inputs.value.drive_speed,
-                Vr::DriveTorque => cx.inputs.value.drive_torque,
-                Vr::SliderForce => cx.inputs.value.slider_force,
+                Vr::JointContactStiffness => Engine::contact_stiffness(p),
+                Vr::DriveSpeed => cx.inputs.reading().value.drive_speed,
+                Vr::DriveTorque => cx.inputs.reading().value.drive_torque,
+                Vr::SliderForce => cx.inputs.reading().value.slider_force,
                 _ => unreachable_type(v)?,
             };
         }

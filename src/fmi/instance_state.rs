@@ -5,7 +5,7 @@ use fmi_export::FmuError;
 
 use super::instance::{Cx, SliderCrankFmu, model_parameters};
 use super::snapshot::FmuSnapshot;
-use crate::simulation::Simulation;
+use crate::simulation::Engine;
 
 impl SliderCrankFmu {
     /// Captures the complete state (parameters, simulation; the inputs and the experiment are
@@ -13,7 +13,7 @@ impl SliderCrankFmu {
     pub(super) fn snapshot(&self) -> FmuSnapshot {
         FmuSnapshot {
             parameters: self.parameters.clone(),
-            simulation: self.simulation.as_ref().map(Simulation::snapshot),
+            simulation: self.simulation.as_ref().map(Engine::snapshot),
         }
     }
 
@@ -32,7 +32,8 @@ impl SliderCrankFmu {
         };
         if let Some(snap) = &s.simulation {
             if simulation.is_none() {
-                simulation = Some(Simulation::new(parameters)?);
+                let inputs = cx.inputs.stepping().value;
+                simulation = Some(Engine::new(parameters, inputs, cx.time)?);
             }
             if let Some(sim) = &mut simulation {
                 sim.restore(snap)?;

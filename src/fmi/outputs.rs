@@ -4,20 +4,19 @@
 use fmi_export::FmuError;
 use fmi_export::model::Var;
 
-use crate::simulation::{
-    BearingOutputs, Input, InputSignal, Outputs, SectionResult, Simulation, section_place,
-};
+use super::instance::Cx;
+use crate::simulation::{BearingOutputs, Engine, Input, Outputs, SectionResult, section_place};
 use crate::variables::{SectionArray, VARIABLES, Vr};
 
 /// The rod.section array `array` (its index in [`SectionArray::ALL`]) at `value.len()` sections
 /// along a rod of reference length `rod_length` \[m\]; the results other than the positions
-/// come from the current state of `simulation` with the master's `inputs`.
+/// come from the current state of the `engine` at the point and with the inputs of `cx`.
 pub fn section_array<'a>(
     array: usize,
     value: &mut [f64],
     rod_length: f64,
-    inputs: &InputSignal,
-    simulation: impl FnOnce() -> Result<&'a mut Simulation, FmuError>,
+    cx: &Cx,
+    engine: impl FnOnce() -> Result<&'a mut Engine, FmuError>,
 ) -> Result<(), FmuError> {
     let result = match SectionArray::ALL.get(array) {
         Some(SectionArray::Position) => {
@@ -32,7 +31,7 @@ pub fn section_array<'a>(
         Some(SectionArray::BendingMoment) => SectionResult::BendingMoment,
         None => return Err(FmuError::Invalid(format!("no array {array}"))),
     };
-    Ok(simulation()?.rod_sections(inputs, result, value)?)
+    Ok(engine()?.rod_sections(cx.time, cx.inputs.reading(), result, value)?)
 }
 
 /// Relative size of the input steps of [`sensitivity`].
@@ -57,7 +56,7 @@ const PEAKS: &[(Vr, Vr)] = &[
 ];
 
 /// ∂y/∂u: the derivatives of the Real outputs `unknowns` with respect to `input` (now at `u`
-/// among the master's `inputs`) at the current state, by central differences of the outputs
+/// among the master's inputs, `cx`) at the current state, by central differences of the outputs
 /// with the input moved by ±h = ±10⁻³ max(1, |u|) and the state held. At a given state the accelerations, torques,
 /// constraint forces and their components are affine in the inputs (the equations of motion and
 /// the drive constraint are linear in the applied torque, the slider force and the speed
@@ -67,16 +66,17 @@ const PEAKS: &[(Vr, Vr)] = &[
 /// differences would average both sides of a kink within ±h); a signed peak-hold (the largest or
 /// smallest value) likewise, with the value's derivative itself.
 pub fn sensitivity(
-    simulation: &mut Simulation,
-    inputs: &InputSignal,
+    engine: &mut Engine,
+    cx: &Cx,
     input: Input,
     unknowns: &[Var<Vr>],
     column: &mut [f64],
 ) -> Result<(), FmuError> {
+    let (t, inputs) = (cx.time, cx.inputs.reading());
     let h = INPUT_STEP * inputs.value.get(input).abs().max(1.0);
-    let now = simulation.outputs_seeing(inputs)?;
-    let plus = simulation.outputs_with_input_moved(inputs, input, h)?;
-    let minus = simulation.outputs_with_input_moved(inputs, input, -h)?;
+    let now = engine.outputs(t, inputs)?;
+    let plus = engine.outputs_with_input_moved(t, inputs, input, h)?;
+    let minus = engine.outputs_with_input_moved(t, inputs, input, -h)?;
     let derivative = |vr: Vr| -> Option<f64> {
         Some((real_output(&plus, vr)? - real_output(&minus, vr)?) / (2.0 * h))
     };

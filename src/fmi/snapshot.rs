@@ -134,11 +134,14 @@ impl FmuSnapshot {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::Simulation;
+    use crate::simulation::{Engine, Inputs};
 
     fn snapshot() -> FmuSnapshot {
         let parameters = Parameters::default();
-        let simulation = Simulation::new(parameters.clone()).unwrap().snapshot();
+        let inputs = Inputs::at_start(&parameters);
+        let simulation = Engine::new(parameters.clone(), inputs, 0.0)
+            .unwrap()
+            .snapshot();
         FmuSnapshot {
             parameters,
             simulation: Some(simulation),

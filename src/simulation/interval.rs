@@ -9,7 +9,7 @@ use fmi_core::clock::{on_clock_grid, on_clock_grid_below};
 use super::failure;
 use super::peaks::Peaks;
 use super::step::{Advance, Interval, Onset};
-use super::{InputSignal, Simulation};
+use super::{Engine, InputRecord, InputSignal, Inputs};
 use crate::error::{ModelError, Num};
 use crate::mechanism::Driven;
 
@@ -20,150 +20,136 @@ enum Progress {
     Paused,
 }
 
-impl Simulation {
-    /// Integrates to `t_end` (rounded to the clock grid) with the inputs held as they are (those
-    /// of the current step sequence, at the values they reach now). On failure the simulation
-    /// stays at the last accepted point ([`Simulation::time`]) and the error says why.
-    pub fn advance_to(&mut self, t_end: f64) -> Result<(), ModelError> {
-        let held = self.held_inputs();
-        self.advance_with(&held, t_end)
-    }
+/// How an interval may end before its end: at a contact onset (an early return), or paused after
+/// an accepted step for a master that reads the state inside the interval (FMI 3 intermediate
+/// update). Neither: the interval runs to its end.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Mode {
+    /// Stop at the end of the first internal step in which a joint comes into contact, if that is
+    /// before the interval's end ([`Advance::Onset`]).
+    pub stop_at_onset: bool,
+    /// Pause after every accepted step that ends before the interval's end, by a clock tick at
+    /// least ([`Advance::Paused`]).
+    pub pause: bool,
+}
 
-    /// Integrates to `t_end` as [`Simulation::advance_to`] does, with `inputs` (their values
-    /// and derivatives at the current time: the polynomials of [`InputSignal`] over the
-    /// interval). A change of an input that acts in the drive mode restarts the step sequence
-    /// here; a change of the prescribed speed is applied as an impulsive velocity adjustment
-    /// through the constraints. An input that does not act (the torque with the speed drive, the
-    /// speed with the torque drive) restarts nothing.
-    pub fn advance_with(&mut self, inputs: &InputSignal, t_end: f64) -> Result<(), ModelError> {
-        self.advance(inputs, t_end, false, false).map(|_| ())
-    }
-
-    /// Integrates towards `t_end` as [`Simulation::advance_with`] does, but stops early at the end
-    /// of the first internal step in which a joint comes into contact (where the contact law
-    /// switches on), if that is before `t_end`: returns the joint and the time reached, the step's
-    /// end rounded down to the clock grid (at most one clock tick earlier; the step's extremes and
-    /// onset belong to the interval that ends there). The step sequence is the one
-    /// [`Simulation::advance_with`] takes: continuing from the time reached loses nothing.
-    pub fn advance_to_onset(
+impl Engine {
+    /// Integrates from the current point `t` towards `t_end` (rounded to the clock grid) with the
+    /// next step's inputs of `inputs` ([`InputRecord::stepping`]: polynomials of time over the
+    /// interval). An input that acts in the drive mode and is not the same function of time as
+    /// over the last step restarts the step sequence here; a change of the prescribed speed is
+    /// applied as an impulsive velocity adjustment through the constraints. An input that does
+    /// not act (the torque with the speed drive, the speed with the torque drive) restarts
+    /// nothing.
+    ///
+    /// With `mode.stop_at_onset` it stops early at the end of the first internal step in which a
+    /// joint comes into contact (where the contact law switches on), if that is before `t_end`:
+    /// the joint and the time reached, the step's end rounded down to the clock grid (at most one
+    /// clock tick earlier; the step's extremes and onset belong to the interval that ends there).
+    /// The step sequence is the one of a plain interval: continuing from the time reached loses
+    /// nothing. With `mode.pause` it pauses after every accepted step ending before `t_end` (by a
+    /// clock tick at least), with the state at the step's end the current one (the outputs read
+    /// it at the pause's time); called again with `resume` and the same `t` and `t_end`, it
+    /// resumes the paused interval, whose steps, peaks and results are those of an interval
+    /// that never paused. [`Engine::end_at_pause`] ends it at the pause instead.
+    ///
+    /// On failure the engine stays at the last accepted step (the time it reached is the error's
+    /// [`Engine::reached`]) and the error says why.
+    pub fn advance(
         &mut self,
-        inputs: &InputSignal,
+        t: f64,
+        inputs: &InputRecord<Inputs>,
         t_end: f64,
-    ) -> Result<Option<Onset>, ModelError> {
-        match self.advance(inputs, t_end, true, false)? {
-            Advance::Onset(onset) => Ok(Some(onset)),
-            _ => Ok(None),
-        }
-    }
-
-    /// [`Simulation::advance_with`] (or [`Simulation::advance_to_onset`] if `stop_at_onset`) that
-    /// pauses after every accepted step ending before `t_end` (by a clock tick at least), with the state and the time at
-    /// the step's end the current ones ([`Simulation::outputs`] reads them). Called again with the
-    /// same `t_end` it resumes the paused interval (with the inputs it began with); its steps,
-    /// peaks and results are those of an interval that never paused. [`Simulation::end_at_pause`]
-    /// ends it at the pause instead.
-    pub fn advance_pausing(
-        &mut self,
-        inputs: &InputSignal,
-        t_end: f64,
-        stop_at_onset: bool,
-    ) -> Result<Advance, ModelError> {
-        self.advance(inputs, t_end, stop_at_onset, true)
-    }
-
-    /// The inputs of the current step sequence held from now on at the values they reach now.
-    pub(super) fn held_inputs(&self) -> InputSignal {
-        let mut held = self.signal;
-        held.hold_at(self.time);
-        held
-    }
-
-    /// Whether an interval is paused ([`Simulation::advance_pausing`]).
-    pub fn is_paused(&self) -> bool {
-        self.paused.is_some()
-    }
-
-    /// Ends a paused interval at the pause, rounded down to the clock grid, as an early return
-    /// does: the time reached, or None (the interval stays paused) where that is not after the
-    /// interval's start.
-    pub fn end_at_pause(&mut self) -> Result<Option<f64>, ModelError> {
-        let Some(interval) = self.paused else {
-            return Ok(None);
-        };
-        let reached = on_clock_grid_below(self.end.time);
-        if reached <= interval.t_start {
-            return Ok(None);
-        }
-        self.last_read = None;
-        self.paused = None;
-        self.finish_interval(reached)?;
-        Ok(Some(reached))
-    }
-
-    /// The interval to `t_end`: the paused one if it ends there, else a new one from now.
-    fn advance(
-        &mut self,
-        inputs: &InputSignal,
-        t_end: f64,
-        stop_at_onset: bool,
-        pause: bool,
+        mode: Mode,
+        resume: bool,
     ) -> Result<Advance, ModelError> {
         self.last_read = None;
         let t_end = on_clock_grid(t_end);
-        let (interval, resumed) = match self.paused.take() {
-            Some(paused) if paused.t_end == t_end => (paused, true),
-            _ => (self.begin_interval(inputs, t_end)?, false),
+        let interval = if resume {
+            if self.interval.t_end != t_end {
+                return Err(ModelError::Numerical(format!(
+                    "cannot resume the interval to t = {} s towards t = {} s",
+                    Num(self.interval.t_end),
+                    Num(t_end)
+                )));
+            }
+            self.interval
+        } else {
+            self.begin_interval(t, inputs, t_end)?
         };
-        match self.step_through(interval, resumed, stop_at_onset, pause)? {
+        let signal = inputs.stepping();
+        match self.step_through(interval, signal, resume, mode)? {
             Progress::Paused => {
-                self.paused = Some(interval);
-                self.time = self.end.time;
                 self.state.copy_from_slice(&self.end.y);
                 Ok(Advance::Paused(self.end.time))
             }
             Progress::Onset(onset) => {
-                self.finish_interval(onset.time)?;
+                self.finish_interval(signal, onset.time)?;
                 Ok(Advance::Onset(onset))
             }
             Progress::End => {
-                self.finish_interval(t_end)?;
-                Ok(Advance::Reached)
+                self.finish_interval(signal, t_end)?;
+                Ok(Advance::Reached(t_end))
             }
         }
     }
 
-    /// Starts the interval from now to `t_end`: `inputs` applied, the interval's peaks cleared.
-    fn begin_interval(&mut self, inputs: &InputSignal, t_end: f64) -> Result<Interval, ModelError> {
-        if !(t_end.is_finite() && t_end >= self.time) {
+    /// The time a failed interval reached: the end of the last accepted step, where the engine
+    /// stays usable.
+    pub fn reached(&self) -> f64 {
+        self.end.time
+    }
+
+    /// Ends a paused interval at the pause, rounded down to the clock grid, as an early return
+    /// does, the inputs `signal` those it was integrated with: the time reached, or None (the
+    /// interval stays paused) where that is not after the interval's start.
+    pub fn end_at_pause(&mut self, signal: &InputSignal) -> Result<Option<f64>, ModelError> {
+        let reached = on_clock_grid_below(self.end.time);
+        if reached <= self.interval.t_start {
+            return Ok(None);
+        }
+        self.last_read = None;
+        self.finish_interval(signal, reached)?;
+        Ok(Some(reached))
+    }
+
+    /// Starts the interval from `t` to `t_end`: `inputs` applied, the interval's peaks cleared.
+    fn begin_interval(
+        &mut self,
+        t: f64,
+        inputs: &InputRecord<Inputs>,
+        t_end: f64,
+    ) -> Result<Interval, ModelError> {
+        if !(t_end.is_finite() && t_end >= t) {
             return Err(ModelError::Numerical(format!(
                 "cannot advance from t = {} s to t = {} s",
-                Num(self.time),
+                Num(t),
                 Num(t_end)
             )));
         }
-        let t_start = self.time;
-        let limit = self.apply_inputs(inputs, t_start, t_end)?;
+        let limit = self.apply_inputs(t, inputs, t_end)?;
         self.peaks.interval = Peaks::default();
-        Ok(Interval {
-            t_start,
+        self.interval = Interval {
+            t_start: t,
             t_end,
             limit,
             work_start: self.work(),
-        })
+        };
+        Ok(self.interval)
     }
 
-    /// Steps until the integrator's point reaches the interval's end (at most at its limit),
-    /// recording each accepted step's peaks; on failure the simulation stops at the last accepted
-    /// step. If `stop_at_onset`, it stops after the first step before the end in which a joint
-    /// comes into contact (also a step pending from the last interval, unless `resumed`) with
-    /// that joint and the step's end on the clock grid (rounded down, after the start); if
-    /// `pause`, after every accepted step before the end.
+    /// Steps until the integrator's point reaches the interval's end (at most at its limit), with
+    /// the inputs `signal`, recording each accepted step's peaks; on failure the engine stops at
+    /// the last accepted step. If `mode.stop_at_onset`, it stops after the first step before the
+    /// end in which a joint comes into contact (also a step pending from the last interval,
+    /// unless `resumed`) with that joint and the step's end on the clock grid (rounded down,
+    /// after the start); if `mode.pause`, after every accepted step before the end.
     fn step_through(
         &mut self,
         interval: Interval,
+        signal: &InputSignal,
         resumed: bool,
-        stop_at_onset: bool,
-        pause: bool,
+        mode: Mode,
     ) -> Result<Progress, ModelError> {
         let Interval {
             t_start,
@@ -171,6 +157,7 @@ impl Simulation {
             limit,
             work_start,
         } = interval;
+        let stop_at_onset = mode.stop_at_onset;
         if !resumed && self.peaks.pending && self.end.time <= t_end {
             self.peaks.take_step_end();
             if let Some(onset) = self.onset_before(t_start, t_end, stop_at_onset) {
@@ -185,7 +172,7 @@ impl Simulation {
             self.contact_start = self.mechanism.contact_state();
             let mut driven = Driven {
                 mechanism: &mut self.mechanism,
-                signal: &self.signal,
+                signal,
             };
             match self.integrator.step(
                 &mut driven,
@@ -212,7 +199,7 @@ impl Simulation {
             let (f0, f1) = self.integrator.derivatives();
             self.start.f.copy_from_slice(f0);
             self.end.f.copy_from_slice(f1);
-            self.record_step_end()?;
+            self.record_step_end(signal)?;
             if self.end.time <= t_end {
                 self.peaks.take_step_end();
             }
@@ -220,22 +207,20 @@ impl Simulation {
                 return Ok(Progress::Onset(onset));
             }
             // (a step that ends within a clock tick of the end has reached it)
-            if pause && on_clock_grid(self.end.time) < t_end {
+            if mode.pause && on_clock_grid(self.end.time) < t_end {
                 return Ok(Progress::Paused);
             }
         }
         Ok(Progress::End)
     }
 
-    /// Ends the interval at `t_end`: the state there (the dense output of the last step when it
-    /// ends beyond).
-    fn finish_interval(&mut self, t_end: f64) -> Result<(), ModelError> {
-        self.time = t_end;
+    /// Ends the interval at `t_end`: the state there (the dense output of the last step, with
+    /// the inputs `signal`, when it ends beyond).
+    fn finish_interval(&mut self, signal: &InputSignal, t_end: f64) -> Result<(), ModelError> {
         if t_end == self.end.time {
             self.state.copy_from_slice(&self.end.y);
         } else {
             let span = self.start.span_to(&self.end);
-            let signal = &self.signal;
             self.mechanism
                 .with_contact_state(self.contact_start, |mechanism| {
                     self.integrator.dense_output(
@@ -245,15 +230,14 @@ impl Simulation {
                         &mut self.state,
                     )
                 })?;
-            self.check_validity(false);
+            self.check_validity(Some(t_end));
         }
         Ok(())
     }
 
-    /// Ends a failed interval at the last accepted step (where the simulation stays usable) and
+    /// Ends a failed interval at the last accepted step (where the engine stays usable) and
     /// passes the error on.
     fn stop_at_step_end(&mut self, error: ModelError) -> ModelError {
-        self.time = self.end.time;
         self.state.copy_from_slice(&self.end.y);
         error
     }
@@ -262,6 +246,7 @@ impl Simulation {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::Simulation;
     use crate::params::Parameters;
 
     /// Pausing after every accepted step changes nothing: 3 ms of the defaults' impacts in 0.5 ms

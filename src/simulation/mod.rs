@@ -1,5 +1,6 @@
-//! [`Simulation`]: the slider-crank with its integrator and clock — parameters in, `advance_to(t)`,
-//! outputs out. This is what the FMU, the examples and the benchmarks drive.
+//! The slider-crank with its integrator: the [`Engine`] the FMU drives with its instance's clock
+//! and inputs, and the [`Simulation`] that drives it with its own — parameters in,
+//! `advance_to(t)`, outputs out — for the examples, the benchmarks and the tests.
 
 pub mod codec;
 mod cycle;
@@ -14,13 +15,16 @@ mod record;
 mod restore;
 mod sample;
 mod snapshot;
+mod standalone;
 mod step;
 pub mod validity;
 
 pub use self::cycle::{Cycle, CycleHold, CycleStep, Extreme, JointCycle};
+pub use self::interval::Mode;
 pub use self::outputs::{BearingOutputs, Outputs};
 pub use self::peaks::{PeakHold, Peaks};
 pub use self::snapshot::Snapshot;
+pub use self::standalone::{Simulation, SimulationSnapshot};
 pub use self::step::{Advance, Onset, StepPoint};
 use self::validity::Monitor;
 pub use crate::ancf::{SectionResult, section_place};
@@ -30,27 +34,31 @@ use crate::joint::JointRole;
 use crate::mechanism::{ContactState, Contacts, Energies, SliderCrank};
 pub use crate::mechanism::{Input, InputSignal, Inputs};
 use crate::params::{DriveMode, InitialState, JointModel, JournalStart, Parameters};
+pub use fmi_core::signal::InputRecord;
 
 pub use fmi_core::clock::{CLOCK_RESOLUTION, on_clock_grid};
 
-/// The slider-crank simulation.
+/// The slider-crank's simulation engine: the mechanism, its integrator and what it holds of the
+/// run (the step sequence, the state at the current point, the peak holds and cycle results, the
+/// validity monitors). It holds no clock and no inputs: whoever drives it owns them and passes
+/// them in — the FMU's instance (its clock and its [`InputRecord`]), or a [`Simulation`] for a
+/// program that drives the model directly.
 ///
-/// The integrator runs on its own step sequence: `advance_to(t)` takes accepted steps until one
-/// ends at or past t and reads the state at t from the dense output of that step, so the steps
+/// The integrator runs on its own step sequence: an interval takes accepted steps until one ends
+/// at or past its end and reads the state there from the dense output of that step, so the steps
 /// (and the results) do not depend on how a master cuts time into communication intervals. The
-/// sequence restarts exactly at the current time only when the model is changed from outside:
-/// an input changes ([`Simulation::advance_with`]), or a snapshot is restored.
-///
-/// The caller holds the inputs and passes them to each interval; the simulation keeps only the
-/// ones its current step sequence was integrated with.
+/// sequence restarts exactly at the current point only when the model is changed from outside: an
+/// input that acts in the drive mode is not the same function of time as over the last step
+/// ([`InputRecord::continues`]), or a snapshot is restored.
 #[derive(Clone, Debug)]
-pub struct Simulation {
+pub struct Engine {
     parameters: Parameters,
     mechanism: SliderCrank,
     integrator: Integrator,
-    time: f64,
+    /// The state at the current point.
     state: Vec<f64>,
-    /// The last accepted step's start, the contact state there, and its end (≥ `time`).
+    /// The last accepted step's start, the contact state there, and its end (at or after the
+    /// current point).
     start: StepPoint,
     contact_start: Contacts,
     end: StepPoint,
@@ -60,39 +68,31 @@ pub struct Simulation {
     a_sample: Vec<f64>,
     /// The peak-hold sample at the last accepted step's end, for the next step's start.
     end_sample: end_sample::EndSample,
-    /// The inputs of the current step sequence, as functions of time (at the start: the
-    /// start's, the prescribed speed the crank's initial speed).
-    signal: InputSignal,
+    /// The inputs the start state is in equilibrium with (the prescribed speed at the crank's
+    /// start speed), until the first step.
+    start_inputs: Inputs,
     peaks: PeakHold,
     monitor: Monitor,
-    /// The interval paused inside ([`Simulation::advance_pausing`]), if any.
-    paused: Option<step::Interval>,
-    /// The outputs last read and the inputs they saw, until the simulation next moves
-    /// ([`Simulation::outputs_seeing`]).
-    last_read: Option<(InputSignal, Outputs)>,
+    /// The interval last begun: its step limit and work budget, with which a paused one resumes.
+    interval: step::Interval,
+    /// The outputs last read, the time and the inputs they saw, until the engine next moves
+    /// ([`Engine::outputs`]).
+    last_read: Option<(f64, InputSignal, Outputs)>,
 }
 
-impl Simulation {
+impl Engine {
     /// The Hertz-type contact stiffness the parameters give the joint \[N/m^1.5\]
     /// ([`crate::joint::JointParameters::contact_stiffness`]), before any simulation is built.
     pub fn contact_stiffness(parameters: &Parameters) -> f64 {
         parameters.joint.contact_stiffness()
     }
 
-    /// A simulation at t = 0 in the initial state of the parameters (docs/model.md §7), with
-    /// the inputs of [`Inputs::at_start`] (the drive speed at the crank's initial speed).
-    pub fn new(parameters: Parameters) -> Result<Self, ModelError> {
-        let inputs = Inputs::at_start(&parameters);
-        Self::with_inputs(parameters, inputs)
-    }
-
-    /// A simulation at t = 0 whose inputs start at `inputs`: the start is in equilibrium with
+    /// An engine at time `t0` whose inputs start at `inputs`: the start is in equilibrium with
     /// them (the rod's quasi-static deformation carries the slider force and the drive torque as
-    /// well as the inertial loads), the crank at [`Parameters::start_speed`]. The simulation runs
-    /// with these inputs, the prescribed speed at the crank's start speed, until others are
-    /// passed ([`Simulation::advance_with`]): a start speed that differs from the one passed jumps
-    /// to it at the first step, with a warning.
-    pub fn with_inputs(parameters: Parameters, inputs: Inputs) -> Result<Self, ModelError> {
+    /// well as the inertial loads), the crank at [`Parameters::start_speed`]. A start speed that
+    /// differs from the drive speed it is given at the first step jumps to it there, with a
+    /// warning.
+    pub fn new(parameters: Parameters, inputs: Inputs, t0: f64) -> Result<Self, ModelError> {
         let (angle, speed) = (
             parameters.crank_initial_angle,
             parameters.start_speed(inputs.drive_speed),
@@ -135,7 +135,7 @@ impl Simulation {
         for warning in parameters.warnings() {
             monitor.warn(warning);
         }
-        let peaks = PeakHold::new(parameters.load_cycle(), 0.0, angle);
+        let peaks = PeakHold::new(parameters.load_cycle(), t0, angle);
         Ok(Self {
             scratch: vec![0.0; state.len()],
             y_sample: vec![0.0; state.len()],
@@ -145,14 +145,13 @@ impl Simulation {
             parameters,
             mechanism,
             integrator,
-            time: 0.0,
-            start: StepPoint::at_rest(0.0, &state),
-            end: StepPoint::at_rest(0.0, &state),
+            start: StepPoint::at_rest(t0, &state),
+            end: StepPoint::at_rest(t0, &state),
             state,
-            signal: InputSignal::held(start),
+            start_inputs: start,
             peaks,
             monitor,
-            paused: None,
+            interval: step::Interval::default(),
             last_read: None,
         })
     }
@@ -160,28 +159,6 @@ impl Simulation {
     /// The parameters.
     pub fn parameters(&self) -> &Parameters {
         &self.parameters
-    }
-
-    /// Current time \[s\].
-    pub fn time(&self) -> f64 {
-        self.time
-    }
-
-    /// Sets the clock (e.g. to the FMI start time or a communication point) without changing the
-    /// state; the time is rounded to the clock grid. Before the first step the integrator's clock
-    /// moves with it.
-    pub fn set_time(&mut self, time: f64) {
-        self.last_read = None;
-        let time = on_clock_grid(time);
-        if self.end.time == self.time {
-            self.start.time = time;
-            self.end.time = time;
-        }
-        if self.integrator.stats().steps == 0 {
-            let cycles = &mut self.peaks.cycles;
-            *cycles = CycleHold::new(cycles.period, time, cycles.current.start_angle);
-        }
-        self.time = time;
     }
 
     /// The mechanism.
@@ -195,20 +172,15 @@ impl Simulation {
         &self.state
     }
 
-    /// The inputs of the current step sequence, as functions of time.
-    pub fn inputs(&self) -> &InputSignal {
-        &self.signal
-    }
-
     /// Whether no step was attempted yet and the start is not the one `inputs` give (the start
-    /// is in equilibrium with its inputs, [`Simulation::with_inputs`]): a simulation whose start
-    /// follows its inputs until it runs is then built again.
+    /// is in equilibrium with its inputs, [`Engine::new`]): an engine whose start follows its
+    /// inputs until it runs is then built again.
     pub fn start_differs(&self, inputs: &Inputs) -> bool {
         let start = Inputs {
             drive_speed: self.parameters.start_speed(inputs.drive_speed),
             ..*inputs
         };
-        self.work() == 0 && self.signal != InputSignal::held(start)
+        self.work() == 0 && self.start_inputs != start
     }
 
     /// Integrator statistics since the start.
@@ -216,13 +188,13 @@ impl Simulation {
         self.integrator.stats()
     }
 
-    /// Contact states at the current time: those at the step end, unless the current time lies
-    /// before the end of the step; then each joint is in contact if its journal penetrates at the
-    /// current time, with its event's impact velocity (that of the step start if it was already in
-    /// contact there, else the one latched at the step end).
-    fn contact_now(&self) -> Contacts {
+    /// Contact states at time `t`: those at the step end, unless `t` lies before the end of the
+    /// step; then each joint is in contact if its journal penetrates in the state at `t`, with
+    /// its event's impact velocity (that of the step start if it was already in contact there,
+    /// else the one latched at the step end).
+    fn contact_now(&self, t: f64) -> Contacts {
         let mut contacts = self.mechanism.contact_state();
-        if self.time >= self.end.time {
+        if t >= self.end.time {
             return contacts;
         }
         for role in JointRole::ALL {
@@ -239,13 +211,13 @@ impl Simulation {
         contacts
     }
 
-    /// Restarts the step sequence at the current time from the current state.
-    fn restart_here(&mut self) {
-        if self.end.time > self.time {
-            let contact = self.contact_now();
+    /// Restarts the step sequence at the current point `t` from the state there.
+    fn restart_at(&mut self, t: f64) {
+        if self.end.time > t {
+            let contact = self.contact_now(t);
             self.mechanism.set_contact_state(contact);
             self.end.y.copy_from_slice(&self.state);
-            self.end.time = self.time;
+            self.end.time = t;
             self.peaks.pending = false;
         }
         self.start.time = self.end.time;
@@ -254,48 +226,67 @@ impl Simulation {
         self.integrator.restart();
     }
 
-    /// Makes `inputs` (their values and derivatives at `t_start`) those of the interval
-    /// [`t_start`, `t_end`]: a change that acts restarts the step sequence here (the steps then
-    /// end exactly at `t_end`, the returned limit), a changed prescribed speed jumps the
-    /// velocities through the constraints.
-    fn apply_inputs(
-        &mut self,
-        inputs: &InputSignal,
-        t_start: f64,
-        t_end: f64,
-    ) -> Result<Option<f64>, ModelError> {
-        let next = InputSignal {
-            start: t_start,
-            ..*inputs
-        };
+    /// Which inputs act in the drive mode: the prescribed speed with the speed drive, the torque
+    /// with the torque drive, the slider force always.
+    fn acts(&self, input: Input) -> bool {
         let drive = self.parameters.drive_mode;
-        let acts = |input| match input {
+        match input {
             Input::DriveSpeed => drive == DriveMode::Speed,
             Input::DriveTorque => drive == DriveMode::Torque,
             Input::SliderForce => true,
+        }
+    }
+
+    /// Takes the next step's inputs of `inputs` at the start `t` of an interval: an input that
+    /// acts and is not the same function of time as over the last step (before the first step:
+    /// as at the start) restarts the step sequence here (its steps then end exactly at `t_end`,
+    /// the returned limit); a changed prescribed speed jumps the velocities through the
+    /// constraints.
+    fn apply_inputs(
+        &mut self,
+        t: f64,
+        inputs: &InputRecord<Inputs>,
+        t_end: f64,
+    ) -> Result<Option<f64>, ModelError> {
+        let next = inputs.stepping();
+        let first = self.work() == 0;
+        let start = InputSignal {
+            start: t,
+            ..InputSignal::held(self.start_inputs)
         };
-        let current = self.signal;
-        let speed_jump =
-            acts(Input::DriveSpeed) && current.at(t_start).drive_speed != next.value.drive_speed;
+        let continues = |k: usize| {
+            if first {
+                start.same_from(next, t, |j| j == k)
+            } else {
+                inputs.continues(k, t)
+            }
+        };
         // After a change from outside (an input, typically from a coupled model at every
         // communication point) the steps end exactly at t_end: the next interval restarts there
         // anyway, and a step beyond it would be computed only to be cut back by dense output.
-        let restart = !current.same_from(&next, t_start, |k| acts(Input::ALL[k]));
-        let limit = restart.then_some(t_end);
+        let restart = Input::ALL
+            .iter()
+            .enumerate()
+            .any(|(k, &input)| self.acts(input) && !continues(k));
+        let before = if first {
+            self.start_inputs.drive_speed
+        } else {
+            inputs.last().value.drive_speed
+        };
+        let speed_jump = self.acts(Input::DriveSpeed) && before != next.value.drive_speed;
         if restart {
-            self.signal = next;
-            self.mechanism.set_inputs(&self.signal, t_start);
-            self.restart_here();
+            self.mechanism.set_inputs(next, t);
+            self.restart_at(t);
         }
         if speed_jump {
-            if self.integrator.stats().steps == 0 {
+            if first {
                 self.monitor.warn(format!(
                     "crank.initialSpeed = {} rad/s differs from drive.speed = {} rad/s: with the \
                      speed drive the crank's speed jumps to drive.speed at the first step (an \
                      impulsive change through the constraints, booked as drive work); leave \
                      crank.initialSpeed unset (the crank then starts at drive.speed) or set it to \
                      drive.speed for a smooth start",
-                    Num(current.at(t_start).drive_speed),
+                    Num(before),
                     Num(next.value.drive_speed)
                 ));
             }
@@ -304,7 +295,7 @@ impl Simulation {
             self.state.copy_from_slice(&self.end.y);
             self.start.y.copy_from_slice(&self.end.y);
         }
-        Ok(limit)
+        Ok(restart.then_some(t_end))
     }
 
     /// Internal step attempts so far (accepted and rejected).
@@ -313,13 +304,12 @@ impl Simulation {
         stats.steps + stats.rejected
     }
 
-    /// Checks the end of the accepted step (or the state at the communication point, which the
-    /// outputs show) against the [`validity`] limits; each cause warns once.
-    pub(super) fn check_validity(&mut self, at_step_end: bool) {
-        let (t, y) = if at_step_end {
-            (self.end.time, &self.end.y)
-        } else {
-            (self.time, &self.state)
+    /// Checks the end of the accepted step (or the state at the point `t` of an interval's end,
+    /// which the outputs show) against the [`validity`] limits; each cause warns once.
+    pub(super) fn check_validity(&mut self, at: Option<f64>) {
+        let (t, y) = match at {
+            None => (self.end.time, &self.end.y),
+            Some(t) => (t, &self.state),
         };
         self.monitor
             .check(&self.parameters, &mut self.mechanism, t, y);
@@ -337,9 +327,10 @@ impl Simulation {
         &self.peaks
     }
 
-    /// Energies of the current state (of the state alone: no input enters them).
-    pub fn energies(&mut self) -> Energies {
-        let (contact, state) = (self.contact_now(), &self.state);
+    /// Energies of the state at the current point `t` (of the state alone: no input enters
+    /// them).
+    pub fn energies(&mut self, t: f64) -> Energies {
+        let (contact, state) = (self.contact_now(t), &self.state);
         self.mechanism
             .with_contact_state(contact, |mechanism| mechanism.energies(state))
     }

@@ -1,13 +1,13 @@
 //! Early return at a contact onset: the step in which a joint comes into contact ends an
-//! interval early, at its end on the clock grid ([`Simulation::advance_to_onset`]).
+//! interval early, at its end on the clock grid ([`Engine::advance`]).
 
 use fmi_core::clock::on_clock_grid_below;
 
-use super::Simulation;
+use super::Engine;
 use super::step::Onset;
 use crate::joint::JointRole;
 
-impl Simulation {
+impl Engine {
     /// If `stop_at_onset` and a joint came into contact in the last accepted step, which ends
     /// after `t_start` and before `t_end`: the joint and the step's end rounded down to the clock
     /// grid (a time after `t_start`).

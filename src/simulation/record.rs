@@ -1,22 +1,23 @@
 //! The bookkeeping of each accepted step: the peak-hold outputs' extremes at its end and inside
 //! it, its contact onsets, and the check of a lubricated joint's peak inside it.
 
-use super::Simulation;
 use super::cycle::CycleStep;
 use super::peaks::{self, AcceptedStep, KnownEnds, Peaks};
 use super::sample::{Sample, force_series};
+use super::{Engine, InputSignal};
 use crate::error::ModelError;
 use crate::joint::{Joint, JointRole};
 use crate::mechanism::Driven;
 use crate::mechanism::layout::CRANK_ANGLE;
 
-impl Simulation {
-    /// Evaluates the end of the step just accepted for the peak-hold outputs.
-    pub(super) fn record_step_end(&mut self) -> Result<(), ModelError> {
+impl Engine {
+    /// Evaluates the end of the step just accepted, integrated with the inputs `signal`, for the
+    /// peak-hold outputs.
+    pub(super) fn record_step_end(&mut self, signal: &InputSignal) -> Result<(), ModelError> {
         let end = self.mechanism.contact_state();
         let onsets = JointRole::ALL
             .map(|role| u64::from(!self.contact_start[role].in_contact && end[role].in_contact));
-        self.mechanism.set_inputs(&self.signal, self.end.time);
+        self.mechanism.set_inputs(signal, self.end.time);
         let film = self.mechanism.film_extremes(&self.end.y);
         // From the joint law, the sample is the one the dense output gives at the step's end.
         let (at_end, from_joint_law) = match self.mechanism.clearance_joint_load(&self.end.y) {
@@ -37,12 +38,10 @@ impl Simulation {
             start: &self.start,
             end: &self.end,
             contact_start: self.contact_start,
-            signal: &self.signal,
+            signal,
         };
         let known = KnownEnds {
-            start: self
-                .end_sample
-                .at(&self.start, &self.signal, self.contact_start),
+            start: self.end_sample.at(&self.start, signal, self.contact_start),
             end: (from_joint_law && self.contact_start == end).then_some(at_end),
         };
         let within = peaks::within_step(
@@ -52,17 +51,13 @@ impl Simulation {
             &mut self.y_sample,
             &mut self.a_sample,
         );
-        self.end_sample.store(
-            &self.end,
-            &self.signal,
-            end,
-            from_joint_law.then_some(at_end),
-        );
-        self.doubt_film_peaks(&within)?;
+        self.end_sample
+            .store(&self.end, signal, end, from_joint_law.then_some(at_end));
+        self.doubt_film_peaks(&within, signal)?;
         self.peaks.step_end = Peaks::from_sample(peaks::larger(at_end, within.largest), onsets);
         self.peaks.cycle_step = Some(self.cycle_step(at_end, &within));
         self.peaks.pending = true;
-        self.check_validity(true);
+        self.check_validity(None);
         Ok(())
     }
 
@@ -87,7 +82,11 @@ impl Simulation {
     /// step's ends ([`peaks::interpolated_peak`]) and differs by more than that from the force in
     /// the integrator's own solution at its place ([`crate::integrator::Integrator::state_within`],
     /// a partial step: the check costs a step only where such a rise occurs).
-    fn doubt_film_peaks(&mut self, within: &peaks::Within) -> Result<(), ModelError> {
+    fn doubt_film_peaks(
+        &mut self,
+        within: &peaks::Within,
+        signal: &InputSignal,
+    ) -> Result<(), ModelError> {
         let known = peaks::larger(
             self.peaks.since_start.sample(),
             self.peaks.interval.sample(),
@@ -103,7 +102,7 @@ impl Simulation {
             let (t0, h) = (span.t0, span.h);
             let s = within.place[i];
             let contact = self.contact_start;
-            let (integrator, y, signal) = (&mut self.integrator, &mut self.y_sample, &self.signal);
+            let (integrator, y) = (&mut self.integrator, &mut self.y_sample);
             let integrated = self.mechanism.with_contact_state(contact, |mechanism| {
                 mechanism.set_inputs(signal, t0 + s * h);
                 let mut driven = Driven { mechanism, signal };

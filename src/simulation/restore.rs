@@ -1,14 +1,13 @@
-//! Snapshots of a [`Simulation`]: taking one, and restoring it exactly.
+//! Snapshots of an [`Engine`]: taking one, and restoring it exactly.
 
-use super::Simulation;
+use super::Engine;
 use super::snapshot::Snapshot;
 use crate::error::ModelError;
 
-impl Simulation {
+impl Engine {
     /// A complete snapshot of the simulation state.
     pub fn snapshot(&self) -> Snapshot {
         Snapshot {
-            time: self.time,
             state: self.state.clone(),
             step_start: self.start.clone(),
             contact_start: self.contact_start,
@@ -16,13 +15,14 @@ impl Simulation {
             integrator: self.integrator.state(),
             contact: self.mechanism.contact_state(),
             contact_at_start: self.mechanism.contact_at_start(),
-            signal: self.signal,
+            start_inputs: self.start_inputs,
             peaks: self.peaks,
             warnings: self.monitor.total,
         }
     }
 
-    /// Restores a snapshot taken from a simulation with the same parameters.
+    /// Restores a snapshot taken from an engine with the same parameters (the current point and
+    /// the inputs are the caller's, restored with it).
     pub fn restore(&mut self, snapshot: &Snapshot) -> Result<(), ModelError> {
         self.last_read = None;
         let n = self.state.len();
@@ -39,8 +39,6 @@ impl Simulation {
             )));
         }
         self.integrator.set_state(&snapshot.integrator)?;
-        self.paused = None;
-        self.time = snapshot.time;
         self.state.copy_from_slice(&snapshot.state);
         self.start.copy_from(&snapshot.step_start);
         self.contact_start = snapshot.contact_start;
@@ -48,8 +46,7 @@ impl Simulation {
         self.mechanism.set_contact_state(snapshot.contact);
         self.mechanism
             .set_contact_at_start(snapshot.contact_at_start);
-        self.signal = snapshot.signal;
-        self.mechanism.set_inputs(&self.signal, snapshot.time);
+        self.start_inputs = snapshot.start_inputs;
         self.peaks = snapshot.peaks;
         self.monitor.total = snapshot.warnings;
         Ok(())

@@ -4,20 +4,19 @@ use super::codec::{ByteReader, ByteWriter, CodecError, ReadRecords, WriteRecords
 use super::peaks::PeakHold;
 use super::step::StepPoint;
 use crate::integrator::{ImplicitState, IntegratorState};
-use crate::mechanism::{Contacts, InputSignal};
+use crate::mechanism::{Contacts, Inputs};
 
-/// A complete, restorable state of a [`super::Simulation`] (parameters excepted).
+/// A complete, restorable state of an [`super::Engine`] (its parameters, and the current point
+/// and the inputs, which its owner holds, excepted).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Snapshot {
-    /// Communication time \[s\].
-    pub time: f64,
-    /// State at `time`.
+    /// State at the current point.
     pub state: Vec<f64>,
     /// The start of the last accepted step.
     pub step_start: StepPoint,
     /// The contact state at the step's start.
     pub contact_start: Contacts,
-    /// The end of the last accepted step (the integrator's point, ≥ `time`).
+    /// The end of the last accepted step (the integrator's point, at or after the current one).
     pub step_end: StepPoint,
     /// Integrator state (step size, f at the step end, Jacobian, statistics).
     pub integrator: IntegratorState,
@@ -25,8 +24,8 @@ pub struct Snapshot {
     pub contact: Contacts,
     /// The elastic energy each joint's contact stored at the start \[J\].
     pub contact_at_start: [f64; 3],
-    /// The inputs of the current step sequence.
-    pub signal: InputSignal,
+    /// The inputs the start state is in equilibrium with.
+    pub start_inputs: Inputs,
     /// Peak-hold outputs.
     pub peaks: PeakHold,
     /// Warnings raised since the start.
@@ -34,20 +33,19 @@ pub struct Snapshot {
 }
 
 impl Snapshot {
-    /// Whether every time, state and input (with its derivatives) is a finite number.
+    /// Whether every time, state and start input is a finite number.
     pub fn is_finite(&self) -> bool {
         let finite = |v: &[f64]| v.iter().all(|x| x.is_finite());
-        self.time.is_finite()
-            && finite(&self.state)
+        let start = &self.start_inputs;
+        finite(&self.state)
             && finite(&self.contact_at_start)
             && self.step_start.is_finite()
             && self.step_end.is_finite()
-            && self.signal.is_finite()
+            && finite(&[start.drive_speed, start.drive_torque, start.slider_force])
     }
 
     /// Appends the pointer-free bytes of the snapshot.
     pub fn write(&self, w: &mut ByteWriter<'_>) {
-        w.f64(self.time);
         w.f64s(&self.state);
         w.step_point(&self.step_start);
         w.contact(&self.contact_start);
@@ -81,7 +79,10 @@ impl Snapshot {
         }
         w.contact(&self.contact);
         self.contact_at_start.iter().for_each(|&e| w.f64(e));
-        self.signal.write(w);
+        let start = &self.start_inputs;
+        [start.drive_speed, start.drive_torque, start.slider_force]
+            .iter()
+            .for_each(|&x| w.f64(x));
         w.peaks(&self.peaks.interval);
         w.peaks(&self.peaks.step_end);
         w.u8(u8::from(self.peaks.pending));
@@ -97,7 +98,6 @@ impl Snapshot {
     /// Reads a snapshot written by [`Snapshot::write`] (finiteness is checked by
     /// [`Snapshot::is_finite`]).
     pub fn read(r: &mut ByteReader<'_>) -> Result<Self, CodecError> {
-        let sim_time = r.f64()?;
         let state_vector = r.f64s()?;
         let step_start = r.step_point()?;
         let contact_start = r.contact()?;
@@ -131,7 +131,6 @@ impl Snapshot {
         let contact = r.contact()?;
         let contact_at_start = [r.f64()?, r.f64()?, r.f64()?];
         Ok(Self {
-            time: sim_time,
             state: state_vector,
             step_start,
             contact_start,
@@ -139,7 +138,11 @@ impl Snapshot {
             integrator,
             contact,
             contact_at_start,
-            signal: InputSignal::read(r)?,
+            start_inputs: Inputs {
+                drive_speed: r.f64()?,
+                drive_torque: r.f64()?,
+                slider_force: r.f64()?,
+            },
             peaks: PeakHold {
                 interval: r.peaks()?,
                 step_end: r.peaks()?,

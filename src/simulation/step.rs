@@ -60,7 +60,7 @@ impl StepPoint {
     }
 }
 
-/// A contact onset an early return stopped at ([`super::Simulation::advance_to_onset`]).
+/// A contact onset an early return stopped at ([`super::Engine::advance`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Onset {
     /// The joint that came into contact.
@@ -82,7 +82,7 @@ impl Onset {
 
 /// An interval under way: where it started and ends, the step limit its inputs set, and the
 /// integrator's work count at its start (its step budget).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub(super) struct Interval {
     pub(super) t_start: f64,
     pub(super) t_end: f64,
@@ -90,12 +90,12 @@ pub(super) struct Interval {
     pub(super) work_start: u64,
 }
 
-/// Where [`super::Simulation::advance_pausing`] stopped.
+/// Where an interval stopped ([`super::Engine::advance`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Advance {
-    /// At the interval's end.
-    Reached,
-    /// Early, at a contact onset ([`super::Simulation::advance_to_onset`]): the interval ends there.
+    /// At the interval's end \[s\] (on the clock grid).
+    Reached(f64),
+    /// Early, at a contact onset: the interval ends there.
     Onset(Onset),
     /// After an accepted step before the interval's end, at its end \[s\] (not on the clock
     /// grid): the state there is the current one; the interval resumes at the next call.

@@ -23,6 +23,7 @@ pub unsafe fn fmi2DoStep<M: Model>(
             h: communicationStepSize,
             early_return: false,
             pause: false,
+            resume: false,
         };
         inst.step(step).map(|_| Status::Ok)
     })

@@ -146,6 +146,7 @@ unsafe fn step<M: Model>(
         h,
         early_return: early_allowed,
         pause: inst.intermediate_update.is_some(),
+        resume: false,
     };
     let result = inst.step(step);
     if let (Ok(StepOutcome::Paused { time }), Some(update)) = (&result, inst.intermediate_update) {
