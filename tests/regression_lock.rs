@@ -13,7 +13,9 @@
 //! - `machine`: a user's machine, every feature of it at once: the compressor of
 //!   `studies/compressor.toml` with its crank-angle load table, counterweighted crank, lubricated
 //!   crank pin and main bearing (finite film) and a dry piston pin in line contact with friction,
-//!   with an offset guide, the rod's eye masses and gravity besides.
+//!   with an offset guide, the rod's eye masses and gravity besides;
+//! - `ramp`: `B` with the drive speed ramped through its first and second derivatives, set at
+//!   every communication point as a master that provides input derivatives sets them.
 //!
 //! An output locked as zeros at every point says why ([`ZEROS`], checked both ways): an ideal
 //! joint, a dry joint's film, no gravity, a journal that never touches or never lifts off.
@@ -32,17 +34,44 @@ use std::collections::BTreeMap;
 use flexible_slider_crank::fmi::instance::SliderCrankFmu;
 use fmi_export::reference::Slave;
 
-/// The parameters (and inputs) of each locked run, set by name before initialization.
-const CASES: &[(&str, &[(&str, f64)])] = &[
-    ("B", &[]),
-    ("A", &[("rod.formulation", 1.0)]),
-    (
+/// One locked run: its parameters (and inputs), set by name before initialization, a load table
+/// (a path in the repository) and an input ramped through its derivatives.
+struct Case {
+    name: &'static str,
+    settings: &'static [(&'static str, f64)],
+    table: Option<&'static str>,
+    ramp: Option<Ramp>,
+}
+
+/// An input u(t) = u₀ + u̇₀ t + ü t²/2, set at every communication point with its first and
+/// second derivatives there.
+#[derive(Clone, Copy)]
+struct Ramp {
+    input: &'static str,
+    coefficients: [f64; 3],
+}
+
+impl Case {
+    const fn plain(name: &'static str, settings: &'static [(&'static str, f64)]) -> Self {
+        Self {
+            name,
+            settings,
+            table: None,
+            ramp: None,
+        }
+    }
+}
+
+const CASES: &[Case] = &[
+    Case::plain("B", &[]),
+    Case::plain("A", &[("rod.formulation", 1.0)]),
+    Case::plain(
         "lubricated",
         &[("joint.model", 3.0), ("joint.filmModel", 1.0)],
     ),
-    ("worn", &WORN),
-    ("finite", &FINITE),
-    (
+    Case::plain("worn", &WORN),
+    Case::plain("finite", &FINITE),
+    Case::plain(
         "torque",
         &[
             ("drive.mode", 2.0),
@@ -50,13 +79,23 @@ const CASES: &[(&str, &[(&str, f64)])] = &[
             ("slider.force", -50.0),
         ],
     ),
-    ("machine", &MACHINE),
+    Case {
+        table: Some("studies/compressor_cycle.csv"),
+        ..Case::plain("machine", &MACHINE)
+    },
+    Case {
+        ramp: Some(Ramp {
+            input: "drive.speed",
+            coefficients: [523.598_775_598_298_8, 4000.0, -1e5],
+        }),
+        ..Case::plain("ramp", &[])
+    },
 ];
 
 /// The compressor of `studies/compressor.toml` (crank 30 mm, rod 110 mm, 1500 rpm, lubricated crank
 /// pin and main bearing with the finite film, a dry piston pin in line contact with friction, every
 /// journal settled, a 2 %-damped rod), with an offset guide, the rod's eye masses and gravity besides
-/// ([`hashes`] adds its load table).
+/// (its case adds the load table).
 const MACHINE: [(&str, f64); 36] = [
     ("crank.length", 0.03),
     ("crank.mass", 0.8),
@@ -123,16 +162,31 @@ const FINITE: [(&str, f64); 13] = {
 };
 
 /// FNV-1a 64 of each output's bits over the run's 240 communication points.
-fn hashes(settings: &[(&str, f64)]) -> BTreeMap<&'static str, u64> {
+fn hashes(case: &Case) -> BTreeMap<&'static str, u64> {
     let mut slave = Slave::<SliderCrankFmu>::new();
     slave.setup(Some(1e-2), 0.0, Some(0.024)).unwrap();
     slave.enter_initialization();
-    for &(name, value) in settings {
+    for &(name, value) in case.settings {
         slave.set(name, value).unwrap();
     }
-    if std::ptr::eq(settings, MACHINE.as_slice()) {
-        let table = concat!(env!("CARGO_MANIFEST_DIR"), "/studies/compressor_cycle.csv");
-        slave.set_string("slider.forceTable", table).unwrap();
+    if let Some(table) = case.table {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(table);
+        let path = path.to_str().unwrap();
+        slave.set_string("slider.forceTable", path).unwrap();
+    }
+    let ramp = |t: f64| {
+        case.ramp.map(
+            |Ramp {
+                 input,
+                 coefficients: [u, rate, second],
+             }| {
+                let values = [u + t * (rate + 0.5 * t * second), rate + t * second, second];
+                (input, values)
+            },
+        )
+    };
+    if let Some((input, [u, ..])) = ramp(0.0) {
+        slave.set(input, u).unwrap();
     }
     slave.exit_initialization().unwrap();
     let names = Slave::<SliderCrankFmu>::outputs();
@@ -141,7 +195,12 @@ fn hashes(settings: &[(&str, f64)]) -> BTreeMap<&'static str, u64> {
         .map(|&n| (n, 0xcbf2_9ce4_8422_2325u64))
         .collect();
     for k in 0..240 {
-        slave.step(f64::from(k) * 1e-4, 1e-4).unwrap();
+        let t = f64::from(k) * 1e-4;
+        if let Some((input, [u, rate, second])) = ramp(t) {
+            slave.set(input, u).unwrap();
+            slave.set_derivatives(input, [rate, second]).unwrap();
+        }
+        slave.step(t, 1e-4).unwrap();
         let scalars = names.iter().zip(slave.output_values().unwrap());
         let arrays = slave.array_values().unwrap();
         let elements = arrays
@@ -160,9 +219,9 @@ fn hashes(settings: &[(&str, f64)]) -> BTreeMap<&'static str, u64> {
 #[test]
 fn every_output_of_the_locked_runs_is_bit_identical() {
     let mut current = String::new();
-    for &(case, settings) in CASES {
-        for (name, hash) in hashes(settings) {
-            current.push_str(&format!("{case} {name} {hash:016x}\n"));
+    for case in CASES {
+        for (name, hash) in hashes(case) {
+            current.push_str(&format!("{} {name} {hash:016x}\n", case.name));
         }
     }
     let path =
@@ -250,37 +309,37 @@ type Zero = (
 
 const ZEROS: &[Zero] = &[
     (
-        &["B", "A", "lubricated", "torque"],
+        &["B", "ramp", "A", "lubricated", "torque"],
         CRANK_JOINTS,
         BEARING,
         "an ideal joint has no clearance, film or friction",
     ),
     (
-        &["B", "A", "lubricated", "worn", "finite", "torque"],
+        &["B", "ramp", "A", "lubricated", "worn", "finite", "torque"],
         &[""],
         &["energy.gravity"],
         "no gravity",
     ),
     (
-        &["B", "A", "lubricated", "worn", "finite", "torque"],
+        &["B", "ramp", "A", "lubricated", "worn", "finite", "torque"],
         &[""],
         &["energy.materialDamping"],
         "an undamped rod",
     ),
     (
-        &["B", "A", "lubricated", "worn", "finite"],
+        &["B", "ramp", "A", "lubricated", "worn", "finite"],
         &[""],
         &["energy.sliderWork", "slider.appliedForce"],
         "no slider force and no load table",
     ),
     (
-        &["B", "A", "torque", "worn", "finite", "machine"],
+        &["B", "ramp", "A", "torque", "worn", "finite", "machine"],
         &["joint."],
         FILM,
         "a dry rod-slider joint has no film",
     ),
     (
-        &["B", "A", "torque", "worn", "finite"],
+        &["B", "ramp", "A", "torque", "worn", "finite"],
         &["joint."],
         &["frictionPower", "frictionPowerMeanCycle"],
         "a dry joint without friction",
@@ -345,7 +404,7 @@ const ZEROS: &[Zero] = &[
         "the oiled bearings never touch",
     ),
     (
-        &["B", "A", "worn", "finite", "torque", "machine"],
+        &["B", "ramp", "A", "worn", "finite", "torque", "machine"],
         &[""],
         &["solver.warnings"],
         "the run warns of nothing",

@@ -151,7 +151,7 @@ impl Model for DcMotorFmu {
         crate::variables::DESCRIPTION.max_input_derivative_order;
     const LOG_CATEGORIES: &'static [(&'static str, &'static str)] = LOG_CATEGORIES;
     const STATE_MAGIC: [u8; 4] = *b"DCMS";
-    const STATE_VERSION: u32 = 4;
+    const STATE_VERSION: u32 = 5;
 
     fn new() -> Self {
         Self {

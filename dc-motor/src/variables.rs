@@ -46,6 +46,7 @@ pub const DESCRIPTION: Description<Vr> = Description {
     default_experiment: (0.0, 0.024, 1e-6, 1e-4),
     variables: VARIABLES,
     feedthrough: FEEDTHROUGH,
+    rate_feedthrough: &[],
     initial_dependency,
     provides_directional_derivative: true,
 };

@@ -42,6 +42,9 @@ pub struct Description<V: 'static> {
     /// Direct feedthrough: each output with the inputs it depends on without a step (outputs
     /// not listed depend on none).
     pub feedthrough: &'static [(V, &'static [V])],
+    /// The inputs whose rate (the first derivative set for the next step) an output that depends
+    /// on them at once reads as well (a prescribed speed's: the acceleration it prescribes).
+    pub rate_feedthrough: &'static [V],
     /// Whether an initial unknown (an output or a calculated parameter) depends, in
     /// initialization mode, on a known (an input or a parameter: FMI 2.0 makes every variable
     /// with initial = "exact" a known), listed as the `dependencies` of

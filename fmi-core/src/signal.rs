@@ -312,6 +312,33 @@ mod tests {
         assert!((c.at(2.25)[1] - s.at(2.25)[1]).abs() < 1e-15);
     }
 
+    /// At the point a step ends, outputs read the step's inputs as they ended (values and
+    /// rates); once anything is set there they read the next step's, which holds each input whose
+    /// derivatives are not set again; an input re-set to the same function of time continues.
+    #[test]
+    fn a_record_reads_the_step_that_ended_until_the_next_is_set() {
+        let mut record = InputRecord::held([1.0, 2.0], 0.0);
+        record.set_derivative(0, 1, 3.0).unwrap();
+        record.set_derivative(0, 2, 4.0).unwrap();
+        assert!(!record.continues(0, 0.0) && record.continues(1, 0.0));
+        record.begin_step();
+        assert_eq!(record.reading().derivatives, [[3.0, 0.0], [4.0, 0.0]]);
+        record.end_step(0.5);
+        let reached = 1.0 + 0.5 * (3.0 + 0.5 * 0.5 * 4.0);
+        assert_eq!(record.reading().at(0.5), [reached, 2.0]);
+        assert_eq!(record.reading().rate(0.5), [3.0 + 0.5 * 4.0, 0.0]);
+        assert_eq!(*record.last(), record.reading().continued_at(0.5));
+        assert_eq!(*record.stepping(), Polynomial::held([reached, 2.0]).starting(0.5));
+        assert!(!record.continues(0, 0.5), "derivatives not set again hold the input");
+        record.set_derivative(0, 1, 5.0).unwrap();
+        record.set_derivative(0, 2, 4.0).unwrap();
+        assert_eq!(record.reading(), record.stepping());
+        assert!(record.continues(0, 0.5), "the same ramp set again continues");
+        record.set_value(1, 7.0);
+        assert!(!record.continues(1, 0.5));
+        assert_eq!(record.set_derivative(0, 3, 1.0), None);
+    }
+
     #[test]
     fn inputs_that_do_not_act_may_differ() {
         let a = Polynomial::held([1.0, 2.0]);

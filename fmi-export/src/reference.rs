@@ -123,6 +123,13 @@ impl<M: Model> Slave<M> {
         }
     }
 
+    /// fmi2SetRealInputDerivatives of the input `name`: its first and second time derivatives at
+    /// the current point, for the next step.
+    pub fn set_derivatives(&mut self, name: &str, derivatives: [f64; 2]) -> Result<(), FmuError> {
+        self.call_on(&[name, name], "Real")?;
+        self.instance.set_input_derivatives(&[1, 2], &derivatives)
+    }
+
     /// Sets a String variable.
     pub fn set_string(&mut self, name: &str, value: &str) -> Result<(), FmuError> {
         let v = Self::variable(name)?;

@@ -116,6 +116,7 @@ pub const DESCRIPTION: Description<Vr> = Description {
     default_experiment: DEFAULT_EXPERIMENT,
     variables: VARIABLES,
     feedthrough: structure::FEEDTHROUGH,
+    rate_feedthrough: &[Vr::DriveSpeed],
     initial_dependency: structure::initial_dependency,
     provides_directional_derivative: true,
 };

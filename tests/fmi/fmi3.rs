@@ -488,4 +488,5 @@ fn event_mode_at_each_contact_onset_changes_nothing() {
 
 mod arrays;
 mod intermediate;
+mod ramps;
 mod state_machine;

@@ -20,6 +20,26 @@ use crate::xml::{
 /// own value references are dense from 0, so this one stays clear of any it will ever have).
 pub const TIME_VALUE_REFERENCE: u32 = 1_000_000;
 
+/// The first value reference of the input derivatives ([`input_derivative_vr`]).
+const INPUT_DERIVATIVES: u32 = 1_001_000;
+
+/// The value reference of `der(u)` (`order` 1) or `der(u,2)`, the time derivative of a model's
+/// `k`-th input `u` (in table order), in FMI 3. FMI 3.0 has no fmi3SetInputDerivatives: a model
+/// that takes input derivatives (FMI 2's canInterpolateInputs) declares them in FMI 3 as inputs
+/// of their own, whose `derivative` attribute names the variable they derive (FMI 3.0 §2.4.7.4);
+/// a master sets them where it sets the inputs, for the next step.
+pub fn input_derivative_vr(k: usize, order: u32) -> u32 {
+    INPUT_DERIVATIVES + 1000 * (order - 1) + k as u32
+}
+
+/// The input (its index among `n` inputs) and the order, at most `max`, of the input derivative
+/// of value reference `vr`, if it is one ([`input_derivative_vr`]).
+pub fn input_derivative(vr: u32, n: usize, max: u32) -> Option<(usize, u32)> {
+    let offset = vr.checked_sub(INPUT_DERIVATIVES)?;
+    let (order, k) = (offset / 1000 + 1, (offset % 1000) as usize);
+    (k < n && order <= max).then_some((k, order))
+}
+
 /// The FMI 3.0 modelDescription.xml of `d` with the FMI 3 additions `fmi3`, and its
 /// instantiationToken.
 pub fn model_description<V: ValueReference>(
@@ -95,6 +115,28 @@ fn render<V: ValueReference>(d: &Description<V>, fmi3: Fmi3Interface) -> Result<
     for v in d.variables {
         x.push_str(&variable(d, v, fmi3.provides_intermediate_update));
     }
+    for order in 1..=d.max_input_derivative_order {
+        for (k, v) in inputs(d).enumerate() {
+            let (name, derives) = match order {
+                1 => (format!("der({})", v.name), v.vr.index()),
+                _ => (
+                    format!("der({},{order})", v.name),
+                    input_derivative_vr(k, order - 1),
+                ),
+            };
+            let _ = writeln!(
+                x,
+                r#"    <Float64 name="{name}" valueReference="{}" description="{}" causality="input" variability="continuous" derivative="{derives}" start="0"/>"#,
+                input_derivative_vr(k, order),
+                escape(&format!(
+                    "Time derivative of order {order} of {} at the communication point, for the \
+                     next step (the input is then its Taylor polynomial over the step; not set \
+                     again, the input is held)",
+                    v.name
+                )),
+            );
+        }
+    }
     for a in fmi3.arrays {
         x.push_str(&array(fmi3, a));
     }
@@ -107,16 +149,13 @@ fn render<V: ValueReference>(d: &Description<V>, fmi3: Fmi3Interface) -> Result<
         numbers.join(" ")
     };
     for output in vrs(&|v| v.causality == Causality::Output) {
-        let inputs = d
-            .feedthrough
-            .iter()
-            .find(|(o, _)| *o == output)
-            .map_or(&[][..], |(_, inputs)| inputs);
+        let inputs = feedthrough(d, output);
         let _ = writeln!(
             x,
-            r#"    <Output valueReference="{}" dependencies="{}"/>"#,
+            r#"    <Output valueReference="{}" dependencies="{}{}"/>"#,
             output.index(),
-            list(inputs)
+            list(inputs),
+            rates(d, inputs)
         );
     }
     for a in fmi3.arrays {
@@ -136,9 +175,10 @@ fn render<V: ValueReference>(d: &Description<V>, fmi3: Fmi3Interface) -> Result<
         });
         let _ = writeln!(
             x,
-            r#"    <InitialUnknown valueReference="{}" dependencies="{}"/>"#,
+            r#"    <InitialUnknown valueReference="{}" dependencies="{}{}"/>"#,
             unknown.index(),
-            list(&knowns)
+            list(&knowns),
+            rates(d, feedthrough(d, unknown))
         );
     }
     for a in fmi3.arrays {
@@ -146,6 +186,32 @@ fn render<V: ValueReference>(d: &Description<V>, fmi3: Fmi3Interface) -> Result<
     }
     x.push_str("  </ModelStructure>\n</fmiModelDescription>\n");
     Ok(x)
+}
+
+/// The model's Real inputs, in table order.
+fn inputs<V: ValueReference>(d: &Description<V>) -> impl Iterator<Item = &Variable<V>> {
+    d.variables
+        .iter()
+        .filter(|v| v.causality == Causality::Input)
+}
+
+/// The inputs an output depends on at once ([`Description::feedthrough`]).
+fn feedthrough<V: ValueReference>(d: &Description<V>, output: V) -> &'static [V] {
+    d.feedthrough
+        .iter()
+        .find(|(o, _)| *o == output)
+        .map_or(&[][..], |(_, inputs)| inputs)
+}
+
+/// The value references, each after a space, of `der(u)` of the inputs `u` among `direct` whose
+/// rate an output reads at once ([`Description::rate_feedthrough`]).
+fn rates<V: ValueReference>(d: &Description<V>, direct: &[V]) -> String {
+    inputs(d)
+        .enumerate()
+        .filter(|(_, v)| direct.contains(&v.vr) && d.rate_feedthrough.contains(&v.vr))
+        .filter(|_| d.max_input_derivative_order > 0)
+        .map(|(k, _)| format!(" {}", input_derivative_vr(k, 1)))
+        .collect()
 }
 
 /// Checks the FMI 3 additions: value references unique and outside the table's, start values
@@ -158,7 +224,12 @@ fn check_interface<V: ValueReference>(
         .structural_parameters
         .iter()
         .map(|p| (p.vr, p.name))
-        .chain(fmi3.arrays.iter().map(|a| (a.vr, a.name)));
+        .chain(fmi3.arrays.iter().map(|a| (a.vr, a.name)))
+        .chain((1..=d.max_input_derivative_order).flat_map(|order| {
+            inputs(d)
+                .enumerate()
+                .map(move |(k, v)| (input_derivative_vr(k, order), v.name))
+        }));
     let mut seen = vec![TIME_VALUE_REFERENCE];
     for (vr, name) in extra {
         if seen.contains(&vr) || d.variables.iter().any(|v| v.vr.index() == vr) {

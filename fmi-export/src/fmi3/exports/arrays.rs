@@ -174,11 +174,16 @@ pub fn get_float64<M: Model>(
             let n = size(inst, r);
             inst.get_array(index, &mut values[at..at + n])?;
             (i, at) = (i + 1, at + n);
+        } else if let Some((k, order)) = Instance::<M>::input_derivative(r) {
+            values[at] = inst.input_derivative_value(k, order);
+            (i, at) = (i + 1, at + 1);
         } else {
-            let run = vr[i..]
-                .iter()
-                .take_while(|&&r| r != TIME_VALUE_REFERENCE && inst.fmi3.array(r).is_none())
-                .count();
+            let table = |r: u32| {
+                r != TIME_VALUE_REFERENCE
+                    && inst.fmi3.array(r).is_none()
+                    && Instance::<M>::input_derivative(r).is_none()
+            };
+            let run = vr[i..].iter().take_while(|&&r| table(r)).count();
             resolve::<M>(&vr[i..i + run], "Float64", &mut inst.variables)?;
             inst.get_real(&mut values[at..at + run])?;
             (i, at) = (i + run, at + run);

@@ -8,7 +8,7 @@ use fmi_sys::fmi3::*;
 use super::arrays::{get_float64, refuse_arrays, scalars};
 use super::codes::with_instance;
 use crate::calls;
-use crate::checks::{check_set_boolean, check_set_integer, check_set_real, lookup, resolve};
+use crate::checks::{check_set_boolean, check_set_integer, lookup, resolve};
 use crate::error::FmuError;
 use crate::ffi::{slice, slice_mut};
 use crate::fmi3::description::TIME_VALUE_REFERENCE;
@@ -97,9 +97,7 @@ pub unsafe fn fmi3SetFloat64<M: Model>(
                 "time is the independent variable and cannot be set".into(),
             ));
         }
-        resolve::<M>(vr, "Float64", &mut inst.variables)?;
-        check_set_real(inst.state, &inst.variables, values)?;
-        inst.set_real(values).map(ok)
+        inst.set_float64(vr, values).map(ok)
     })
 }
 
