@@ -1,7 +1,7 @@
 //! A load tied to the crank angle: the force on the slider as a periodic function of the crank
-//! angle, read from a CSV table (crank angle in degrees, force in newtons) and interpolated by a
-//! monotone piecewise cubic, so that the mechanism sees a gas load in phase with its own crank,
-//! at every evaluation, whatever its speed.
+//! angle, read from a CSV table (crank angle in degrees, or in radians where its header says so;
+//! force in newtons) and interpolated by a monotone piecewise cubic, so that the mechanism sees a
+//! gas load in phase with its own crank, at every evaluation, whatever its speed.
 //!
 //! ```text
 //! F(θ) on [θᵢ, θᵢ₊₁]:  the cubic Hermite through (θᵢ, Fᵢ, dᵢ), (θᵢ₊₁, Fᵢ₊₁, dᵢ₊₁),  θ = crank angle mod P
@@ -40,6 +40,8 @@ pub struct LoadTable {
     slopes: Vec<f64>,
     /// The period \[deg\].
     period: f64,
+    /// What looks wrong in a table that was read nevertheless (angles that look like radians).
+    warning: Option<String>,
 }
 
 impl LoadTable {
@@ -106,13 +108,23 @@ impl LoadTable {
             forces,
             slopes,
             period,
+            warning: None,
         })
+    }
+
+    /// What looks wrong in the table, read nevertheless: angles in degrees (no unit stated) that
+    /// all lie within 2π of a cycle more than four times as long, as radians would.
+    pub fn warning(&self) -> Option<&str> {
+        self.warning.as_deref()
     }
 
     /// Reads the table from the CSV file at `path` (a relative path is looked up in the working
     /// directory, then in `resources`): one point per line, `crank angle [deg], force [N]`, blank
     /// lines and lines starting with `#` skipped, and a first line without a number taken for a
-    /// header. An error names the file, the line and what is wrong with it.
+    /// header. The header may state the angles' unit in its first field, the word `deg` or `rad`
+    /// (`angle [rad], force [N]`): radians are read as such; without it the angles are degrees,
+    /// and a table whose angles look like radians is read with a [`LoadTable::warning`]. An
+    /// error names the file, the line and what is wrong with it.
     pub fn read(path: &str, period: f64, resources: Option<&Path>) -> Result<Self, ModelError> {
         let file = locate(path, resources).ok_or_else(|| {
             let looked = match resources {
@@ -135,6 +147,7 @@ impl LoadTable {
             ));
         }
         let mut points = Vec::new();
+        let mut unit = None;
         for (number, line) in (1..).zip(text.lines()) {
             let line = line.trim();
             if line.is_empty() || line.starts_with('#') {
@@ -146,7 +159,9 @@ impl LoadTable {
                 [Some(angle), Some(force)] if angle.is_finite() && force.is_finite() => {
                     points.push((*angle, *force));
                 }
-                _ if points.is_empty() && !line.chars().any(|c| c.is_ascii_digit()) => {}
+                _ if points.is_empty() && !line.chars().any(|c| c.is_ascii_digit()) => {
+                    unit = fields.first().and_then(|f| angle_unit(f));
+                }
                 _ => {
                     return Err(table_error(
                         path,
@@ -158,7 +173,26 @@ impl LoadTable {
                 }
             }
         }
-        Self::new(&points, period, path)
+        if unit == Some(AngleUnit::Radians) {
+            points
+                .iter_mut()
+                .for_each(|(angle, _)| *angle = angle.to_degrees());
+        }
+        let mut table = Self::new(&points, period, path)?;
+        let last = points.last().map_or(0.0, |&(angle, _)| angle);
+        let two_pi = std::f64::consts::TAU;
+        if unit.is_none() && points.len() >= 3 && last <= two_pi && period > 4.0 * two_pi {
+            table.warning = Some(format!(
+                "slider.forceTable = \"{path}\": its crank angles run from {} to {} deg of a {} \
+                 deg load cycle (slider.forceTablePeriod): they look like radians. A table's angles \
+                 are degrees unless its header says otherwise: state the unit in the header's \
+                 first field (angle [rad], force [N]) or write the angles in degrees",
+                Num(points[0].0),
+                Num(last),
+                Num(period)
+            ));
+        }
+        Ok(table)
     }
 
     /// The largest magnitude of the force \[N\] (a monotone interpolant's extremes are at the
@@ -195,6 +229,25 @@ impl LoadTable {
             + b2 * (self.forces[next] - self.forces[k])
             + width * (b1 * self.slopes[k] + b3 * self.slopes[next])
     }
+}
+
+/// The unit of a table's crank angles.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum AngleUnit {
+    Degrees,
+    Radians,
+}
+
+/// The angle unit a header's first field names, as a word of its own (`angle [rad]`,
+/// `crank angle (deg)`), if any.
+fn angle_unit(field: &str) -> Option<AngleUnit> {
+    field
+        .split(|c: char| !c.is_ascii_alphanumeric())
+        .find_map(|word| match word.to_ascii_lowercase().as_str() {
+            "deg" | "degree" | "degrees" => Some(AngleUnit::Degrees),
+            "rad" | "radian" | "radians" => Some(AngleUnit::Radians),
+            _ => None,
+        })
 }
 
 /// The regular file a table's `path` names (a device or a pipe is none): as given if absolute or
@@ -305,6 +358,24 @@ mod tests {
         let missing = message("no/such/table.csv", 360.0);
         assert!(missing.contains("slider.forceTable = \"no/such/table.csv\": no such file"));
         // A relative path is found in the resources directory.
+        // Angles that look like radians warn, naming the table; a header that says so reads
+        // them as radians, one that says degrees keeps them.
+        let radians = "0,0\n1.5,-100\n3.1,-800\n6.2,0\n";
+        let unstated = write("unstated.csv", &format!("angle,force\n{radians}"));
+        let warning = LoadTable::read(&unstated, 360.0, None).unwrap();
+        let warning = warning.warning().unwrap();
+        assert!(warning.contains(&unstated) && warning.contains("look like radians"));
+        let stated = write(
+            "stated.csv",
+            &format!("crank angle [rad], force [N]\n{radians}"),
+        );
+        let stated = LoadTable::read(&stated, 360.0, None).unwrap();
+        assert!(stated.warning().is_none());
+        assert!((stated.at(3.1) + 800.0).abs() < 1e-9);
+        let degrees = write("degrees.csv", &format!("angle (deg),force\n{radians}"));
+        let degrees = LoadTable::read(&degrees, 360.0, None).unwrap();
+        assert!(degrees.warning().is_none());
+        assert!((degrees.at(3.1_f64.to_radians()) + 800.0).abs() < 1e-9);
         write("in_resources.csv", "0,1\n180,-1\n");
         let found = LoadTable::read("in_resources.csv", 360.0, Some(&dir)).unwrap();
         assert_eq!(found.at(std::f64::consts::PI), -1.0);

@@ -328,12 +328,21 @@ mod tests {
         assert_eq!(record.reading().at(0.5), [reached, 2.0]);
         assert_eq!(record.reading().rate(0.5), [3.0 + 0.5 * 4.0, 0.0]);
         assert_eq!(*record.last(), record.reading().continued_at(0.5));
-        assert_eq!(*record.stepping(), Polynomial::held([reached, 2.0]).starting(0.5));
-        assert!(!record.continues(0, 0.5), "derivatives not set again hold the input");
+        assert_eq!(
+            *record.stepping(),
+            Polynomial::held([reached, 2.0]).starting(0.5)
+        );
+        assert!(
+            !record.continues(0, 0.5),
+            "derivatives not set again hold the input"
+        );
         record.set_derivative(0, 1, 5.0).unwrap();
         record.set_derivative(0, 2, 4.0).unwrap();
         assert_eq!(record.reading(), record.stepping());
-        assert!(record.continues(0, 0.5), "the same ramp set again continues");
+        assert!(
+            record.continues(0, 0.5),
+            "the same ramp set again continues"
+        );
         record.set_value(1, 7.0);
         assert!(!record.continues(1, 0.5));
         assert_eq!(record.set_derivative(0, 3, 1.0), None);

@@ -243,6 +243,11 @@ impl SliderCrank {
         self.loading.inputs
     }
 
+    /// What looks wrong in the load table, read nevertheless ([`LoadTable::warning`]).
+    pub fn load_table_warning(&self) -> Option<&str> {
+        self.loading.table.as_ref().and_then(LoadTable::warning)
+    }
+
     /// The total external force on the slider along the guide at the crank angle `theta`: the
     /// input and the load table's value there \[N\].
     pub fn slider_force(&self, theta: f64) -> f64 {

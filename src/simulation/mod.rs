@@ -135,6 +135,9 @@ impl Engine {
         for warning in parameters.warnings() {
             monitor.warn(warning);
         }
+        if let Some(warning) = mechanism.load_table_warning() {
+            monitor.warn(warning.to_string());
+        }
         let peaks = PeakHold::new(parameters.load_cycle(), t0, angle);
         Ok(Self {
             scratch: vec![0.0; state.len()],

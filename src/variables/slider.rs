@@ -72,7 +72,7 @@ pub(super) const VARIABLES: &[Variable] = &[
         Vr::SliderForceTable,
         "slider.forceTable",
         "",
-        "A load on the slider tied to the crank angle: a CSV file of crank angle [deg], force [N] (a relative path is looked up in the working directory, then in the FMU's resources), periodic over slider.forceTablePeriod, interpolated monotonically (no overshoot of a combustion pulse) at every evaluation and added to the input slider.force; empty for none",
+        "A load on the slider tied to the crank angle: a CSV file of crank angle [deg] (or [rad] where the header's first field says rad), force [N] (a relative path is looked up in the working directory, then in the FMU's resources), periodic over slider.forceTablePeriod, interpolated monotonically (no overshoot of a combustion pulse) at every evaluation and added to the input slider.force; empty for none",
     ),
     Variable::integer(
         Vr::SliderForceTablePeriod,

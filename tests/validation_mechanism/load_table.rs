@@ -185,3 +185,45 @@ fn a_bad_table_is_refused_when_the_model_is_built() {
         "{message}"
     );
 }
+
+/// A table written in radians without saying so (its angles within 2π of a 360° cycle) warns
+/// when the model is built, naming the table and the likely mistake; the same table with its
+/// unit in the header is read in radians, silently, and is the degrees table's load.
+#[test]
+fn a_table_in_radians_says_so_or_warns() {
+    let points: Vec<(f64, f64)> = GAS_LOAD
+        .lines()
+        .filter_map(|l| l.split_once(','))
+        .filter_map(|(a, f)| Some((a.parse::<f64>().ok()?.to_radians(), f.parse::<f64>().ok()?)))
+        .collect();
+    let rows: String = points.iter().map(|(a, f)| format!("{a},{f}\n")).collect();
+    let run = |name: &str, header: &str| {
+        let table = table_file(name, &format!("{header}\n{rows}"));
+        let mut sim = Simulation::new(Parameters {
+            slider_force_table: table.clone(),
+            ..Parameters::default()
+        })
+        .unwrap();
+        let warnings = sim.take_warnings();
+        (table, warnings, sim.outputs().unwrap().slider_applied_force)
+    };
+    let (table, warnings, _) = run("unstated.csv", "crank angle,force");
+    assert!(
+        warnings
+            .iter()
+            .any(|w| w.contains(&table) && w.contains("look like radians")),
+        "{warnings:?}"
+    );
+    let (_, warnings, radians) = run("radians.csv", "crank angle [rad],force [N]");
+    assert!(warnings.is_empty(), "{warnings:?}");
+    let mut degrees = Simulation::new(Parameters {
+        slider_force_table: table_file("degrees.csv", GAS_LOAD),
+        ..Parameters::default()
+    })
+    .unwrap();
+    let degrees = degrees.outputs().unwrap().slider_applied_force;
+    assert!(
+        (radians - degrees).abs() < 1e-9 * degrees.abs(),
+        "{radians} {degrees}"
+    );
+}
