@@ -197,7 +197,7 @@ fn slider_acceleration(theta: f64, speed: f64, acceleration: f64) -> f64 {
         start("rod.length"),
         start("slider.offset"),
     );
-    let (sin, cos) = theta.sin_cos();
+    let (sin, cos) = flexible_slider_crank::math::sin_cos(theta);
     let (s, s1, s2) = (r * sin - e, r * cos, -r * sin);
     let q = (l * l - s * s).sqrt();
     let q1 = -s * s1 / q;
@@ -251,6 +251,10 @@ fn a_ramped_speed_reaches_the_accelerations_at_every_point() {
     }
 }
 
+/// A ramp with the switches it runs with (the drive mode), the output that shows its value at
+/// each point and how closely, relative.
+type Case = (&'static [(&'static str, i32)], Ramp, &'static str, f64);
+
 /// Each input ramped with first and second derivatives (the speed with the speed drive, the
 /// torque with the torque drive, the slider force) reaches every output that depends on it: at
 /// the communication points of 1e-4 s, the outputs of the run with derivatives are the limit of
@@ -275,7 +279,7 @@ fn every_input_ramped_is_the_limit_of_fine_steps() {
     // crank's speed follows the prescribed one through the stabilised drive constraint, to 1e-6;
     // the applied torque and force are the input at the point on the clock grid, which the
     // master's point is within a clock tick of).
-    let cases: [(&[(&str, i32)], Ramp, &str, f64); 3] = [
+    let cases: [Case; 3] = [
         (
             &[],
             Ramp {
