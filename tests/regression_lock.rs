@@ -388,14 +388,20 @@ const ZEROS: &[Zero] = &[
     (
         &["worn", "finite"],
         CRANK_JOINTS,
-        &["filmThicknessMinCycle", "filmThicknessMinSinceStart"],
-        "the journal touches its wall",
+        &["filmThicknessMinSinceStart"],
+        "the journal touches its wall at the start",
     ),
     (
-        &["worn", "finite"],
-        &["crankPin."],
-        &["filmThicknessMinCycleAngle"],
-        "the zero minimum is reached at the cycle's start",
+        &["finite"],
+        CRANK_JOINTS,
+        &["filmThicknessMinCycle"],
+        "the journal touches its wall in each revolution",
+    ),
+    (
+        &["machine"],
+        &[""],
+        &["cycle.number"],
+        "no load cycle completes in 24 ms at 1500 rpm",
     ),
     (
         &["machine"],

@@ -285,6 +285,7 @@ pub fn count_output(o: &Outputs, vr: Vr) -> Option<u64> {
         Vr::MainBearingContactOnsets => o.main_bearing_contact_onsets,
         Vr::MainBearingContactOnsetsTotal => o.main_bearing_contact_onsets_total,
         Vr::SolverWarnings => o.warnings,
+        Vr::CycleNumber => o.cycle_number,
         _ => return None,
     })
 }

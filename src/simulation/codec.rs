@@ -41,7 +41,7 @@ fn cycle_values(c: &Cycle) -> Vec<f64> {
 
 /// The numbers of a step's contribution, in the codec's order.
 fn cycle_step_values(s: &CycleStep) -> Vec<f64> {
-    let mut v = [s.time, s.angle].concat();
+    let mut v = [[s.from].as_slice(), &s.time, &s.angle].concat();
     for sample in [s.at_end, s.inside, s.place] {
         v.extend(sample);
     }
@@ -95,6 +95,7 @@ impl WriteRecords for ByteWriter<'_> {
         if let Some(last) = &c.last {
             self.f64s(&cycle_values(last));
         }
+        self.u64(c.completed);
     }
     /// Writes a pending step's contribution to the cycle results.
     fn cycle_step(&mut self, step: &Option<CycleStep>) {
@@ -136,23 +137,24 @@ fn cycle_from(v: &[f64]) -> Result<Cycle, CodecError> {
 
 /// The step contribution of [`cycle_step_values`].
 fn cycle_step_from(v: &[f64]) -> Result<CycleStep, CodecError> {
-    if v.len() != 4 + 3 * SERIES + 12 {
+    if v.len() != 5 + 3 * SERIES + 12 {
         return Err(CodecError(format!(
             "FMU state rejected: a cycle step of {} numbers",
             v.len()
         )));
     }
-    let sample = |k: usize| -> Sample { std::array::from_fn(|i| v[4 + k * SERIES + i]) };
+    let sample = |k: usize| -> Sample { std::array::from_fn(|i| v[5 + k * SERIES + i]) };
     let rates =
         |k: usize| -> [[f64; 2]; 3] { std::array::from_fn(|i| [v[k + 2 * i], v[k + 2 * i + 1]]) };
     Ok(CycleStep {
-        time: [v[0], v[1]],
-        angle: [v[2], v[3]],
+        from: v[0],
+        time: [v[1], v[2]],
+        angle: [v[3], v[4]],
         at_end: sample(0),
         inside: sample(1),
         place: sample(2),
-        friction_power: rates(4 + 3 * SERIES),
-        oil_flow: rates(4 + 3 * SERIES + 6),
+        friction_power: rates(5 + 3 * SERIES),
+        oil_flow: rates(5 + 3 * SERIES + 6),
     })
 }
 
@@ -227,6 +229,7 @@ impl ReadRecords for ByteReader<'_> {
             period,
             current,
             last,
+            completed: self.u64()?,
         })
     }
     /// Reads a pending step's contribution to the cycle results.

@@ -12,11 +12,22 @@
 //! step), divided by the cycle's duration.
 //!
 //! The results are those of the last complete cycle, one that ran through a whole period from one
-//! boundary to the next; until the first completes, those of the cycle under way (from the start,
-//! or from the last boundary crossed).
+//! boundary to the next: cycle number `completed` (`cycle.number`); until the first completes
+//! (`cycle.number` = 0), those of the cycle under way (from the start, or from the last boundary
+//! crossed). A cycle completes at the communication point at or after the crank angle reaches its
+//! boundary: an interval that ends inside the step that crosses it takes the step in up to the
+//! boundary ([`CycleHold::complete_before`]). A boundary counts as reached within
+//! [`BOUNDARY_TOLERANCE`] of the period, so that a run of exactly N periods reports cycle N
+//! whatever the last bits of its crank angle.
 
 use super::sample::{ECCENTRICITY_RATIO, FILM_PRESSURE, Sample, force_series};
 use crate::joint::JointRole;
+
+/// The fraction of the period within which a crank angle counts as on a cycle boundary: a
+/// boundary is reached that much early turning forwards (late turning backwards), 1e-9 of a
+/// revolution (3.6e-7°), well above the crank angle's round-off and far below any cycle result's
+/// resolution.
+pub const BOUNDARY_TOLERANCE: f64 = 1e-9;
 
 /// An extreme value and the crank angle where it occurred \[rad, absolute\].
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -134,9 +145,13 @@ impl Cycle {
 
 /// What one accepted step brings to the cycle results: its ends' times and crank angles, the
 /// peak-held samples at its end and the largest inside it with where they lie (fractions of
-/// the step), and each joint's friction power and oil flow at both ends.
+/// the step), and each joint's friction power and oil flow at both ends; and how much of it is
+/// already taken in.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CycleStep {
+    /// The fraction of the step already taken into the cycle results (up to the boundary an
+    /// interval ended past; 0 for a step not yet taken in).
+    pub from: f64,
     /// Times of the step's ends \[s\].
     pub time: [f64; 2],
     /// Crank angles at the step's ends \[rad\].
@@ -162,6 +177,8 @@ pub struct CycleHold {
     pub current: Cycle,
     /// The last complete cycle, if one has completed.
     pub last: Option<Cycle>,
+    /// The number of cycles completed (the number of the last complete one).
+    pub completed: u64,
 }
 
 impl CycleHold {
@@ -171,6 +188,7 @@ impl CycleHold {
             period,
             current: Cycle::empty(time, angle),
             last: None,
+            completed: 0,
         }
     }
 
@@ -184,26 +202,53 @@ impl CycleHold {
         angle.rem_euclid(self.period)
     }
 
-    /// Takes in an accepted step: where the crank angle crosses a multiple of the period inside
-    /// it, the samples before go to the cycle under way, which ends there (and becomes the last
-    /// complete one if it ran through a whole period), and those after to the next.
-    pub fn absorb(&mut self, step: &CycleStep) {
+    /// The cycle index of a crank angle: k where it lies in [kP, (k + 1) P), a boundary counting
+    /// as reached [`BOUNDARY_TOLERANCE`] early.
+    fn index(&self, angle: f64) -> f64 {
+        (angle / self.period + BOUNDARY_TOLERANCE).floor()
+    }
+
+    /// Where the step crosses a cycle boundary, if it does: the fraction of the step where its
+    /// crank angle (linear within it) reaches it (its end, for an angle that reaches the boundary
+    /// only within the tolerance), and the boundary's angle.
+    fn boundary(&self, step: &CycleStep) -> Option<(f64, f64)> {
         let [a0, a1] = step.angle;
-        let (k0, k1) = ((a0 / self.period).floor(), (a1 / self.period).floor());
-        if k0 == k1 {
-            self.current.absorb(step, (0.0, 1.0));
-            return;
+        let (k0, k1) = (self.index(a0), self.index(a1));
+        (k0 != k1).then(|| {
+            let boundary = self.period * k0.max(k1);
+            (((boundary - a0) / (a1 - a0)).clamp(0.0, 1.0), boundary)
+        })
+    }
+
+    /// Takes in the rest of an accepted step (from `step.from`): where the crank angle crosses a
+    /// multiple of the period inside it, the samples before go to the cycle under way, which ends
+    /// there (and becomes the last complete one if it ran through a whole period), and those after
+    /// to the next.
+    pub fn absorb(&mut self, step: &CycleStep) {
+        let from = self.complete_before(step, f64::INFINITY);
+        self.current.absorb(step, (from, 1.0));
+    }
+
+    /// Takes in the step up to the cycle boundary it crosses, if that is reached by the time `t`
+    /// and not taken in yet (from `step.from`): the cycle under way ends there. The fraction of
+    /// the step taken in so far.
+    pub fn complete_before(&mut self, step: &CycleStep, t: f64) -> f64 {
+        let Some((s, boundary)) = self.boundary(step) else {
+            return step.from;
+        };
+        let at = step.time[0] + s * (step.time[1] - step.time[0]);
+        // (a cycle that starts at the boundary has taken the step in up to it)
+        if self.current.start_angle == boundary || at > t {
+            return step.from;
         }
-        let boundary = self.period * k0.max(k1);
-        let s = ((boundary - a0) / (a1 - a0)).clamp(0.0, 1.0);
-        self.current.absorb(step, (0.0, s));
+        self.current.absorb(step, (step.from, s));
         let swept = (boundary - self.current.start_angle).abs();
         if swept >= self.period * (1.0 - 1e-12) {
             self.last = Some(self.current);
+            self.completed += 1;
         }
-        let t = step.time[0] + s * (step.time[1] - step.time[0]);
-        self.current = Cycle::empty(t, boundary);
-        self.current.absorb(step, (s, 1.0));
+        self.current = Cycle::empty(at, boundary);
+        s
     }
 }
 
@@ -218,6 +263,7 @@ mod tests {
         inside[ECCENTRICITY_RATIO] = peak;
         places[ECCENTRICITY_RATIO] = place;
         CycleStep {
+            from: 0.0,
             time: t,
             angle,
             at_end: [0.0; 15],
@@ -262,6 +308,34 @@ mod tests {
         assert!((last.mean(joint.friction_energy) - 2.0).abs() < 1e-12);
         assert!((last.mean(joint.oil_volume) - 2e-6).abs() < 1e-18);
         assert_eq!(hold.current.joints[0].eccentricity_ratio.value, 0.3);
+    }
+
+    /// An interval that ends inside the step crossing a boundary completes the cycle there if
+    /// the boundary lies before its end, and the step's end then goes to the next cycle only; a
+    /// crank angle within the tolerance of a boundary has reached it (a run of exactly one
+    /// period completes it).
+    #[test]
+    fn a_cycle_completes_at_the_first_point_past_its_boundary() {
+        let mut hold = CycleHold::new(1.0, 0.0, 0.0);
+        hold.absorb(&step([0.0, 1.0], [0.0, 0.9], 0.5, 0.5));
+        let mut crossing = step([1.0, 2.0], [0.9, 1.1], 0.8, 0.25);
+        // the boundary at s = 0.5, t = 1.5: not reached at t = 1.4
+        assert_eq!(hold.complete_before(&crossing, 1.4), 0.0);
+        assert_eq!(hold.completed, 0);
+        crossing.from = hold.complete_before(&crossing, 1.6);
+        assert!((crossing.from - 0.5).abs() < 1e-12);
+        assert_eq!(hold.completed, 1);
+        let last = hold.last.unwrap();
+        assert_eq!(last.joints[0].eccentricity_ratio.value, 0.8);
+        assert!((last.end - 1.5).abs() < 1e-12);
+        hold.absorb(&crossing);
+        assert_eq!(hold.completed, 1);
+        // (its end sample only: the peak inside lay before the boundary)
+        assert_eq!(hold.current.joints[0].eccentricity_ratio.value, 0.0);
+        assert!((hold.current.end - 2.0).abs() < 1e-12);
+        let mut exact = CycleHold::new(1.0, 0.0, 0.0);
+        exact.absorb(&step([0.0, 1.0], [0.0, 1.0 - 1e-12], 0.1, 0.5));
+        assert_eq!(exact.completed, 1);
     }
 
     /// Turning backwards from a boundary the first cycle runs from 0 down to −360°; a boundary

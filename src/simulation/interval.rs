@@ -215,11 +215,13 @@ impl Engine {
     }
 
     /// Ends the interval at `t_end`: the state there (the dense output of the last step, with
-    /// the inputs `signal`, when it ends beyond).
+    /// the inputs `signal`, when it ends beyond, whose crossing of a cycle boundary before
+    /// `t_end` completes the cycle).
     fn finish_interval(&mut self, signal: &InputSignal, t_end: f64) -> Result<(), ModelError> {
         if t_end == self.end.time {
             self.state.copy_from_slice(&self.end.y);
         } else {
+            self.peaks.complete_cycle_before(t_end);
             let span = self.start.span_to(&self.end);
             self.mechanism
                 .with_contact_state(self.contact_start, |mechanism| {

@@ -146,8 +146,11 @@ pub struct Outputs {
     pub main_bearing_contact_onsets: u64,
     /// Contact onsets at the main bearing since the start.
     pub main_bearing_contact_onsets_total: u64,
-    /// Warnings raised since the start ([`super::Simulation::take_warnings`]).
+    /// Warnings raised since the start ([`super::Engine::take_warnings`]).
     pub warnings: u64,
+    /// Load cycles completed: the number of the cycle the cycle results describe (0 while the
+    /// first is under way, whose results they show so far).
+    pub cycle_number: u64,
     /// What a bearing designer reads at each joint, by [`JointRole`].
     pub bearings: [BearingOutputs; 3],
 }
@@ -376,6 +379,7 @@ pub(super) fn outputs(
         main_bearing_contact_onsets: peaks.interval.contact_onsets[JointRole::MainBearing as usize],
         main_bearing_contact_onsets_total: peaks.total_onsets[JointRole::MainBearing as usize],
         warnings,
+        cycle_number: peaks.cycles.completed,
         bearings,
     })
 }

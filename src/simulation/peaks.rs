@@ -214,6 +214,14 @@ impl PeakHold {
         }
     }
 
+    /// Completes the cycle under way at the boundary the pending step crosses, if the crank angle
+    /// reaches it by the time `t` (an interval that ends inside the step).
+    pub(super) fn complete_cycle_before(&mut self, t: f64) {
+        if let Some(step) = &mut self.cycle_step {
+            step.from = self.cycles.complete_before(step, t);
+        }
+    }
+
     /// Moves the last step end's extremes into the current interval.
     pub(super) fn take_step_end(&mut self) {
         if let Some(step) = self.cycle_step.take() {

@@ -67,6 +67,7 @@ impl Engine {
     fn cycle_step(&self, at_end: Sample, within: &peaks::Within) -> CycleStep {
         let rates = [&self.start.y, &self.end.y].map(|y| self.mechanism.friction_and_flow(y));
         CycleStep {
+            from: 0.0,
             time: [self.start.time, self.end.time],
             angle: [self.start.y[CRANK_ANGLE], self.end.y[CRANK_ANGLE]],
             at_end,

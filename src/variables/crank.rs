@@ -106,4 +106,9 @@ pub(super) const VARIABLES: &[Variable] = &[
         "1",
         "The crank's centre of mass: its distance from the pivot along the crank (towards the pin) as a fraction of crank.length; 0.5 a uniform crank, negative a counterweight beyond the pivot (crank.inertia stays about the centre of mass)",
     ),
+    Variable::count(
+        Vr::CycleNumber,
+        "cycle.number",
+        "Load cycles completed (crank-angle periods of slider.forceTablePeriod, a revolution without a load table, bounded by its multiples): the cycle the *Cycle results describe, from the communication point at or after the crank angle reaches its end boundary; 0 while the first is under way, whose results they show so far",
+    ),
 ];

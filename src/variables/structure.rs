@@ -128,7 +128,8 @@ pub(super) fn initial_dependency(unknown: Vr, known: Vr) -> bool {
         | CrankPinContactOnsets
         | CrankPinContactOnsetsTotal
         | MainBearingContactOnsets
-        | MainBearingContactOnsetsTotal => false,
+        | MainBearingContactOnsetsTotal
+        | CycleNumber => false,
         _ => !matches!(
             known,
             SolverRelativeTolerance

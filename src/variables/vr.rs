@@ -216,6 +216,7 @@ pub enum Vr {
     MainBearingForcePeakCycleAngle,
     MainBearingFrictionPowerMeanCycle,
     MainBearingOilFlowMeanCycle,
+    CycleNumber,
 }
 
 impl ValueReference for Vr {

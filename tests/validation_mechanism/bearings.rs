@@ -378,3 +378,58 @@ fn a_dry_joints_dissipation_is_the_integral_of_its_hysteresis_and_friction_power
         assert!((hysteresis / integral - share).abs() < 0.01);
     }
 }
+
+/// The cycle results switch to a completed cycle at the first communication point at or after
+/// the crank angle reaches its boundary, within 0.01° of it: the DefaultExperiment from a crank
+/// angle of 0.3 rad (its first cycle, from there to 2π, is not a whole one), read every 1e-7 s
+/// (0.003°) around 4π, completes its first whole cycle (`cycle.number` 0 → 1) at the first point
+/// past it; the completed cycle's results hold from there on. A run of exactly two revolutions
+/// from 0 reports both complete.
+#[test]
+fn the_cycle_results_switch_at_the_cycle_boundary() {
+    let mut sim = Simulation::new(Parameters {
+        crank_initial_angle: 0.3,
+        ..Parameters::default()
+    })
+    .unwrap();
+    let boundary = 4.0 * std::f64::consts::PI;
+    let speed = sim.outputs().unwrap().crank_speed;
+    let t_boundary = (boundary - 0.3) / speed;
+    sim.advance_to(t_boundary - 2e-5).unwrap();
+    let mut before = sim.outputs().unwrap();
+    assert_eq!(before.cycle_number, 0);
+    let mut switched = None;
+    for k in 1..=400 {
+        sim.advance_to(t_boundary - 2e-5 + f64::from(k) * 1e-7)
+            .unwrap();
+        let o = sim.outputs().unwrap();
+        match (before.cycle_number, o.cycle_number, switched) {
+            (0, 1, None) => {
+                assert!(before.crank_angle < boundary, "{}", before.crank_angle);
+                let past = o.crank_angle - boundary;
+                assert!(
+                    (-1e-8..0.01f64.to_radians()).contains(&past),
+                    "switched {past} rad past the boundary"
+                );
+                switched = Some(o);
+            }
+            (_, n, Some(at)) => {
+                assert_eq!(n, 1);
+                let b = |o: &Outputs| {
+                    o.bearings
+                        .map(|b| (b.force_peak_cycle, b.force_peak_cycle_angle))
+                };
+                assert_eq!(b(&o), b(&at), "the completed cycle's results hold");
+            }
+            (0, 0, None) => {}
+            other => panic!("{other:?}"),
+        }
+        before = o;
+    }
+    assert!(switched.is_some(), "no switch around the boundary");
+    let mut exact = Simulation::new(Parameters::default()).unwrap();
+    for k in 1..=240 {
+        exact.advance_to(f64::from(k) * 1e-4).unwrap();
+    }
+    assert_eq!(exact.outputs().unwrap().cycle_number, 2);
+}
