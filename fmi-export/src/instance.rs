@@ -2,7 +2,7 @@
 //! machine, the clock and the inputs — the calls every FMI version makes on it, and the framing of
 //! its serialized states.
 
-use crate::checks::{check_real, check_settable, lookup};
+use crate::checks::check_settable;
 use crate::codec::{ByteReader, ByteWriter};
 use crate::error::FmuError;
 use crate::experiment::{Clock, Step, StepOutcome};
@@ -248,57 +248,34 @@ impl<M: Model> Instance<M> {
         Ok(())
     }
 
-    /// The input and the order of the FMI 3 input derivative `der(u)` of value reference `vr`, if
-    /// it is one ([`crate::fmi3::description::input_derivative`]).
-    pub fn input_derivative(vr: u32) -> Option<(usize, u32)> {
-        let (n, max) = (M::Inputs::LEN, M::MAX_INPUT_DERIVATIVE_ORDER);
-        crate::fmi3::description::input_derivative(vr, n, max)
-    }
-
-    /// FMI 3 SetFloat64 of `vr`: the table's Real variables and the input derivatives, each
-    /// checked (settable now, as its input is; in range, or finite) before any is set.
-    pub fn set_float64(&mut self, vr: &[u32], values: &[f64]) -> Result<(), FmuError> {
-        for (&r, &x) in vr.iter().zip(values) {
-            let v = match Self::input_derivative(r) {
-                Some((k, order)) => {
-                    let input = Self::input_variables()
-                        .nth(k)
-                        .ok_or_else(|| FmuError::Invalid(format!("no input {k}")))?;
-                    if !x.is_finite() {
-                        return Err(FmuError::Invalid(format!(
-                            "the derivative of order {order} of {} = {} is not finite",
-                            input.name,
-                            Num(x)
-                        )));
-                    }
-                    input
-                }
-                None => {
-                    let v = lookup(M::VARIABLES, r, "Float64")?;
-                    check_real(v, x)?;
-                    v
-                }
-            };
-            check_settable(self.state, v)?;
-        }
-        for (&r, &x) in vr.iter().zip(values) {
-            match Self::input_derivative(r) {
-                Some((k, order)) => {
-                    self.inputs.set_derivative(k, order as usize, x);
-                }
-                None => {
-                    self.variables.clear();
-                    self.variables.push(lookup(M::VARIABLES, r, "Float64")?);
-                    self.set_real(&[x])?;
-                }
-            }
+    /// Checks that the `order`-th derivative (1 or 2) of the `k`-th input may be set to `x` now:
+    /// where its input may be set, finite.
+    pub fn check_input_derivative(&self, k: usize, order: u32, x: f64) -> Result<(), FmuError> {
+        let input = Self::input_variables()
+            .nth(k)
+            .ok_or_else(|| FmuError::Invalid(format!("no input {k}")))?;
+        check_settable(self.state, input)?;
+        if !x.is_finite() {
+            return Err(FmuError::Invalid(format!(
+                "the derivative of order {order} of {} = {} is not finite",
+                input.name,
+                Num(x)
+            )));
         }
         Ok(())
     }
 
-    /// The value of the FMI 3 input derivative of input `k` and order `order` as outputs read it
-    /// now.
-    pub fn input_derivative_value(&self, k: usize, order: u32) -> f64 {
+    /// Sets the `order`-th derivative (1 or 2) of the `k`-th input to `x` at the current point,
+    /// for the next step (checked by [`Instance::check_input_derivative`]).
+    pub fn set_input_derivative(&mut self, k: usize, order: u32, x: f64) -> Result<(), FmuError> {
+        self.check_input_derivative(k, order, x)?;
+        self.inputs
+            .set_derivative(k, order as usize, x)
+            .ok_or_else(|| FmuError::Invalid(format!("order {order}")))
+    }
+
+    /// The `order`-th derivative (1 or 2) of the `k`-th input as outputs read it now.
+    pub fn input_derivative(&self, k: usize, order: u32) -> f64 {
         let reading = self.inputs.reading();
         reading.derivatives[order as usize - 1].value(k)
     }

@@ -2,10 +2,11 @@
 //! row of the variable table to its field of [`Outputs`].
 
 use fmi_export::FmuError;
-use fmi_export::model::Var;
+use fmi_export::model::{Context, Var};
 
-use super::instance::Cx;
-use crate::simulation::{BearingOutputs, Engine, Input, Outputs, SectionResult, section_place};
+use crate::simulation::{
+    BearingOutputs, Engine, Input, Inputs, Outputs, SectionResult, section_place,
+};
 use crate::variables::{SectionArray, VARIABLES, Vr};
 
 /// The rod.section array `array` (its index in [`SectionArray::ALL`]) at `value.len()` sections
@@ -15,7 +16,7 @@ pub fn section_array<'a>(
     array: usize,
     value: &mut [f64],
     rod_length: f64,
-    cx: &Cx,
+    cx: &Context<Inputs>,
     engine: impl FnOnce() -> Result<&'a mut Engine, FmuError>,
 ) -> Result<(), FmuError> {
     let result = match SectionArray::ALL.get(array) {
@@ -67,7 +68,7 @@ const PEAKS: &[(Vr, Vr)] = &[
 /// smallest value) likewise, with the value's derivative itself.
 pub fn sensitivity(
     engine: &mut Engine,
-    cx: &Cx,
+    cx: &Context<Inputs>,
     input: Input,
     unknowns: &[Var<Vr>],
     column: &mut [f64],

@@ -4,7 +4,7 @@ use faer::MatRef;
 
 use super::layout::CRANK_ANGLE;
 use super::slider_crank::SliderCrank;
-use crate::joint::JointRole;
+use crate::joint::{Contacts, JointRole};
 use crate::math;
 
 /// Energies of a state.
@@ -117,15 +117,21 @@ impl SliderCrank {
             - self.slider.mass * self.gravity.y * self.slider.offset
     }
 
-    /// Energies of a state (evaluates the joint forces for the stored contact energy).
-    pub fn energies(&mut self, y: &[f64]) -> Energies {
+    /// Energies of a state with the contact states `contacts` (evaluates the joint forces for the
+    /// stored contact energy).
+    pub fn energies(&mut self, y: &[f64], contacts: &Contacts) -> Energies {
         let strain = self.rod.strain_energy(&y[self.layout.rod()]);
-        self.energies_with_strain(y, strain)
+        self.energies_with_strain(y, contacts, strain)
     }
 
     /// [`SliderCrank::energies`] with the rod's strain energy at `y` already known, `strain`
     /// (as [`SliderCrank::loads`] gives it).
-    pub fn energies_with_strain(&mut self, y: &[f64], strain: f64) -> Energies {
+    pub fn energies_with_strain(
+        &mut self,
+        y: &[f64],
+        contacts: &Contacts,
+        strain: f64,
+    ) -> Energies {
         let l = self.layout;
         let p = &y[l.rod()];
         let rod_gravity: f64 = self
@@ -138,7 +144,7 @@ impl SliderCrank {
         let joints = JointRole::ALL.map(|role| match self.joint_work[role as usize] {
             Some(i) => JointEnergy {
                 work: y[i],
-                contact: self.joint_force(role, y).0.potential,
+                contact: self.joint_force(role, y, contacts).0.potential,
                 contact_at_start: self.contact_at_start[role as usize],
             },
             None => JointEnergy::default(),
@@ -146,7 +152,7 @@ impl SliderCrank {
         Energies {
             kinetic: self.kinetic_energy(y),
             strain,
-            contact: self.contact_potential(y),
+            contact: self.contact_potential(y, contacts),
             contact_at_start: self.contact_at_start.iter().sum(),
             gravity: self.gravity_potential(y) - rod_gravity,
             drive_work: y[l.drive_work()],

@@ -1,13 +1,13 @@
 //! Contact events: the discrete contact state, the onset control of the integrator's steps
 //! (no contact starts deep inside the wall; the impact velocity is latched at the located onset),
 //! and the mechanism as the integrators' first-order system ([`Driven`]: the mechanism with its
-//! inputs as functions of time).
+//! inputs as functions of time and its contact states).
 
-use super::inputs::InputSignal;
+use super::inputs::{Conditions, InputSignal};
 use super::slider_crank::SliderCrank;
 use crate::error::ModelError;
 use crate::integrator::{MechanicalSystem, OdeSystem};
-use crate::joint::{ContactState, JointKinematics, JointRole, MIN_IMPACT_VELOCITY};
+use crate::joint::{ContactState, Contacts, JointKinematics, JointRole, MIN_IMPACT_VELOCITY};
 
 /// Largest penetration accepted at the first step of a contact event \[m\]: 1e-3 of the Hertz
 /// maximum penetration of a 0.1 kg, 1 m/s impact (≈ 20 µm, docs/model.md §6), so that the impact
@@ -15,9 +15,15 @@ use crate::joint::{ContactState, JointKinematics, JointRole, MIN_IMPACT_VELOCITY
 pub const CONTACT_ONSET_PENETRATION: f64 = 2e-8;
 
 impl SliderCrank {
-    /// δ̇⁽⁻⁾ of the joint `role`: latched in a contact event, the normal velocity otherwise.
-    pub(super) fn impact_velocity(&self, role: JointRole, k: &JointKinematics) -> f64 {
-        let contact = self.contacts[role];
+    /// δ̇⁽⁻⁾ of the joint `role` in the contact states `contacts`: latched in a contact event,
+    /// the normal velocity otherwise.
+    pub(super) fn impact_velocity(
+        &self,
+        role: JointRole,
+        k: &JointKinematics,
+        contacts: &Contacts,
+    ) -> f64 {
+        let contact = contacts[role];
         if contact.in_contact {
             contact.impact_velocity
         } else {
@@ -47,28 +53,33 @@ impl SliderCrank {
 }
 
 /// The mechanism driven by its inputs as functions of time, as the integrators step it: a
-/// short-lived view that borrows the mechanism and the inputs and sets the inputs at each
-/// evaluation's time.
+/// short-lived view that borrows the mechanism, the inputs and the contact states, evaluates at
+/// each evaluation's time with the inputs there, and latches the contact states at each accepted
+/// step.
 pub struct Driven<'a> {
     /// The mechanism.
     pub mechanism: &'a mut SliderCrank,
     /// Its inputs.
     pub signal: &'a InputSignal,
+    /// The joints' contact states.
+    pub contacts: &'a mut Contacts,
 }
 
 impl OdeSystem for Driven<'_> {
-    /// The derivative at (t, y) with the inputs at t ([`SliderCrank::set_inputs`]).
+    /// The derivative at (t, y) with the inputs at t, or the singular configuration that has none
+    /// (a locked mechanism: the integrator retries the step shorter and names it if it cannot
+    /// pass).
     fn rhs(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), ModelError> {
-        self.mechanism.set_inputs(self.signal, t);
-        self.mechanism.derivative(y, dy)
+        let c = Conditions::at(self.signal, t, self.contacts);
+        self.mechanism.derivative(y, &c, dy)
     }
 
-    fn check_step(&mut self, t0: f64, y0: &[f64], t1: f64, y1: &[f64]) -> Option<f64> {
-        self.mechanism.check_step(t0, y0, t1, y1)
+    fn check_step(&mut self, _t0: f64, y0: &[f64], _t1: f64, y1: &[f64]) -> Option<f64> {
+        self.mechanism.onset_limit(y0, y1)
     }
 
-    fn accept_step(&mut self, t0: f64, y0: &[f64], t1: f64, y1: &[f64]) -> Option<f64> {
-        self.mechanism.accept_step(t0, y0, t1, y1)
+    fn accept_step(&mut self, _t0: f64, y0: &[f64], _t1: f64, y1: &[f64]) -> Option<f64> {
+        self.mechanism.latch_contacts(y0, y1, self.contacts)
     }
 }
 
@@ -78,21 +89,15 @@ impl MechanicalSystem for Driven<'_> {
     }
 
     fn held_errors(&self, y: &[f64], err: &[f64], out: &mut [f64]) {
-        MechanicalSystem::held_errors(&*self.mechanism, y, err, out);
+        self.mechanism.journal_held_errors(y, err, out);
     }
 }
 
-impl OdeSystem for SliderCrank {
-    /// The derivative at (t, y) with the inputs as last set ([`SliderCrank::set_inputs`]; held
-    /// whatever t), or the singular configuration that has none (a locked mechanism: the
-    /// integrator retries the step shorter and names it if it cannot pass).
-    fn rhs(&mut self, _t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), ModelError> {
-        self.derivative(y, dy)
-    }
-
-    /// Rejects a step that starts a contact deeper than [`CONTACT_ONSET_PENETRATION`] at any
-    /// joint, shrinking it towards the earliest crossing (linear estimate of the crossing time).
-    fn check_step(&mut self, _t0: f64, y0: &[f64], _t1: f64, y1: &[f64]) -> Option<f64> {
+impl SliderCrank {
+    /// Rejects a step from `y0` to `y1` that starts a contact deeper than
+    /// [`CONTACT_ONSET_PENETRATION`] at any joint: the fraction of the step to retry with, towards
+    /// the earliest crossing (linear estimate of the crossing time).
+    pub fn onset_limit(&self, y0: &[f64], y1: &[f64]) -> Option<f64> {
         self.clearance_joints()
             .filter_map(|role| {
                 let (d0, d1) = (self.penetration(role, y0), self.penetration(role, y1));
@@ -104,36 +109,37 @@ impl OdeSystem for SliderCrank {
             .reduce(f64::min)
     }
 
-    /// Latches the impact velocity at the located onset of each joint's contact event (linear
-    /// interpolation of δ̇ to the crossing of δ = 0), and clears the contact flag at separation.
+    /// Latches the impact velocity in `contacts` at the located onset of each joint's contact
+    /// event in the step accepted from `y0` to `y1` (linear interpolation of δ̇ to the crossing of
+    /// δ = 0), and clears the contact flag at separation.
     ///
     /// Out of contact and approaching the wall (δ₁ < 0 < δ̇₁), the next step is limited to the
     /// linear estimate of the time at which δ reaches half the onset depth,
     /// (−δ₁ + δ_on/2)/δ̇₁ (the smallest over the joints): the step that starts the contact is
-    /// aimed at the window 0 < δ ≤ δ_on that [`OdeSystem::check_step`] accepts, instead of
+    /// aimed at the window 0 < δ ≤ δ_on that [`SliderCrank::onset_limit`] accepts, instead of
     /// overshooting it and being refused (event anticipation; without it the 4-mode rod of
     /// benchmark B refused about 370 steps per two revolutions, 3.3 attempts per onset).
-    fn accept_step(&mut self, _t0: f64, y0: &[f64], _t1: f64, y1: &[f64]) -> Option<f64> {
+    pub fn latch_contacts(&self, y0: &[f64], y1: &[f64], contacts: &mut Contacts) -> Option<f64> {
         let mut limit: Option<f64> = None;
         for role in JointRole::ALL {
             if !self.has_clearance(role) {
                 continue;
             }
             let (d0, d1) = (self.penetration(role, y0), self.penetration(role, y1));
-            if d1 > 0.0 && !self.contacts[role].in_contact {
+            if d1 > 0.0 && !contacts[role].in_contact {
                 let s = if d0 < 0.0 { -d0 / (d1 - d0) } else { 0.0 };
                 let (v0, v1) = (
                     self.normal_velocity(role, y0),
                     self.normal_velocity(role, y1),
                 );
-                self.contacts[role] = ContactState {
+                contacts[role] = ContactState {
                     in_contact: true,
                     impact_velocity: (v0 + s * (v1 - v0)).max(MIN_IMPACT_VELOCITY),
                 };
             } else if d1 <= 0.0 {
-                self.contacts[role].in_contact = false;
+                contacts[role].in_contact = false;
             }
-            if self.contacts[role].in_contact || !(d1 < 0.0 && d1.is_finite()) {
+            if contacts[role].in_contact || !(d1 < 0.0 && d1.is_finite()) {
                 continue;
             }
             let v1 = self.normal_velocity(role, y1);
@@ -157,7 +163,8 @@ mod tests {
     #[test]
     fn approaching_the_wall_limits_the_next_step() {
         let p = Parameters::default();
-        let mut m = SliderCrank::new(&p).expect("default parameters build");
+        let m = SliderCrank::new(&p).expect("default parameters build");
+        let mut contacts = Contacts::default();
         let l = m.layout();
         let mut y = m.initial_state(0.3, 400.0);
         y[l.slider()] -= p.joint.clearance - 1e-6;
@@ -170,17 +177,17 @@ mod tests {
             m.normal_velocity(rs, &approaching),
         );
         assert!(d < 0.0 && d > -2e-6 && v > 0.4, "δ = {d}, δ̇ = {v}");
-        let limit = m.accept_step(0.0, &y0, 1e-6, &approaching);
+        let limit = m.latch_contacts(&y0, &approaching, &mut contacts);
         assert_eq!(limit, Some((0.5 * CONTACT_ONSET_PENETRATION - d) / v));
-        assert!(!m.contact_state()[rs].in_contact);
+        assert!(!contacts[rs].in_contact);
         let mut leaving = y.clone();
         leaving[l.slider_velocity()] += 0.5;
-        assert_eq!(m.accept_step(0.0, &y0, 1e-6, &leaving), None);
+        assert_eq!(m.latch_contacts(&y0, &leaving, &mut contacts), None);
         let mut inside = approaching.clone();
         inside[l.slider()] -= 2e-6;
-        assert_eq!(m.accept_step(0.0, &y0, 1e-6, &inside), None);
-        assert!(m.contact_state()[rs].in_contact);
-        let mut ideal = SliderCrank::new(&Parameters {
+        assert_eq!(m.latch_contacts(&y0, &inside, &mut contacts), None);
+        assert!(contacts[rs].in_contact);
+        let ideal = SliderCrank::new(&Parameters {
             joint: JointParameters {
                 model: JointModel::Ideal,
                 ..p.joint
@@ -189,6 +196,6 @@ mod tests {
         })
         .expect("ideal joint builds");
         let y = ideal.initial_state(0.3, 400.0);
-        assert_eq!(ideal.accept_step(0.0, &y, 1e-6, &y), None);
+        assert_eq!(ideal.latch_contacts(&y, &y, &mut contacts), None);
     }
 }

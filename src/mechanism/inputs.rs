@@ -2,6 +2,8 @@
 
 use fmi_core::signal::{InputValues, Polynomial};
 
+use crate::joint::Contacts;
+
 /// Inputs that the caller may change between steps.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Inputs {
@@ -84,15 +86,36 @@ impl InputValues for Inputs {
 /// (the polynomial input of FMI co-simulation; held inputs have zero derivatives).
 pub type InputSignal = Polynomial<Inputs>;
 
-/// What loads the mechanism: the inputs at the time of the evaluation, the load on the slider
-/// tied to the crank angle (`slider.forceTable`, added to the input), and the speed drive's
-/// acceleration at that time.
-#[derive(Clone, Debug)]
-pub(super) struct Loading {
-    /// The inputs at the time of the last `SliderCrank::set_inputs`.
+/// What one evaluation of the mechanism depends on besides its state: the inputs at the
+/// evaluation's time with the prescribed speed's rate there, and the joints' contact states. The
+/// inputs and the contact states have their owners (the FMU's instance or a simulation, and the
+/// simulation's engine); an evaluation borrows them.
+#[derive(Clone, Copy, Debug)]
+pub struct Conditions<'a> {
+    /// The inputs' values.
     pub inputs: Inputs,
-    /// The crank-angle load table, if any.
-    pub table: Option<crate::load_table::LoadTable>,
-    /// dω_in/dt at that time \[rad/s²\] (speed drive).
+    /// dω_in/dt \[rad/s²\] (speed drive).
     pub drive_acceleration: f64,
+    /// The joints' contact states.
+    pub contacts: &'a Contacts,
+}
+
+impl<'a> Conditions<'a> {
+    /// The inputs of `signal` at `t` with the contact states `contacts`.
+    pub fn at(signal: &InputSignal, t: f64, contacts: &'a Contacts) -> Self {
+        Self {
+            inputs: signal.at(t),
+            drive_acceleration: signal.rate(t).drive_speed,
+            contacts,
+        }
+    }
+
+    /// The inputs `inputs`, held (no rate), with the contact states `contacts`.
+    pub fn held(inputs: Inputs, contacts: &'a Contacts) -> Self {
+        Self {
+            inputs,
+            drive_acceleration: 0.0,
+            contacts,
+        }
+    }
 }

@@ -18,7 +18,7 @@ use nalgebra::Vector2;
 
 use super::layout::{CRANK_ANGLE, PIN_A, pair};
 use super::slider_crank::SliderCrank;
-use crate::joint::{BearingState, Joint, JointForce, JointKinematics, JointRole};
+use crate::joint::{BearingState, Contacts, Joint, JointForce, JointKinematics, JointRole};
 use crate::math;
 use crate::reduction::RodEnd;
 
@@ -116,24 +116,32 @@ impl SliderCrank {
         }
     }
 
-    /// The force of the joint `role` in state `y`, with its kinematics.
-    pub fn joint_force(&self, role: JointRole, y: &[f64]) -> (JointForce, JointKinematics) {
+    /// The force of the joint `role` in state `y` with the contact states `contacts`, with its
+    /// kinematics.
+    pub fn joint_force(
+        &self,
+        role: JointRole,
+        y: &[f64],
+        contacts: &Contacts,
+    ) -> (JointForce, JointKinematics) {
         let kin = self.joint_kinematics(role, y);
-        (
-            self.joint(role)
-                .force(&kin, self.impact_velocity(role, &kin)),
-            kin,
-        )
+        let impact_velocity = self.impact_velocity(role, &kin, contacts);
+        (self.joint(role).force(&kin, impact_velocity), kin)
     }
 
     /// The crank pin's clearance-joint force in state `y` applied to the rod (−F at its end A and
     /// the bearing moment M_b on its eye, added to the rod's generalised forces `rod_force`), with
     /// the crank's share returned; `None` for the ideal crank pin (a constraint).
-    pub(super) fn apply_crank_pin(&self, y: &[f64], rod_force: &mut [f64]) -> Option<CrankLoad> {
+    pub(super) fn apply_crank_pin(
+        &self,
+        y: &[f64],
+        contacts: &Contacts,
+        rod_force: &mut [f64],
+    ) -> Option<CrankLoad> {
         if !self.has_clearance(JointRole::CrankPin) {
             return None;
         }
-        let (f, kin) = self.joint_force(JointRole::CrankPin, y);
+        let (f, kin) = self.joint_force(JointRole::CrankPin, y, contacts);
         rod_force[0] -= f.force.x;
         rod_force[1] -= f.force.y;
         let p = &y[self.layout.rod()];
@@ -144,11 +152,11 @@ impl SliderCrank {
 
     /// The main bearing's clearance-joint load on the free crank in state `y`; `None` for the ideal
     /// main bearing (the fixed pivot).
-    pub(super) fn main_bearing_load(&self, y: &[f64]) -> Option<CrankLoad> {
+    pub(super) fn main_bearing_load(&self, y: &[f64], contacts: &Contacts) -> Option<CrankLoad> {
         if !self.active.free_crank {
             return None;
         }
-        let (f, kin) = self.joint_force(JointRole::MainBearing, y);
+        let (f, kin) = self.joint_force(JointRole::MainBearing, y, contacts);
         Some(self.crank_load(y, -self.crank.centre, &f, &kin))
     }
 
@@ -165,12 +173,12 @@ impl SliderCrank {
         }
     }
 
-    /// What a bearing designer reads off the joint `role` in state `y`
-    /// ([`crate::joint::Joint::bearing_state`]).
-    pub fn bearing_state(&self, role: JointRole, y: &[f64]) -> BearingState {
+    /// What a bearing designer reads off the joint `role` in state `y` with the contact states
+    /// `contacts` ([`crate::joint::Joint::bearing_state`]).
+    pub fn bearing_state(&self, role: JointRole, y: &[f64], contacts: &Contacts) -> BearingState {
         let kin = self.joint_kinematics(role, y);
-        self.joint(role)
-            .bearing_state(&kin, self.impact_velocity(role, &kin))
+        let impact_velocity = self.impact_velocity(role, &kin, contacts);
+        self.joint(role).bearing_state(&kin, impact_velocity)
     }
 
     /// The eccentricity ratio ε = |e|/c and the film's peak pressure of each joint in state `y`,
@@ -190,25 +198,26 @@ impl SliderCrank {
         })
     }
 
-    /// Each joint's friction power \[W\] and oil flow \[m³/s\] in state `y`, by [`JointRole`]
-    /// ([`Joint::friction_and_flow`]): what the cycle results' means integrate.
-    pub fn friction_and_flow(&self, y: &[f64]) -> [(f64, f64); 3] {
+    /// Each joint's friction power \[W\] and oil flow \[m³/s\] in state `y` with the contact
+    /// states `contacts`, by [`JointRole`] ([`Joint::friction_and_flow`]): what the cycle
+    /// results' means integrate.
+    pub fn friction_and_flow(&self, y: &[f64], contacts: &Contacts) -> [(f64, f64); 3] {
         JointRole::ALL.map(|role| {
             let joint = self.joint(role);
             if !joint.has_friction_or_film() {
                 return (0.0, 0.0);
             }
             let kin = self.joint_kinematics(role, y);
-            joint.friction_and_flow(&kin, self.impact_velocity(role, &kin))
+            joint.friction_and_flow(&kin, self.impact_velocity(role, &kin, contacts))
         })
     }
 
-    /// The elastic energy each joint's contact stores in state `y`, by [`JointRole`] (0 for an
-    /// ideal joint) \[J\].
-    pub fn contact_energies(&self, y: &[f64]) -> [f64; 3] {
+    /// The elastic energy each joint's contact stores in state `y` with the contact states
+    /// `contacts`, by [`JointRole`] (0 for an ideal joint) \[J\].
+    pub fn contact_energies(&self, y: &[f64], contacts: &Contacts) -> [f64; 3] {
         JointRole::ALL.map(|role| {
             if self.has_clearance(role) {
-                self.joint_force(role, y).0.potential
+                self.joint_force(role, y, contacts).0.potential
             } else {
                 0.0
             }
@@ -227,12 +236,13 @@ impl SliderCrank {
         self.contact_at_start = energies;
     }
 
-    /// Elastic energy stored in the contacts of every clearance joint in state `y` \[J\].
-    pub fn contact_potential(&self, y: &[f64]) -> f64 {
+    /// Elastic energy stored in the contacts of every clearance joint in state `y` with the
+    /// contact states `contacts` \[J\].
+    pub fn contact_potential(&self, y: &[f64], contacts: &Contacts) -> f64 {
         JointRole::ALL
             .into_iter()
             .filter(|&role| self.has_clearance(role))
-            .map(|role| self.joint_force(role, y).0.potential)
+            .map(|role| self.joint_force(role, y, contacts).0.potential)
             .sum()
     }
 }

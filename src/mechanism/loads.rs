@@ -32,7 +32,7 @@ use super::rod_body::RodBody;
 use super::slider_crank::SliderCrank;
 use crate::ancf::RodLoad;
 use crate::ancf::{NormalStresses, RodProperties, SectionResult, section_place};
-use crate::joint::JointRole;
+use crate::joint::{Contacts, JointRole};
 use crate::math;
 use crate::reduction::Deformation;
 
@@ -57,10 +57,17 @@ pub struct Loads {
 
 impl SliderCrank {
     /// The loads of state `y` whose time derivative is `dy` (only its accelerations are read),
-    /// with `joint_force` the rod–slider joint's force on the journal.
-    pub fn loads(&mut self, y: &[f64], dy: &[f64], joint_force: Vector2<f64>) -> Loads {
+    /// with `joint_force` the rod–slider joint's force on the journal and `contacts` the contact
+    /// states.
+    pub fn loads(
+        &mut self,
+        y: &[f64],
+        dy: &[f64],
+        joint_force: Vector2<f64>,
+        contacts: &Contacts,
+    ) -> Loads {
         let l = self.layout;
-        let (crank_pin, pin_moment) = self.crank_pin_load(y, dy, joint_force);
+        let (crank_pin, pin_moment) = self.crank_pin_load(y, dy, joint_force, contacts);
         let crank_centre_acceleration = match l.crank_centre() {
             Some(g) => pair(dy, l.rate_of(g)),
             None => {
@@ -72,7 +79,9 @@ impl SliderCrank {
             }
         };
         let main_bearing = if self.has_clearance(JointRole::MainBearing) {
-            self.joint_force(JointRole::MainBearing, y).0.force
+            self.joint_force(JointRole::MainBearing, y, contacts)
+                .0
+                .force
         } else {
             self.crank.mass * crank_centre_acceleration + crank_pin - self.crank.mass * self.gravity
         };
@@ -106,19 +115,20 @@ impl SliderCrank {
 impl SliderCrank {
     /// The rod's `result` at `out.len()` evenly spaced sections from the crank pin to the slider
     /// pin ([`section_place`]) in state `y` whose time derivative is `dy` (only its accelerations
-    /// are read), with `joint_force` the rod–slider joint's force on the journal: the deflection
-    /// from the flexible rod's shape, the resultants from the equilibrium of the rod's parts
-    /// ([`crate::ancf::Rod::sections`], [`RigidRodResultants`]; the rigid rod has no deflection).
+    /// are read), with `joint_force` the rod–slider joint's force on the journal and `contacts`
+    /// the contact states: the deflection from the flexible rod's shape, the resultants from the
+    /// equilibrium of the rod's parts ([`crate::ancf::Rod::sections`], [`RigidRodResultants`];
+    /// the rigid rod has no deflection).
     pub fn rod_sections(
         &mut self,
         y: &[f64],
         dy: &[f64],
-        joint_force: Vector2<f64>,
+        (joint_force, contacts): (Vector2<f64>, &Contacts),
         result: SectionResult,
         out: &mut [f64],
     ) {
         let l = self.layout;
-        let crank_pin = self.crank_pin_load(y, dy, joint_force);
+        let crank_pin = self.crank_pin_load(y, dy, joint_force, contacts);
         let load = self.rod_load(dy, crank_pin, joint_force);
         if let RodBody::Flexible(model) = &mut self.rod {
             model.sections(&y[l.rod()], &dy[l.rod_rates()], &load, result, out);
@@ -151,9 +161,10 @@ impl SliderCrank {
         y: &[f64],
         dy: &[f64],
         joint_force: Vector2<f64>,
+        contacts: &Contacts,
     ) -> (Vector2<f64>, f64) {
         if self.has_clearance(JointRole::CrankPin) {
-            let (law, _) = self.joint_force(JointRole::CrankPin, y);
+            let (law, _) = self.joint_force(JointRole::CrankPin, y, contacts);
             return (-law.force, law.bearing_moment);
         }
         let p_ddot = &dy[self.layout.rod_rates()];

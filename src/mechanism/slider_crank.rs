@@ -4,14 +4,13 @@
 use nalgebra::{SMatrix, Vector2};
 
 use super::constraints::{Active, ConstraintState, Constraints, S_MAX};
-use super::inputs::{InputSignal, Inputs, Loading};
+use super::inputs::{Conditions, Inputs};
 use super::layout::{CRANK_ANGLE, PIN_A, StateLayout, pair};
 use super::parts::{Crank, RodData, Slider};
 use super::rod_body::RodBody;
 use super::scales::{self, ErrorControl};
 use crate::error::ModelError;
-use crate::integrator::MechanicalSystem;
-use crate::joint::{Contacts, Joint, JointRole};
+use crate::joint::{Joint, JointRole};
 use crate::load_table::LoadTable;
 use crate::math;
 use crate::params::{DriveMode, JointModel, Parameters};
@@ -60,9 +59,8 @@ pub struct SliderCrank {
     /// The state position of each joint's work integral, by [`JointRole`] (none for an ideal
     /// joint; [`StateLayout::joint_works`]).
     pub(super) joint_work: [Option<usize>; 3],
-    /// The inputs and the load table, and their values at the current time.
-    pub(super) loading: Loading,
-    pub(super) contacts: Contacts,
+    /// The load on the slider tied to the crank angle (`slider.forceTable`), added to the input.
+    pub(super) load_table: Option<LoadTable>,
     /// The elastic energy each joint's contact stored at the start, by [`JointRole`] \[J\].
     pub(super) contact_at_start: [f64; 3],
     pub(super) force: Vec<f64>,
@@ -175,12 +173,7 @@ impl SliderCrank {
                 impact_error_weight: p.impact_error_weight,
             },
             w,
-            loading: Loading {
-                inputs,
-                table: load,
-                drive_acceleration: 0.0,
-            },
-            contacts: Contacts::default(),
+            load_table: load,
             contact_at_start: [0.0; 3],
             force: vec![0.0; n_rod],
             evaluation: Evaluation::default(),
@@ -208,63 +201,28 @@ impl SliderCrank {
         &self.rod
     }
 
-    /// Discrete contact states of the joints.
-    pub fn contact_state(&self) -> Contacts {
-        self.contacts
-    }
-
-    /// Restores the discrete contact states (snapshots).
-    pub fn set_contact_state(&mut self, contacts: Contacts) {
-        self.contacts = contacts;
-    }
-
-    /// Runs `f` on the mechanism with the discrete contact states `contacts` (e.g. those a step
-    /// was integrated with, or those at a time inside it) and restores the current ones after.
-    pub fn with_contact_state<R>(
-        &mut self,
-        contacts: Contacts,
-        f: impl FnOnce(&mut Self) -> R,
-    ) -> R {
-        let current = std::mem::replace(&mut self.contacts, contacts);
-        let result = f(self);
-        self.contacts = current;
-        result
-    }
-
-    /// The inputs of `signal` at `t` (their values, and the prescribed speed's rate): the
-    /// evaluations from now on use them ([`super::Driven`] sets them at each stage's time).
-    pub fn set_inputs(&mut self, signal: &InputSignal, t: f64) {
-        self.loading.inputs = signal.at(t);
-        self.loading.drive_acceleration = signal.rate(t).drive_speed;
-    }
-
-    /// The inputs of the last [`SliderCrank::set_inputs`] (at the start: those it was built with).
-    pub fn inputs(&self) -> Inputs {
-        self.loading.inputs
-    }
-
     /// What looks wrong in the load table, read nevertheless ([`LoadTable::warning`]).
     pub fn load_table_warning(&self) -> Option<&str> {
-        self.loading.table.as_ref().and_then(LoadTable::warning)
+        self.load_table.as_ref().and_then(LoadTable::warning)
     }
 
-    /// The total external force on the slider along the guide at the crank angle `theta`: the
-    /// input and the load table's value there \[N\].
-    pub fn slider_force(&self, theta: f64) -> f64 {
-        match &self.loading.table {
-            Some(table) => self.loading.inputs.slider_force + table.at(theta),
-            None => self.loading.inputs.slider_force,
+    /// The total external force on the slider along the guide at the crank angle `theta` with
+    /// the inputs `inputs`: the input and the load table's value there \[N\].
+    pub fn slider_force(&self, inputs: &Inputs, theta: f64) -> f64 {
+        match &self.load_table {
+            Some(table) => inputs.slider_force + table.at(theta),
+            None => inputs.slider_force,
         }
     }
 
-    pub(super) fn constraint_state(&self, y: &[f64]) -> ConstraintState {
+    pub(super) fn constraint_state(&self, y: &[f64], c: &Conditions) -> ConstraintState {
         let l = self.layout;
         ConstraintState {
             theta: y[CRANK_ANGLE],
             theta_dot: y[l.crank_speed()],
             theta_drive: y[l.drive_angle()],
-            drive_speed: self.loading.inputs.drive_speed,
-            drive_acceleration: self.loading.drive_acceleration,
+            drive_speed: c.inputs.drive_speed,
+            drive_acceleration: c.drive_acceleration,
             r_a: pair(y, PIN_A),
             v_a: pair(y, l.rate_of(PIN_A)),
             r_b: pair(y, l.pin_b()),
@@ -279,12 +237,12 @@ impl SliderCrank {
         }
     }
 
-    pub(super) fn constraints(&self, y: &[f64]) -> Constraints {
+    pub(super) fn constraints(&self, y: &[f64], c: &Conditions) -> Constraints {
         Constraints::evaluate(
             self.active,
             self.crank.arm,
             self.rod_data.length,
-            &self.constraint_state(y),
+            &self.constraint_state(y, c),
         )
     }
 
@@ -296,18 +254,26 @@ impl SliderCrank {
     /// m_s ẍ_s = F_s − F_x (the slider row of [`SliderCrank::evaluate`]): both values follow from
     /// the joint law without the rod's mass matrix or the constraint solve, at a small fraction of
     /// a right-hand side's cost. They equal those of [`SliderCrank::evaluate`].
-    pub fn clearance_joint_load(&self, y: &[f64]) -> Option<(Vector2<f64>, f64)> {
+    pub fn clearance_joint_load(&self, y: &[f64], c: &Conditions) -> Option<(Vector2<f64>, f64)> {
         if self.active.ideal_joint {
             return None;
         }
-        let force = self.joint_force(JointRole::RodSlider, y).0.force;
-        let acceleration =
-            (self.slider_force(y[CRANK_ANGLE]) - force.x) / self.slider.mass + self.gravity.x;
+        let force = self
+            .joint_force(JointRole::RodSlider, y, c.contacts)
+            .0
+            .force;
+        let slider_force = self.slider_force(&c.inputs, y[CRANK_ANGLE]);
+        let acceleration = (slider_force - force.x) / self.slider.mass + self.gravity.x;
         Some((force, acceleration))
     }
 
-    /// Right-hand side; fills [`SliderCrank::evaluation`].
-    pub(super) fn derivative(&mut self, y: &[f64], dy: &mut [f64]) -> Result<(), ModelError> {
+    /// Right-hand side at `y` under the conditions `c`; fills [`SliderCrank::evaluation`].
+    pub(super) fn derivative(
+        &mut self,
+        y: &[f64],
+        c: &Conditions,
+        dy: &mut [f64],
+    ) -> Result<(), ModelError> {
         let l = self.layout;
         let b = self.rod.end_offset();
         let (q, v) = (&y[l.coordinates()], &y[l.velocities()]);
@@ -317,19 +283,19 @@ impl SliderCrank {
         for (f, g) in self.force.iter_mut().zip(&self.rod_data.gravity) {
             *f = g - *f;
         }
-        let (joint, kin) = self.joint_force(JointRole::RodSlider, y);
+        let (joint, kin) = self.joint_force(JointRole::RodSlider, y, c.contacts);
         self.force[b] += joint.force.x;
         self.force[b + 1] += joint.force.y;
         self.rod
             .add_end_moment(RodEnd::SliderPin, p, joint.moment, &mut self.force);
         let mut rod_force = std::mem::take(&mut self.force);
-        let crank_pin = self.apply_crank_pin(y, &mut rod_force);
+        let crank_pin = self.apply_crank_pin(y, c.contacts, &mut rod_force);
         self.force = rod_force;
-        let main_bearing = self.main_bearing_load(y);
+        let main_bearing = self.main_bearing_load(y, c.contacts);
         let crank_loads = [crank_pin, main_bearing];
-        let slider_force = self.slider_force(q[CRANK_ANGLE]);
+        let slider_force = self.slider_force(&c.inputs, q[CRANK_ANGLE]);
         let torque_in = match self.drive {
-            DriveMode::Torque => self.loading.inputs.drive_torque,
+            DriveMode::Torque => c.inputs.drive_torque,
             DriveMode::Speed => 0.0,
         };
         // No sine or cosine per evaluation without gravity (the common case); gravity acts at the
@@ -362,16 +328,16 @@ impl SliderCrank {
         self.rod.solve_mass(&mut acc[l.rod()]);
         acc[l.slider()] = (slider_force - joint.force.x) / self.slider.mass + self.gravity.x;
 
-        let c = self.constraints(y);
-        let lambda = self.solve_schur(&c, c.jacobian * self.on_s(acc) - c.acceleration_rhs())?;
-        let mu = c.jacobian.transpose() * lambda;
+        let k = self.constraints(y, c);
+        let lambda = self.solve_schur(&k, k.jacobian * self.on_s(acc) - k.acceleration_rhs())?;
+        let mu = k.jacobian.transpose() * lambda;
         self.subtract_compliance(&mu, acc);
 
-        let crank_torque = match c.drive_row {
-            Some(k) => -lambda[k],
+        let crank_torque = match k.drive_row {
+            Some(row) => -lambda[row],
             None => torque_in,
         };
-        let (joint_force, joint_power, mut contact_potential) = match c.ideal_row {
+        let (joint_force, joint_power, mut contact_potential) = match k.ideal_row {
             Some(k) => (-Vector2::new(lambda[k], lambda[k + 1]), 0.0, 0.0),
             None => (joint.force, kin.power(&joint), joint.potential),
         };
@@ -389,7 +355,7 @@ impl SliderCrank {
             }
         }
         dy[l.drive_angle()] = if self.active.speed_drive {
-            self.loading.inputs.drive_speed
+            c.inputs.drive_speed
         } else {
             0.0
         };
@@ -404,24 +370,30 @@ impl SliderCrank {
             contact_potential,
             crank_torque,
             slider_acceleration: dy[l.slider_velocity()],
-            drift: c.drift(),
+            drift: k.drift(),
         };
         Ok(())
     }
 
-    /// Evaluates the right-hand side at `y` into `dy`, reporting a singular configuration.
-    pub fn evaluate(&mut self, y: &[f64], dy: &mut [f64]) -> Result<&Evaluation, ModelError> {
-        self.derivative(y, dy)?;
+    /// Evaluates the right-hand side at `y` under the conditions `c` into `dy`, reporting a
+    /// singular configuration.
+    pub fn evaluate(
+        &mut self,
+        y: &[f64],
+        c: &Conditions,
+        dy: &mut [f64],
+    ) -> Result<&Evaluation, ModelError> {
+        self.derivative(y, c, dy)?;
         Ok(&self.evaluation)
     }
 
-    /// Projects the velocities of `y` onto the velocity constraints Φ_q q̇ = v (v = ω_in on the
-    /// drive row, 0 elsewhere) with the least change of kinetic energy (an impulsive adjustment
-    /// through the constraints). Returns the kinetic energy change \[J\].
-    pub fn project_velocities(&mut self, y: &mut [f64]) -> Result<f64, ModelError> {
+    /// Projects the velocities of `y` onto the velocity constraints Φ_q q̇ = v (v = ω_in of the
+    /// conditions `c` on the drive row, 0 elsewhere) with the least change of kinetic energy (an
+    /// impulsive adjustment through the constraints). Returns the kinetic energy change \[J\].
+    pub fn project_velocities(&mut self, y: &mut [f64], c: &Conditions) -> Result<f64, ModelError> {
         let velocities = self.layout.velocities();
         let before = self.kinetic_energy(y);
-        let c = self.constraints(y);
+        let c = self.constraints(y, c);
         let mu = c.jacobian.transpose() * self.solve_schur(&c, c.phi_dot)?;
         self.subtract_compliance(&mu, &mut y[velocities]);
         Ok(self.kinetic_energy(y) - before)
@@ -430,16 +402,6 @@ impl SliderCrank {
     /// Mid-span deflection of the rod \[m\].
     pub fn midspan_deflection(&mut self, y: &[f64]) -> f64 {
         self.rod.midspan_deflection(&y[self.layout.rod()])
-    }
-}
-
-impl MechanicalSystem for SliderCrank {
-    fn n_coordinates(&self) -> usize {
-        SliderCrank::n_coordinates(self)
-    }
-
-    fn held_errors(&self, y: &[f64], err: &[f64], out: &mut [f64]) {
-        self.journal_held_errors(y, err, out);
     }
 }
 

@@ -3,10 +3,11 @@
 
 use nalgebra::Vector2;
 
+use super::inputs::{Conditions, Inputs};
 use super::layout::{CRANK_ANGLE, PIN_A, pair};
 use super::slider_crank::SliderCrank;
 use crate::error::{ModelError, Num};
-use crate::joint::{ContactState, JointRole, MIN_IMPACT_VELOCITY};
+use crate::joint::{ContactState, Contacts, JointRole, MIN_IMPACT_VELOCITY};
 use crate::linalg::lu::Lu;
 use crate::math;
 
@@ -71,22 +72,25 @@ impl SliderCrank {
     }
 
     /// The start reactions of this mechanism, with every joint ideal: its state at `angle` and
-    /// `speed` (equilibrated with `equilibrate`), and there the force on each journal, indexed by
-    /// [`JointRole`] (the main bearing's and the crank pin's from the loads, the rod–slider joint's
-    /// its reaction), with the journal's and the bearing's rotation speeds.
+    /// `speed` under the inputs `inputs` (equilibrated with `equilibrate`), and there the force
+    /// on each journal, indexed by [`JointRole`] (the main bearing's and the crank pin's from the
+    /// loads, the rod–slider joint's its reaction), with the journal's and the bearing's rotation
+    /// speeds.
     pub fn start_reactions(
         &mut self,
-        angle: f64,
-        speed: f64,
+        (angle, speed): (f64, f64),
+        inputs: Inputs,
         equilibrate: bool,
     ) -> Result<[Reaction; 3], ModelError> {
         let mut y = self.initial_state(angle, speed);
+        let contacts = Contacts::default();
         if equilibrate {
-            self.equilibrate(&mut y)?;
+            self.equilibrate(&mut y, inputs, &contacts)?;
         }
         let mut dy = vec![0.0; y.len()];
-        let force = self.evaluate(&y, &mut dy)?.joint_force;
-        let loads = self.loads(&y, &dy, force);
+        let c = Conditions::held(inputs, &contacts);
+        let force = self.evaluate(&y, &c, &mut dy)?.joint_force;
+        let loads = self.loads(&y, &dy, force, &contacts);
         let forces = [loads.main_bearing, -loads.crank_pin, force];
         Ok(JointRole::ALL.map(|role| {
             let kin = self.joint_kinematics(role, &y);
@@ -105,14 +109,15 @@ impl SliderCrank {
     /// forces (with `equilibrate`; the rod stays straight otherwise): the mechanism then starts
     /// carrying its load, without the start-up impact of a centred journal. A journal in contact
     /// starts a contact event whose impact velocity is that of a journal crossing the clearance
-    /// from the centre under the load (docs/model.md §8).
+    /// from the centre under the load (docs/model.md §8). The state, under the inputs `inputs`,
+    /// and the joints' contact states.
     pub fn settle_journals(
         &mut self,
-        angle: f64,
-        speed: f64,
+        (angle, speed): (f64, f64),
+        inputs: Inputs,
         reactions: [Option<Reaction>; 3],
         equilibrate: bool,
-    ) -> Result<Vec<f64>, ModelError> {
+    ) -> Result<(Vec<f64>, Contacts), ModelError> {
         let e = JointRole::ALL.map(|role| match reactions[role as usize] {
             Some(r) => {
                 self.joint(role)
@@ -121,6 +126,7 @@ impl SliderCrank {
             None => Vector2::zeros(),
         });
         let mut y = self.initial_state_with_eccentricities(angle, speed, e);
+        let mut contacts = Contacts::default();
         for role in JointRole::ALL {
             let (Some(reaction), Some(dry)) =
                 (reactions[role as usize], self.joint(role).dry_contact())
@@ -138,15 +144,15 @@ impl SliderCrank {
                 JointRole::MainBearing => self.crank.mass,
             };
             let crossing = (2.0 * reaction.force.norm() * dry.clearance / mass).sqrt();
-            self.contacts[role] = ContactState {
+            contacts[role] = ContactState {
                 in_contact: self.penetration(role, &y) > 0.0,
                 impact_velocity: crossing.max(MIN_IMPACT_VELOCITY),
             };
         }
         if equilibrate {
-            self.equilibrate(&mut y)?;
+            self.equilibrate(&mut y, inputs, &contacts)?;
         }
-        Ok(y)
+        Ok((y, contacts))
     }
 
     /// Quasi-static start: changes the rod's deformation in a state from
@@ -164,7 +170,13 @@ impl SliderCrank {
     /// finite-difference Jacobian. The rod then starts loaded by the inertial forces of the motion
     /// (and gravity) instead of unstressed, and does not ring at its axial and bending frequencies
     /// from t = 0. The rigid rod has no deformation: the state is left as it is.
-    pub fn equilibrate(&mut self, y: &mut [f64]) -> Result<(), ModelError> {
+    pub fn equilibrate(
+        &mut self,
+        y: &mut [f64],
+        inputs: Inputs,
+        contacts: &Contacts,
+    ) -> Result<(), ModelError> {
+        let c = Conditions::held(inputs, contacts);
         if self.rod.rigid_length().is_some() {
             return Ok(());
         }
@@ -188,7 +200,7 @@ impl SliderCrank {
         let mut dy = vec![0.0; y.len()];
         let mut first_norm = f64::NAN;
         for _ in 0..30 {
-            self.quasi_static_residual(&base, &others, &u, y, &mut dy, &mut residual)?;
+            self.quasi_static_residual((&base, &others), &u, &c, y, &mut dy, &mut residual)?;
             let norm = residual.iter().map(|r| r * r).sum::<f64>().sqrt();
             if first_norm.is_nan() {
                 first_norm = norm;
@@ -207,7 +219,14 @@ impl SliderCrank {
                 let delta = 1e-7 * (u[j].abs() + scale * floor);
                 let mut perturbed = u.clone();
                 perturbed[j] += delta;
-                self.quasi_static_residual(&base, &others, &perturbed, y, &mut dy, &mut shifted)?;
+                self.quasi_static_residual(
+                    (&base, &others),
+                    &perturbed,
+                    &c,
+                    y,
+                    &mut dy,
+                    &mut shifted,
+                )?;
                 for i in 0..m {
                     jacobian.matrix_mut()[j * m + i] = (shifted[i] - residual[i]) / delta;
                 }
@@ -222,11 +241,11 @@ impl SliderCrank {
             // An update of 1e-9 of the error-control unit: the residual is at its round-off floor
             // (a start from rest, whose straight rod is already in equilibrium).
             if largest_update <= 1e-9 {
-                self.quasi_static_residual(&base, &others, &u, y, &mut dy, &mut residual)?;
+                self.quasi_static_residual((&base, &others), &u, &c, y, &mut dy, &mut residual)?;
                 return Ok(());
             }
         }
-        self.quasi_static_residual(&base, &others, &u, y, &mut dy, &mut residual)?;
+        self.quasi_static_residual((&base, &others), &u, &c, y, &mut dy, &mut residual)?;
         Err(ModelError::Numerical(format!(
             "Newton did not converge (residual {} of {})",
             Num(residual.iter().map(|r| r * r).sum::<f64>().sqrt()),
@@ -235,12 +254,12 @@ impl SliderCrank {
     }
 
     /// Writes the state of the quasi-static unknowns `u` = [d, Δ] (on the straight state `base`)
-    /// to `y` and the residual [d̈, σ̈] to `out`.
+    /// to `y` and the residual [d̈, σ̈] under the conditions `c` to `out`.
     fn quasi_static_residual(
         &mut self,
-        base: &[f64],
-        others: &[usize],
+        (base, others): (&[f64], &[usize]),
         u: &[f64],
+        c: &Conditions,
         y: &mut [f64],
         dy: &mut [f64],
         out: &mut [f64],
@@ -256,7 +275,7 @@ impl SliderCrank {
         for (k, &i) in others.iter().enumerate() {
             y[l.rod_coordinate(i)] = straight[i] + u[k];
         }
-        self.evaluate(y, dy)?;
+        self.evaluate(y, c, dy)?;
         let (acc_a, acc_b) = (pair(dy, l.rate_of(PIN_A)), pair(dy, l.rate_of(pin_b)));
         let straight_acc = self.rod.straight(acc_a, acc_b);
         for (k, &i) in others.iter().enumerate() {

@@ -8,7 +8,7 @@ use fmi_core::clock::{on_clock_grid, on_clock_grid_below};
 
 use super::failure;
 use super::peaks::Peaks;
-use super::step::{Advance, Interval, Onset};
+use super::step::{Advance, Interval, Mode, Onset};
 use super::{Engine, InputRecord, InputSignal, Inputs};
 use crate::error::{ModelError, Num};
 use crate::mechanism::Driven;
@@ -18,19 +18,6 @@ enum Progress {
     End,
     Onset(Onset),
     Paused,
-}
-
-/// How an interval may end before its end: at a contact onset (an early return), or paused after
-/// an accepted step for a master that reads the state inside the interval (FMI 3 intermediate
-/// update). Neither: the interval runs to its end.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Mode {
-    /// Stop at the end of the first internal step in which a joint comes into contact, if that is
-    /// before the interval's end ([`Advance::Onset`]).
-    pub stop_at_onset: bool,
-    /// Pause after every accepted step that ends before the interval's end, by a clock tick at
-    /// least ([`Advance::Paused`]).
-    pub pause: bool,
 }
 
 impl Engine {
@@ -169,10 +156,11 @@ impl Engine {
             let budget = (self.parameters.max_steps_per_interval as u64).saturating_sub(used);
             self.start.time = self.end.time;
             self.start.y.copy_from_slice(&self.end.y);
-            self.contact_start = self.mechanism.contact_state();
+            self.contact_start = self.contacts;
             let mut driven = Driven {
                 mechanism: &mut self.mechanism,
                 signal,
+                contacts: &mut self.contacts,
             };
             match self.integrator.step(
                 &mut driven,
@@ -223,15 +211,16 @@ impl Engine {
         } else {
             self.peaks.complete_cycle_before(t_end);
             let span = self.start.span_to(&self.end);
-            self.mechanism
-                .with_contact_state(self.contact_start, |mechanism| {
-                    self.integrator.dense_output(
-                        &mut Driven { mechanism, signal },
-                        &span,
-                        (t_end - span.t0) / span.h,
-                        &mut self.state,
-                    )
-                })?;
+            // the contact states the step was integrated with
+            let mut contacts = self.contact_start;
+            let mut driven = Driven {
+                mechanism: &mut self.mechanism,
+                signal,
+                contacts: &mut contacts,
+            };
+            let s = (t_end - span.t0) / span.h;
+            self.integrator
+                .dense_output(&mut driven, &span, s, &mut self.state)?;
             self.check_validity(Some(t_end));
         }
         Ok(())

@@ -4,8 +4,8 @@ use super::cycle::Extreme;
 use super::peaks::PeakHold;
 use crate::error::ModelError;
 use crate::joint::{JointRole, film_thickness};
-use crate::mechanism::SliderCrank;
 use crate::mechanism::layout::CRANK_ANGLE;
+use crate::mechanism::{Conditions, SliderCrank};
 
 /// Everything a system engineer plots, at the current time (SI units).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -218,19 +218,18 @@ impl Outputs {
     }
 }
 
-/// The outputs of state `y` at `time` with the mechanism's current inputs and contact state
-/// (one right-hand-side evaluation into `scratch`, no allocation), with the peak-hold values of
-/// `peaks` and the `warnings` count.
+/// The outputs of state `y` at `time` under the conditions `c` (one right-hand-side evaluation
+/// into `scratch`, no allocation), with the peak-hold values of `peaks` and the `warnings` count.
 pub(super) fn outputs(
     mechanism: &mut SliderCrank,
-    time: f64,
-    y: &[f64],
+    c: &Conditions,
+    (time, y): (f64, &[f64]),
     scratch: &mut [f64],
     peaks: &PeakHold,
     warnings: u64,
 ) -> Result<Outputs, ModelError> {
-    let ev = *mechanism.evaluate(y, scratch)?;
-    let loads = mechanism.loads(y, scratch, ev.joint_force);
+    let ev = *mechanism.evaluate(y, c, scratch)?;
+    let loads = mechanism.loads(y, scratch, ev.joint_force, c.contacts);
     let l = mechanism.layout();
     let kin = mechanism.joint_kinematics(JointRole::RodSlider, y);
     let penetration = mechanism.penetration(JointRole::RodSlider, y);
@@ -244,7 +243,7 @@ pub(super) fn outputs(
     };
     let (crank_pin, crank_pin_penetration) = clearance(JointRole::CrankPin);
     let (main_bearing, main_bearing_penetration) = clearance(JointRole::MainBearing);
-    let energies = mechanism.energies_with_strain(y, loads.deformation_energy);
+    let energies = mechanism.energies_with_strain(y, c.contacts, loads.deformation_energy);
     let forces = [
         loads.main_bearing.norm(),
         loads.crank_pin.norm(),
@@ -269,7 +268,7 @@ pub(super) fn outputs(
                 ..BearingOutputs::default()
             };
         };
-        let now = mechanism.bearing_state(role, y);
+        let now = mechanism.bearing_state(role, y, c.contacts);
         let (interval, since_start) = (&peaks.interval, &peaks.since_start);
         let ratio = interval.eccentricity_ratio[i].max(now.eccentricity_ratio);
         let pressure = interval.film_pressure[i].max(now.film_pressure);
@@ -314,7 +313,7 @@ pub(super) fn outputs(
         slider_position: y[l.slider()],
         slider_velocity: y[l.slider_velocity()],
         slider_acceleration: ev.slider_acceleration,
-        slider_applied_force: mechanism.slider_force(y[CRANK_ANGLE]),
+        slider_applied_force: mechanism.slider_force(&c.inputs, y[CRANK_ANGLE]),
         joint_force_x: ev.joint_force.x,
         joint_force_y: ev.joint_force.y,
         joint_force: ev.joint_force.norm(),

@@ -10,7 +10,7 @@ use super::sample::{
 use super::step::StepPoint;
 use crate::integrator::dense;
 use crate::joint::JointRole;
-use crate::mechanism::{Contacts, InputSignal, Loads, SliderCrank};
+use crate::mechanism::{Conditions, Contacts, InputSignal, Loads, SliderCrank};
 
 /// Extremes of the solution over a stretch of time, and the contact onsets in it (−∞ for an
 /// extreme not yet seen: some are signed).
@@ -259,11 +259,12 @@ fn parabola_vertex(f: &[f64]) -> Option<f64> {
 }
 
 /// The step just accepted, whose dense output the peaks are sampled from: its start and end times,
-/// states and derivatives, and the contact state it was integrated with.
+/// states and derivatives, the contact states it was integrated with and those at its end.
 pub(super) struct AcceptedStep<'a> {
     pub(super) start: &'a StepPoint,
     pub(super) end: &'a StepPoint,
     pub(super) contact_start: Contacts,
+    pub(super) contact_end: Contacts,
     /// The inputs it was integrated with.
     pub(super) signal: &'a InputSignal,
 }
@@ -276,7 +277,8 @@ pub(super) struct KnownEnds {
     pub(super) end: Option<Sample>,
 }
 
-/// The largest peak-held magnitudes inside the step just accepted, if the journal touches the
+/// The largest peak-held magnitudes inside the step just accepted (under the contact states it
+/// was integrated with: an onset inside it is latched at its end), if the journal touches the
 /// bearing at either end of it (zeros otherwise); see [`PeakHold`]. The samples at its ends are
 /// `known`'s where it has them; `sample` and `acceleration` are scratch space of one state each.
 pub(super) fn within_step(
@@ -286,28 +288,24 @@ pub(super) fn within_step(
     sample: &mut [f64],
     acceleration: &mut [f64],
 ) -> Within {
-    let end_contact = mechanism.contact_state();
-    if !(step.contact_start.any() || end_contact.any() || mechanism.has_film()) {
+    if !(step.contact_start.any() || step.contact_end.any() || mechanism.has_film()) {
         return Within::default();
     }
-    // The contact state the step was integrated with (an onset inside it is latched at its end).
     // The worn crank joints' forces are refined as the rod–slider joint's is.
     let refined = std::array::from_fn(|i| match i {
         CRANK_PIN_FORCE => mechanism.has_clearance(JointRole::CrankPin),
         MAIN_BEARING_FORCE => mechanism.has_clearance(JointRole::MainBearing),
         _ => i < ALWAYS_REFINED,
     });
-    mechanism.with_contact_state(step.contact_start, |mechanism| {
-        let mut at = |k: f64| {
-            let end = k == (PEAK_SAMPLES + 1) as f64;
-            match (k == 0.0, end, known) {
-                (true, _, KnownEnds { start: Some(s), .. }) => s,
-                (_, true, KnownEnds { end: Some(s), .. }) => s,
-                _ => load_within(mechanism, step, sample, acceleration, k),
-            }
-        };
-        largest_loads(&mut at, refined)
-    })
+    let mut at = |k: f64| {
+        let end = k == (PEAK_SAMPLES + 1) as f64;
+        match (k == 0.0, end, known) {
+            (true, _, KnownEnds { start: Some(s), .. }) => s,
+            (_, true, KnownEnds { end: Some(s), .. }) => s,
+            _ => load_within(mechanism, step, sample, acceleration, k),
+        }
+    };
+    largest_loads(&mut at, refined)
 }
 
 /// The largest of each quantity among the samples k = 0 … [`PEAK_SAMPLES`] + 1 of a step and at
@@ -410,7 +408,7 @@ fn load_within(
 ) -> Sample {
     let span = step.start.span_to(step.end);
     let theta = k / (PEAK_SAMPLES + 1) as f64;
-    mechanism.set_inputs(step.signal, span.t0 + theta * span.h);
+    let c = Conditions::at(step.signal, span.t0 + theta * span.h, &step.contact_start);
     let n_q = mechanism.n_coordinates();
     dense::interpolate(n_q, &span, theta, sample);
     dense::acceleration(n_q, &span, theta, acceleration);
@@ -418,9 +416,9 @@ fn load_within(
         dense::cubic_velocities(n_q, span.h, span.y0, span.y1, theta, sample);
     }
     let (force, slider_acceleration) = mechanism
-        .clearance_joint_load(sample)
+        .clearance_joint_load(sample, &c)
         .unwrap_or((Vector2::zeros(), 0.0));
-    let loads = mechanism.loads(sample, acceleration, force);
+    let loads = mechanism.loads(sample, acceleration, force, c.contacts);
     let film = mechanism.film_extremes(sample);
     self::sample(force, slider_acceleration, &loads, film)
 }

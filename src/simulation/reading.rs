@@ -8,7 +8,7 @@ use super::peaks::PeakHold;
 use super::{Engine, Input, InputSignal};
 use crate::ancf::SectionResult;
 use crate::error::ModelError;
-use crate::mechanism::SliderCrank;
+use crate::mechanism::{Conditions, SliderCrank};
 
 impl Engine {
     /// Outputs at the current point `t` with the inputs `inputs` as outputs read them there
@@ -54,42 +54,38 @@ impl Engine {
         result: SectionResult,
         out: &mut [f64],
     ) -> Result<(), ModelError> {
-        self.read(t, inputs, |mechanism, _, y, scratch, _, _| {
-            let joint_force = mechanism.evaluate(y, scratch)?.joint_force;
-            mechanism.rod_sections(y, scratch, joint_force, result, out);
+        self.read(t, inputs, |mechanism, c, (_, y), scratch, _, _| {
+            let joint_force = mechanism.evaluate(y, c, scratch)?.joint_force;
+            mechanism.rod_sections(y, scratch, (joint_force, c.contacts), result, out);
             Ok(())
         })
     }
 
-    /// `read` of the mechanism in its state and contact state at `t`, with the inputs `inputs` at
-    /// `t` and the peak-hold values and warnings count. The inputs it sets stay the mechanism's
-    /// until the next evaluation sets its own (every evaluation of a step, and every reading,
-    /// does).
+    /// `read` of the mechanism under the conditions at `t` (the inputs `inputs` there, the
+    /// contact states at `t`), in its state at `t`, with the peak-hold values and warnings count.
     fn read<T>(
         &mut self,
         t: f64,
         inputs: &InputSignal,
         read: impl FnOnce(
             &mut SliderCrank,
-            f64,
-            &[f64],
+            &Conditions,
+            (f64, &[f64]),
             &mut [f64],
             &PeakHold,
             u64,
         ) -> Result<T, ModelError>,
     ) -> Result<T, ModelError> {
         let contact = self.contact_now(t);
-        self.mechanism.set_inputs(inputs, t);
-        self.mechanism.with_contact_state(contact, |mechanism| {
-            read(
-                mechanism,
-                t,
-                &self.state,
-                &mut self.scratch,
-                &self.peaks,
-                self.monitor.total,
-            )
-        })
+        let c = Conditions::at(inputs, t, &contact);
+        read(
+            &mut self.mechanism,
+            &c,
+            (t, &self.state),
+            &mut self.scratch,
+            &self.peaks,
+            self.monitor.total,
+        )
     }
 }
 

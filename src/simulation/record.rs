@@ -7,29 +7,31 @@ use super::sample::{Sample, force_series};
 use super::{Engine, InputSignal};
 use crate::error::ModelError;
 use crate::joint::{Joint, JointRole};
-use crate::mechanism::Driven;
 use crate::mechanism::layout::CRANK_ANGLE;
+use crate::mechanism::{Conditions, Driven};
 
 impl Engine {
     /// Evaluates the end of the step just accepted, integrated with the inputs `signal`, for the
     /// peak-hold outputs.
     pub(super) fn record_step_end(&mut self, signal: &InputSignal) -> Result<(), ModelError> {
-        let end = self.mechanism.contact_state();
+        let end = self.contacts;
         let onsets = JointRole::ALL
             .map(|role| u64::from(!self.contact_start[role].in_contact && end[role].in_contact));
-        self.mechanism.set_inputs(signal, self.end.time);
+        let c = Conditions::at(signal, self.end.time, &end);
         let film = self.mechanism.film_extremes(&self.end.y);
         // From the joint law, the sample is the one the dense output gives at the step's end.
-        let (at_end, from_joint_law) = match self.mechanism.clearance_joint_load(&self.end.y) {
+        let (at_end, from_joint_law) = match self.mechanism.clearance_joint_load(&self.end.y, &c) {
             Some((force, acceleration)) => {
-                let loads = self.mechanism.loads(&self.end.y, &self.end.f, force);
+                let loads = self.mechanism.loads(&self.end.y, &self.end.f, force, &end);
                 (peaks::sample(force, acceleration, &loads, film), true)
             }
             None => {
-                let ev = *self.mechanism.evaluate(&self.end.y, &mut self.scratch)?;
+                let ev = *self
+                    .mechanism
+                    .evaluate(&self.end.y, &c, &mut self.scratch)?;
                 let loads = self
                     .mechanism
-                    .loads(&self.end.y, &self.scratch, ev.joint_force);
+                    .loads(&self.end.y, &self.scratch, ev.joint_force, &end);
                 let sample = peaks::sample(ev.joint_force, ev.slider_acceleration, &loads, film);
                 (sample, false)
             }
@@ -38,6 +40,7 @@ impl Engine {
             start: &self.start,
             end: &self.end,
             contact_start: self.contact_start,
+            contact_end: end,
             signal,
         };
         let known = KnownEnds {
@@ -65,7 +68,8 @@ impl Engine {
     /// times and crank angles, its samples, and each joint's friction power and oil flow at its
     /// ends.
     fn cycle_step(&self, at_end: Sample, within: &peaks::Within) -> CycleStep {
-        let rates = [&self.start.y, &self.end.y].map(|y| self.mechanism.friction_and_flow(y));
+        let rates = [&self.start.y, &self.end.y]
+            .map(|y| self.mechanism.friction_and_flow(y, &self.contacts));
         CycleStep {
             from: 0.0,
             time: [self.start.time, self.end.time],
@@ -102,14 +106,21 @@ impl Engine {
             let span = self.start.span_to(&self.end);
             let (t0, h) = (span.t0, span.h);
             let s = within.place[i];
-            let contact = self.contact_start;
-            let (integrator, y) = (&mut self.integrator, &mut self.y_sample);
-            let integrated = self.mechanism.with_contact_state(contact, |mechanism| {
-                mechanism.set_inputs(signal, t0 + s * h);
-                let mut driven = Driven { mechanism, signal };
-                integrator.state_within(&mut driven, &span, s, y)?;
-                Ok::<f64, ModelError>(mechanism.joint_force(role, y).0.force.norm())
-            })?;
+            // under the contact states the step was integrated with
+            let mut contacts = self.contact_start;
+            let mut driven = Driven {
+                mechanism: &mut self.mechanism,
+                signal,
+                contacts: &mut contacts,
+            };
+            let y = &mut self.y_sample;
+            self.integrator.state_within(&mut driven, &span, s, y)?;
+            let integrated = self
+                .mechanism
+                .joint_force(role, y, &contacts)
+                .0
+                .force
+                .norm();
             if (integrated - value).abs() > peaks::PEAK_TOLERANCE * value {
                 self.monitor.doubt_peak(role, t0 + s * h, value, integrated);
             }

@@ -13,7 +13,7 @@ impl Engine {
             contact_start: self.contact_start,
             step_end: self.end.clone(),
             integrator: self.integrator.state(),
-            contact: self.mechanism.contact_state(),
+            contact: self.contacts,
             contact_at_start: self.mechanism.contact_at_start(),
             start_inputs: self.start_inputs,
             peaks: self.peaks,
@@ -43,7 +43,7 @@ impl Engine {
         self.start.copy_from(&snapshot.step_start);
         self.contact_start = snapshot.contact_start;
         self.end.copy_from(&snapshot.step_end);
-        self.mechanism.set_contact_state(snapshot.contact);
+        self.contacts = snapshot.contact;
         self.mechanism
             .set_contact_at_start(snapshot.contact_at_start);
         self.start_inputs = snapshot.start_inputs;

@@ -2,14 +2,19 @@
 //! the model directly (the examples, the benchmarks, the tests). The FMU drives the engine with its
 //! instance's clock and inputs instead; either way one owner holds each.
 
-use super::interval::Mode;
-use super::step::{Advance, Onset};
-use super::{Engine, InputRecord, InputSignal, Inputs, Outputs, SectionResult, Snapshot};
+use fmi_core::clock::on_clock_grid;
+use fmi_core::signal::InputRecord;
+
+use super::engine::Engine;
+use super::outputs::Outputs;
+use super::peaks::PeakHold;
+use super::snapshot::Snapshot;
+use super::step::{Advance, Mode, Onset};
+use crate::ancf::SectionResult;
 use crate::error::ModelError;
 use crate::integrator::Stats;
-use crate::mechanism::{Energies, Input, SliderCrank};
+use crate::mechanism::{Contacts, Energies, Input, InputSignal, Inputs, SliderCrank};
 use crate::params::Parameters;
-use crate::simulation::{PeakHold, on_clock_grid};
 
 /// A complete, restorable state of a [`Simulation`].
 #[derive(Clone, Debug, PartialEq)]
@@ -86,6 +91,11 @@ impl Simulation {
     /// ([`InputRecord::reading`]).
     pub fn inputs(&self) -> &InputSignal {
         self.inputs.reading()
+    }
+
+    /// The joints' contact states at the last accepted step's end ([`Engine::contacts`]).
+    pub fn contacts(&self) -> &Contacts {
+        self.engine.contacts()
     }
 
     /// Integrator statistics since the start.

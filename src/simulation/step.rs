@@ -90,6 +90,19 @@ pub(super) struct Interval {
     pub(super) work_start: u64,
 }
 
+/// How an interval may end before its end: at a contact onset (an early return), or paused after
+/// an accepted step for a master that reads the state inside the interval (FMI 3 intermediate
+/// update). Neither: the interval runs to its end.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Mode {
+    /// Stop at the end of the first internal step in which a joint comes into contact, if that is
+    /// before the interval's end ([`Advance::Onset`]).
+    pub stop_at_onset: bool,
+    /// Pause after every accepted step that ends before the interval's end, by a clock tick at
+    /// least ([`Advance::Paused`]).
+    pub pause: bool,
+}
+
 /// Where an interval stopped ([`super::Engine::advance`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Advance {

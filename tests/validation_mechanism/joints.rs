@@ -137,8 +137,7 @@ fn benchmark_a_shows_flight_impact_and_contact() {
             contact += 1;
             if first_contact.is_none() {
                 first_contact = Some(o.time);
-                first_velocity =
-                    sim.mechanism().contact_state()[JointRole::RodSlider].impact_velocity;
+                first_velocity = sim.contacts()[JointRole::RodSlider].impact_velocity;
             }
             if first_contact.is_some_and(|t| o.time < t + 1e-4) {
                 peak_first = peak_first.max(o.joint_force);

@@ -51,8 +51,19 @@ def test_fmi3_declares_its_capabilities(root, model):
         v
         for v in md3.modelVariables
         if v.causality not in ("independent", "structuralParameter") and not v.dimensions
+        and v.derivative is None
     ]
     assert [v.name for v in variables3] == [v.name for v in md2.modelVariables]
+    # FMI 3 has no fmi3SetInputDerivatives: the input derivatives are inputs of their own, each
+    # naming the variable it derives
+    derivatives = {v.name: v for v in md3.modelVariables if v.derivative is not None}
+    inputs = [v for v in md2.modelVariables if v.causality == "input"]
+    assert md2.coSimulation.canInterpolateInputs
+    assert len(derivatives) == 2 * len(inputs)
+    for u in inputs:
+        first, second = derivatives[f"der({u.name})"], derivatives[f"der({u.name},2)"]
+        assert first.causality == second.causality == "input" and first.start == "0"
+        assert first.derivative.name == u.name and second.derivative is first
     for v2, v3 in zip(md2.modelVariables, variables3):
         assert v3.valueReference == v2.valueReference
         expected = {"Real": "Float64", "Integer": "Int32"}.get(v2.type, v2.type)

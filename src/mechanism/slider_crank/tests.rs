@@ -47,7 +47,7 @@ fn the_held_error_is_the_journals_normal_velocity_error() {
     err[l.rate_of(l.pin_b()) + 1] = 2.0;
     err[l.slider_velocity()] = 0.5;
     let mut out = [0.0];
-    m.held_errors(&y, &err, &mut out);
+    m.journal_held_errors(&y, &err, &mut out);
     assert!(
         (out[0] - (0.6 * 0.5 + 0.8 * 2.0)).abs() < 1e-12,
         "{}",
@@ -55,7 +55,7 @@ fn the_held_error_is_the_journals_normal_velocity_error() {
     );
     y[l.slider()] = y[l.pin_b()];
     y[l.pin_b() + 1] = 0.0;
-    m.held_errors(&y, &err, &mut out);
+    m.journal_held_errors(&y, &err, &mut out);
     assert!(
         (out[0] - (0.25f64 + 4.0).sqrt()).abs() < 1e-12,
         "{}",
@@ -94,7 +94,7 @@ fn the_crank_joints_held_errors_are_their_normal_velocity_errors() {
         err[at..at + 2].copy_from_slice(&e);
     }
     let mut out = [0.0; 3];
-    m.held_errors(&y, &err, &mut out);
+    m.journal_held_errors(&y, &err, &mut out);
     let shifted: Vec<f64> = y.iter().zip(&err).map(|(a, b)| a + b).collect();
     for (held, role) in out
         .iter()
@@ -129,24 +129,23 @@ fn clearance_joint_load_equals_the_right_hand_side() {
             let mut m = SliderCrank::new(&p).expect("default parameters build");
             let inputs = Inputs {
                 slider_force: -150.0,
-                ..m.inputs()
+                ..Inputs::at_start(&p)
             };
-            m.set_inputs(&InputSignal::held(inputs), 0.0);
             let mut y = m.initial_state(0.3, 400.0);
             let l = m.layout();
             // Journal 20 µm into the wall, moving into it.
             y[l.slider()] -= p.joint.clearance + 2e-5;
             y[l.slider_velocity()] -= 0.5;
             let mut dy = vec![0.0; y.len()];
-            let mut in_contact = m.contact_state();
+            let mut in_contact = crate::joint::Contacts::default();
             in_contact[JointRole::RodSlider] = crate::joint::ContactState {
                 in_contact: true,
                 impact_velocity: 0.8,
             };
-            for contact in [m.contact_state(), in_contact] {
-                m.set_contact_state(contact);
-                let load = m.clearance_joint_load(&y);
-                let ev = *m.evaluate(&y, &mut dy).expect("regular configuration");
+            for contacts in [crate::joint::Contacts::default(), in_contact] {
+                let c = Conditions::held(inputs, &contacts);
+                let load = m.clearance_joint_load(&y, &c);
+                let ev = *m.evaluate(&y, &c, &mut dy).expect("regular configuration");
                 match load {
                     None => assert_eq!(joint_model, JointModel::Ideal),
                     Some((force, acceleration)) => {

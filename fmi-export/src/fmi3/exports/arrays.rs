@@ -12,6 +12,7 @@ use crate::ffi::{slice, slice_mut};
 use crate::fmi3::description::TIME_VALUE_REFERENCE;
 use crate::instance::Instance;
 use crate::model::Model;
+use crate::signal::InputValues;
 use crate::state::{Call, State};
 use crate::status::Status;
 
@@ -139,6 +140,13 @@ fn structural<M: Model>(
     })
 }
 
+/// The input and the order of the input derivative `der(u)` of value reference `vr`, if it is
+/// one ([`crate::fmi3::description::input_derivative`]).
+pub(super) fn input_derivative<M: Model>(vr: u32) -> Option<(usize, u32)> {
+    let (n, max) = (M::Inputs::LEN, M::MAX_INPUT_DERIVATIVE_ORDER);
+    crate::fmi3::description::input_derivative(vr, n, max)
+}
+
 /// The number of values of the Float64 variable `vr`: its array's size, or 1.
 fn size<M: Model>(inst: &Instance<M>, vr: u32) -> usize {
     inst.fmi3.array(vr).map_or(1, |(_, a)| {
@@ -174,14 +182,14 @@ pub fn get_float64<M: Model>(
             let n = size(inst, r);
             inst.get_array(index, &mut values[at..at + n])?;
             (i, at) = (i + 1, at + n);
-        } else if let Some((k, order)) = Instance::<M>::input_derivative(r) {
-            values[at] = inst.input_derivative_value(k, order);
+        } else if let Some((k, order)) = input_derivative::<M>(r) {
+            values[at] = inst.input_derivative(k, order);
             (i, at) = (i + 1, at + 1);
         } else {
             let table = |r: u32| {
                 r != TIME_VALUE_REFERENCE
                     && inst.fmi3.array(r).is_none()
-                    && Instance::<M>::input_derivative(r).is_none()
+                    && input_derivative::<M>(r).is_none()
             };
             let run = vr[i..].iter().take_while(|&&r| table(r)).count();
             resolve::<M>(&vr[i..i + run], "Float64", &mut inst.variables)?;

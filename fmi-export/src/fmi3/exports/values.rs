@@ -5,10 +5,10 @@
 
 use fmi_sys::fmi3::*;
 
-use super::arrays::{get_float64, refuse_arrays, scalars};
+use super::arrays::{get_float64, input_derivative, refuse_arrays, scalars};
 use super::codes::with_instance;
 use crate::calls;
-use crate::checks::{check_set_boolean, check_set_integer, lookup, resolve};
+use crate::checks::{check_set_boolean, check_set_integer, check_set_real, lookup, resolve};
 use crate::error::FmuError;
 use crate::ffi::{slice, slice_mut};
 use crate::fmi3::description::TIME_VALUE_REFERENCE;
@@ -97,8 +97,33 @@ pub unsafe fn fmi3SetFloat64<M: Model>(
                 "time is the independent variable and cannot be set".into(),
             ));
         }
-        inst.set_float64(vr, values).map(ok)
+        set_float64(inst, vr, values).map(ok)
     })
+}
+
+/// SetFloat64 of `vr`: the table's Real variables and the input derivatives, each checked
+/// (settable now; in range, or finite) before any is set.
+fn set_float64<M: Model>(
+    inst: &mut Instance<M>,
+    vr: &[u32],
+    values: &[f64],
+) -> Result<(), FmuError> {
+    for (&r, &x) in vr.iter().zip(values) {
+        match input_derivative::<M>(r) {
+            Some((k, order)) => inst.check_input_derivative(k, order, x)?,
+            None => check_set_real(inst.state, &[lookup(M::VARIABLES, r, "Float64")?], &[x])?,
+        }
+    }
+    for (&r, &x) in vr.iter().zip(values) {
+        match input_derivative::<M>(r) {
+            Some((k, order)) => inst.set_input_derivative(k, order, x)?,
+            None => {
+                resolve::<M>(&[r], "Float64", &mut inst.variables)?;
+                inst.set_real(&[x])?;
+            }
+        }
+    }
+    Ok(())
 }
 
 /// Reads Int32 variables.
