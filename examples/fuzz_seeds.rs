@@ -12,7 +12,8 @@
 
 use std::ffi::CString;
 
-use flexible_slider_crank::fmi::{self, GUID};
+use flexible_slider_crank::fmi::GUID;
+use flexible_slider_crank::fmi::fmi2_exports as fmi;
 use flexible_slider_crank::variables::VARIABLES;
 use fmi_sys::fmi2::*;
 

@@ -160,7 +160,7 @@ pub fn with_instance<M: Model>(
 #[doc(hidden)]
 #[macro_export]
 macro_rules! forward_export {
-    ($version:ident, $model:ty, $name:ident: $pinned:ident, ($($arg:ident: $ty:ty,)*) -> $ret:ty) => {
+    ($version:ident, $model:ty, $name:ident: $pinned:ident, ($($arg:ident: $ty:ty),* $(,)?) -> $ret:ty) => {
         #[doc = concat!(
             "See `fmi_export::", stringify!($version), "::exports::", stringify!($name), "`."
         )]

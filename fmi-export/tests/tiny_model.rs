@@ -208,6 +208,8 @@ impl Model for Lag {
 
 fmi_export::export_fmi2!(Lag);
 fmi_export::export_fmi3!(Lag);
+use fmi2_exports::*;
+use fmi3_exports::*;
 
 static MESSAGES: Mutex<Vec<String>> = Mutex::new(Vec::new());
 

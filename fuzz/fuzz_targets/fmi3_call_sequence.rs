@@ -12,7 +12,8 @@ use std::ffi::CString;
 use std::ptr;
 
 use arbitrary::Arbitrary;
-use flexible_slider_crank::fmi::{self, FMI3_TOKEN};
+use flexible_slider_crank::fmi::FMI3_TOKEN;
+use flexible_slider_crank::fmi::fmi3_exports as fmi;
 use flexible_slider_crank::variables::{FMI3, N_SECTIONS};
 use flexible_slider_crank_fuzz::{value_for, variable_count};
 use fmi_sys::fmi3::*;

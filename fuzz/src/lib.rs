@@ -9,7 +9,8 @@
 use std::ffi::{CString, c_char};
 use std::ptr;
 
-use flexible_slider_crank::fmi::{self, GUID};
+use flexible_slider_crank::fmi::GUID;
+use flexible_slider_crank::fmi::fmi2_exports as fmi;
 use flexible_slider_crank::variables::{ENUMERATIONS, Kind, VARIABLES};
 use fmi_sys::fmi2::*;
 

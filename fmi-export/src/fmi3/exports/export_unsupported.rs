@@ -10,224 +10,143 @@
 macro_rules! export_fmi3_unsupported {
     ($model:ty) => {
         $crate::forward_export!(
-            fmi3, $model,
-            fmi3EnterEventMode: fmi3EnterEventModeTYPE,
-            (
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
-            ) -> $crate::fmi3::exports::sys::fmi3Status
+            fmi3, $model, fmi3EnterEventMode: fmi3EnterEventModeTYPE,
+            (instance: fmi3Instance) -> fmi3Status
         );
         $crate::fmi3_unsupported!(
-            $model,
-            fmi3GetNumberOfVariableDependencies: fmi3GetNumberOfVariableDependenciesTYPE,
+            $model, fmi3GetNumberOfVariableDependencies: fmi3GetNumberOfVariableDependenciesTYPE,
             "the dependencies are those of modelDescription.xml's ModelStructure",
-            _valueReference: $crate::fmi3::exports::sys::fmi3ValueReference,
-            _nDependencies: *mut usize,
+            _valueReference: fmi3ValueReference, _nDependencies: *mut usize
         );
         $crate::fmi3_unsupported!(
-            $model,
-            fmi3GetVariableDependencies: fmi3GetVariableDependenciesTYPE,
+            $model, fmi3GetVariableDependencies: fmi3GetVariableDependenciesTYPE,
             "the dependencies are those of modelDescription.xml's ModelStructure",
-            _dependent: $crate::fmi3::exports::sys::fmi3ValueReference,
-            _elementIndicesOfDependent: *mut usize,
-            _independents: *mut $crate::fmi3::exports::sys::fmi3ValueReference,
-            _elementIndicesOfIndependents: *mut usize,
-            _dependencyKinds: *mut $crate::fmi3::exports::sys::fmi3DependencyKind,
-            _nDependencies: usize,
+            _dependent: fmi3ValueReference, _elementIndicesOfDependent: *mut usize,
+            _independents: *mut fmi3ValueReference, _elementIndicesOfIndependents: *mut usize,
+            _dependencyKinds: *mut fmi3DependencyKind, _nDependencies: usize
         );
         $crate::fmi3_unsupported!(
-            $model,
-            fmi3GetAdjointDerivative: fmi3GetAdjointDerivativeTYPE,
+            $model, fmi3GetAdjointDerivative: fmi3GetAdjointDerivativeTYPE,
             "adjoint derivatives are not provided (providesAdjointDerivatives = false)",
-            _unknowns: *const $crate::fmi3::exports::sys::fmi3ValueReference,
-            _nUnknowns: usize,
-            _knowns: *const $crate::fmi3::exports::sys::fmi3ValueReference,
-            _nKnowns: usize,
-            _seed: *const $crate::fmi3::exports::sys::fmi3Float64,
-            _nSeed: usize,
-            _sensitivity: *mut $crate::fmi3::exports::sys::fmi3Float64,
-            _nSensitivity: usize,
+            _unknowns: *const fmi3ValueReference, _nUnknowns: usize,
+            _knowns: *const fmi3ValueReference, _nKnowns: usize, _seed: *const fmi3Float64,
+            _nSeed: usize, _sensitivity: *mut fmi3Float64, _nSensitivity: usize
         );
         $crate::forward_export!(
-            fmi3, $model,
-            fmi3EnterConfigurationMode: fmi3EnterConfigurationModeTYPE,
-            (
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
-            ) -> $crate::fmi3::exports::sys::fmi3Status
+            fmi3, $model, fmi3EnterConfigurationMode: fmi3EnterConfigurationModeTYPE,
+            (instance: fmi3Instance) -> fmi3Status
         );
         $crate::forward_export!(
-            fmi3, $model,
-            fmi3ExitConfigurationMode: fmi3ExitConfigurationModeTYPE,
-            (
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
-            ) -> $crate::fmi3::exports::sys::fmi3Status
+            fmi3, $model, fmi3ExitConfigurationMode: fmi3ExitConfigurationModeTYPE,
+            (instance: fmi3Instance) -> fmi3Status
         );
         $crate::fmi3_unsupported!(
-            $model,
-            fmi3GetIntervalDecimal: fmi3GetIntervalDecimalTYPE,
-            "the FMU has no clocks",
-            _valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
-            _nValueReferences: usize,
-            _intervals: *mut $crate::fmi3::exports::sys::fmi3Float64,
-            _qualifiers: *mut $crate::fmi3::exports::sys::fmi3IntervalQualifier,
+            $model, fmi3GetIntervalDecimal: fmi3GetIntervalDecimalTYPE, "the FMU has no clocks",
+            _valueReferences: *const fmi3ValueReference, _nValueReferences: usize,
+            _intervals: *mut fmi3Float64, _qualifiers: *mut fmi3IntervalQualifier
         );
         $crate::fmi3_unsupported!(
-            $model,
-            fmi3GetIntervalFraction: fmi3GetIntervalFractionTYPE,
-            "the FMU has no clocks",
-            _valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
-            _nValueReferences: usize,
-            _counters: *mut $crate::fmi3::exports::sys::fmi3UInt64,
-            _resolutions: *mut $crate::fmi3::exports::sys::fmi3UInt64,
-            _qualifiers: *mut $crate::fmi3::exports::sys::fmi3IntervalQualifier,
+            $model, fmi3GetIntervalFraction: fmi3GetIntervalFractionTYPE, "the FMU has no clocks",
+            _valueReferences: *const fmi3ValueReference, _nValueReferences: usize,
+            _counters: *mut fmi3UInt64, _resolutions: *mut fmi3UInt64,
+            _qualifiers: *mut fmi3IntervalQualifier
         );
         $crate::fmi3_unsupported!(
-            $model,
-            fmi3GetShiftDecimal: fmi3GetShiftDecimalTYPE,
-            "the FMU has no clocks",
-            _valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
-            _nValueReferences: usize,
-            _shifts: *mut $crate::fmi3::exports::sys::fmi3Float64,
+            $model, fmi3GetShiftDecimal: fmi3GetShiftDecimalTYPE, "the FMU has no clocks",
+            _valueReferences: *const fmi3ValueReference, _nValueReferences: usize,
+            _shifts: *mut fmi3Float64
         );
         $crate::fmi3_unsupported!(
-            $model,
-            fmi3GetShiftFraction: fmi3GetShiftFractionTYPE,
-            "the FMU has no clocks",
-            _valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
-            _nValueReferences: usize,
-            _counters: *mut $crate::fmi3::exports::sys::fmi3UInt64,
-            _resolutions: *mut $crate::fmi3::exports::sys::fmi3UInt64,
+            $model, fmi3GetShiftFraction: fmi3GetShiftFractionTYPE, "the FMU has no clocks",
+            _valueReferences: *const fmi3ValueReference, _nValueReferences: usize,
+            _counters: *mut fmi3UInt64, _resolutions: *mut fmi3UInt64
         );
         $crate::fmi3_unsupported!(
-            $model,
-            fmi3SetIntervalDecimal: fmi3SetIntervalDecimalTYPE,
-            "the FMU has no clocks",
-            _valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
-            _nValueReferences: usize,
-            _intervals: *const $crate::fmi3::exports::sys::fmi3Float64,
+            $model, fmi3SetIntervalDecimal: fmi3SetIntervalDecimalTYPE, "the FMU has no clocks",
+            _valueReferences: *const fmi3ValueReference, _nValueReferences: usize,
+            _intervals: *const fmi3Float64
         );
         $crate::fmi3_unsupported!(
-            $model,
-            fmi3SetIntervalFraction: fmi3SetIntervalFractionTYPE,
-            "the FMU has no clocks",
-            _valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
-            _nValueReferences: usize,
-            _counters: *const $crate::fmi3::exports::sys::fmi3UInt64,
-            _resolutions: *const $crate::fmi3::exports::sys::fmi3UInt64,
+            $model, fmi3SetIntervalFraction: fmi3SetIntervalFractionTYPE, "the FMU has no clocks",
+            _valueReferences: *const fmi3ValueReference, _nValueReferences: usize,
+            _counters: *const fmi3UInt64, _resolutions: *const fmi3UInt64
         );
         $crate::fmi3_unsupported!(
-            $model,
-            fmi3SetShiftDecimal: fmi3SetShiftDecimalTYPE,
-            "the FMU has no clocks",
-            _valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
-            _nValueReferences: usize,
-            _shifts: *const $crate::fmi3::exports::sys::fmi3Float64,
+            $model, fmi3SetShiftDecimal: fmi3SetShiftDecimalTYPE, "the FMU has no clocks",
+            _valueReferences: *const fmi3ValueReference, _nValueReferences: usize,
+            _shifts: *const fmi3Float64
         );
         $crate::fmi3_unsupported!(
-            $model,
-            fmi3SetShiftFraction: fmi3SetShiftFractionTYPE,
-            "the FMU has no clocks",
-            _valueReferences: *const $crate::fmi3::exports::sys::fmi3ValueReference,
-            _nValueReferences: usize,
-            _counters: *const $crate::fmi3::exports::sys::fmi3UInt64,
-            _resolutions: *const $crate::fmi3::exports::sys::fmi3UInt64,
+            $model, fmi3SetShiftFraction: fmi3SetShiftFractionTYPE, "the FMU has no clocks",
+            _valueReferences: *const fmi3ValueReference, _nValueReferences: usize,
+            _counters: *const fmi3UInt64, _resolutions: *const fmi3UInt64
         );
         $crate::fmi3_unsupported!(
-            $model,
-            fmi3EvaluateDiscreteStates: fmi3EvaluateDiscreteStatesTYPE,
-            "the discrete states are not evaluated apart (providesEvaluateDiscreteStates = false)",
+            $model, fmi3EvaluateDiscreteStates: fmi3EvaluateDiscreteStatesTYPE,
+            "the discrete states are not evaluated apart (providesEvaluateDiscreteStates = false)"
         );
         $crate::forward_export!(
-            fmi3, $model,
-            fmi3UpdateDiscreteStates: fmi3UpdateDiscreteStatesTYPE,
-            (
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
-            discreteStatesNeedUpdate: *mut $crate::fmi3::exports::sys::fmi3Boolean,
-            terminateSimulation: *mut $crate::fmi3::exports::sys::fmi3Boolean,
-            nominalsOfContinuousStatesChanged: *mut $crate::fmi3::exports::sys::fmi3Boolean,
-            valuesOfContinuousStatesChanged: *mut $crate::fmi3::exports::sys::fmi3Boolean,
-            nextEventTimeDefined: *mut $crate::fmi3::exports::sys::fmi3Boolean,
-            nextEventTime: *mut $crate::fmi3::exports::sys::fmi3Float64,
-            ) -> $crate::fmi3::exports::sys::fmi3Status
+            fmi3, $model, fmi3UpdateDiscreteStates: fmi3UpdateDiscreteStatesTYPE,
+            (instance: fmi3Instance, discreteStatesNeedUpdate: *mut fmi3Boolean,
+            terminateSimulation: *mut fmi3Boolean,
+            nominalsOfContinuousStatesChanged: *mut fmi3Boolean,
+            valuesOfContinuousStatesChanged: *mut fmi3Boolean,
+            nextEventTimeDefined: *mut fmi3Boolean, nextEventTime: *mut fmi3Float64) -> fmi3Status
         );
         $crate::fmi3_unsupported!(
-            $model,
-            fmi3EnterContinuousTimeMode: fmi3EnterContinuousTimeModeTYPE,
-            "model exchange is not provided",
+            $model, fmi3EnterContinuousTimeMode: fmi3EnterContinuousTimeModeTYPE,
+            "model exchange is not provided"
         );
         $crate::fmi3_unsupported!(
-            $model,
-            fmi3CompletedIntegratorStep: fmi3CompletedIntegratorStepTYPE,
-            "model exchange is not provided",
-            _noSetFMUStatePriorToCurrentPoint: $crate::fmi3::exports::sys::fmi3Boolean,
-            _enterEventMode: *mut $crate::fmi3::exports::sys::fmi3Boolean,
-            _terminateSimulation: *mut $crate::fmi3::exports::sys::fmi3Boolean,
+            $model, fmi3CompletedIntegratorStep: fmi3CompletedIntegratorStepTYPE,
+            "model exchange is not provided", _noSetFMUStatePriorToCurrentPoint: fmi3Boolean,
+            _enterEventMode: *mut fmi3Boolean, _terminateSimulation: *mut fmi3Boolean
         );
         $crate::fmi3_unsupported!(
-            $model,
-            fmi3SetTime: fmi3SetTimeTYPE,
-            "model exchange is not provided",
-            _time: $crate::fmi3::exports::sys::fmi3Float64,
+            $model, fmi3SetTime: fmi3SetTimeTYPE, "model exchange is not provided",
+            _time: fmi3Float64
         );
         $crate::fmi3_unsupported!(
-            $model,
-            fmi3SetContinuousStates: fmi3SetContinuousStatesTYPE,
-            "model exchange is not provided",
-            _continuousStates: *const $crate::fmi3::exports::sys::fmi3Float64,
-            _nContinuousStates: usize,
+            $model, fmi3SetContinuousStates: fmi3SetContinuousStatesTYPE,
+            "model exchange is not provided", _continuousStates: *const fmi3Float64,
+            _nContinuousStates: usize
         );
         $crate::fmi3_unsupported!(
-            $model,
-            fmi3GetContinuousStateDerivatives: fmi3GetContinuousStateDerivativesTYPE,
-            "model exchange is not provided",
-            _derivatives: *mut $crate::fmi3::exports::sys::fmi3Float64,
-            _nContinuousStates: usize,
+            $model, fmi3GetContinuousStateDerivatives: fmi3GetContinuousStateDerivativesTYPE,
+            "model exchange is not provided", _derivatives: *mut fmi3Float64,
+            _nContinuousStates: usize
         );
         $crate::fmi3_unsupported!(
-            $model,
-            fmi3GetEventIndicators: fmi3GetEventIndicatorsTYPE,
-            "model exchange is not provided",
-            _eventIndicators: *mut $crate::fmi3::exports::sys::fmi3Float64,
-            _nEventIndicators: usize,
+            $model, fmi3GetEventIndicators: fmi3GetEventIndicatorsTYPE,
+            "model exchange is not provided", _eventIndicators: *mut fmi3Float64,
+            _nEventIndicators: usize
         );
         $crate::fmi3_unsupported!(
-            $model,
-            fmi3GetContinuousStates: fmi3GetContinuousStatesTYPE,
-            "model exchange is not provided",
-            _continuousStates: *mut $crate::fmi3::exports::sys::fmi3Float64,
-            _nContinuousStates: usize,
+            $model, fmi3GetContinuousStates: fmi3GetContinuousStatesTYPE,
+            "model exchange is not provided", _continuousStates: *mut fmi3Float64,
+            _nContinuousStates: usize
         );
         $crate::fmi3_unsupported!(
-            $model,
-            fmi3GetNominalsOfContinuousStates: fmi3GetNominalsOfContinuousStatesTYPE,
-            "model exchange is not provided",
-            _nominals: *mut $crate::fmi3::exports::sys::fmi3Float64,
-            _nContinuousStates: usize,
+            $model, fmi3GetNominalsOfContinuousStates: fmi3GetNominalsOfContinuousStatesTYPE,
+            "model exchange is not provided", _nominals: *mut fmi3Float64,
+            _nContinuousStates: usize
         );
         $crate::fmi3_unsupported!(
-            $model,
-            fmi3GetNumberOfEventIndicators: fmi3GetNumberOfEventIndicatorsTYPE,
-            "model exchange is not provided",
-            _nEventIndicators: *mut usize,
+            $model, fmi3GetNumberOfEventIndicators: fmi3GetNumberOfEventIndicatorsTYPE,
+            "model exchange is not provided", _nEventIndicators: *mut usize
         );
         $crate::fmi3_unsupported!(
-            $model,
-            fmi3GetNumberOfContinuousStates: fmi3GetNumberOfContinuousStatesTYPE,
-            "model exchange is not provided",
-            _nContinuousStates: *mut usize,
+            $model, fmi3GetNumberOfContinuousStates: fmi3GetNumberOfContinuousStatesTYPE,
+            "model exchange is not provided", _nContinuousStates: *mut usize
         );
         $crate::forward_export!(
-            fmi3, $model,
-            fmi3EnterStepMode: fmi3EnterStepModeTYPE,
-            (
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
-            ) -> $crate::fmi3::exports::sys::fmi3Status
+            fmi3, $model, fmi3EnterStepMode: fmi3EnterStepModeTYPE,
+            (instance: fmi3Instance) -> fmi3Status
         );
         $crate::fmi3_unsupported!(
-            $model,
-            fmi3ActivateModelPartition: fmi3ActivateModelPartitionTYPE,
-            "scheduled execution is not provided",
-            _clockReference: $crate::fmi3::exports::sys::fmi3ValueReference,
-            _activationTime: $crate::fmi3::exports::sys::fmi3Float64,
+            $model, fmi3ActivateModelPartition: fmi3ActivateModelPartitionTYPE,
+            "scheduled execution is not provided", _clockReference: fmi3ValueReference,
+            _activationTime: fmi3Float64
         );
     };
 }
@@ -240,15 +159,15 @@ macro_rules! export_fmi3_unsupported {
 #[doc(hidden)]
 #[macro_export]
 macro_rules! fmi3_unsupported {
-    ($model:ty, $name:ident: $pinned:ident, $why:literal, $($arg:ident: $ty:ty,)*) => {
+    ($model:ty, $name:ident: $pinned:ident, $why:literal $(, $arg:ident: $ty:ty)* $(,)?) => {
         #[doc = concat!("Not supported: ", $why, ".")]
         #[unsafe(no_mangle)]
         pub unsafe extern "C" fn $name(
-            instance: $crate::fmi3::exports::sys::fmi3Instance,
+            instance: fmi3Instance,
             $($arg: $ty,)*
-        ) -> $crate::fmi3::exports::sys::fmi3Status {
+        ) -> fmi3Status {
             $crate::fmi3::exports::unsupported::<$model>(instance, stringify!($name), $why)
         }
-        const _: $crate::fmi3::exports::sys::$pinned = Some($name);
+        const _: $pinned = Some($name);
     };
 }
