@@ -5,18 +5,18 @@
 //! [`Status`] into its own code.
 #![allow(unsafe_code)]
 
-use std::ffi::{CString, c_char, c_void};
+use std::ffi::{c_char, c_void};
 use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::PathBuf;
 
-use crate::checks::{check_causality, check_set_string, resolve};
+use crate::checks::check_causality;
 use crate::error::FmuError;
 use crate::ffi::{slice_mut, string};
 use crate::instance::Instance;
 use crate::logger::Logger;
 use crate::model::Model;
 use crate::number::Num;
-use crate::state::{State, Version};
+use crate::state::Version;
 use crate::status::{Status, ok};
 use crate::table::Causality;
 
@@ -66,10 +66,9 @@ pub fn create<M: Model>(
             .as_ref()
             .map_or_else(|| "none".to_string(), |d| d.display().to_string())
     ));
-    let mut instance = Instance::<M>::new(logger, resources);
-    instance.version = version;
-    instance.serve(fmi3);
-    Some(Box::new(instance))
+    Some(Box::new(Instance::<M>::new(
+        logger, resources, version, fmi3,
+    )))
 }
 
 /// Frees an instance (NULL is a no-op).
@@ -99,15 +98,14 @@ pub unsafe fn set_debug_logging<M: Model>(
         // SAFETY: the caller's contract.
         names.push(unsafe { string(p) }.ok_or(FmuError::Null("categories[i]"))?);
     }
-    inst.logger
+    inst.logger_mut()
         .set_debug_logging(on, &names)
         .map_err(FmuError::Invalid)?;
     Ok(Status::Ok)
 }
 
 /// Ends the simulation; outputs stay readable.
-pub fn terminate<M: Model>(inst: &mut Instance<M>) -> Result<Status, FmuError> {
-    inst.state = State::Terminated;
+pub fn terminate<M: Model>(_inst: &mut Instance<M>) -> Result<Status, FmuError> {
     Ok(Status::Ok)
 }
 
@@ -265,14 +263,8 @@ pub fn get_string<M: Model>(
     vr: &[u32],
     value: &mut [*const c_char],
 ) -> Result<Status, FmuError> {
-    resolve::<M>(vr, "String", &mut inst.variables)?;
-    let mut texts = Vec::with_capacity(vr.len());
-    inst.model.get_string(&inst.variables, &mut texts)?;
-    inst.strings = texts
-        .into_iter()
-        .map(|t| CString::new(t.replace('\0', "")).unwrap_or_default())
-        .collect();
-    for (v, text) in value.iter_mut().zip(&inst.strings) {
+    inst.resolve(vr, "String")?;
+    for (v, text) in value.iter_mut().zip(inst.get_string()?) {
         *v = text.as_ptr();
     }
     Ok(Status::Ok)
@@ -287,11 +279,10 @@ pub unsafe fn set_string<M: Model>(
     vr: &[u32],
     value: &[*const c_char],
 ) -> Result<Status, FmuError> {
-    resolve::<M>(vr, "String", &mut inst.variables)?;
-    check_set_string(inst.state, &inst.variables)?;
+    inst.resolve(vr, "String")?;
     let texts = value
         .iter()
-        .zip(inst.variables.iter())
+        .zip(inst.variables())
         .map(|(&p, v)| {
             // SAFETY: the caller's contract.
             unsafe { string(p) }
@@ -299,9 +290,7 @@ pub unsafe fn set_string<M: Model>(
         })
         .collect::<Result<Vec<_>, _>>()?;
     let texts: Vec<&str> = texts.iter().map(String::as_str).collect();
-    inst.model
-        .set_string(inst.state, &inst.variables, &texts)
-        .map(ok)
+    inst.set_string(&texts).map(ok)
 }
 
 /// The directional derivative Δy = (∂y/∂u) Δu of Real outputs y (`unknowns`) with respect to Real
@@ -316,11 +305,9 @@ pub fn directional_derivative<M: Model>(
     sensitivity: &mut [f64],
     [unknowns_name, knowns_name, seed_name]: [&'static str; 3],
 ) -> Result<Status, FmuError> {
-    inst.variables.clear();
-    for &vr in unknowns {
-        let v = check_causality::<M>(vr, Causality::Output, unknowns_name)?;
-        inst.variables.push(v);
-    }
+    inst.resolve_by(unknowns, |vr| {
+        check_causality::<M>(vr, Causality::Output, unknowns_name)
+    })?;
     let knowns = knowns
         .iter()
         .zip(seed)
@@ -356,6 +343,6 @@ pub fn output_derivatives<M: Model>(
     order: &[i32],
     value: &mut [f64],
 ) -> Result<Status, FmuError> {
-    resolve::<M>(vr, "Real", &mut inst.variables)?;
+    inst.resolve(vr, "Real")?;
     inst.get_output_derivatives(order, value).map(ok)
 }

@@ -9,7 +9,7 @@ use std::panic::{AssertUnwindSafe, catch_unwind};
 use super::error::FmuError;
 use super::instance::Instance;
 use super::model::Model;
-use super::state::{Call, State};
+use super::state::Call;
 use super::status::Status;
 
 /// `n` values at `ptr` (any pointer when n = 0); NULL with n > 0 is an error naming `name`.
@@ -92,39 +92,21 @@ pub fn with_instance<M: Model>(
     // fmi3InstantiateCoSimulation (Box::into_raw, [`crate::calls::create`]) and not yet freed, and
     // the master calls one instance's functions one at a time (FMI 2.0.4 §2.1.5, FMI 3.0 §2.3).
     let instance = unsafe { &mut *c.cast::<Instance<M>>() };
-    let version = instance.version;
+    let version = instance.version();
     let name = || call.name(version);
     let result = catch_unwind(AssertUnwindSafe(|| {
-        if instance.poisoned && call != Call::Reset {
-            return Err(FmuError::Invalid(format!(
-                "{}: the instance is unusable after an internal error; call {p}Reset or {p}FreeInstance",
-                name(),
-                p = version.prefix()
-            )));
-        }
-        if !call.allowed().contains(&instance.state) {
-            return Err(match &instance.cause {
-                Some(cause) => FmuError::Invalid(format!(
-                    "Illegal call sequence. The instance is in the {:?} state since: {cause}",
-                    instance.state
-                )),
-                None => FmuError::IllegalCall(name()),
-            });
-        }
-        f(instance)
+        instance.machine().admit(call, version)?;
+        let status = f(instance)?;
+        instance.succeeded(call);
+        Ok(status)
     }));
+    let (logger, machine) = instance.logger_and_machine();
     match result {
-        Ok(Ok(status)) => {
-            if !matches!(instance.state, State::Error | State::StepFailed) {
-                instance.cause = None;
-            }
-            status
-        }
+        Ok(Ok(status)) => status,
         Ok(Err(e @ FmuError::Discard { .. })) => {
             let message = format!("{}: {e}", name());
-            instance.logger.discard(&message);
-            instance.cause = Some(message);
-            instance.state = State::StepFailed;
+            logger.discard(&message);
+            machine.discarded(message);
             Status::Discard
         }
         Ok(Err(e)) => {
@@ -132,22 +114,17 @@ pub fn with_instance<M: Model>(
                 FmuError::IllegalCall(_) => e.to_string(),
                 _ => format!("{}: {e}", name()),
             };
-            instance.logger.error(&message);
-            if instance.state != State::Error {
-                instance.cause = Some(message);
-            }
-            instance.state = State::Error;
+            logger.error(&message);
+            machine.failed(message);
             Status::Error
         }
         Err(payload) => {
-            instance.logger.error(&format!(
+            logger.error(&format!(
                 "{}: internal error: {}",
                 name(),
                 panic_text(&*payload)
             ));
-            instance.poisoned = true;
-            instance.cause = Some(format!("{}: internal error", name()));
-            instance.state = State::Error;
+            machine.poison(format!("{}: internal error", name()));
             Status::Error
         }
     }

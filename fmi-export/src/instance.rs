@@ -2,7 +2,9 @@
 //! machine, the clock and the inputs — the calls every FMI version makes on it, and the framing of
 //! its serialized states.
 
-use crate::checks::check_settable;
+use crate::checks::{
+    check_set_boolean, check_set_integer, check_set_real, check_set_string, check_settable,
+};
 use crate::codec::{ByteReader, ByteWriter};
 use crate::error::FmuError;
 use crate::experiment::{Clock, Step, StepOutcome};
@@ -11,8 +13,10 @@ use crate::logger::Logger;
 use crate::model::{Context, Model, Var};
 use crate::number::Num;
 use crate::signal::{InputRecord, InputValues};
-use crate::state::{State, Version};
+use crate::state::{Call, Machine, State, Succeeded, Version};
 use crate::table::{Causality, Kind, ValueReference};
+use std::ffi::CString;
+use std::path::PathBuf;
 
 /// The [`Context`] of an instance (a macro, so that the model may be borrowed mutably beside it).
 macro_rules! context {
@@ -26,49 +30,71 @@ macro_rules! context {
     };
 }
 
-/// One FMU instance.
+/// One FMU instance. Its fields are its own: the exported functions reach them through its
+/// methods, and its state only through its [`Machine`].
 #[derive(Debug)]
 pub struct Instance<M: Model> {
     /// The master's logger.
-    pub logger: Logger,
-    /// State-machine state.
-    pub state: State,
-    /// Set after a caught panic: only Reset and FreeInstance are accepted.
-    pub poisoned: bool,
-    /// The message of the event that put the instance in the Error or StepFailed state (the
-    /// first error, the discarded step), for the calls refused there.
-    pub cause: Option<String>,
+    logger: Logger,
+    /// Its place in the state machine.
+    machine: Machine,
     /// The model.
-    pub model: M,
+    model: M,
     /// The experiment and the communication clock.
-    pub clock: Clock,
+    clock: Clock,
     /// The inputs: what the master set for the next step, and what the last step ran with.
-    pub inputs: InputRecord<M::Inputs>,
-    /// The variables of the current call, resolved from its value references ([`crate::checks::resolve`]).
-    pub variables: Vec<Var<M::Vr>>,
+    inputs: InputRecord<M::Inputs>,
+    /// The variables of the current call, resolved from its value references ([`Instance::resolve`]).
+    variables: Vec<Var<M::Vr>>,
     /// The String values GetString returned last: the master may read them until the next
     /// call on this instance.
-    pub strings: Vec<std::ffi::CString>,
-    /// The FMU's resources directory, from the instantiation (given to every new model).
-    pub resources: Option<std::path::PathBuf>,
-    /// The FMI version it was instantiated through.
-    pub version: Version,
-    /// FMI 3: whether the master allows fmi3DoStep to return early (earlyReturnAllowed).
-    pub early_return_allowed: bool,
-    /// FMI 3: whether the master handles the model's events in Event Mode (eventModeUsed).
-    pub event_mode_used: bool,
-    /// FMI 3: the master's intermediate-update callback and its environment, for a model that
-    /// provides intermediate update.
-    pub intermediate_update: Option<IntermediateUpdate>,
+    strings: Vec<CString>,
     /// Integers of the current call in the model's representation (FMI 3's Int64 switches and
     /// Booleans); its capacity is reused.
-    pub integers: Vec<i32>,
-    /// FMI 3: the values of the model's structural parameters ([`Model::FMI3`]), set in
-    /// Configuration Mode; they size its arrays.
-    pub structural: Vec<u64>,
-    /// FMI 3: the interface of the description the instance was instantiated with
+    integers: Vec<i32>,
+    /// The FMU's resources directory, from the instantiation (given to every new model).
+    resources: Option<PathBuf>,
+    /// The FMI version it was instantiated through.
+    version: Version,
+    /// What FMI 3 adds.
+    fmi3: Fmi3Session,
+}
+
+/// What an FMI 3 instance holds beyond FMI 2's: the interface of its description, its structural
+/// parameters, and what the master chose at instantiation.
+#[derive(Debug)]
+pub struct Fmi3Session {
+    /// The interface of the description the instance was instantiated with
     /// ([`Model::FMI3_TOKENS`]).
-    pub fmi3: Fmi3Interface,
+    pub interface: Fmi3Interface,
+    /// The values of the model's structural parameters, set in Configuration Mode; they size
+    /// its arrays.
+    pub structural: Vec<u64>,
+    /// Whether the master allows fmi3DoStep to return early (earlyReturnAllowed).
+    pub early_return_allowed: bool,
+    /// Whether the master handles the model's events in Event Mode (eventModeUsed).
+    pub event_mode_used: bool,
+    /// The master's intermediate-update callback and its environment, for a model that provides
+    /// intermediate update.
+    pub intermediate_update: Option<IntermediateUpdate>,
+}
+
+impl Fmi3Session {
+    /// The session of `interface`: its structural parameters at their start values, nothing
+    /// chosen.
+    fn new(interface: Fmi3Interface) -> Self {
+        Self {
+            interface,
+            structural: interface
+                .structural_parameters
+                .iter()
+                .map(|p| p.start)
+                .collect(),
+            early_return_allowed: false,
+            event_mode_used: false,
+            intermediate_update: None,
+        }
+    }
 }
 
 /// The master's FMI 3 intermediate-update callback with the environment it is called with.
@@ -108,52 +134,112 @@ pub fn state_checksum(bytes: &[u8]) -> u64 {
 }
 
 impl<M: Model> Instance<M> {
-    /// A fresh instance with the start values, its model told the FMU's resources directory.
-    pub fn new(logger: Logger, resources: Option<std::path::PathBuf>) -> Self {
+    /// A fresh instance of FMI `version` with the start values, its model told the FMU's
+    /// resources directory, serving the FMI 3 interface `fmi3`.
+    pub fn new(
+        logger: Logger,
+        resources: Option<PathBuf>,
+        version: Version,
+        fmi3: Fmi3Interface,
+    ) -> Self {
         let mut model = M::new();
         model.set_resource_directory(resources.clone());
         Self {
             logger,
-            state: State::Instantiated,
-            poisoned: false,
-            cause: None,
+            machine: Machine::default(),
             model,
             clock: Clock::default(),
             inputs: Self::start_inputs(),
             variables: Vec::new(),
             strings: Vec::new(),
-            resources,
-            version: Version::Fmi2,
-            early_return_allowed: false,
-            event_mode_used: false,
-            intermediate_update: None,
             integers: Vec::new(),
-            structural: Self::structural_starts(M::FMI3),
-            fmi3: M::FMI3,
+            resources,
+            version,
+            fmi3: Fmi3Session::new(fmi3),
         }
     }
 
-    /// The start values of the structural parameters of `fmi3`.
-    fn structural_starts(fmi3: Fmi3Interface) -> Vec<u64> {
-        fmi3.structural_parameters.iter().map(|p| p.start).collect()
+    /// The master's logger.
+    pub fn logger(&self) -> &Logger {
+        &self.logger
     }
 
-    /// Serves the FMI 3 interface `fmi3` (the one of the description it was instantiated with).
-    pub fn serve(&mut self, fmi3: Fmi3Interface) {
-        self.fmi3 = fmi3;
-        self.structural = Self::structural_starts(fmi3);
+    /// The master's logger, to switch its debug logging.
+    pub fn logger_mut(&mut self) -> &mut Logger {
+        &mut self.logger
+    }
+
+    /// Its place in the state machine.
+    pub fn machine(&self) -> &Machine {
+        &self.machine
+    }
+
+    /// The logger and the state machine, to record how a call ended.
+    pub fn logger_and_machine(&mut self) -> (&Logger, &mut Machine) {
+        (&self.logger, &mut self.machine)
+    }
+
+    /// `call` succeeded: the state it leads to ([`Machine::succeeded`]).
+    pub fn succeeded(&mut self, call: Call) {
+        let how = Succeeded {
+            event_mode: self.fmi3.event_mode_used,
+            paused: self.clock.is_paused(),
+        };
+        self.machine.succeeded(call, how);
+    }
+
+    /// The FMI version it was instantiated through.
+    pub fn version(&self) -> Version {
+        self.version
+    }
+
+    /// The experiment and the clock.
+    pub fn clock(&self) -> &Clock {
+        &self.clock
+    }
+
+    /// What FMI 3 adds.
+    pub fn fmi3(&self) -> &Fmi3Session {
+        &self.fmi3
+    }
+
+    /// What FMI 3 adds, to change (at instantiation, in Configuration Mode).
+    pub fn fmi3_mut(&mut self) -> &mut Fmi3Session {
+        &mut self.fmi3
+    }
+
+    /// Resolves `vrs` to the model's variables of FMI type `base`, the variables of the call
+    /// ([`crate::checks::lookup`]).
+    pub fn resolve(&mut self, vrs: &[u32], base: &str) -> Result<(), FmuError> {
+        self.resolve_by(vrs, |vr| crate::checks::lookup(M::VARIABLES, vr, base))
+    }
+
+    /// Makes `variable(vr)` of each of `vrs` the variables of the call (the vector's capacity is
+    /// reused, so that a call allocates only when it names more variables than any before).
+    pub fn resolve_by(
+        &mut self,
+        vrs: &[u32],
+        variable: impl Fn(u32) -> Result<Var<M::Vr>, FmuError>,
+    ) -> Result<(), FmuError> {
+        self.variables.clear();
+        for &vr in vrs {
+            self.variables.push(variable(vr)?);
+        }
+        Ok(())
+    }
+
+    /// The variables of the call.
+    pub fn variables(&self) -> &[Var<M::Vr>] {
+        &self.variables
     }
 
     /// Reset: back to Instantiated with every start value.
     pub fn reset(&mut self) {
-        self.state = State::Instantiated;
-        self.poisoned = false;
-        self.cause = None;
         self.model = M::new();
         self.model.set_resource_directory(self.resources.clone());
         self.clock = Clock::default();
         self.inputs = Self::start_inputs();
-        self.structural = Self::structural_starts(self.fmi3);
+        self.fmi3.structural = Fmi3Session::new(self.fmi3.interface).structural;
     }
 
     /// The model's input variables, in table order.
@@ -235,17 +321,100 @@ impl<M: Model> Instance<M> {
         self.model.get_real(&context!(self), &self.variables, value)
     }
 
-    /// SetReal, SetFloat64 of the variables of the call, checked ([`crate::checks::check_set_real`]):
-    /// the inputs kept here, the others set in the model.
+    /// SetReal, SetFloat64 of the variables of the call, checked first
+    /// ([`crate::checks::check_set_real`]): the inputs kept here, the others set in the model.
     pub fn set_real(&mut self, value: &[f64]) -> Result<(), FmuError> {
+        let current = self.machine.state();
+        check_set_real(current, &self.variables, value)?;
         for (&v, &x) in self.variables.iter().zip(value) {
             if v.causality == Causality::Input {
                 self.inputs.set_value(Self::input_index(v)?, x);
             } else {
-                self.model.set_real(self.state, &[v], &[x])?;
+                self.model.set_real(current, &[v], &[x])?;
             }
         }
         Ok(())
+    }
+
+    /// SetInteger (FMI 3: SetInt32) of the variables of the call, checked first
+    /// ([`crate::checks::check_set_integer`]).
+    pub fn set_integer(&mut self, value: &[i32]) -> Result<(), FmuError> {
+        let current = self.machine.state();
+        check_set_integer::<M>(current, &self.variables, value)?;
+        self.model.set_integer(current, &self.variables, value)
+    }
+
+    /// FMI 3 SetInt64 and SetBoolean of the variables of the call: each value made the model's
+    /// integer by `convert` (which refuses what it cannot be), then set as [`Instance::set_integer`]
+    /// (`boolean`: as Booleans).
+    pub fn set_converted<T: Copy>(
+        &mut self,
+        value: &[T],
+        boolean: bool,
+        convert: impl Fn(Var<M::Vr>, T) -> Result<i32, FmuError>,
+    ) -> Result<(), FmuError> {
+        let mut integers = std::mem::take(&mut self.integers);
+        integers.clear();
+        for (&v, &x) in self.variables.iter().zip(value) {
+            integers.push(convert(v, x)?);
+        }
+        let current = self.machine.state();
+        let set = if boolean {
+            check_set_boolean(current, &self.variables)
+                .and_then(|()| self.model.set_boolean(current, &self.variables, &integers))
+        } else {
+            self.set_integer(&integers)
+        };
+        self.integers = integers;
+        set
+    }
+
+    /// SetBoolean of the variables of the call, checked first.
+    pub fn set_boolean(&mut self, value: &[i32]) -> Result<(), FmuError> {
+        let current = self.machine.state();
+        check_set_boolean(current, &self.variables)?;
+        self.model.set_boolean(current, &self.variables, value)
+    }
+
+    /// SetString of the variables of the call, checked first.
+    pub fn set_string(&mut self, value: &[&str]) -> Result<(), FmuError> {
+        let current = self.machine.state();
+        check_set_string(current, &self.variables)?;
+        self.model.set_string(current, &self.variables, value)
+    }
+
+    /// GetString of the variables of the call: the values, valid until the next call on the
+    /// instance.
+    pub fn get_string(&mut self) -> Result<&[CString], FmuError> {
+        let mut texts = Vec::with_capacity(self.variables.len());
+        self.model.get_string(&self.variables, &mut texts)?;
+        self.strings = texts
+            .into_iter()
+            .map(|t| CString::new(t.replace('\0', "")).unwrap_or_default())
+            .collect();
+        Ok(&self.strings)
+    }
+
+    /// The model's FMI 3 integers of the call, converted by `convert` from the model's.
+    pub fn get_converted<T>(
+        &mut self,
+        value: &mut [T],
+        boolean: bool,
+        convert: impl Fn(i32) -> T,
+    ) -> Result<(), FmuError> {
+        let mut integers = std::mem::take(&mut self.integers);
+        integers.clear();
+        integers.resize(value.len(), 0);
+        let got = if boolean {
+            self.get_boolean(&mut integers)
+        } else {
+            self.get_integer(&mut integers)
+        };
+        for (v, &n) in value.iter_mut().zip(&integers) {
+            *v = convert(n);
+        }
+        self.integers = integers;
+        got
     }
 
     /// Checks that the `order`-th derivative (1 or 2) of the `k`-th input may be set to `x` now:
@@ -254,7 +423,7 @@ impl<M: Model> Instance<M> {
         let input = Self::input_variables()
             .nth(k)
             .ok_or_else(|| FmuError::Invalid(format!("no input {k}")))?;
-        check_settable(self.state, input)?;
+        check_settable(self.machine.state(), input)?;
         if !x.is_finite() {
             return Err(FmuError::Invalid(format!(
                 "the derivative of order {order} of {} = {} is not finite",
@@ -280,10 +449,16 @@ impl<M: Model> Instance<M> {
         reading.derivatives[order as usize - 1].value(k)
     }
 
-    /// SetRealInputDerivatives, SetInputDerivatives of the variables of the call, checked
+    /// fmi2SetRealInputDerivatives of the inputs `vr`, checked first
     /// ([`crate::checks::check_input_derivatives`]): the `order`-th derivatives at the current
     /// communication point, for the next step.
-    pub fn set_input_derivatives(&mut self, order: &[i32], value: &[f64]) -> Result<(), FmuError> {
+    pub fn set_input_derivatives(
+        &mut self,
+        vr: &[u32],
+        order: &[i32],
+        value: &[f64],
+    ) -> Result<(), FmuError> {
+        crate::checks::check_input_derivatives::<M>(vr, order, value, &mut self.variables)?;
         for ((&v, &order), &x) in self.variables.iter().zip(order).zip(value) {
             let k = Self::input_index(v)?;
             usize::try_from(order)
@@ -338,7 +513,12 @@ impl<M: Model> Instance<M> {
         let mut out = Vec::with_capacity(1024);
         out.extend_from_slice(&M::STATE_MAGIC);
         out.extend_from_slice(&M::STATE_VERSION.to_le_bytes());
-        out.push(STATES.iter().position(|s| *s == self.state).unwrap_or(0) as u8);
+        out.push(
+            STATES
+                .iter()
+                .position(|s| *s == self.machine.state())
+                .unwrap_or(0) as u8,
+        );
         self.clock.write(&mut ByteWriter(&mut out));
         self.inputs.write(&mut ByteWriter(&mut out));
         self.model.save(&mut out);
@@ -371,7 +551,7 @@ impl<M: Model> Instance<M> {
                 M::STATE_VERSION
             )));
         }
-        let state = *STATES
+        let saved = *STATES
             .get(usize::from(body[8]))
             .ok_or_else(|| bad("invalid state".into()))?;
         let mut reader = ByteReader::new(&body[9..]);
@@ -393,7 +573,7 @@ impl<M: Model> Instance<M> {
         };
         self.model.load(&cx, model, apply)?;
         if apply {
-            self.state = state;
+            self.machine.restore(saved);
             self.clock = clock;
             self.inputs = inputs;
         }

@@ -54,10 +54,11 @@ pub trait Model: Sized + 'static {
     const MAX_INPUT_DERIVATIVE_ORDER: u32 = 0;
     /// What its FMI 3 interface adds to the table: capabilities, structural parameters, arrays.
     const FMI3: Fmi3Interface = Fmi3Interface::NONE;
-    /// The instantiation tokens of its FMI 3 descriptions: the one of [`Model::FMI3`], and the
-    /// one without arrays ([`Fmi3Interface::scalar`]; the same for a model without arrays). An
-    /// instance serves the interface of the token it was instantiated with.
-    const FMI3_TOKENS: [&'static str; 2] = [Self::GUID, Self::GUID];
+    /// The instantiation tokens of its FMI 3 descriptions (their hashes, as its build script
+    /// writes them): the one of [`Model::FMI3`], and the one without arrays
+    /// ([`Fmi3Interface::scalar`]; the same for a model without arrays). An instance serves the
+    /// interface of the token it was instantiated with.
+    const FMI3_TOKENS: [&'static str; 2];
 
     /// A model with every start value (instantiation, Reset).
     fn new() -> Self;

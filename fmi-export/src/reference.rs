@@ -10,13 +10,12 @@
 
 use std::fmt::Write as _;
 
-use crate::checks::{check_set_integer, check_set_real, check_set_string, lookup};
 use crate::error::FmuError;
 use crate::experiment::Step;
 use crate::instance::Instance;
 use crate::logger::Logger;
 use crate::model::{Model, Var};
-use crate::state::State;
+use crate::state::{Call, Version};
 use crate::table::{Causality, Kind, ValueReference};
 
 /// A fixed-step experiment with constant inputs.
@@ -54,7 +53,12 @@ impl<M: Model> Slave<M> {
     /// A new instance with every start value.
     pub fn new() -> Self {
         Self {
-            instance: Instance::new(Logger::silent(M::LOG_CATEGORIES), None),
+            instance: Instance::new(
+                Logger::silent(M::LOG_CATEGORIES),
+                None,
+                Version::Fmi2,
+                M::FMI3,
+            ),
         }
     }
 
@@ -76,13 +80,11 @@ impl<M: Model> Slave<M> {
 
     /// Makes the variables of `names` those of the next call, resolved as type `base`.
     fn call_on(&mut self, names: &[&str], base: &str) -> Result<(), FmuError> {
-        let inst = &mut self.instance;
-        inst.variables.clear();
-        for name in names {
-            let v = lookup(M::VARIABLES, Self::variable(name)?.vr.index(), base)?;
-            inst.variables.push(v);
-        }
-        Ok(())
+        let vrs = names
+            .iter()
+            .map(|name| Ok(Self::variable(name)?.vr.index()))
+            .collect::<Result<Vec<_>, FmuError>>()?;
+        self.instance.resolve(&vrs, base)
     }
 
     /// fmi2SetupExperiment.
@@ -97,17 +99,14 @@ impl<M: Model> Slave<M> {
 
     /// fmi2EnterInitializationMode.
     pub fn enter_initialization(&mut self) {
-        self.instance.state = State::InitializationMode;
+        self.instance.succeeded(Call::EnterInitializationMode);
     }
 
     /// Sets a Real variable, or an Integer one to `value` (a whole number).
     pub fn set(&mut self, name: &str, value: f64) -> Result<(), FmuError> {
-        let v = Self::variable(name)?;
-        let state = self.instance.state;
-        match v.kind {
+        match Self::variable(name)?.kind {
             Kind::Real { .. } => {
                 self.call_on(&[name], "Real")?;
-                check_set_real(state, &[v], &[value])?;
                 self.instance.set_real(&[value])
             }
             _ => {
@@ -117,8 +116,8 @@ impl<M: Model> Slave<M> {
                         "{name} = {value} is not a whole number"
                     )));
                 }
-                check_set_integer::<M>(state, &[v], &[n])?;
-                self.instance.model.set_integer(state, &[v], &[n])
+                self.call_on(&[name], "Integer")?;
+                self.instance.set_integer(&[n])
             }
         }
     }
@@ -126,16 +125,15 @@ impl<M: Model> Slave<M> {
     /// fmi2SetRealInputDerivatives of the input `name`: its first and second time derivatives at
     /// the current point, for the next step.
     pub fn set_derivatives(&mut self, name: &str, derivatives: [f64; 2]) -> Result<(), FmuError> {
-        self.call_on(&[name, name], "Real")?;
-        self.instance.set_input_derivatives(&[1, 2], &derivatives)
+        let vr = Self::variable(name)?.vr.index();
+        self.instance
+            .set_input_derivatives(&[vr, vr], &[1, 2], &derivatives)
     }
 
     /// Sets a String variable.
     pub fn set_string(&mut self, name: &str, value: &str) -> Result<(), FmuError> {
-        let v = Self::variable(name)?;
-        let state = self.instance.state;
-        check_set_string(state, &[v])?;
-        self.instance.model.set_string(state, &[v], &[value])
+        self.call_on(&[name], "String")?;
+        self.instance.set_string(&[value])
     }
 
     /// The values of the Real variables `names`.
@@ -204,7 +202,7 @@ impl<M: Model> Slave<M> {
     /// fmi2ExitInitializationMode.
     pub fn exit_initialization(&mut self) -> Result<(), FmuError> {
         self.instance.exit_initialization()?;
-        self.instance.state = State::StepComplete;
+        self.instance.succeeded(Call::ExitInitializationMode);
         Ok(())
     }
 

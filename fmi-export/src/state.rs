@@ -3,6 +3,8 @@
 //!
 //! `StepInProgress` and `StepCanceled` never occur: the FMU is synchronous (no `fmi2Pending`).
 
+use crate::error::FmuError;
+
 /// States of an instance.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum State {
@@ -115,6 +117,111 @@ use State::{
     ConfigurationMode, Error, EventMode, InitializationMode, Instantiated, IntermediateUpdate,
     StepComplete, StepFailed, Terminated,
 };
+
+/// An instance's place in the state machine: its state, whether a caught panic poisoned it (only
+/// Reset and FreeInstance are accepted then), and what put it in the Error or StepFailed state
+/// (the first error, the discarded step), for the calls refused there. Every change of state is
+/// one of this module's: [`Call::allowed`] says where a call may be made, [`Call::leads_to`] where
+/// it goes when it succeeds.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Machine {
+    state: State,
+    poisoned: bool,
+    cause: Option<String>,
+}
+
+impl Default for Machine {
+    /// Instantiated, not poisoned.
+    fn default() -> Self {
+        Self {
+            state: Instantiated,
+            poisoned: false,
+            cause: None,
+        }
+    }
+}
+
+impl Machine {
+    /// The state.
+    pub fn state(&self) -> State {
+        self.state
+    }
+
+    /// Whether `call` (named `name` in messages, of FMI `version`) may be made now: not on a
+    /// poisoned instance but Reset, and only in a state where the table allows it (the refusal
+    /// then names what put the instance there, if anything did).
+    pub fn admit(&self, call: Call, version: Version) -> Result<(), FmuError> {
+        let name = call.name(version);
+        if self.poisoned && call != Call::Reset {
+            return Err(FmuError::Invalid(format!(
+                "{name}: the instance is unusable after an internal error; call {p}Reset or \
+                 {p}FreeInstance",
+                p = version.prefix()
+            )));
+        }
+        if call.allowed().contains(&self.state) {
+            return Ok(());
+        }
+        Err(match &self.cause {
+            Some(cause) => FmuError::Invalid(format!(
+                "Illegal call sequence. The instance is in the {:?} state since: {cause}",
+                self.state
+            )),
+            None => FmuError::IllegalCall(name),
+        })
+    }
+
+    /// `call` succeeded: the state it leads to ([`Call::leads_to`]); out of Error and StepFailed
+    /// the cause is forgotten.
+    pub fn succeeded(&mut self, call: Call, how: Succeeded) {
+        if call == Call::Reset {
+            *self = Self::default();
+            return;
+        }
+        if let Some(state) = call.leads_to(how) {
+            self.state = state;
+        }
+        if !matches!(self.state, Error | StepFailed) {
+            self.cause = None;
+        }
+    }
+
+    /// A step was discarded (`message` says why): StepFailed.
+    pub fn discarded(&mut self, message: String) {
+        self.cause = Some(message);
+        self.state = StepFailed;
+    }
+
+    /// A call failed (`message` says why): Error, its cause the first error.
+    pub fn failed(&mut self, message: String) {
+        if self.state != Error {
+            self.cause = Some(message);
+        }
+        self.state = Error;
+    }
+
+    /// A call panicked (`message` names it): Error, poisoned.
+    pub fn poison(&mut self, message: String) {
+        self.poisoned = true;
+        self.cause = Some(message);
+        self.state = Error;
+    }
+
+    /// A restored FMU state's machine state (SetFMUState).
+    pub fn restore(&mut self, state: State) {
+        self.state = state;
+        self.cause = None;
+    }
+}
+
+/// How a call that changes state succeeded, where that decides the state it leads to.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Succeeded {
+    /// FMI 3: the master uses Event Mode (eventModeUsed): initialization ends in Event Mode.
+    pub event_mode: bool,
+    /// FMI 3: the step paused inside for the master's intermediate update.
+    pub paused: bool,
+}
 
 /// Every state: the logging switch and the refusals of what the FMU lacks work everywhere.
 const EVERYWHERE: &[State] = &[
@@ -230,6 +337,27 @@ impl Call {
             | Call::GetIntegerStatus
             | Call::GetBooleanStatus
             | Call::GetStringStatus => &[StepComplete, StepFailed, Terminated],
+        }
+    }
+
+    /// The state a call that succeeded leads to (None: it stays where it is); `how` it succeeded
+    /// decides where initialization ends (FMI 3's Event Mode) and whether a step paused inside
+    /// (FMI 3's Intermediate Update Mode). Reset leads to Instantiated with every start value
+    /// ([`Machine::succeeded`]).
+    pub fn leads_to(self, how: Succeeded) -> Option<State> {
+        match self {
+            Call::EnterInitializationMode => Some(InitializationMode),
+            Call::ExitInitializationMode if how.event_mode => Some(EventMode),
+            Call::DoStep | Call::ResumeStep if how.paused => Some(IntermediateUpdate),
+            Call::ExitInitializationMode
+            | Call::EnterStepMode
+            | Call::DoStep
+            | Call::ResumeStep => Some(StepComplete),
+            Call::Terminate => Some(Terminated),
+            Call::EnterConfigurationMode => Some(ConfigurationMode),
+            Call::Reset | Call::ExitConfigurationMode => Some(Instantiated),
+            Call::EnterEventMode => Some(EventMode),
+            _ => None,
         }
     }
 

@@ -99,6 +99,7 @@ struct Lag {
 
 impl Model for Lag {
     const GUID: &'static str = "{tiny-lag}";
+    const FMI3_TOKENS: [&'static str; 2] = ["{tiny-lag-3}", "{tiny-lag-3}"];
     const LOG_CATEGORIES: &'static [(&'static str, &'static str)] =
         &[("logEvents", "events"), ("logStatusError", "errors")];
     const STATE_MAGIC: [u8; 4] = *b"TLAG";
@@ -240,7 +241,7 @@ const ERROR: u32 = 3;
 fn instantiate3(name: &str, early_return: bool) -> *mut std::ffi::c_void {
     let (name, token) = (
         CString::new(name).unwrap(),
-        CString::new(Lag::GUID).unwrap(),
+        CString::new(Lag::FMI3_TOKENS[0]).unwrap(),
     );
     // SAFETY: NUL-terminated strings that outlive the call.
     let c = unsafe {

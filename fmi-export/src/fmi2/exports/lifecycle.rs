@@ -11,7 +11,7 @@ use crate::calls;
 use crate::ffi::{slice, string};
 use crate::logger::Logger;
 use crate::model::Model;
-use crate::state::{Call, State, Version};
+use crate::state::{Call, Version};
 use crate::status::{Status, ok};
 
 /// Returns "default".
@@ -115,18 +115,13 @@ pub unsafe fn fmi2SetupExperiment<M: Model>(
 
 /// Enters initialization mode.
 pub unsafe fn fmi2EnterInitializationMode<M: Model>(c: fmi2Component) -> fmi2Status {
-    with_instance::<M>(c, Call::EnterInitializationMode, |inst| {
-        inst.state = State::InitializationMode;
-        Ok(Status::Ok)
-    })
+    with_instance::<M>(c, Call::EnterInitializationMode, |_| Ok(Status::Ok))
 }
 
 /// Builds the model from the parameters; outputs are valid afterwards.
 pub unsafe fn fmi2ExitInitializationMode<M: Model>(c: fmi2Component) -> fmi2Status {
     with_instance::<M>(c, Call::ExitInitializationMode, |inst| {
-        inst.exit_initialization()?;
-        inst.state = State::StepComplete;
-        Ok(Status::Ok)
+        inst.exit_initialization().map(ok)
     })
 }
 

@@ -43,7 +43,7 @@ pub unsafe fn fmi2GetStatus<M: Model>(
     with_instance::<M>(c, Call::GetStatus, |inst| {
         // SAFETY: one writable value (FMI 2.0.4 §4.2.3).
         let _ = unsafe { slice_mut(value, 1, "value") }?;
-        inst.logger
+        inst.logger()
             .warning("fmi2GetStatus: no asynchronous step; status kinds are not available");
         Ok(Status::Discard)
     })
@@ -59,7 +59,7 @@ pub unsafe fn fmi2GetRealStatus<M: Model>(
         // SAFETY: one writable value (FMI 2.0.4 §4.2.3).
         let value = unsafe { slice_mut(value, 1, "value") }?;
         if s == fmi2StatusKind_fmi2LastSuccessfulTime {
-            value[0] = inst.clock.last_successful_time;
+            value[0] = inst.clock().last_successful_time;
             Ok(Status::Ok)
         } else {
             Ok(Status::Discard)

@@ -5,9 +5,6 @@ use fmi_sys::fmi2::*;
 
 use super::codes::with_instance;
 use crate::calls;
-use crate::checks::{
-    check_input_derivatives, check_set_boolean, check_set_integer, check_set_real, resolve,
-};
 use crate::ffi::{slice, slice_mut};
 use crate::model::{Model, no_input_derivatives};
 use crate::state::Call;
@@ -23,7 +20,7 @@ pub unsafe fn fmi2GetReal<M: Model>(
     with_instance::<M>(c, Call::GetReal, |inst| {
         // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
         let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?) };
-        resolve::<M>(vr, "Real", &mut inst.variables)?;
+        inst.resolve(vr, "Real")?;
         inst.get_real(value).map(ok)
     })
 }
@@ -38,7 +35,7 @@ pub unsafe fn fmi2GetInteger<M: Model>(
     with_instance::<M>(c, Call::GetInteger, |inst| {
         // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
         let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?) };
-        resolve::<M>(vr, "Integer", &mut inst.variables)?;
+        inst.resolve(vr, "Integer")?;
         inst.get_integer(value).map(ok)
     })
 }
@@ -53,7 +50,7 @@ pub unsafe fn fmi2GetBoolean<M: Model>(
     with_instance::<M>(c, Call::GetBoolean, |inst| {
         // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
         let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?) };
-        resolve::<M>(vr, "Boolean", &mut inst.variables)?;
+        inst.resolve(vr, "Boolean")?;
         inst.get_boolean(value).map(ok)
     })
 }
@@ -82,8 +79,7 @@ pub unsafe fn fmi2SetReal<M: Model>(
     with_instance::<M>(c, Call::SetReal, |inst| {
         // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
         let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice(value, nvr, "value")?) };
-        resolve::<M>(vr, "Real", &mut inst.variables)?;
-        check_set_real(inst.state, &inst.variables, value)?;
+        inst.resolve(vr, "Real")?;
         inst.set_real(value).map(ok)
     })
 }
@@ -98,11 +94,8 @@ pub unsafe fn fmi2SetInteger<M: Model>(
     with_instance::<M>(c, Call::SetInteger, |inst| {
         // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
         let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice(value, nvr, "value")?) };
-        resolve::<M>(vr, "Integer", &mut inst.variables)?;
-        check_set_integer::<M>(inst.state, &inst.variables, value)?;
-        inst.model
-            .set_integer(inst.state, &inst.variables, value)
-            .map(ok)
+        inst.resolve(vr, "Integer")?;
+        inst.set_integer(value).map(ok)
     })
 }
 
@@ -116,11 +109,8 @@ pub unsafe fn fmi2SetBoolean<M: Model>(
     with_instance::<M>(c, Call::SetBoolean, |inst| {
         // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
         let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice(value, nvr, "value")?) };
-        resolve::<M>(vr, "Boolean", &mut inst.variables)?;
-        check_set_boolean(inst.state, &inst.variables)?;
-        inst.model
-            .set_boolean(inst.state, &inst.variables, value)
-            .map(ok)
+        inst.resolve(vr, "Boolean")?;
+        inst.set_boolean(value).map(ok)
     })
 }
 
@@ -192,8 +182,7 @@ pub unsafe fn fmi2SetRealInputDerivatives<M: Model>(
         if M::MAX_INPUT_DERIVATIVE_ORDER == 0 {
             return Err(no_input_derivatives());
         }
-        check_input_derivatives::<M>(vr, order, value, &mut inst.variables)?;
-        inst.set_input_derivatives(order, value).map(ok)
+        inst.set_input_derivatives(vr, order, value).map(ok)
     })
 }
 

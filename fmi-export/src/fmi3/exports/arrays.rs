@@ -6,7 +6,7 @@
 use fmi_sys::fmi3::*;
 
 use super::codes::with_instance;
-use crate::checks::{lookup, resolve};
+use crate::checks::lookup;
 use crate::error::FmuError;
 use crate::ffi::{slice, slice_mut};
 use crate::fmi3::description::TIME_VALUE_REFERENCE;
@@ -33,22 +33,18 @@ pub(super) fn scalars(n_value_references: usize, n_values: usize) -> Result<(), 
 /// Enters Configuration Mode, where the structural parameters are set.
 pub unsafe fn fmi3EnterConfigurationMode<M: Model>(instance: fmi3Instance) -> fmi3Status {
     with_instance::<M>(instance, Call::EnterConfigurationMode, |inst| {
-        if inst.fmi3.structural_parameters.is_empty() {
+        if inst.fmi3().interface.structural_parameters.is_empty() {
             return Err(FmuError::Invalid(
                 "not supported: the FMU has no structural parameters".into(),
             ));
         }
-        inst.state = State::ConfigurationMode;
         Ok(Status::Ok)
     })
 }
 
 /// Leaves Configuration Mode: the structural parameters are fixed from here on.
 pub unsafe fn fmi3ExitConfigurationMode<M: Model>(instance: fmi3Instance) -> fmi3Status {
-    with_instance::<M>(instance, Call::ExitConfigurationMode, |inst| {
-        inst.state = State::Instantiated;
-        Ok(Status::Ok)
-    })
+    with_instance::<M>(instance, Call::ExitConfigurationMode, |_| Ok(Status::Ok))
 }
 
 /// Reads structural parameters.
@@ -70,7 +66,7 @@ pub unsafe fn fmi3GetUInt64<M: Model>(
         };
         for (&r, value) in vr.iter().zip(values) {
             let (index, _) = structural(inst, r)?;
-            *value = inst.structural[index];
+            *value = inst.fmi3().structural[index];
         }
         Ok(Status::Ok)
     })
@@ -96,11 +92,12 @@ pub unsafe fn fmi3SetUInt64<M: Model>(
         };
         for (&r, &value) in vr.iter().zip(values) {
             let (_, p) = structural(inst, r)?;
-            if inst.state != State::ConfigurationMode {
+            let current = inst.machine().state();
+            if current != State::ConfigurationMode {
                 return Err(FmuError::Invalid(format!(
                     "{} is a structural parameter: it is set in Configuration Mode only \
                      (fmi3EnterConfigurationMode), not in the {:?} state",
-                    p.name, inst.state
+                    p.name, current
                 )));
             }
             if !(p.min..=p.max).contains(&value) {
@@ -112,7 +109,7 @@ pub unsafe fn fmi3SetUInt64<M: Model>(
         }
         for (&r, &value) in vr.iter().zip(values) {
             let index = structural(inst, r)?.0;
-            inst.structural[index] = value;
+            inst.fmi3_mut().structural[index] = value;
         }
         Ok(Status::Ok)
     })
@@ -124,11 +121,12 @@ fn structural<M: Model>(
     inst: &Instance<M>,
     vr: u32,
 ) -> Result<(usize, &'static crate::fmi3::interface::StructuralParameter), FmuError> {
-    inst.fmi3.structural_parameter(vr).ok_or_else(|| match vr {
+    let interface = inst.fmi3().interface;
+    interface.structural_parameter(vr).ok_or_else(|| match vr {
         TIME_VALUE_REFERENCE => {
             FmuError::Invalid(format!("value reference {vr} (time) is not of type UInt64"))
         }
-        _ => match inst.fmi3.array(vr) {
+        _ => match interface.array(vr) {
             Some((_, a)) => FmuError::Invalid(format!(
                 "value reference {vr} ({}) is not of type UInt64",
                 a.name
@@ -149,8 +147,9 @@ pub(super) fn input_derivative<M: Model>(vr: u32) -> Option<(usize, u32)> {
 
 /// The number of values of the Float64 variable `vr`: its array's size, or 1.
 fn size<M: Model>(inst: &Instance<M>, vr: u32) -> usize {
-    inst.fmi3.array(vr).map_or(1, |(_, a)| {
-        usize::try_from(inst.structural[a.dimension]).unwrap_or(usize::MAX)
+    let fmi3 = inst.fmi3();
+    fmi3.interface.array(vr).map_or(1, |(_, a)| {
+        usize::try_from(fmi3.structural[a.dimension]).unwrap_or(usize::MAX)
     })
 }
 
@@ -176,9 +175,9 @@ pub fn get_float64<M: Model>(
     while i < vr.len() {
         let r = vr[i];
         if r == TIME_VALUE_REFERENCE {
-            values[at] = inst.clock.last_successful_time;
+            values[at] = inst.clock().last_successful_time;
             (i, at) = (i + 1, at + 1);
-        } else if let Some((index, _)) = inst.fmi3.array(r) {
+        } else if let Some((index, _)) = inst.fmi3().interface.array(r) {
             let n = size(inst, r);
             inst.get_array(index, &mut values[at..at + n])?;
             (i, at) = (i + 1, at + n);
@@ -188,11 +187,11 @@ pub fn get_float64<M: Model>(
         } else {
             let table = |r: u32| {
                 r != TIME_VALUE_REFERENCE
-                    && inst.fmi3.array(r).is_none()
+                    && inst.fmi3().interface.array(r).is_none()
                     && input_derivative::<M>(r).is_none()
             };
             let run = vr[i..].iter().take_while(|&&r| table(r)).count();
-            resolve::<M>(&vr[i..i + run], "Float64", &mut inst.variables)?;
+            inst.resolve(&vr[i..i + run], "Float64")?;
             inst.get_real(&mut values[at..at + run])?;
             (i, at) = (i + run, at + run);
         }
@@ -202,7 +201,7 @@ pub fn get_float64<M: Model>(
 
 /// The refusal of a Float64 array in a set call: every array is computed.
 pub fn refuse_arrays<M: Model>(inst: &Instance<M>, vr: &[u32]) -> Result<(), FmuError> {
-    match vr.iter().find_map(|&r| inst.fmi3.array(r)) {
+    match vr.iter().find_map(|&r| inst.fmi3().interface.array(r)) {
         Some((_, a)) => Err(FmuError::Invalid(format!(
             "{} is computed by the FMU and cannot be set",
             a.name

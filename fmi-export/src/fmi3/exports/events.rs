@@ -11,20 +11,19 @@ use super::codes::with_instance;
 use crate::error::FmuError;
 use crate::ffi::slice_mut;
 use crate::model::Model;
-use crate::state::{Call, State};
+use crate::state::Call;
 use crate::status::Status;
 
 /// Enters Event Mode from Step Mode, for an instance created with `eventModeUsed`.
 pub unsafe fn fmi3EnterEventMode<M: Model>(instance: fmi3Instance) -> fmi3Status {
     with_instance::<M>(instance, Call::EnterEventMode, |inst| {
-        if !inst.event_mode_used {
-            return Err(FmuError::Invalid(if inst.fmi3.has_event_mode {
+        if !inst.fmi3().event_mode_used {
+            return Err(FmuError::Invalid(if inst.fmi3().interface.has_event_mode {
                 "the instance was created with eventModeUsed = false".into()
             } else {
                 "not supported: the FMU has no event mode (hasEventMode = false)".into()
             }));
         }
-        inst.state = State::EventMode;
         Ok(Status::Ok)
     })
 }
@@ -66,8 +65,5 @@ pub unsafe fn fmi3UpdateDiscreteStates<M: Model>(
 
 /// Leaves Event Mode for Step Mode.
 pub unsafe fn fmi3EnterStepMode<M: Model>(instance: fmi3Instance) -> fmi3Status {
-    with_instance::<M>(instance, Call::EnterStepMode, |inst| {
-        inst.state = State::StepComplete;
-        Ok(Status::Ok)
-    })
+    with_instance::<M>(instance, Call::EnterStepMode, |_| Ok(Status::Ok))
 }

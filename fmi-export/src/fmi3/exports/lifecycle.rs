@@ -17,7 +17,7 @@ use crate::instance::{Instance, IntermediateUpdate};
 use crate::logger::Logger;
 use crate::model::Model;
 use crate::state::{Call, State, Version};
-use crate::status::Status;
+use crate::status::ok;
 
 /// Returns "3.0".
 pub fn fmi3GetVersion() -> *const c_char {
@@ -65,9 +65,10 @@ pub unsafe fn fmi3InstantiateCoSimulation<M: Model>(
         };
         let resources = path.map(std::path::PathBuf::from).filter(|d| d.is_dir());
         let mut instance = calls::create::<M>(logger, &name, &token, resources, Version::Fmi3)?;
-        instance.early_return_allowed = earlyReturnAllowed;
-        instance.event_mode_used = eventModeUsed;
-        instance.intermediate_update = intermediateUpdate
+        let session = instance.fmi3_mut();
+        session.early_return_allowed = earlyReturnAllowed;
+        session.event_mode_used = eventModeUsed;
+        session.intermediate_update = intermediateUpdate
             .filter(|_| M::FMI3.provides_intermediate_update)
             .map(|callback| IntermediateUpdate {
                 callback,
@@ -102,8 +103,8 @@ pub unsafe fn fmi3FreeInstance<M: Model>(instance: fmi3Instance) {
         // SAFETY: an instance of this FMU not yet freed; no reference to it is live (fmi3DoStep
         // holds none while the callback runs).
         let inst = unsafe { &*instance.cast::<Instance<M>>() };
-        if inst.state == State::IntermediateUpdate {
-            inst.logger.error(
+        if inst.machine().state() == State::IntermediateUpdate {
+            inst.logger().error(
                 "fmi3FreeInstance: not allowed from inside fmi3DoStep's intermediate-update \
                  callback; the instance is kept",
             );
@@ -146,9 +147,7 @@ pub unsafe fn fmi3EnterInitializationMode<M: Model>(
             startTime,
             stopTimeDefined.then_some(stopTime),
         );
-        inst.setup_experiment(experiment)?;
-        inst.state = State::InitializationMode;
-        Ok(Status::Ok)
+        inst.setup_experiment(experiment).map(ok)
     })
 }
 
@@ -156,13 +155,7 @@ pub unsafe fn fmi3EnterInitializationMode<M: Model>(
 /// outputs are valid afterwards.
 pub unsafe fn fmi3ExitInitializationMode<M: Model>(instance: fmi3Instance) -> fmi3Status {
     with_instance::<M>(instance, Call::ExitInitializationMode, |inst| {
-        inst.exit_initialization()?;
-        inst.state = if inst.event_mode_used {
-            State::EventMode
-        } else {
-            State::StepComplete
-        };
-        Ok(Status::Ok)
+        inst.exit_initialization().map(ok)
     })
 }
 

@@ -16,7 +16,7 @@ use crate::ffi::{slice, slice_mut};
 use crate::instance::{Instance, IntermediateUpdate};
 use crate::model::Model;
 use crate::number::Num;
-use crate::state::{Call, State};
+use crate::state::Call;
 use crate::status::Status;
 
 /// Integrates from the communication point over the step size (error-controlled sub-steps). The
@@ -72,11 +72,10 @@ pub unsafe fn fmi3DoStep<M: Model>(
             );
         }
         status = with_instance::<M>(instance, Call::ResumeStep, |inst| {
-            inst.state = State::StepComplete;
             if requested && can_return_early {
                 let reached = inst.return_at_pause()?;
                 if let Some(reached) = reached {
-                    inst.logger.event(&format!(
+                    inst.logger().event(&format!(
                         "fmi3DoStep: returned early at t = {} s: requested by the master",
                         Num(reached)
                     ));
@@ -140,28 +139,30 @@ unsafe fn step<M: Model>(
     flags: Flags,
     pause: &mut Option<(f64, IntermediateUpdate, bool)>,
 ) -> Result<Status, FmuError> {
-    let early_allowed = inst.early_return_allowed;
+    let session = inst.fmi3();
+    let early_allowed = session.early_return_allowed;
+    let update = session.intermediate_update;
+    let event_mode = session.event_mode_used;
+    let can_return_early =
+        early_allowed && session.interface.can_return_early_after_intermediate_update;
     let step = Step {
         t,
         h,
         early_return: early_allowed,
-        pause: inst.intermediate_update.is_some(),
+        pause: update.is_some(),
         resume: false,
     };
     let result = inst.step(step);
-    if let (Ok(StepOutcome::Paused { time }), Some(update)) = (&result, inst.intermediate_update) {
-        inst.state = State::IntermediateUpdate;
-        let can_return_early =
-            early_allowed && inst.fmi3.can_return_early_after_intermediate_update;
+    if let (Ok(StepOutcome::Paused { time }), Some(update)) = (&result, update) {
         *pause = Some((*time, update, can_return_early));
         return Ok(Status::Ok);
     }
     let early = matches!(result, Ok(StepOutcome::ReturnedEarly { .. }));
-    let last = inst.clock.last_successful_time;
+    let last = inst.clock().last_successful_time;
     // SAFETY: the caller's contract.
-    unsafe { flags.write(early && inst.event_mode_used, early, last) }?;
+    unsafe { flags.write(early && event_mode, early, last) }?;
     if let Ok(StepOutcome::ReturnedEarly { time, event }) = result {
-        inst.logger.event(&format!(
+        inst.logger().event(&format!(
             "fmi3DoStep: returned early at t = {} s: {event}",
             Num(time)
         ));

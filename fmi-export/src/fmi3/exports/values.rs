@@ -8,12 +8,12 @@ use fmi_sys::fmi3::*;
 use super::arrays::{get_float64, input_derivative, refuse_arrays, scalars};
 use super::codes::with_instance;
 use crate::calls;
-use crate::checks::{check_set_boolean, check_set_integer, check_set_real, lookup, resolve};
+use crate::checks::{check_set_real, lookup};
 use crate::error::FmuError;
 use crate::ffi::{slice, slice_mut};
 use crate::fmi3::description::TIME_VALUE_REFERENCE;
 use crate::instance::Instance;
-use crate::model::Model;
+use crate::model::{Model, Var};
 use crate::state::Call;
 use crate::status::{Status, ok};
 
@@ -111,14 +111,18 @@ fn set_float64<M: Model>(
     for (&r, &x) in vr.iter().zip(values) {
         match input_derivative::<M>(r) {
             Some((k, order)) => inst.check_input_derivative(k, order, x)?,
-            None => check_set_real(inst.state, &[lookup(M::VARIABLES, r, "Float64")?], &[x])?,
+            None => check_set_real(
+                inst.machine().state(),
+                &[lookup(M::VARIABLES, r, "Float64")?],
+                &[x],
+            )?,
         }
     }
     for (&r, &x) in vr.iter().zip(values) {
         match input_derivative::<M>(r) {
             Some((k, order)) => inst.set_input_derivative(k, order, x)?,
             None => {
-                resolve::<M>(&[r], "Float64", &mut inst.variables)?;
+                inst.resolve(&[r], "Float64")?;
                 inst.set_real(&[x])?;
             }
         }
@@ -137,7 +141,7 @@ pub unsafe fn fmi3GetInt32<M: Model>(
     with_instance::<M>(instance, Call::GetInteger, |inst| {
         // SAFETY: nValueReferences and nValues elements (FMI 3.0 §2.3.6).
         let (vr, values) = unsafe { get_args(valueReferences, nValueReferences, values, nValues) }?;
-        resolve::<M>(vr, "Int32", &mut inst.variables)?;
+        inst.resolve(vr, "Int32")?;
         inst.get_integer(values).map(ok)
     })
 }
@@ -153,38 +157,9 @@ pub unsafe fn fmi3SetInt32<M: Model>(
     with_instance::<M>(instance, Call::SetInteger, |inst| {
         // SAFETY: nValueReferences and nValues elements (FMI 3.0 §2.3.6).
         let (vr, values) = unsafe { set_args(valueReferences, nValueReferences, values, nValues) }?;
-        resolve::<M>(vr, "Int32", &mut inst.variables)?;
-        check_set_integer::<M>(inst.state, &inst.variables, values)?;
-        inst.model
-            .set_integer(inst.state, &inst.variables, values)
-            .map(ok)
+        inst.resolve(vr, "Int32")?;
+        inst.set_integer(values).map(ok)
     })
-}
-
-/// The instance's call that reads the variables of the call as the i32 of FMI 2 (Integer,
-/// Boolean).
-type ReadI32<M> = fn(&mut Instance<M>, &mut [i32]) -> Result<(), FmuError>;
-
-/// Reads the variables `vr` of type `base` through the model's i32 callback `read`, each value
-/// converted to the FMI 3 type by `convert`.
-fn read_as<M: Model, T>(
-    inst: &mut Instance<M>,
-    vr: &[u32],
-    values: &mut [T],
-    base: &str,
-    read: ReadI32<M>,
-    convert: fn(i32) -> T,
-) -> Result<Status, FmuError> {
-    resolve::<M>(vr, base, &mut inst.variables)?;
-    let mut integers = std::mem::take(&mut inst.integers);
-    integers.clear();
-    integers.resize(values.len(), 0);
-    let read = read(inst, &mut integers);
-    for (value, &x) in values.iter_mut().zip(&integers) {
-        *value = convert(x);
-    }
-    inst.integers = integers;
-    read.map(|()| Status::Ok)
 }
 
 /// Reads the switches (FMI 3 Enumerations, exchanged as Int64).
@@ -198,7 +173,8 @@ pub unsafe fn fmi3GetInt64<M: Model>(
     with_instance::<M>(instance, Call::GetInt64, |inst| {
         // SAFETY: nValueReferences and nValues elements (FMI 3.0 §2.3.6).
         let (vr, values) = unsafe { get_args(valueReferences, nValueReferences, values, nValues) }?;
-        read_as(inst, vr, values, "Int64", Instance::get_integer, i64::from)
+        inst.resolve(vr, "Int64")?;
+        inst.get_converted(values, false, i64::from).map(ok)
     })
 }
 
@@ -213,18 +189,13 @@ pub unsafe fn fmi3SetInt64<M: Model>(
     with_instance::<M>(instance, Call::SetInt64, |inst| {
         // SAFETY: nValueReferences and nValues elements (FMI 3.0 §2.3.6).
         let (vr, values) = unsafe { set_args(valueReferences, nValueReferences, values, nValues) }?;
-        resolve::<M>(vr, "Int64", &mut inst.variables)?;
-        inst.integers.clear();
-        for (v, &value) in inst.variables.iter().zip(values) {
-            let item = i32::try_from(value).map_err(|_| {
+        inst.resolve(vr, "Int64")?;
+        let item = |v: Var<M::Vr>, value: i64| {
+            i32::try_from(value).map_err(|_| {
                 FmuError::Invalid(format!("{} = {value} is not one of its items", v.name))
-            })?;
-            inst.integers.push(item);
-        }
-        check_set_integer::<M>(inst.state, &inst.variables, &inst.integers)?;
-        inst.model
-            .set_integer(inst.state, &inst.variables, &inst.integers)
-            .map(ok)
+            })
+        };
+        inst.set_converted(values, false, item).map(ok)
     })
 }
 
@@ -239,9 +210,8 @@ pub unsafe fn fmi3GetBoolean<M: Model>(
     with_instance::<M>(instance, Call::GetBoolean, |inst| {
         // SAFETY: nValueReferences and nValues elements (FMI 3.0 §2.3.6).
         let (vr, values) = unsafe { get_args(valueReferences, nValueReferences, values, nValues) }?;
-        read_as(inst, vr, values, "Boolean", Instance::get_boolean, |flag| {
-            flag != 0
-        })
+        inst.resolve(vr, "Boolean")?;
+        inst.get_converted(values, true, |flag| flag != 0).map(ok)
     })
 }
 
@@ -256,12 +226,8 @@ pub unsafe fn fmi3SetBoolean<M: Model>(
     with_instance::<M>(instance, Call::SetBoolean, |inst| {
         // SAFETY: nValueReferences and nValues elements (FMI 3.0 §2.3.6).
         let (vr, values) = unsafe { set_args(valueReferences, nValueReferences, values, nValues) }?;
-        resolve::<M>(vr, "Boolean", &mut inst.variables)?;
-        check_set_boolean(inst.state, &inst.variables)?;
-        inst.integers.clear();
-        inst.integers.extend(values.iter().map(|&b| i32::from(b)));
-        inst.model
-            .set_boolean(inst.state, &inst.variables, &inst.integers)
+        inst.resolve(vr, "Boolean")?;
+        inst.set_converted(values, true, |_, b| Ok(i32::from(b)))
             .map(ok)
     })
 }
