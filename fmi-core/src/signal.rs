@@ -100,11 +100,6 @@ impl<V: InputValues> Polynomial<V> {
                 .all(|(a, b)| (0..V::LEN).all(|k| a.value(k).to_bits() == b.value(k).to_bits()))
     }
 
-    /// Whether any derivative is set.
-    pub fn varies(&self) -> bool {
-        self.derivatives != [V::ZERO; 2]
-    }
-
     /// The same functions of time, written from `t` on: the values and rates there, the second
     /// derivatives as they are (a Taylor shift of each polynomial).
     pub fn continued_at(&self, t: f64) -> Self {

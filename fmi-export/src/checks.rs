@@ -174,18 +174,7 @@ pub fn check_causality<M: Model>(
     }
 }
 
-/// Checks that each of the Boolean variables `vars` is settable in `state`.
-pub fn check_set_boolean<V>(state: State, vars: &[Var<V>]) -> Result<(), FmuError> {
-    for v in vars {
-        check_settable(state, v)?;
-    }
-    Ok(())
-}
-
-/// Checks that each of the String variables `vars` is settable in `state`.
-pub fn check_set_string<V>(state: State, vars: &[Var<V>]) -> Result<(), FmuError> {
-    for v in vars {
-        check_settable(state, v)?;
-    }
-    Ok(())
+/// Checks that each of the variables `vars` (Boolean, String: no range) is settable in `state`.
+pub fn check_set_all<V>(state: State, vars: &[Var<V>]) -> Result<(), FmuError> {
+    vars.iter().try_for_each(|v| check_settable(state, v))
 }

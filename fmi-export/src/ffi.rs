@@ -130,14 +130,15 @@ pub fn with_instance<M: Model>(
     }
 }
 
-/// One exported function of either version that forwards its C arguments, unchanged, to the
+/// Exported functions of either version, each forwarding its C arguments, unchanged, to the
 /// generic function of the same name over the model (`$crate::$version::exports::$name::<$model>`),
 /// its signature pinned to the header's `$pinned`; for [`crate::export_fmi2!`] and
 /// [`crate::export_fmi3!`].
 #[doc(hidden)]
 #[macro_export]
 macro_rules! forward_export {
-    ($version:ident, $model:ty, $name:ident: $pinned:ident, ($($arg:ident: $ty:ty),* $(,)?) -> $ret:ty) => {
+    ($version:ident, $model:ty;
+     $($name:ident: $pinned:ident, ($($arg:ident: $ty:ty),* $(,)?) -> $ret:ty;)*) => {$(
         #[doc = concat!(
             "See `fmi_export::", stringify!($version), "::exports::", stringify!($name), "`."
         )]
@@ -147,5 +148,5 @@ macro_rules! forward_export {
             unsafe { $crate::$version::exports::$name::<$model>($($arg,)*) }
         }
         const _: $crate::$version::exports::sys::$pinned = Some($name);
-    };
+    )*};
 }

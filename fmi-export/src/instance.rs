@@ -2,9 +2,7 @@
 //! machine, the clock and the inputs — the calls every FMI version makes on it, and the framing of
 //! its serialized states.
 
-use crate::checks::{
-    check_set_boolean, check_set_integer, check_set_real, check_set_string, check_settable,
-};
+use crate::checks::{check_set_all, check_set_integer, check_set_real, check_settable};
 use crate::codec::{ByteReader, ByteWriter};
 use crate::error::FmuError;
 use crate::experiment::{Clock, Step, StepOutcome};
@@ -358,10 +356,8 @@ impl<M: Model> Instance<M> {
         for (&v, &x) in self.variables.iter().zip(value) {
             integers.push(convert(v, x)?);
         }
-        let current = self.machine.state();
         let set = if boolean {
-            check_set_boolean(current, &self.variables)
-                .and_then(|()| self.model.set_boolean(current, &self.variables, &integers))
+            self.set_boolean(&integers)
         } else {
             self.set_integer(&integers)
         };
@@ -372,14 +368,14 @@ impl<M: Model> Instance<M> {
     /// SetBoolean of the variables of the call, checked first.
     pub fn set_boolean(&mut self, value: &[i32]) -> Result<(), FmuError> {
         let current = self.machine.state();
-        check_set_boolean(current, &self.variables)?;
+        check_set_all(current, &self.variables)?;
         self.model.set_boolean(current, &self.variables, value)
     }
 
     /// SetString of the variables of the call, checked first.
     pub fn set_string(&mut self, value: &[&str]) -> Result<(), FmuError> {
         let current = self.machine.state();
-        check_set_string(current, &self.variables)?;
+        check_set_all(current, &self.variables)?;
         self.model.set_string(current, &self.variables, value)
     }
 

@@ -223,10 +223,11 @@ pub struct Succeeded {
     pub paused: bool,
 }
 
-/// Every state: the logging switch and the refusals of what the FMU lacks work everywhere.
+/// Every state (the logging switch and the refusals of what the FMU lacks work everywhere), in
+/// an order where the table's sets of states are runs of it.
 const EVERYWHERE: &[State] = &[
-    Instantiated,
     ConfigurationMode,
+    Instantiated,
     InitializationMode,
     StepComplete,
     StepFailed,
@@ -237,28 +238,14 @@ const EVERYWHERE: &[State] = &[
 ];
 
 /// Every state but Intermediate Update (where fmi3DoStep is under way).
-const ALL: &[State] = &[
-    Instantiated,
-    ConfigurationMode,
-    InitializationMode,
-    StepComplete,
-    StepFailed,
-    Terminated,
-    Error,
-    EventMode,
-];
+const ALL: &[State] = EVERYWHERE.split_at(8).0;
 
 /// Where an FMU state may be got, set and serialized: everywhere but Configuration Mode (whose
-/// structural parameters are not a run's state).
-const FMU_STATE: &[State] = &[
-    Instantiated,
-    InitializationMode,
-    StepComplete,
-    StepFailed,
-    Terminated,
-    Error,
-    EventMode,
-];
+/// structural parameters are not a run's state) and Intermediate Update.
+const FMU_STATE: &[State] = ALL.split_at(1).1;
+
+/// Where values may be read: from Initialization Mode on.
+const READ: &[State] = EVERYWHERE.split_at(2).1;
 
 impl Call {
     /// The states in which the call is legal (FMI 2.0.4 table in §4.2.4; docs/fmi.md §1.3).
@@ -273,15 +260,7 @@ impl Call {
             Call::Reset => ALL,
             Call::EnterConfigurationMode => &[Instantiated],
             Call::ExitConfigurationMode => &[ConfigurationMode],
-            Call::GetUInt64 => &[
-                InitializationMode,
-                StepComplete,
-                StepFailed,
-                Terminated,
-                Error,
-                EventMode,
-                IntermediateUpdate,
-            ],
+            Call::GetUInt64 => READ,
             Call::ResumeStep => &[IntermediateUpdate],
             Call::EnterEventMode => &[StepComplete],
             Call::UpdateDiscreteStates | Call::EnterStepMode => &[EventMode],
@@ -296,23 +275,8 @@ impl Call {
             | Call::GetBoolean
             | Call::GetString
             | Call::GetInt64
-            | Call::GetOther(_) => &[
-                InitializationMode,
-                StepComplete,
-                StepFailed,
-                Terminated,
-                Error,
-                EventMode,
-                IntermediateUpdate,
-            ],
-            Call::GetDirectionalDerivative => &[
-                InitializationMode,
-                StepComplete,
-                StepFailed,
-                Terminated,
-                Error,
-                EventMode,
-            ],
+            | Call::GetOther(_) => READ,
+            Call::GetDirectionalDerivative => FMU_STATE.split_at(1).1,
             // FMI 3 sets structural parameters in Configuration Mode, and only them there
             // (checked per variable).
             Call::SetReal

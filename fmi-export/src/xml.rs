@@ -155,3 +155,24 @@ pub(crate) fn guid(text: &str) -> String {
         &s[20..32]
     )
 }
+
+/// The XML declaration and the opening `fmiModelDescription` element of FMI `version` with its
+/// `token` attribute (the GUID, or FMI 3's instantiation token) at [`GUID_PLACEHOLDER`] and the
+/// version's `extra` attributes.
+pub(crate) fn header<V>(d: &Description<V>, (version, token): (&str, &str), extra: &str) -> String {
+    format!(
+        r#"<?xml version="1.0" encoding="UTF-8"?>
+<fmiModelDescription fmiVersion="{version}" modelName="{}" {token}="{GUID_PLACEHOLDER}"
+  description="{}"
+  author="{}" version="{}" copyright="{}" license="{}"
+  generationTool="{}" variableNamingConvention="structured"{extra}>
+"#,
+        d.model_identifier,
+        escape(d.description),
+        escape(d.author),
+        d.version,
+        escape(d.copyright),
+        escape(d.license),
+        escape(d.generation_tool),
+    )
+}

@@ -7,8 +7,8 @@ use crate::description::{Description, check};
 
 use crate::table::{Causality, Kind, ValueReference, Variable, item_list};
 use crate::xml::{
-    GUID_PLACEHOLDER, attributes, escape, guid, log_categories_and_experiment, real_attributes,
-    unit_definitions,
+    GUID_PLACEHOLDER, attributes, escape, guid, header, log_categories_and_experiment,
+    real_attributes, unit_definitions,
 };
 
 /// The rendered XML and its GUID.
@@ -22,22 +22,7 @@ pub fn model_description<V: ValueReference>(
 }
 
 fn render<V: ValueReference>(d: &Description<V>) -> String {
-    let mut x = String::new();
-    let _ = writeln!(x, r#"<?xml version="1.0" encoding="UTF-8"?>"#);
-    let _ = writeln!(
-        x,
-        r#"<fmiModelDescription fmiVersion="2.0" modelName="{}" guid="{GUID_PLACEHOLDER}"
-  description="{}"
-  author="{}" version="{}" copyright="{}" license="{}"
-  generationTool="{}" variableNamingConvention="structured" numberOfEventIndicators="0">"#,
-        d.model_identifier,
-        escape(d.description),
-        escape(d.author),
-        d.version,
-        escape(d.copyright),
-        escape(d.license),
-        escape(d.generation_tool),
-    );
+    let mut x = header(d, ("2.0", "guid"), r#" numberOfEventIndicators="0""#);
     let _ = writeln!(
         x,
         r#"  <CoSimulation modelIdentifier="{}" needsExecutionTool="false" canHandleVariableCommunicationStepSize="true" canInterpolateInputs="{}" maxOutputDerivativeOrder="{}" canRunAsynchronuously="false" canBeInstantiatedOnlyOncePerProcess="false" canNotUseMemoryManagementFunctions="true" canGetAndSetFMUstate="true" canSerializeFMUstate="true" providesDirectionalDerivative="{}"/>"#,

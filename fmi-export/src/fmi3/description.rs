@@ -12,8 +12,8 @@ use super::interface::{ArrayVariable, Fmi3Interface, StructuralParameter};
 use crate::description::{Description, check};
 use crate::table::{Causality, Kind, ValueReference, Variable};
 use crate::xml::{
-    GUID_PLACEHOLDER, attributes, escape, guid, log_categories_and_experiment, real_attributes,
-    unit_definitions,
+    GUID_PLACEHOLDER, attributes, escape, guid, header, log_categories_and_experiment,
+    real_attributes, unit_definitions,
 };
 
 /// The value reference of the independent variable `time` (FMI 3.0 requires one; the table's
@@ -55,22 +55,7 @@ pub fn model_description<V: ValueReference>(
 fn render<V: ValueReference>(d: &Description<V>, fmi3: Fmi3Interface) -> Result<String, String> {
     check(d)?;
     check_interface(d, fmi3)?;
-    let mut x = String::new();
-    let _ = writeln!(x, r#"<?xml version="1.0" encoding="UTF-8"?>"#);
-    let _ = writeln!(
-        x,
-        r#"<fmiModelDescription fmiVersion="3.0" modelName="{}" instantiationToken="{GUID_PLACEHOLDER}"
-  description="{}"
-  author="{}" version="{}" copyright="{}" license="{}"
-  generationTool="{}" variableNamingConvention="structured">"#,
-        d.model_identifier,
-        escape(d.description),
-        escape(d.author),
-        d.version,
-        escape(d.copyright),
-        escape(d.license),
-        escape(d.generation_tool),
-    );
+    let mut x = header(d, ("3.0", "instantiationToken"), "");
     let _ = writeln!(
         x,
         r#"  <CoSimulation modelIdentifier="{}" canHandleVariableCommunicationStepSize="true" canGetAndSetFMUState="true" canSerializeFMUState="true" providesDirectionalDerivatives="{}" maxOutputDerivativeOrder="{}" hasEventMode="{}" mightReturnEarlyFromDoStep="{}" providesIntermediateUpdate="{}" canReturnEarlyAfterIntermediateUpdate="{}"/>"#,

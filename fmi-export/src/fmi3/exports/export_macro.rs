@@ -44,15 +44,16 @@ macro_rules! export_fmi3 {
             }
             const _: fmi3InstantiateModelExchangeTYPE =
                 Some(fmi3InstantiateModelExchange);
-            $crate::forward_export!(
-                fmi3, $model, fmi3InstantiateCoSimulation: fmi3InstantiateCoSimulationTYPE,
-                (instanceName: fmi3String, instantiationToken: fmi3String, resourcePath: fmi3String,
-                visible: fmi3Boolean, loggingOn: fmi3Boolean, eventModeUsed: fmi3Boolean,
-                earlyReturnAllowed: fmi3Boolean,
-                requiredIntermediateVariables: *const fmi3ValueReference,
-                nRequiredIntermediateVariables: usize, instanceEnvironment: fmi3InstanceEnvironment,
-                logMessage: fmi3LogMessageCallback,
-                intermediateUpdate: fmi3IntermediateUpdateCallback) -> fmi3Instance
+            $crate::forward_export!(fmi3, $model;
+                fmi3InstantiateCoSimulation: fmi3InstantiateCoSimulationTYPE,
+                    (instanceName: fmi3String, instantiationToken: fmi3String,
+                    resourcePath: fmi3String, visible: fmi3Boolean, loggingOn: fmi3Boolean,
+                    eventModeUsed: fmi3Boolean, earlyReturnAllowed: fmi3Boolean,
+                    requiredIntermediateVariables: *const fmi3ValueReference,
+                    nRequiredIntermediateVariables: usize,
+                    instanceEnvironment: fmi3InstanceEnvironment,
+                    logMessage: fmi3LogMessageCallback,
+                    intermediateUpdate: fmi3IntermediateUpdateCallback) -> fmi3Instance;
             );
             /// Not provided: logs why and returns NULL.
             #[unsafe(no_mangle)]
@@ -85,71 +86,48 @@ macro_rules! export_fmi3 {
                 unsafe { $crate::fmi3::exports::fmi3FreeInstance::<$model>(instance) }
             }
             const _: fmi3FreeInstanceTYPE = Some(fmi3FreeInstance);
-            $crate::forward_export!(
-                fmi3, $model, fmi3SetDebugLogging: fmi3SetDebugLoggingTYPE, (instance: fmi3Instance,
-                loggingOn: fmi3Boolean, nCategories: usize,
-                categories: *const fmi3String) -> fmi3Status
-            );
-            $crate::forward_export!(
-                fmi3, $model, fmi3EnterInitializationMode: fmi3EnterInitializationModeTYPE,
-                (instance: fmi3Instance, toleranceDefined: fmi3Boolean, tolerance: fmi3Float64,
-                startTime: fmi3Float64, stopTimeDefined: fmi3Boolean,
-                stopTime: fmi3Float64) -> fmi3Status
-            );
-            $crate::forward_export!(
-                fmi3, $model, fmi3ExitInitializationMode: fmi3ExitInitializationModeTYPE,
-                (instance: fmi3Instance) -> fmi3Status
-            );
-            $crate::forward_export!(
-                fmi3, $model, fmi3Terminate: fmi3TerminateTYPE, (instance: fmi3Instance) -> fmi3Status
-            );
-            $crate::forward_export!(
-                fmi3, $model, fmi3Reset: fmi3ResetTYPE, (instance: fmi3Instance) -> fmi3Status
-            );
-            $crate::forward_export!(
-                fmi3, $model, fmi3GetFMUState: fmi3GetFMUStateTYPE, (instance: fmi3Instance,
-                FMUState: *mut fmi3FMUState) -> fmi3Status
-            );
-            $crate::forward_export!(
-                fmi3, $model, fmi3SetFMUState: fmi3SetFMUStateTYPE, (instance: fmi3Instance,
-                FMUState: fmi3FMUState) -> fmi3Status
-            );
-            $crate::forward_export!(
-                fmi3, $model, fmi3FreeFMUState: fmi3FreeFMUStateTYPE, (instance: fmi3Instance,
-                FMUState: *mut fmi3FMUState) -> fmi3Status
-            );
-            $crate::forward_export!(
-                fmi3, $model, fmi3SerializedFMUStateSize: fmi3SerializedFMUStateSizeTYPE,
-                (instance: fmi3Instance, FMUState: fmi3FMUState, size: *mut usize) -> fmi3Status
-            );
-            $crate::forward_export!(
-                fmi3, $model, fmi3SerializeFMUState: fmi3SerializeFMUStateTYPE,
-                (instance: fmi3Instance, FMUState: fmi3FMUState, serializedState: *mut fmi3Byte,
-                size: usize) -> fmi3Status
-            );
-            $crate::forward_export!(
-                fmi3, $model, fmi3DeserializeFMUState: fmi3DeserializeFMUStateTYPE,
-                (instance: fmi3Instance, serializedState: *const fmi3Byte, size: usize,
-                FMUState: *mut fmi3FMUState) -> fmi3Status
-            );
-            $crate::forward_export!(
-                fmi3, $model, fmi3GetDirectionalDerivative: fmi3GetDirectionalDerivativeTYPE,
-                (instance: fmi3Instance, unknowns: *const fmi3ValueReference, nUnknowns: usize,
-                knowns: *const fmi3ValueReference, nKnowns: usize, seed: *const fmi3Float64,
-                nSeed: usize, sensitivity: *mut fmi3Float64, nSensitivity: usize) -> fmi3Status
-            );
-            $crate::forward_export!(
-                fmi3, $model, fmi3GetOutputDerivatives: fmi3GetOutputDerivativesTYPE,
-                (instance: fmi3Instance, valueReferences: *const fmi3ValueReference,
-                nValueReferences: usize, orders: *const fmi3Int32, values: *mut fmi3Float64,
-                nValues: usize) -> fmi3Status
-            );
-            $crate::forward_export!(
-                fmi3, $model, fmi3DoStep: fmi3DoStepTYPE, (instance: fmi3Instance,
-                currentCommunicationPoint: fmi3Float64, communicationStepSize: fmi3Float64,
-                noSetFMUStatePriorToCurrentPoint: fmi3Boolean, eventHandlingNeeded: *mut fmi3Boolean,
-                terminateSimulation: *mut fmi3Boolean, earlyReturn: *mut fmi3Boolean,
-                lastSuccessfulTime: *mut fmi3Float64) -> fmi3Status
+            $crate::forward_export!(fmi3, $model;
+                fmi3SetDebugLogging: fmi3SetDebugLoggingTYPE, (instance: fmi3Instance,
+                    loggingOn: fmi3Boolean, nCategories: usize,
+                    categories: *const fmi3String) -> fmi3Status;
+                fmi3EnterInitializationMode: fmi3EnterInitializationModeTYPE,
+                    (instance: fmi3Instance, toleranceDefined: fmi3Boolean, tolerance: fmi3Float64,
+                    startTime: fmi3Float64, stopTimeDefined: fmi3Boolean,
+                    stopTime: fmi3Float64) -> fmi3Status;
+                fmi3ExitInitializationMode: fmi3ExitInitializationModeTYPE,
+                    (instance: fmi3Instance) -> fmi3Status;
+                fmi3Terminate: fmi3TerminateTYPE, (instance: fmi3Instance) -> fmi3Status;
+                fmi3Reset: fmi3ResetTYPE, (instance: fmi3Instance) -> fmi3Status;
+                fmi3GetFMUState: fmi3GetFMUStateTYPE, (instance: fmi3Instance,
+                    FMUState: *mut fmi3FMUState) -> fmi3Status;
+                fmi3SetFMUState: fmi3SetFMUStateTYPE, (instance: fmi3Instance,
+                    FMUState: fmi3FMUState) -> fmi3Status;
+                fmi3FreeFMUState: fmi3FreeFMUStateTYPE, (instance: fmi3Instance,
+                    FMUState: *mut fmi3FMUState) -> fmi3Status;
+                fmi3SerializedFMUStateSize: fmi3SerializedFMUStateSizeTYPE,
+                    (instance: fmi3Instance, FMUState: fmi3FMUState,
+                    size: *mut usize) -> fmi3Status;
+                fmi3SerializeFMUState: fmi3SerializeFMUStateTYPE, (instance: fmi3Instance,
+                    FMUState: fmi3FMUState, serializedState: *mut fmi3Byte,
+                    size: usize) -> fmi3Status;
+                fmi3DeserializeFMUState: fmi3DeserializeFMUStateTYPE, (instance: fmi3Instance,
+                    serializedState: *const fmi3Byte, size: usize,
+                    FMUState: *mut fmi3FMUState) -> fmi3Status;
+                fmi3GetDirectionalDerivative: fmi3GetDirectionalDerivativeTYPE,
+                    (instance: fmi3Instance, unknowns: *const fmi3ValueReference, nUnknowns: usize,
+                    knowns: *const fmi3ValueReference, nKnowns: usize, seed: *const fmi3Float64,
+                    nSeed: usize, sensitivity: *mut fmi3Float64,
+                    nSensitivity: usize) -> fmi3Status;
+                fmi3GetOutputDerivatives: fmi3GetOutputDerivativesTYPE, (instance: fmi3Instance,
+                    valueReferences: *const fmi3ValueReference, nValueReferences: usize,
+                    orders: *const fmi3Int32, values: *mut fmi3Float64,
+                    nValues: usize) -> fmi3Status;
+                fmi3DoStep: fmi3DoStepTYPE, (instance: fmi3Instance,
+                    currentCommunicationPoint: fmi3Float64, communicationStepSize: fmi3Float64,
+                    noSetFMUStatePriorToCurrentPoint: fmi3Boolean,
+                    eventHandlingNeeded: *mut fmi3Boolean, terminateSimulation: *mut fmi3Boolean,
+                    earlyReturn: *mut fmi3Boolean,
+                    lastSuccessfulTime: *mut fmi3Float64) -> fmi3Status;
             );
         }
     };
