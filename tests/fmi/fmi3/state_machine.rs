@@ -282,12 +282,26 @@ fn every_fmi3_function_in_every_state_as_the_standard_says() {
             let before = inst.messages().len();
             let status = invoke(&inst, call, state, &bytes);
             let messages = inst.messages();
-            let illegal = format!("{}: Illegal call sequence.", call.name(Version::Fmi3));
+            let name = call.name(Version::Fmi3);
+            let illegal = format!("{name}: Illegal call sequence.");
             let refused = messages[before..].iter().any(|m| m.contains(&illegal));
             if !fmi3_allows(call).contains(&s) {
                 forbidden += 1;
                 if status != ERROR {
                     wrong.push(format!("{call:?} in {s:?} is forbidden, returned {status}"));
+                }
+                // the refusal says so, naming the function (after an error: and the error; Event
+                // Mode in Step Mode: that the instance does not use it)
+                let says = messages[before..].iter().any(|m| {
+                    m.contains(&format!("{name}: Illegal call sequence"))
+                        || m.contains(&format!(
+                            "{name}: the instance was created with eventModeUsed = false"
+                        ))
+                });
+                if !says {
+                    wrong.push(format!(
+                        "{call:?} in {s:?}: refused without saying why: {messages:?}"
+                    ));
                 }
             } else if deliberate(call, s) {
                 refused_on_purpose += 1;
