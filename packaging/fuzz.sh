@@ -5,8 +5,9 @@
 # so a run leaves the repository as it was; a crash fails the run and leaves its input under
 # fuzz/artifacts/. With --update-corpus the kept corpus is regenerated instead (one target at a
 # time): the inputs of the run, the kept ones and (for fmu_state) states of the current format from
-# examples/fuzz_seeds.rs, merged into a smallest set with their coverage (libFuzzer's
-# -set_cover_merge=1).
+# examples/fuzz_seeds.rs, measured by libFuzzer's merge (their coverage features) and the 33 that
+# cover the most features kept, chosen greedily (packaging/python/fsc/fuzz_corpus.py), so the
+# repository tracks at most 99 inputs.
 #
 #   bash packaging/fuzz.sh [seconds] [--update-corpus]
 #
@@ -49,11 +50,11 @@ fuzz_target() {
       cargo run --quiet --release --example fuzz_seeds -- "$scratch"
     fi
     merged=$(mktemp -d)
-    "${fuzz[@]}" run -s "$sanitizer" --fuzz-dir fuzz "$target" "$merged" "fuzz/corpus/$target" \
-      "$scratch" -- -set_cover_merge=1 -rss_limit_mb=4096 >"target/fuzz-$target-merge.log" 2>&1
-    rm -rf "fuzz/corpus/$target"
-    mv "$merged" "fuzz/corpus/$target"
-    echo "== fuzz/corpus/$target: $(ls "fuzz/corpus/$target" | wc -l) inputs after the merge"
+    "${fuzz[@]}" run -s "$sanitizer" --fuzz-dir fuzz "$target" "$merged" "$PWD/fuzz/corpus/$target" \
+      "$scratch" -- -set_cover_merge=1 -merge_control_file="$merged.control" -rss_limit_mb=4096 \
+      >"target/fuzz-$target-merge.log" 2>&1
+    .venv/bin/python -m fsc.fuzz_corpus "$merged.control" "fuzz/corpus/$target" --limit 33
+    rm -rf "$merged" "$merged.control"
   fi
   rm -rf "$scratch"
   grep -E "^(INFO: seed corpus|stat::number_of_executed_units|stat::new_units_added|Done)" \
