@@ -147,15 +147,15 @@ impl Machine {
         self.state
     }
 
-    /// Whether `call` (named `name` in messages, of FMI `version`) may be made now: not on a
+    /// Whether `call` (of FMI `version`, named so in messages) may be made now: not on a
     /// poisoned instance but Reset, and only in a state where the table allows it (the refusal
     /// then names what put the instance there, if anything did).
     pub fn admit(&self, call: Call, version: Version) -> Result<(), FmuError> {
-        let name = call.name(version);
         if self.poisoned && call != Call::Reset {
             return Err(FmuError::Invalid(format!(
-                "{name}: the instance is unusable after an internal error; call {p}Reset or \
+                "{}: the instance is unusable after an internal error; call {p}Reset or \
                  {p}FreeInstance",
+                call.name(version),
                 p = version.prefix()
             )));
         }
@@ -167,7 +167,7 @@ impl Machine {
                 "Illegal call sequence. The instance is in the {:?} state since: {cause}",
                 self.state
             )),
-            None => FmuError::IllegalCall(name),
+            None => FmuError::IllegalCall(call.name(version)),
         })
     }
 
