@@ -67,6 +67,7 @@ impl Snapshot {
                 w.f64(e.h_factored);
                 w.f64s(&e.jacobian_q);
                 w.f64s(&e.jacobian_v);
+                w.f64s(&e.jacobian_w);
                 w.u8(u8::from(e.jacobian_stale));
                 w.f64(e.newton_rate);
                 w.f64s(&e.history);
@@ -113,6 +114,7 @@ impl Snapshot {
                 h_factored: r.f64()?,
                 jacobian_q: r.f64s()?,
                 jacobian_v: r.f64s()?,
+                jacobian_w: r.f64s()?,
                 jacobian_stale: r.flag()?,
                 newton_rate: r.f64()?,
                 history: r.f64s()?,

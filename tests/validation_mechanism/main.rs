@@ -23,8 +23,8 @@ use flexible_slider_crank::ancf::RodProperties;
 use flexible_slider_crank::integrator::Method;
 use flexible_slider_crank::math;
 use flexible_slider_crank::params::{
-    BENCHMARK_SPEED, ContactLaw, DriveMode, InitialState, JointModel, JointParameters, JointRole,
-    RodFormulation,
+    BENCHMARK_SPEED, ContactLaw, DriveMode, FilmModel, InitialState, JointModel, JointParameters,
+    JointRole, RodFormulation,
 };
 use flexible_slider_crank::reduction::Quadrature;
 use flexible_slider_crank::{InputSignal, Outputs, Parameters, Simulation};

@@ -46,6 +46,15 @@ impl Implicit {
             ) {
                 *c = (a - a0) / delta;
             }
+            let n_w = y.len() - 2 * n_q;
+            let column = &mut self.state.jacobian_w[j * n_w..(j + 1) * n_w];
+            // The quadrature rates' row of the same difference quotient.
+            for (c, (a, a0)) in column
+                .iter_mut()
+                .zip(self.rates[2 * n_q..].iter().zip(&self.base[2 * n_q..]))
+            {
+                *c = (a - a0) / delta;
+            }
         }
         self.state.stats.evaluations += 2 * n_q as u64 + 1;
         self.state.stats.jacobians += 1;
@@ -294,10 +303,27 @@ impl Implicit {
         ))
     }
 
+    /// The quadrature rates of a converged stage moved from the last iterate, where f was
+    /// evaluated, to the stage's velocities after the last Newton update ΔV (and its coordinates,
+    /// moved by κΔV), to first order: ẇ += ∂ẇ/∂q κΔV + ∂ẇ/∂q̇ ΔV.
+    fn correct_rates(&mut self, kappa: f64) {
+        let n_q = self.n_q;
+        let n_w = self.rates.len() - 2 * n_q;
+        let (w_q, w_v) = self.state.jacobian_w.split_at(n_q * n_w);
+        let rates = &mut self.rates[2 * n_q..];
+        for (m, &dv) in self.update.iter().enumerate() {
+            let (cq, cv) = (&w_q[m * n_w..(m + 1) * n_w], &w_v[m * n_w..(m + 1) * n_w]);
+            for ((r, &a), &b) in rates.iter_mut().zip(cq).zip(cv) {
+                *r += (kappa * a + b) * dv;
+            }
+        }
+    }
+
     /// Solves one stage equation R(V) = V − B_v − λ a(B_q + κV, V) = 0 by simplified Newton
     /// (module documentation): `base` holds [B_q, B_v, B_w], the velocity part of `stage` the
     /// predicted V and the quadrature part of `rates` the predicted rates ġ; the quadratures are
-    /// w = B_w + μ ġ. On return `stage` holds the last iterate with V updated and `rates` f there.
+    /// w = B_w + μ ġ. On return `stage` holds the last iterate with V updated, and `rates` f at
+    /// the last iterate with the quadrature rates moved to the updated V ([`Self::correct_rates`]).
     pub(super) fn solve_stage<F: MechanicalSystem>(
         &mut self,
         f: &mut F,
@@ -353,6 +379,7 @@ impl Implicit {
             }
             if rate * norm <= NEWTON_TOLERANCE || norm == 0.0 {
                 self.state.newton_rate = rate;
+                self.correct_rates(kappa);
                 return Ok(());
             }
             previous_norm = norm;
