@@ -4,18 +4,34 @@
 use super::sample::{SERIES, Sample};
 use super::step::StepPoint;
 use crate::joint::Contacts;
+use crate::math;
 use crate::mechanism::InputSignal;
 
 /// The peak-hold sample at the end of the last accepted step with everything it is a function
-/// of: the point (time, state, derivative), the inputs and the contact state it was taken with.
-/// The next step's first sample inside ([`super::peaks::within_step`]) is this one wherever these are
-/// the same, bit for bit: the dense output's first sample is the step's start exactly.
+/// of: the point (time, state, derivative), the inputs there (their values and the drive's
+/// acceleration, what an evaluation reads of them: [`crate::mechanism::Conditions::at`]) and the
+/// contact state it was taken with. The next step's first sample inside
+/// ([`super::peaks::within_step`]) is this one wherever these are the same, bit for bit: the dense
+/// output's first sample is the step's start exactly. (The next step's inputs are another
+/// polynomial, written from its start, even where they are the same function of time.)
 #[derive(Clone, Debug)]
 pub(super) struct EndSample {
     point: StepPoint,
-    signal: Option<InputSignal>,
+    inputs: Option<[f64; 4]>,
     contacts: Contacts,
     sample: Sample,
+}
+
+/// What an evaluation at `t` reads of the inputs `signal`: their values and the drive's
+/// acceleration.
+fn read_at(signal: &InputSignal, t: f64) -> [f64; 4] {
+    let u = signal.at(t);
+    [
+        u.drive_speed,
+        u.drive_torque,
+        u.slider_force,
+        signal.rate(t).drive_speed,
+    ]
 }
 
 impl EndSample {
@@ -23,7 +39,7 @@ impl EndSample {
     pub(super) fn new(n: usize) -> Self {
         Self {
             point: StepPoint::at_rest(f64::NAN, &vec![0.0; n]),
-            signal: None,
+            inputs: None,
             contacts: Contacts::default(),
             sample: [0.0; SERIES],
         }
@@ -36,8 +52,10 @@ impl EndSample {
         signal: &InputSignal,
         contacts: Contacts,
     ) -> Option<Sample> {
-        let same_signal = self.signal.as_ref().is_some_and(|s| s.same_bits(signal));
-        (same_signal && self.contacts.same_bits(&contacts) && self.point.same_bits(point))
+        let same_inputs = self
+            .inputs
+            .is_some_and(|u| math::same_bits(&u, &read_at(signal, point.time)));
+        (same_inputs && self.contacts.same_bits(&contacts) && self.point.same_bits(point))
             .then_some(self.sample)
     }
 
@@ -50,7 +68,7 @@ impl EndSample {
         contacts: Contacts,
         sample: Option<Sample>,
     ) {
-        self.signal = sample.map(|_| *signal);
+        self.inputs = sample.map(|_| read_at(signal, point.time));
         if let Some(sample) = sample {
             self.point.copy_from(point);
             self.contacts = contacts;
@@ -66,8 +84,9 @@ mod tests {
     use crate::mechanism::Inputs;
 
     /// The kept end sample is given back only for the point, inputs and contact state it was
-    /// taken with, each bit for bit (a zero's sign included), and not after a sample that a step's inside would not
-    /// reproduce was stored in its place.
+    /// taken with, each bit for bit (a zero's sign included), the inputs as an evaluation there
+    /// reads them (a polynomial written from another start gives the same), and not after a sample
+    /// that a step's inside would not reproduce was stored in its place.
     #[test]
     fn the_end_sample_is_reused_only_where_it_was_taken() {
         let point = StepPoint {
@@ -95,6 +114,14 @@ mod tests {
         let mut faster = signal;
         faster.value.drive_speed += 1e-9;
         assert_eq!(kept.at(&point, &faster, contacts), None);
+        // The same inputs written from the point (the next step's polynomial) are the same there;
+        // a drive speed that starts to ramp there is not.
+        let rewritten = signal.continued_at(point.time);
+        assert_ne!(rewritten.start, signal.start);
+        assert_eq!(kept.at(&point, &rewritten, contacts), Some(sample));
+        let mut ramped = rewritten;
+        ramped.derivatives[0].drive_speed = 100.0;
+        assert_eq!(kept.at(&point, &ramped, contacts), None);
         let mut touching = contacts;
         touching.0[2] = ContactState {
             in_contact: true,
@@ -109,9 +136,10 @@ mod tests {
         let mut negative_zero = at_zero.clone();
         negative_zero.y[0] = -0.0;
         assert_eq!(kept.at(&negative_zero, &signal, contacts), None);
+        // An input held at −0 reads +0 there (u + u̇τ), as the evaluation reads it.
         let mut reversed = signal;
         reversed.value.slider_force = -0.0;
-        assert_eq!(kept.at(&at_zero, &reversed, contacts), None);
+        assert_eq!(kept.at(&at_zero, &reversed, contacts), Some(sample));
         kept.store(&point, &signal, contacts, None);
         assert_eq!(kept.at(&point, &signal, contacts), None);
     }

@@ -123,8 +123,8 @@ pub struct ImplicitState {
     pub jacobian_q: Vec<f64>,
     /// ∂q̈/∂q̇, column-major n × n.
     pub jacobian_v: Vec<f64>,
-    /// ∂ẇ/∂(q, q̇), the quadrature rates' derivatives: column-major m × 2n (m quadratures),
-    /// the columns of q first.
+    /// ∂ẇ/∂(q, q̇), the quadrature rates' derivatives: row-major m × 2n (m quadratures), the
+    /// columns of q first.
     pub jacobian_w: Vec<f64>,
     /// Whether the Jacobian is to be recomputed before the next step.
     pub jacobian_stale: bool,
@@ -155,6 +155,8 @@ pub struct Implicit {
     state: ImplicitState,
     /// Whether the Jacobian was computed at the start of the current step.
     jacobian_fresh: bool,
+    /// The quadratures whose rates vary with (q, q̇), by the Jacobian's quadrature rows.
+    varying_rates: Vec<usize>,
     /// Slowest Newton convergence rate θ of the current step.
     step_rate: f64,
     lu: Lu,
@@ -213,6 +215,7 @@ impl Implicit {
                 stats: Stats::default(),
             },
             jacobian_fresh: false,
+            varying_rates: Vec::with_capacity(n - 2 * n_q),
             step_rate: 0.0,
             lu: Lu::new(n_q),
             scheme,
@@ -261,6 +264,7 @@ impl Implicit {
         }
         self.state = state.clone();
         self.jacobian_fresh = false;
+        self.find_varying_rates();
         // The factorisation is a function of (Jacobian, h_factored): rebuild it.
         if self.state.h_factored > 0.0 && self.factorize(self.state.h_factored).is_err() {
             self.state.h_factored = 0.0;

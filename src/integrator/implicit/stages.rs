@@ -46,16 +46,14 @@ impl Implicit {
             ) {
                 *c = (a - a0) / delta;
             }
-            let n_w = y.len() - 2 * n_q;
-            let column = &mut self.state.jacobian_w[j * n_w..(j + 1) * n_w];
-            // The quadrature rates' row of the same difference quotient.
-            for (c, (a, a0)) in column
-                .iter_mut()
-                .zip(self.rates[2 * n_q..].iter().zip(&self.base[2 * n_q..]))
+            // The quadrature rates' column of the same difference quotient.
+            let rows = self.state.jacobian_w.chunks_exact_mut(2 * n_q);
+            for (row, (a, a0)) in rows.zip(self.rates[2 * n_q..].iter().zip(&self.base[2 * n_q..]))
             {
-                *c = (a - a0) / delta;
+                row[j] = (a - a0) / delta;
             }
         }
+        self.find_varying_rates();
         self.state.stats.evaluations += 2 * n_q as u64 + 1;
         self.state.stats.jacobians += 1;
         self.state.jacobian_stale = false;
@@ -308,15 +306,25 @@ impl Implicit {
     /// moved by κΔV), to first order: ẇ += ∂ẇ/∂q κΔV + ∂ẇ/∂q̇ ΔV.
     fn correct_rates(&mut self, kappa: f64) {
         let n_q = self.n_q;
-        let n_w = self.rates.len() - 2 * n_q;
-        let (w_q, w_v) = self.state.jacobian_w.split_at(n_q * n_w);
-        let rates = &mut self.rates[2 * n_q..];
-        for (m, &dv) in self.update.iter().enumerate() {
-            let (cq, cv) = (&w_q[m * n_w..(m + 1) * n_w], &w_v[m * n_w..(m + 1) * n_w]);
-            for ((r, &a), &b) in rates.iter_mut().zip(cq).zip(cv) {
-                *r += (kappa * a + b) * dv;
+        for &i in &self.varying_rates {
+            let (w_q, w_v) = self.state.jacobian_w[i * 2 * n_q..(i + 1) * 2 * n_q].split_at(n_q);
+            let rate = &mut self.rates[2 * n_q + i];
+            for ((&a, &b), &dv) in w_q.iter().zip(w_v).zip(&self.update) {
+                *rate += (kappa * a + b) * dv;
             }
         }
+    }
+
+    /// The quadratures whose rates depend on (q, q̇) by the Jacobian's quadrature rows (the
+    /// others, such as the drive angle's, need no correction).
+    pub(super) fn find_varying_rates(&mut self) {
+        let rows = self.state.jacobian_w.chunks_exact(2 * self.n_q);
+        self.varying_rates.clear();
+        self.varying_rates.extend(
+            rows.enumerate()
+                .filter(|(_, row)| row.iter().any(|&d| d != 0.0))
+                .map(|(i, _)| i),
+        );
     }
 
     /// Solves one stage equation R(V) = V − B_v − λ a(B_q + κV, V) = 0 by simplified Newton
