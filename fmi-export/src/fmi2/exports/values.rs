@@ -10,50 +10,52 @@ use crate::model::{Model, no_input_derivatives};
 use crate::state::Call;
 use crate::status::ok;
 
-/// Reads Real variables.
-pub unsafe fn fmi2GetReal<M: Model>(
-    c: fmi2Component,
-    vr: *const fmi2ValueReference,
-    nvr: usize,
-    value: *mut fmi2Real,
-) -> fmi2Status {
-    with_instance::<M>(c, Call::GetReal, |inst| {
-        // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
-        let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?) };
-        inst.resolve(vr, "Real")?;
-        inst.get_real(value).map(ok)
-    })
+/// A get or set function of one FMI 2 type: the value references resolved as variables of
+/// `$type_name`, then the instance's `$method` on the values.
+macro_rules! scalar_call {
+    ($(#[$doc:meta])* $name:ident, $call:ident, *$ptr:tt $c_type:ty, $slice:ident, $type_name:literal,
+     $method:ident) => {
+        $(#[$doc])*
+        pub unsafe fn $name<M: Model>(
+            c: fmi2Component,
+            vr: *const fmi2ValueReference,
+            nvr: usize,
+            value: *$ptr $c_type,
+        ) -> fmi2Status {
+            with_instance::<M>(c, Call::$call, |inst| {
+                // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
+                let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, $slice(value, nvr, "value")?) };
+                inst.resolve(vr, $type_name)?;
+                inst.$method(value).map(ok)
+            })
+        }
+    };
 }
 
-/// Reads Integer variables (the switches among them).
-pub unsafe fn fmi2GetInteger<M: Model>(
-    c: fmi2Component,
-    vr: *const fmi2ValueReference,
-    nvr: usize,
-    value: *mut fmi2Integer,
-) -> fmi2Status {
-    with_instance::<M>(c, Call::GetInteger, |inst| {
-        // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
-        let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?) };
-        inst.resolve(vr, "Integer")?;
-        inst.get_integer(value).map(ok)
-    })
-}
-
-/// Reads Boolean variables.
-pub unsafe fn fmi2GetBoolean<M: Model>(
-    c: fmi2Component,
-    vr: *const fmi2ValueReference,
-    nvr: usize,
-    value: *mut fmi2Boolean,
-) -> fmi2Status {
-    with_instance::<M>(c, Call::GetBoolean, |inst| {
-        // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
-        let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?) };
-        inst.resolve(vr, "Boolean")?;
-        inst.get_boolean(value).map(ok)
-    })
-}
+scalar_call!(
+    /// Reads Real variables.
+    fmi2GetReal, GetReal, *mut fmi2Real, slice_mut, "Real", get_real
+);
+scalar_call!(
+    /// Reads Integer variables (the switches among them).
+    fmi2GetInteger, GetInteger, *mut fmi2Integer, slice_mut, "Integer", get_integer
+);
+scalar_call!(
+    /// Reads Boolean variables.
+    fmi2GetBoolean, GetBoolean, *mut fmi2Boolean, slice_mut, "Boolean", get_boolean
+);
+scalar_call!(
+    /// Writes Real parameters (before initialization ends) and inputs.
+    fmi2SetReal, SetReal, *const fmi2Real, slice, "Real", set_real
+);
+scalar_call!(
+    /// Writes Integer parameters, the switches among them (before initialization ends).
+    fmi2SetInteger, SetInteger, *const fmi2Integer, slice, "Integer", set_integer
+);
+scalar_call!(
+    /// Writes Boolean variables (the model says which are settable).
+    fmi2SetBoolean, SetBoolean, *const fmi2Boolean, slice, "Boolean", set_boolean
+);
 
 /// Reads String variables; the strings stay valid until the next call on the instance.
 pub unsafe fn fmi2GetString<M: Model>(
@@ -66,51 +68,6 @@ pub unsafe fn fmi2GetString<M: Model>(
         // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
         let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?) };
         calls::get_string(inst, vr, value)
-    })
-}
-
-/// Writes Real parameters (before initialization ends) and inputs.
-pub unsafe fn fmi2SetReal<M: Model>(
-    c: fmi2Component,
-    vr: *const fmi2ValueReference,
-    nvr: usize,
-    value: *const fmi2Real,
-) -> fmi2Status {
-    with_instance::<M>(c, Call::SetReal, |inst| {
-        // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
-        let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice(value, nvr, "value")?) };
-        inst.resolve(vr, "Real")?;
-        inst.set_real(value).map(ok)
-    })
-}
-
-/// Writes Integer parameters, the switches among them (before initialization ends).
-pub unsafe fn fmi2SetInteger<M: Model>(
-    c: fmi2Component,
-    vr: *const fmi2ValueReference,
-    nvr: usize,
-    value: *const fmi2Integer,
-) -> fmi2Status {
-    with_instance::<M>(c, Call::SetInteger, |inst| {
-        // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
-        let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice(value, nvr, "value")?) };
-        inst.resolve(vr, "Integer")?;
-        inst.set_integer(value).map(ok)
-    })
-}
-
-/// No Boolean variable is settable: any value reference is an error.
-pub unsafe fn fmi2SetBoolean<M: Model>(
-    c: fmi2Component,
-    vr: *const fmi2ValueReference,
-    nvr: usize,
-    value: *const fmi2Boolean,
-) -> fmi2Status {
-    with_instance::<M>(c, Call::SetBoolean, |inst| {
-        // SAFETY: nvr elements each (FMI 2.0.4 §2.1.7).
-        let (vr, value) = unsafe { (slice(vr, nvr, "vr")?, slice(value, nvr, "value")?) };
-        inst.resolve(vr, "Boolean")?;
-        inst.set_boolean(value).map(ok)
     })
 }
 

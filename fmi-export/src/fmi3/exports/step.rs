@@ -7,7 +7,6 @@ use fmi_sys::fmi3::*;
 
 use super::arrays::scalars;
 use super::codes::with_instance;
-use super::values::refuse;
 use crate::calls;
 use crate::error::FmuError;
 use crate::experiment::Step;
@@ -179,11 +178,8 @@ pub unsafe fn fmi3GetOutputDerivatives<M: Model>(
     values: *mut fmi3Float64,
     nValues: usize,
 ) -> fmi3Status {
-    if nValues != nValueReferences {
-        let error = scalars(nValueReferences, nValues);
-        return refuse::<M>(instance, Call::GetRealOutputDerivatives, error);
-    }
     with_instance::<M>(instance, Call::GetRealOutputDerivatives, |inst| {
+        scalars(nValueReferences, nValues)?;
         // SAFETY: nValueReferences elements each (FMI 3.0 §4.2.1).
         let (vr, orders, values) = unsafe {
             (
@@ -209,14 +205,13 @@ pub unsafe fn fmi3GetDirectionalDerivative<M: Model>(
     sensitivity: *mut fmi3Float64,
     nSensitivity: usize,
 ) -> fmi3Status {
-    if nSeed != nKnowns || nSensitivity != nUnknowns {
-        let error = Err(FmuError::Invalid(format!(
-            "nSeed = {nSeed} and nSensitivity = {nSensitivity} must equal nKnowns = {nKnowns} \
-             and nUnknowns = {nUnknowns}: every variable of this FMU is a scalar"
-        )));
-        return refuse::<M>(instance, Call::GetDirectionalDerivative, error);
-    }
     with_instance::<M>(instance, Call::GetDirectionalDerivative, |inst| {
+        if nSeed != nKnowns || nSensitivity != nUnknowns {
+            return Err(FmuError::Invalid(format!(
+                "nSeed = {nSeed} and nSensitivity = {nSensitivity} must equal nKnowns = \
+                 {nKnowns} and nUnknowns = {nUnknowns}: every variable of this FMU is a scalar"
+            )));
+        }
         // SAFETY: nUnknowns and nKnowns elements (FMI 3.0 §2.3.11).
         let (unknowns, knowns, seed, sensitivity) = unsafe {
             (

@@ -130,107 +130,63 @@ fn set_float64<M: Model>(
     Ok(())
 }
 
-/// Reads Int32 variables.
-pub unsafe fn fmi3GetInt32<M: Model>(
-    instance: fmi3Instance,
-    valueReferences: *const fmi3ValueReference,
-    nValueReferences: usize,
-    values: *mut fmi3Int32,
-    nValues: usize,
-) -> fmi3Status {
-    with_instance::<M>(instance, Call::GetInteger, |inst| {
-        // SAFETY: nValueReferences and nValues elements (FMI 3.0 §2.3.6).
-        let (vr, values) = unsafe { get_args(valueReferences, nValueReferences, values, nValues) }?;
-        inst.resolve(vr, "Int32")?;
-        inst.get_integer(values).map(ok)
-    })
-}
-
-/// Writes Int32 parameters (before initialization ends).
-pub unsafe fn fmi3SetInt32<M: Model>(
-    instance: fmi3Instance,
-    valueReferences: *const fmi3ValueReference,
-    nValueReferences: usize,
-    values: *const fmi3Int32,
-    nValues: usize,
-) -> fmi3Status {
-    with_instance::<M>(instance, Call::SetInteger, |inst| {
-        // SAFETY: nValueReferences and nValues elements (FMI 3.0 §2.3.6).
-        let (vr, values) = unsafe { set_args(valueReferences, nValueReferences, values, nValues) }?;
-        inst.resolve(vr, "Int32")?;
-        inst.set_integer(values).map(ok)
-    })
-}
-
-/// Reads the switches (FMI 3 Enumerations, exchanged as Int64).
-pub unsafe fn fmi3GetInt64<M: Model>(
-    instance: fmi3Instance,
-    valueReferences: *const fmi3ValueReference,
-    nValueReferences: usize,
-    values: *mut fmi3Int64,
-    nValues: usize,
-) -> fmi3Status {
-    with_instance::<M>(instance, Call::GetInt64, |inst| {
-        // SAFETY: nValueReferences and nValues elements (FMI 3.0 §2.3.6).
-        let (vr, values) = unsafe { get_args(valueReferences, nValueReferences, values, nValues) }?;
-        inst.resolve(vr, "Int64")?;
-        inst.get_converted(values, false, i64::from).map(ok)
-    })
-}
-
-/// Writes the switches (before initialization ends), each one of its type's items.
-pub unsafe fn fmi3SetInt64<M: Model>(
-    instance: fmi3Instance,
-    valueReferences: *const fmi3ValueReference,
-    nValueReferences: usize,
-    values: *const fmi3Int64,
-    nValues: usize,
-) -> fmi3Status {
-    with_instance::<M>(instance, Call::SetInt64, |inst| {
-        // SAFETY: nValueReferences and nValues elements (FMI 3.0 §2.3.6).
-        let (vr, values) = unsafe { set_args(valueReferences, nValueReferences, values, nValues) }?;
-        inst.resolve(vr, "Int64")?;
-        let item = |v: Var<M::Vr>, value: i64| {
-            i32::try_from(value).map_err(|_| {
-                FmuError::Invalid(format!("{} = {value} is not one of its items", v.name))
+/// A get or set function of one FMI 3 type: one value per value reference, each resolved as a
+/// variable of `$type_name`, then `$body` on the instance and the values.
+macro_rules! scalar_call {
+    ($(#[$doc:meta])* $name:ident, $call:ident, *$ptr:tt $c_type:ty, $args:ident, $type_name:literal,
+     |$inst:ident, $values:ident| $body:expr) => {
+        $(#[$doc])*
+        pub unsafe fn $name<M: Model>(
+            instance: fmi3Instance,
+            valueReferences: *const fmi3ValueReference,
+            nValueReferences: usize,
+            values: *$ptr $c_type,
+            nValues: usize,
+        ) -> fmi3Status {
+            with_instance::<M>(instance, Call::$call, |$inst| {
+                // SAFETY: nValueReferences and nValues elements (FMI 3.0 §2.3.6).
+                let args = unsafe { $args(valueReferences, nValueReferences, values, nValues) };
+                let (vr, $values) = args?;
+                $inst.resolve(vr, $type_name)?;
+                $body.map(ok)
             })
-        };
-        inst.set_converted(values, false, item).map(ok)
-    })
+        }
+    };
 }
 
-/// Reads Boolean variables.
-pub unsafe fn fmi3GetBoolean<M: Model>(
-    instance: fmi3Instance,
-    valueReferences: *const fmi3ValueReference,
-    nValueReferences: usize,
-    values: *mut fmi3Boolean,
-    nValues: usize,
-) -> fmi3Status {
-    with_instance::<M>(instance, Call::GetBoolean, |inst| {
-        // SAFETY: nValueReferences and nValues elements (FMI 3.0 §2.3.6).
-        let (vr, values) = unsafe { get_args(valueReferences, nValueReferences, values, nValues) }?;
-        inst.resolve(vr, "Boolean")?;
-        inst.get_converted(values, true, |flag| flag != 0).map(ok)
+scalar_call!(
+    /// Reads Int32 variables.
+    fmi3GetInt32, GetInteger, *mut fmi3Int32, get_args, "Int32",
+    |inst, values| inst.get_integer(values)
+);
+scalar_call!(
+    /// Writes Int32 parameters (before initialization ends).
+    fmi3SetInt32, SetInteger, *const fmi3Int32, set_args, "Int32",
+    |inst, values| inst.set_integer(values)
+);
+scalar_call!(
+    /// Reads the switches (FMI 3 Enumerations, exchanged as Int64).
+    fmi3GetInt64, GetInt64, *mut fmi3Int64, get_args, "Int64",
+    |inst, values| inst.get_converted(values, false, i64::from)
+);
+scalar_call!(
+    /// Writes the switches (before initialization ends), each one of its type's items.
+    fmi3SetInt64, SetInt64, *const fmi3Int64, set_args, "Int64",
+    |inst, values| inst.set_converted(values, false, |v: Var<M::Vr>, value: i64| {
+        i32::try_from(value)
+            .map_err(|_| FmuError::Invalid(format!("{} = {value} is not one of its items", v.name)))
     })
-}
-
-/// Writes Boolean variables (the model says which are settable).
-pub unsafe fn fmi3SetBoolean<M: Model>(
-    instance: fmi3Instance,
-    valueReferences: *const fmi3ValueReference,
-    nValueReferences: usize,
-    values: *const fmi3Boolean,
-    nValues: usize,
-) -> fmi3Status {
-    with_instance::<M>(instance, Call::SetBoolean, |inst| {
-        // SAFETY: nValueReferences and nValues elements (FMI 3.0 §2.3.6).
-        let (vr, values) = unsafe { set_args(valueReferences, nValueReferences, values, nValues) }?;
-        inst.resolve(vr, "Boolean")?;
-        inst.set_converted(values, true, |_, b| Ok(i32::from(b)))
-            .map(ok)
-    })
-}
+);
+scalar_call!(
+    /// Reads Boolean variables.
+    fmi3GetBoolean, GetBoolean, *mut fmi3Boolean, get_args, "Boolean",
+    |inst, values| inst.get_converted(values, true, |flag| flag != 0)
+);
+scalar_call!(
+    /// Writes Boolean variables (the model says which are settable).
+    fmi3SetBoolean, SetBoolean, *const fmi3Boolean, set_args, "Boolean",
+    |inst, values| inst.set_converted(values, true, |_, b| Ok(i32::from(b)))
+);
 
 /// Reads String variables; the strings stay valid until the next call on the instance.
 pub unsafe fn fmi3GetString<M: Model>(
@@ -240,13 +196,6 @@ pub unsafe fn fmi3GetString<M: Model>(
     values: *mut fmi3String,
     nValues: usize,
 ) -> fmi3Status {
-    if nValues != nValueReferences {
-        return refuse::<M>(
-            instance,
-            Call::GetString,
-            scalars(nValueReferences, nValues),
-        );
-    }
     with_instance::<M>(instance, Call::GetString, |inst| {
         // SAFETY: nValueReferences elements each (FMI 3.0 §2.3.6).
         let (vr, values) = unsafe { get_args(valueReferences, nValueReferences, values, nValues)? };
@@ -262,13 +211,6 @@ pub unsafe fn fmi3SetString<M: Model>(
     values: *const fmi3String,
     nValues: usize,
 ) -> fmi3Status {
-    if nValues != nValueReferences {
-        return refuse::<M>(
-            instance,
-            Call::SetString,
-            scalars(nValueReferences, nValues),
-        );
-    }
     with_instance::<M>(instance, Call::SetString, |inst| {
         // SAFETY: nValueReferences elements each, NUL-terminated strings (FMI 3.0 §2.3.6).
         unsafe {
@@ -276,15 +218,6 @@ pub unsafe fn fmi3SetString<M: Model>(
             calls::set_string(inst, vr, values)
         }
     })
-}
-
-/// Logs and returns the error of a call refused before it reaches the model.
-pub(super) fn refuse<M: Model>(
-    instance: fmi3Instance,
-    call: Call,
-    error: Result<(), FmuError>,
-) -> fmi3Status {
-    with_instance::<M>(instance, call, |_| error.map(ok))
 }
 
 /// A get or set function of a type the FMU has no variable of (`call` names it, `type_name` the
