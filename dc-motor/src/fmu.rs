@@ -143,7 +143,7 @@ fn output(o: &MotorOutputs, vr: Vr) -> Option<f64> {
 
 impl Model for DcMotorFmu {
     const GUID: &'static str = crate::GUID;
-    const FMI3_TOKENS: [&'static str; 2] = [crate::FMI3_TOKEN, crate::FMI3_TOKEN];
+    const FMI3_TOKENS: [&'static str; 2] = [crate::FMI3_TOKEN, crate::FMI3_SCALAR_TOKEN];
     type Vr = Vr;
     type Inputs = [f64; 2];
     const VARIABLES: &'static [Variable] = VARIABLES;

@@ -27,6 +27,9 @@ pub struct Fmi3Interface {
     /// Terminals: the variables a system editor connects together, grouped
     /// (`terminalsAndIcons/terminalsAndIcons.xml`, FMI 3.0 §2.4.9).
     pub terminals: &'static [Terminal],
+    /// Whether a model that takes input derivatives declares them, as inputs `der(u)` whose
+    /// `derivative` attribute names the input they derive (FMI 3.0 §2.4.7.4).
+    pub input_derivatives: bool,
 }
 
 impl Fmi3Interface {
@@ -39,15 +42,20 @@ impl Fmi3Interface {
         structural_parameters: &[],
         arrays: &[],
         terminals: &[],
+        input_derivatives: true,
     };
 
-    /// The interface without arrays and structural parameters: what a master that reads every
-    /// variable as a scalar can load (OMSimulator asks every variable it lists with one value,
-    /// an array too). The capabilities and terminals stay.
+    /// The interface without arrays and structural parameters, and without the input
+    /// derivatives' variables: what a master with a scalar FMI 3 import can load. OMSimulator 3.0
+    /// asks every variable it lists for one value, an array too, and takes a `derivative`
+    /// attribute for a state's, read as a variable index (a second derivative's, the value
+    /// reference of the first, crashes it). The capabilities and terminals stay; the inputs are
+    /// held over each step.
     pub const fn scalar(self) -> Self {
         Self {
             structural_parameters: &[],
             arrays: &[],
+            input_derivatives: false,
             ..self
         }
     }

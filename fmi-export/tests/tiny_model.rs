@@ -81,6 +81,7 @@ const FMI3: Fmi3Interface = Fmi3Interface {
         dimension: 0,
     }],
     terminals: &[],
+    input_derivatives: true,
 };
 
 /// What the instance holds for the lag: its input u among them.

@@ -222,7 +222,8 @@ pub enum Edition {
     Fmi2,
     /// The FMI 3.0 FMU with the rod's section arrays.
     Fmi3,
-    /// The FMI 3.0 FMU without arrays, for masters that read every variable as a scalar.
+    /// The FMI 3.0 FMU without arrays and input derivatives, for masters with a scalar FMI 3
+    /// import.
     Fmi3Scalar,
 }
 
@@ -233,8 +234,8 @@ impl Edition {
             Self::Fmi2 => "FMI 2.0 co-simulation FMU",
             Self::Fmi3 => "FMI 3.0 co-simulation FMU",
             Self::Fmi3Scalar => {
-                "FMI 3.0 co-simulation FMU without arrays (for masters that read every variable as \
-                 a scalar)"
+                "FMI 3.0 co-simulation FMU without arrays and input derivatives (for masters with \
+                 a scalar FMI 3 import)"
             }
         }
     }
@@ -245,9 +246,10 @@ impl Edition {
             Self::Fmi2 => format!("GUID <code>{guid}</code>"),
             Self::Fmi3 => format!("Instantiation token <code>{token}</code>"),
             Self::Fmi3Scalar => format!(
-                "Instantiation token <code>{scalar_token}</code>. This FMU declares no arrays and \
-                 no structural parameter (the rod's sections are in the FMI 3.0 FMU with arrays); \
-                 everything else is the same, bit for bit"
+                "Instantiation token <code>{scalar_token}</code>. This FMU declares no arrays, no \
+                 structural parameter and no input derivatives (the <code>der(…)</code> inputs), \
+                 which the FMI 3.0 FMU in <code>fmi3/</code> declares: its inputs are held over \
+                 each communication step; everything else is the same, bit for bit"
             ),
         }
     }
@@ -361,16 +363,12 @@ fn variable_page(body: &str, html: &mut impl FnMut(&str, u8) -> String) -> Resul
 pub fn motor(edition: Edition) -> String {
     use dc_motor::variables::DESCRIPTION as MOTOR;
     let rows = |causality| variable_rows(&MOTOR, &[], causality);
-    let heading = match edition {
-        Edition::Fmi2 => Edition::Fmi2.heading(),
-        Edition::Fmi3 | Edition::Fmi3Scalar => Edition::Fmi3.heading(),
-    };
-    let identity = match edition {
-        Edition::Fmi2 => format!("GUID <code>{}</code>", dc_motor::GUID),
-        Edition::Fmi3 | Edition::Fmi3Scalar => {
-            format!("Instantiation token <code>{}</code>", dc_motor::FMI3_TOKEN)
-        }
-    };
+    let heading = edition.heading();
+    let identity = edition.identity(
+        dc_motor::GUID,
+        dc_motor::FMI3_TOKEN,
+        dc_motor::FMI3_SCALAR_TOKEN,
+    );
     format!(
         r#"<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8"><title>DcMotor</title>

@@ -16,9 +16,9 @@
 //! Beside each FMI 2 FMU goes its FMI 3.0 twin under `fmi3/` (`target/fmu/fmi3/`,
 //! `target/fmu/release/fmi3/`): the same libraries, which export both `fmi2*` and `fmi3*`, in FMI
 //! 3's platform folders ([`fmi3_platform`]; the macOS universal binary's slices apart), with the FMI 3
-//! modelDescription.xml. The slider-crank's FMI 3 FMU carries the rod's section arrays; its twin
-//! without them, for masters that read every variable as a scalar (OMSimulator), goes to
-//! `fmi3/scalar/` (the motor has no arrays: its one FMI 3 FMU serves every master).
+//! modelDescription.xml. The FMI 3 FMUs carry the input derivatives (`der(…)` inputs) and the
+//! slider-crank's the rod's section arrays; their twins without either, for masters with a scalar
+//! FMI 3 import (OMSimulator), go to `fmi3/scalar/`.
 //!
 //! The archive is reproducible: its entries come in a fixed order with a fixed time stamp.
 
@@ -296,7 +296,7 @@ fn write_ssp(system: &Path, ssp: &Path, fmus: [&PathBuf; 2]) -> Result<(), Box<d
 
 /// Writes both FMUs into `out_dir` with the libraries of FMI 2's platform folders among
 /// `binaries` (the slider-crank's) and `motor_libraries`, their FMI 3.0 twins into `out_dir/fmi3/`
-/// with every library (the slider-crank's without arrays into `out_dir/fmi3/scalar/`), and the
+/// with every library (without arrays and input derivatives into `out_dir/fmi3/scalar/`), and the
 /// motor-crank system made of the FMI 2 FMUs: `MotorCrank.ssp` and `motor-crank/` (OSP system
 /// structure beside both FMUs), and of the FMI 3 FMUs every master loads, `fmi3/MotorCrank.ssp`.
 /// Returns the paths written.
@@ -357,24 +357,34 @@ fn package(
         )?;
     }
     let motor_fmu3 = fmi3.join(format!("{}.fmu", motor.0));
-    write_fmu(
-        &motor_fmu3,
-        (motor.0, dc_motor::MODEL_DESCRIPTION_FMI3),
-        &fmi3_binaries(motor_libraries),
-        &documentation::motor(Edition::Fmi3),
-        &[],
-        &with_terminals(
-            motor_references.fmu_entries(),
-            dc_motor::TERMINALS_AND_ICONS_FMI3,
+    let motor_fmu3_scalar = fmi3.join("scalar").join(format!("{}.fmu", motor.0));
+    for (fmu, description, edition) in [
+        (&motor_fmu3, dc_motor::MODEL_DESCRIPTION_FMI3, Edition::Fmi3),
+        (
+            &motor_fmu3_scalar,
+            dc_motor::MODEL_DESCRIPTION_FMI3_SCALAR,
+            Edition::Fmi3Scalar,
         ),
-    )?;
+    ] {
+        write_fmu(
+            fmu,
+            (motor.0, description),
+            &fmi3_binaries(motor_libraries),
+            &documentation::motor(edition),
+            &[],
+            &with_terminals(
+                motor_references.fmu_entries(),
+                dc_motor::TERMINALS_AND_ICONS_FMI3,
+            ),
+        )?;
+    }
     let system = root.join("systems/motor-crank");
     let ssp = out_dir.join("MotorCrank.ssp");
     let fmus = [&motor_fmu, &crank_fmu];
     write_ssp(&system, &ssp, fmus)?;
     // the same system of the FMI 3 FMUs every master loads
     let ssp3 = fmi3.join("MotorCrank.ssp");
-    write_ssp(&system, &ssp3, [&motor_fmu3, &crank_fmu3_scalar])?;
+    write_ssp(&system, &ssp3, [&motor_fmu3_scalar, &crank_fmu3_scalar])?;
     compatibility::system()?.write_system(out_dir, &ssp)?;
     let osp = out_dir.join("motor-crank");
     std::fs::create_dir_all(&osp)?;
@@ -393,6 +403,7 @@ fn package(
         crank_fmu3,
         crank_fmu3_scalar,
         motor_fmu3,
+        motor_fmu3_scalar,
         ssp3,
         ssp,
         osp,

@@ -16,9 +16,9 @@ pub const MODEL_DESCRIPTION_FMI3: &str =
 /// The instantiation token of [`MODEL_DESCRIPTION_FMI3`] (FNV-1a 128 hash of its text).
 pub const FMI3_TOKEN: &str = include_str!(concat!(env!("OUT_DIR"), "/fmi3/token.txt"));
 
-/// The FMI 3.0 modelDescription.xml without the section arrays and their structural parameter,
-/// for masters that read every variable as a scalar (OMSimulator); its instantiationToken is
-/// [`FMI3_SCALAR_TOKEN`].
+/// The FMI 3.0 modelDescription.xml without the section arrays and their structural parameter
+/// and without the input derivatives' variables, for masters with a scalar FMI 3 import
+/// (OMSimulator); its instantiationToken is [`FMI3_SCALAR_TOKEN`].
 pub const MODEL_DESCRIPTION_FMI3_SCALAR: &str = include_str!(concat!(
     env!("OUT_DIR"),
     "/fmi3/scalar/modelDescription.xml"

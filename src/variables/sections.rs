@@ -125,4 +125,5 @@ pub const FMI3: Fmi3Interface = Fmi3Interface {
             ],
         },
     ],
+    input_derivatives: true,
 };

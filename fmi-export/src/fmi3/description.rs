@@ -100,7 +100,7 @@ fn render<V: ValueReference>(d: &Description<V>, fmi3: Fmi3Interface) -> Result<
     for v in d.variables {
         x.push_str(&variable(d, v, fmi3.provides_intermediate_update));
     }
-    for order in 1..=d.max_input_derivative_order {
+    for order in 1..=input_derivative_order(d, fmi3) {
         for (k, v) in inputs(d).enumerate() {
             let (name, derives) = match order {
                 1 => (format!("der({})", v.name), v.vr.index()),
@@ -137,10 +137,9 @@ fn render<V: ValueReference>(d: &Description<V>, fmi3: Fmi3Interface) -> Result<
         let inputs = feedthrough(d, output);
         let _ = writeln!(
             x,
-            r#"    <Output valueReference="{}" dependencies="{}{}"/>"#,
+            r#"    <Output valueReference="{}"{}/>"#,
             output.index(),
-            list(inputs),
-            rates(d, inputs)
+            dependencies(d, fmi3, &list(inputs), inputs)
         );
     }
     for a in fmi3.arrays {
@@ -160,10 +159,9 @@ fn render<V: ValueReference>(d: &Description<V>, fmi3: Fmi3Interface) -> Result<
         });
         let _ = writeln!(
             x,
-            r#"    <InitialUnknown valueReference="{}" dependencies="{}{}"/>"#,
+            r#"    <InitialUnknown valueReference="{}"{}/>"#,
             unknown.index(),
-            list(&knowns),
-            rates(d, feedthrough(d, unknown))
+            dependencies(d, fmi3, &list(&knowns), feedthrough(d, unknown))
         );
     }
     for a in fmi3.arrays {
@@ -180,6 +178,15 @@ fn inputs<V: ValueReference>(d: &Description<V>) -> impl Iterator<Item = &Variab
         .filter(|v| v.causality == Causality::Input)
 }
 
+/// The highest order of the input derivatives declared (0: none).
+fn input_derivative_order<V: ValueReference>(d: &Description<V>, fmi3: Fmi3Interface) -> u32 {
+    if fmi3.input_derivatives {
+        d.max_input_derivative_order
+    } else {
+        0
+    }
+}
+
 /// The inputs an output depends on at once ([`Description::feedthrough`]).
 fn feedthrough<V: ValueReference>(d: &Description<V>, output: V) -> &'static [V] {
     d.feedthrough
@@ -188,15 +195,26 @@ fn feedthrough<V: ValueReference>(d: &Description<V>, output: V) -> &'static [V]
         .map_or(&[][..], |(_, inputs)| inputs)
 }
 
-/// The value references, each after a space, of `der(u)` of the inputs `u` among `direct` whose
-/// rate an output reads at once ([`Description::rate_feedthrough`]).
-fn rates<V: ValueReference>(d: &Description<V>, direct: &[V]) -> String {
-    inputs(d)
-        .enumerate()
-        .filter(|(_, v)| direct.contains(&v.vr) && d.rate_feedthrough.contains(&v.vr))
-        .filter(|_| d.max_input_derivative_order > 0)
-        .map(|(k, _)| format!(" {}", input_derivative_vr(k, 1)))
-        .collect()
+/// The `dependencies` attribute of an unknown that depends on `knowns` (value references, listed)
+/// and reads the inputs `direct` at once: none where it reads an input's rate too (the inputs
+/// `direct` among [`Description::rate_feedthrough`], where `der(u)` is declared), which by FMI 3.0
+/// §2.4.8 declares it dependent on every known, `der(u)` among them. The list with `der(u)`'s
+/// value references would say the same exactly, but masters that read FMI 3 dependencies as
+/// FMI 2's variable indices (OMSimulator 3.0) refuse such a large number and the whole FMU with
+/// it.
+fn dependencies<V: ValueReference>(
+    d: &Description<V>,
+    fmi3: Fmi3Interface,
+    knowns: &str,
+    direct: &[V],
+) -> String {
+    let reads_rate = input_derivative_order(d, fmi3) > 0
+        && inputs(d).any(|v| direct.contains(&v.vr) && d.rate_feedthrough.contains(&v.vr));
+    if reads_rate {
+        String::new()
+    } else {
+        format!(r#" dependencies="{knowns}""#)
+    }
 }
 
 /// Checks the FMI 3 additions: value references unique and outside the table's, start values
@@ -210,7 +228,7 @@ fn check_interface<V: ValueReference>(
         .iter()
         .map(|p| (p.vr, p.name))
         .chain(fmi3.arrays.iter().map(|a| (a.vr, a.name)))
-        .chain((1..=d.max_input_derivative_order).flat_map(|order| {
+        .chain((1..=input_derivative_order(d, fmi3)).flat_map(|order| {
             inputs(d)
                 .enumerate()
                 .map(move |(k, v)| (input_derivative_vr(k, order), v.name))

@@ -1,6 +1,6 @@
-"""Records the FMI 3.0 FMUs that masters reading every variable as a scalar load — the slider-crank
-without its section arrays (`target/fmu/fmi3/scalar/FlexibleSliderCrank.fmu`) and the DC motor
-(`target/fmu/fmi3/DcMotor.fmu`) — as OMSimulator's FMI 3 import runs them: their DefaultExperiment
+"""Records the FMI 3.0 FMUs that masters with a scalar FMI 3 import load — the slider-crank without
+its section arrays and both without input derivatives (`target/fmu/fmi3/scalar/FlexibleSliderCrank.fmu`,
+`target/fmu/fmi3/scalar/DcMotor.fmu`) — as OMSimulator's FMI 3 import runs them: their DefaultExperiment
 (24 ms in 240 communication steps), the outputs of `RECORDED` at every communication point, as
 OMSimulator writes them (12 significant digits), into `packaging/python/tests/data/`. The test
 command compares fmpy's run of the freshly built FMUs with these records
@@ -34,7 +34,7 @@ RECORDED = {
 }
 #: Where each FMU is, under the packaging step's output directory.
 FMUS = {"FlexibleSliderCrank": Path("fmi3/scalar/FlexibleSliderCrank.fmu"),
-        "DcMotor": Path("fmi3/DcMotor.fmu")}
+        "DcMotor": Path("fmi3/scalar/DcMotor.fmu")}
 #: The records, beside the tests.
 RECORDS = Path(__file__).resolve().parents[1] / "tests" / "data"
 STOP, INTERVALS = 0.024, 240

@@ -1,5 +1,6 @@
-"""The FMI 3.0 FMUs in masters that read every variable as a scalar (OMSimulator asks each variable it
-lists for one value, an array too): what such a master loads declares only scalars, and fmpy's run of
+"""The FMI 3.0 FMUs in masters with a scalar FMI 3 import (OMSimulator asks each variable it lists for
+one value, an array too, and reads value references in `derivative` and `dependencies` as variable
+indices): what such a master loads declares only scalars and no input derivatives, and fmpy's run of
 the freshly built FMUs equals OMSimulator's recorded run (`python -m fsc.omsimulator OMSIMULATOR`
 records it) at every recorded output and point, to the 12 digits OMSimulator writes."""
 import csv
@@ -23,18 +24,24 @@ def description(fmu):
 
 @pytest.mark.parametrize("model", FMUS)
 def test_what_scalar_only_masters_load_declares_only_scalars(model):
-    """No array (`Dimension`) and no structural parameter in the FMI 3.0 FMUs such a master loads;
-    the slider-crank's FMI 3.0 FMU with arrays has its own instantiation token, and both differ
-    from the FMI 2.0 GUID (each token is its description's hash)."""
+    """No array (`Dimension`), no structural parameter and no input derivative (`derivative`) in
+    the FMI 3.0 FMUs such a master loads, and every value reference its dependencies name is below
+    the number of variables (so that read as an index it names a variable too); the FMI 3.0 FMU
+    with them has its own instantiation token, and both differ from the FMI 2.0 GUID (each token is
+    its description's hash)."""
     root = description(FMU_DIR / FMUS[model])
     variables = list(root.find("ModelVariables"))
     assert len(variables) > 5
     for v in variables:
         assert v.find("Dimension") is None, v.get("name")
         assert v.get("causality") != "structuralParameter", v.get("name")
+        assert v.get("derivative") is None, v.get("name")
+    for unknown in root.find("ModelStructure"):
+        named = [int(r) for r in (unknown.get("dependencies") or "").split()]
+        assert all(r < len(variables) for r in named), unknown.get("valueReference")
     tokens = {read_model_description(str(FMU_DIR / path)).guid
               for path in (f"{model}.fmu", f"fmi3/{model}.fmu", FMUS[model])}
-    assert len(tokens) == (3 if model == "FlexibleSliderCrank" else 2)
+    assert len(tokens) == 3
 
 
 def test_the_fmi3_fmu_with_arrays_declares_them():

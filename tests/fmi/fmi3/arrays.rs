@@ -121,9 +121,9 @@ fn structural_parameters_size_the_arrays_in_configuration_mode() {
     }
 }
 
-/// The FMU without arrays (its own token): no Configuration Mode, an array's value reference is
-/// unknown, the scalars read as with arrays; a token of neither description is refused, naming
-/// both.
+/// The FMU without arrays and input derivatives (its own token): no Configuration Mode, an array's
+/// and an input derivative's value reference are unknown, the scalars read as with arrays; a token
+/// of neither description is refused, naming both.
 #[test]
 fn the_description_without_arrays_serves_scalars_only() {
     use flexible_slider_crank::fmi::FMI3_SCALAR_TOKEN;
@@ -167,6 +167,11 @@ fn the_description_without_arrays_serves_scalars_only() {
         fresh.get_float64(&outputs).1,
         with_arrays.get_float64(&outputs).1
     );
+    let derivative = fmi_export::fmi3::description::input_derivative_vr(0, 1);
+    assert_eq!(with_arrays.get_float64(&[derivative]).0, OK);
+    assert_eq!(fresh.get_float64(&[derivative]).0, ERROR);
+    let message = fresh.messages().last().cloned().unwrap_or_default();
+    assert!(message.contains("1001000"), "{message}");
     let (refused, id) = Instance3::try_new("{not-this-fmu}", false, false);
     assert!(refused.is_none());
     let message = messages(id).join("\n");

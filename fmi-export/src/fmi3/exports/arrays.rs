@@ -139,10 +139,11 @@ fn structural<M: Model>(
 }
 
 /// The input and the order of the input derivative `der(u)` of value reference `vr`, if it is
-/// one ([`crate::fmi3::description::input_derivative`]).
-pub(super) fn input_derivative<M: Model>(vr: u32) -> Option<(usize, u32)> {
+/// one that `inst`'s description declares ([`crate::fmi3::description::input_derivative`]).
+pub(super) fn input_derivative<M: Model>(inst: &Instance<M>, vr: u32) -> Option<(usize, u32)> {
     let (n, max) = (M::Inputs::LEN, M::MAX_INPUT_DERIVATIVE_ORDER);
-    crate::fmi3::description::input_derivative(vr, n, max)
+    let declared = inst.fmi3().interface.input_derivatives;
+    crate::fmi3::description::input_derivative(vr, n, max).filter(|_| declared)
 }
 
 /// The number of values of the Float64 variable `vr`: its array's size, or 1.
@@ -181,14 +182,14 @@ pub fn get_float64<M: Model>(
             let n = size(inst, r);
             inst.get_array(index, &mut values[at..at + n])?;
             (i, at) = (i + 1, at + n);
-        } else if let Some((k, order)) = input_derivative::<M>(r) {
+        } else if let Some((k, order)) = input_derivative(inst, r) {
             values[at] = inst.input_derivative(k, order);
             (i, at) = (i + 1, at + 1);
         } else {
             let table = |r: u32| {
                 r != TIME_VALUE_REFERENCE
                     && inst.fmi3().interface.array(r).is_none()
-                    && input_derivative::<M>(r).is_none()
+                    && input_derivative(inst, r).is_none()
             };
             let run = vr[i..].iter().take_while(|&&r| table(r)).count();
             inst.resolve(&vr[i..i + run], "Float64")?;

@@ -109,7 +109,7 @@ fn set_float64<M: Model>(
     values: &[f64],
 ) -> Result<(), FmuError> {
     for (&r, &x) in vr.iter().zip(values) {
-        match input_derivative::<M>(r) {
+        match input_derivative(inst, r) {
             Some((k, order)) => inst.check_input_derivative(k, order, x)?,
             None => check_set_real(
                 inst.machine().state(),
@@ -119,7 +119,7 @@ fn set_float64<M: Model>(
         }
     }
     for (&r, &x) in vr.iter().zip(values) {
-        match input_derivative::<M>(r) {
+        match input_derivative(inst, r) {
             Some((k, order)) => inst.set_input_derivative(k, order, x)?,
             None => {
                 inst.resolve(&[r], "Float64")?;
