@@ -1,10 +1,8 @@
 //! [`Instance`]: one FMU instance of a [`Model`] — the model, the master's logger, the state
 //! machine, the clock and the inputs — the calls every FMI version makes on it, and the framing of
-//! its serialized states (`framing`).
+//! its serialized states ([`framing`]).
 
-mod framing;
-
-pub use framing::state_checksum;
+pub mod framing;
 
 use crate::checks::{check_set_all, check_set_integer, check_set_real, check_settable};
 use crate::error::FmuError;

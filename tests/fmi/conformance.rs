@@ -427,7 +427,7 @@ fn fmu_state_is_bit_exact_and_checked() {
             // An older format, with a valid checksum.
             let mut v = bytes[..bytes.len() - 8].to_vec();
             v[4..8].copy_from_slice(&1u32.to_le_bytes());
-            v.extend_from_slice(&fmi_export::instance::state_checksum(&v).to_le_bytes());
+            v.extend_from_slice(&fmi_export::instance::framing::state_checksum(&v).to_le_bytes());
             v
         }),
     ] {
