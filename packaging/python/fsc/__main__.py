@@ -1,5 +1,6 @@
 """`python -m fsc sweep STUDY.toml [--out DIR] [--scheduler ADDRESS] [--workers N] [--fmu PATH]`
-`python -m fsc bearing-report MACHINE.toml [--out DIR] [--cycles N] [--fmu PATH]`"""
+`python -m fsc bearing-report MACHINE.toml [--out DIR] [--cycles N] [--fmu PATH]`
+`python -m fsc ensemble [NAME=VALUE ...] [--joint J] [--runs N] [--rtol R] ...` (`fsc.ensemble`)"""
 import argparse
 import sys
 from pathlib import Path
@@ -8,6 +9,10 @@ from .study import StudyError, load
 
 
 def main(argv=None) -> int:
+    argv = sys.argv[1:] if argv is None else argv
+    if argv[:1] == ["ensemble"]:
+        from .ensemble import main as ensemble
+        return ensemble(argv[1:])
     parser = argparse.ArgumentParser(prog="python -m fsc")
     sub = parser.add_subparsers(dest="command", required=True)
     sweep = sub.add_parser("sweep", help="run a parameter study on Dask")
@@ -22,6 +27,8 @@ def main(argv=None) -> int:
     report.add_argument("--out", help="output directory (default: target/bearing-report/<machine>)")
     report.add_argument("--cycles", type=int, help="load cycles to run (default: the file's, or 3)")
     report.add_argument("--fmu", help="FMU to use instead of the machine file's")
+    sub.add_parser("ensemble", help="a clearance joint's impacts judged by ensembles of runs "
+                                    "(python -m fsc ensemble --help)")
     args = parser.parse_args(argv)
     if args.command == "bearing-report":
         return bearing_report(args)
