@@ -28,8 +28,10 @@ def test_compare_judges_the_upper_quantiles_and_the_first_impacts():
     fewer = [(100.5, lower_half_lowered(r[1]), 200) for r in reference]
     rows, ok = ensemble.compare(fewer, reference, 0.02)
     judged = [within for *_, is_judged, within in rows if is_judged]
-    informative = {name: d for name, _, _, d, is_judged, _ in rows if not is_judged}
+    informative = {name: d for name, _, _, d, _, is_judged, _ in rows if not is_judged}
     assert ok and len(judged) == 3
+    noise = [sigma for _, _, _, _, sigma, _, _ in rows if sigma is not None]
+    assert len(noise) == 4 and all(0 <= sigma < 0.05 for sigma in noise) and noise[0] > 0
     assert informative["later peaks, median"] < -0.1
     assert informative["later peaks per run"] == -0.5
     shifted = [(100.0, [0.95 * p for p in r[1]], r[2]) for r in reference]
