@@ -10,7 +10,7 @@
 #![no_main]
 
 use flexible_slider_crank_fuzz::{Instance, variable_count};
-use fmi_export::instance::state_checksum;
+use fmi_export::instance::framing::state_checksum;
 use fmi_sys::fmi2::fmi2Status_fmi2OK as OK;
 use libfuzzer_sys::fuzz_target;
 
