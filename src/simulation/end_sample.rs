@@ -5,7 +5,7 @@ use super::sample::{SERIES, Sample};
 use super::step::StepPoint;
 use crate::joint::Contacts;
 use crate::math;
-use crate::mechanism::InputSignal;
+use crate::mechanism::{Conditions, InputSignal, Inputs};
 
 /// The peak-hold sample at the end of the last accepted step with everything it is a function
 /// of: the point (time, state, derivative), the inputs there (their values and the drive's
@@ -22,15 +22,22 @@ pub(super) struct EndSample {
     sample: Sample,
 }
 
-/// What an evaluation at `t` reads of the inputs `signal`: their values and the drive's
-/// acceleration.
+/// What an evaluation at `t` reads of the inputs `signal` ([`Conditions::at`]): their values and
+/// the drive's acceleration.
 fn read_at(signal: &InputSignal, t: f64) -> [f64; 4] {
-    let u = signal.at(t);
+    let contacts = Contacts::default();
+    let c = Conditions::at(signal, t, &contacts);
+    // (exhaustive: a new input is a compile error here)
+    let Inputs {
+        drive_speed,
+        drive_torque,
+        slider_force,
+    } = c.inputs;
     [
-        u.drive_speed,
-        u.drive_torque,
-        u.slider_force,
-        signal.rate(t).drive_speed,
+        drive_speed,
+        drive_torque,
+        slider_force,
+        c.drive_acceleration,
     ]
 }
 
@@ -81,7 +88,6 @@ impl EndSample {
 mod tests {
     use super::*;
     use crate::joint::ContactState;
-    use crate::mechanism::Inputs;
 
     /// The kept end sample is given back only for the point, inputs and contact state it was
     /// taken with, each bit for bit (a zero's sign included), the inputs as an evaluation there
