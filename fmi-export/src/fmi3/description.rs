@@ -137,9 +137,10 @@ fn render<V: ValueReference>(d: &Description<V>, fmi3: Fmi3Interface) -> Result<
         let inputs = feedthrough(d, output);
         let _ = writeln!(
             x,
-            r#"    <Output valueReference="{}"{}/>"#,
+            r#"    <Output valueReference="{}" dependencies="{}{}"/>"#,
             output.index(),
-            dependencies(d, fmi3, &list(inputs), inputs)
+            list(inputs),
+            rates(d, fmi3, inputs)
         );
     }
     for a in fmi3.arrays {
@@ -159,9 +160,10 @@ fn render<V: ValueReference>(d: &Description<V>, fmi3: Fmi3Interface) -> Result<
         });
         let _ = writeln!(
             x,
-            r#"    <InitialUnknown valueReference="{}"{}/>"#,
+            r#"    <InitialUnknown valueReference="{}" dependencies="{}{}"/>"#,
             unknown.index(),
-            dependencies(d, fmi3, &list(&knowns), feedthrough(d, unknown))
+            list(&knowns),
+            rates(d, fmi3, feedthrough(d, unknown))
         );
     }
     for a in fmi3.arrays {
@@ -195,26 +197,15 @@ fn feedthrough<V: ValueReference>(d: &Description<V>, output: V) -> &'static [V]
         .map_or(&[][..], |(_, inputs)| inputs)
 }
 
-/// The `dependencies` attribute of an unknown that depends on `knowns` (value references, listed)
-/// and reads the inputs `direct` at once: none where it reads an input's rate too (the inputs
-/// `direct` among [`Description::rate_feedthrough`], where `der(u)` is declared), which by FMI 3.0
-/// §2.4.8 declares it dependent on every known, `der(u)` among them. The list with `der(u)`'s
-/// value references would say the same exactly, but masters that read FMI 3 dependencies as
-/// FMI 2's variable indices (OMSimulator 3.0) refuse such a large number and the whole FMU with
-/// it.
-fn dependencies<V: ValueReference>(
-    d: &Description<V>,
-    fmi3: Fmi3Interface,
-    knowns: &str,
-    direct: &[V],
-) -> String {
-    let reads_rate = input_derivative_order(d, fmi3) > 0
-        && inputs(d).any(|v| direct.contains(&v.vr) && d.rate_feedthrough.contains(&v.vr));
-    if reads_rate {
-        String::new()
-    } else {
-        format!(r#" dependencies="{knowns}""#)
-    }
+/// The value references, each after a space, of `der(u)` of the inputs `u` among `direct` whose
+/// rate an output reads at once ([`Description::rate_feedthrough`]), where `der(u)` is declared.
+fn rates<V: ValueReference>(d: &Description<V>, fmi3: Fmi3Interface, direct: &[V]) -> String {
+    inputs(d)
+        .enumerate()
+        .filter(|(_, v)| direct.contains(&v.vr) && d.rate_feedthrough.contains(&v.vr))
+        .filter(|_| input_derivative_order(d, fmi3) > 0)
+        .map(|(k, _)| format!(" {}", input_derivative_vr(k, 1)))
+        .collect()
 }
 
 /// Checks the FMI 3 additions: value references unique and outside the table's, start values
