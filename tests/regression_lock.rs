@@ -9,6 +9,7 @@
 //! - `worn`: lubricated crank pin and main bearing (0.05 mm, 9 mm long, 0.04 Pa s, the short
 //!   film) with the dry rod–slider joint, every journal settled (the three joints' laws at once);
 //! - `finite`: `worn` with the finite film in both bearings;
+//! - `rough`: `finite` with rough surfaces in both bearings (the asperity contact);
 //! - `torque`: the torque drive under a constant 2 N m with a constant slider force;
 //! - `machine`: a user's machine, every feature of it at once: the compressor of
 //!   `studies/compressor.toml` with its crank-angle load table, counterweighted crank, lubricated
@@ -71,6 +72,7 @@ const CASES: &[Case] = &[
     ),
     Case::plain("worn", &WORN),
     Case::plain("finite", &FINITE),
+    Case::plain("rough", &ROUGH),
     Case::plain(
         "torque",
         &[
@@ -159,6 +161,22 @@ const FINITE: [(&str, f64); 13] = {
     finite[6].1 = 2.0;
     finite[12].1 = 2.0;
     finite
+};
+
+/// [`FINITE`] with rough surfaces in both bearings: 2 µm combined roughness, the asperity contact
+/// with its usual parameters and a boundary friction of 0.12.
+const ROUGH: [(&str, f64); 17] = {
+    let mut rough = [("", 0.0); 17];
+    let mut k = 0;
+    while k < FINITE.len() {
+        rough[k] = FINITE[k];
+        k += 1;
+    }
+    rough[13] = ("crankPin.roughness", 2e-6);
+    rough[14] = ("crankPin.boundaryFriction", 0.12);
+    rough[15] = ("mainBearing.roughness", 2e-6);
+    rough[16] = ("mainBearing.boundaryFriction", 0.12);
+    rough
 };
 
 /// FNV-1a 64 of each output's bits over the run's 240 communication points.
@@ -258,6 +276,7 @@ fn every_output_of_the_locked_runs_is_bit_identical() {
 
 /// The outputs an ideal bearing reports as zeros.
 const BEARING: &[&str] = &[
+    "metalContactFractionCycle",
     "contactOnsets",
     "contactOnsetsTotal",
     "eccentricityRatio",
@@ -288,7 +307,16 @@ const TOUCH: &[&str] = &[
     "contactOnsets",
     "contactOnsetsTotal",
     "inContact",
+    "metalContactFractionCycle",
     "penetration",
+];
+const JOINTS: &[&str] = &["joint.", "crankPin.", "mainBearing."];
+const ASPERITY: &[&str] = &[
+    "asperityForce",
+    "asperityForcePeakCycle",
+    "asperityFrictionPower",
+    "asperityPressurePeak",
+    "filmRatio",
 ];
 const FILM: &[&str] = &[
     "filmPressurePeak",
@@ -315,37 +343,57 @@ const ZEROS: &[Zero] = &[
         "an ideal joint has no clearance, film or friction",
     ),
     (
-        &["B", "ramp", "A", "lubricated", "worn", "finite", "torque"],
+        &[
+            "B",
+            "ramp",
+            "A",
+            "lubricated",
+            "worn",
+            "finite",
+            "rough",
+            "torque",
+        ],
         &[""],
         &["energy.gravity"],
         "no gravity",
     ),
     (
-        &["B", "ramp", "A", "lubricated", "worn", "finite", "torque"],
+        &[
+            "B",
+            "ramp",
+            "A",
+            "lubricated",
+            "worn",
+            "finite",
+            "rough",
+            "torque",
+        ],
         &[""],
         &["energy.materialDamping"],
         "an undamped rod",
     ),
     (
-        &["B", "ramp", "A", "lubricated", "worn", "finite"],
+        &["B", "ramp", "A", "lubricated", "worn", "finite", "rough"],
         &[""],
         &["energy.sliderWork", "slider.appliedForce"],
         "no slider force and no load table",
     ),
     (
-        &["B", "ramp", "A", "torque", "worn", "finite", "machine"],
+        &[
+            "B", "ramp", "A", "torque", "worn", "finite", "rough", "machine",
+        ],
         &["joint."],
         FILM,
         "a dry rod-slider joint has no film",
     ),
     (
-        &["B", "ramp", "A", "torque", "worn", "finite"],
+        &["B", "ramp", "A", "torque", "worn", "finite", "rough"],
         &["joint."],
         &["frictionPower", "frictionPowerMeanCycle"],
         "a dry joint without friction",
     ),
     (
-        &["worn", "finite", "machine"],
+        &["worn", "finite", "rough", "machine"],
         &["joint."],
         &["filmThicknessMinCycle", "filmThicknessMinSinceStart"],
         "the dry joint is settled on its wall",
@@ -386,13 +434,13 @@ const ZEROS: &[Zero] = &[
         "the settled start is in dry contact and never lifts off",
     ),
     (
-        &["worn", "finite"],
+        &["worn", "finite", "rough"],
         CRANK_JOINTS,
         &["filmThicknessMinSinceStart"],
         "the journal touches its wall at the start",
     ),
     (
-        &["finite"],
+        &["finite", "rough"],
         CRANK_JOINTS,
         &["filmThicknessMinCycle"],
         "the journal touches its wall in each revolution",
@@ -410,10 +458,31 @@ const ZEROS: &[Zero] = &[
         "the oiled bearings never touch",
     ),
     (
-        &["B", "ramp", "A", "worn", "finite", "torque", "machine"],
+        &["B", "ramp", "A", "worn", "torque", "machine"],
         &[""],
         &["solver.warnings"],
         "the run warns of nothing",
+    ),
+    (
+        &[
+            "B",
+            "ramp",
+            "A",
+            "lubricated",
+            "worn",
+            "finite",
+            "torque",
+            "machine",
+        ],
+        JOINTS,
+        ASPERITY,
+        "smooth surfaces carry no asperity load",
+    ),
+    (
+        &["rough"],
+        &["joint."],
+        ASPERITY,
+        "a dry joint has no asperity contact",
     ),
 ];
 

@@ -167,7 +167,7 @@ pub fn real_output(o: &Outputs, vr: Vr) -> Option<f64> {
 
 /// Each joint's bearing-design outputs, by [`JointRole`], in the order of
 /// [`bearing_values`].
-const BEARING_OUTPUTS: [[Vr; 18]; 3] = [
+const BEARING_OUTPUTS: [[Vr; 24]; 3] = [
     [
         Vr::MainBearingEccentricityRatio,
         Vr::MainBearingFilmThickness,
@@ -187,6 +187,12 @@ const BEARING_OUTPUTS: [[Vr; 18]; 3] = [
         Vr::MainBearingForcePeakCycleAngle,
         Vr::MainBearingFrictionPowerMeanCycle,
         Vr::MainBearingOilFlowMeanCycle,
+        Vr::MainBearingAsperityForce,
+        Vr::MainBearingAsperityPressurePeak,
+        Vr::MainBearingAsperityFrictionPower,
+        Vr::MainBearingFilmRatio,
+        Vr::MainBearingAsperityForcePeakCycle,
+        Vr::MainBearingMetalContactFractionCycle,
     ],
     [
         Vr::CrankPinEccentricityRatio,
@@ -207,6 +213,12 @@ const BEARING_OUTPUTS: [[Vr; 18]; 3] = [
         Vr::CrankPinForcePeakCycleAngle,
         Vr::CrankPinFrictionPowerMeanCycle,
         Vr::CrankPinOilFlowMeanCycle,
+        Vr::CrankPinAsperityForce,
+        Vr::CrankPinAsperityPressurePeak,
+        Vr::CrankPinAsperityFrictionPower,
+        Vr::CrankPinFilmRatio,
+        Vr::CrankPinAsperityForcePeakCycle,
+        Vr::CrankPinMetalContactFractionCycle,
     ],
     [
         Vr::JointEccentricityRatio,
@@ -227,11 +239,17 @@ const BEARING_OUTPUTS: [[Vr; 18]; 3] = [
         Vr::JointForcePeakCycleAngle,
         Vr::JointFrictionPowerMeanCycle,
         Vr::JointOilFlowMeanCycle,
+        Vr::JointAsperityForce,
+        Vr::JointAsperityPressurePeak,
+        Vr::JointAsperityFrictionPower,
+        Vr::JointFilmRatio,
+        Vr::JointAsperityForcePeakCycle,
+        Vr::JointMetalContactFractionCycle,
     ],
 ];
 
 /// A joint's bearing-design outputs in the order of a row of [`BEARING_OUTPUTS`].
-fn bearing_values(b: &BearingOutputs) -> [f64; 18] {
+fn bearing_values(b: &BearingOutputs) -> [f64; 24] {
     [
         b.eccentricity_ratio,
         b.film_thickness,
@@ -251,6 +269,12 @@ fn bearing_values(b: &BearingOutputs) -> [f64; 18] {
         b.force_peak_cycle_angle,
         b.friction_power_mean_cycle,
         b.oil_flow_mean_cycle,
+        b.asperity_force,
+        b.asperity_pressure_peak,
+        b.asperity_friction_power,
+        b.film_ratio,
+        b.asperity_force_peak_cycle,
+        b.metal_contact_fraction_cycle,
     ]
 }
 

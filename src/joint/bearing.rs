@@ -39,6 +39,7 @@
 
 use nalgebra::Vector2;
 
+use super::asperity::{Asperity, AsperityState};
 use super::contact::DryContact;
 use super::finite_film::FiniteFilm;
 use super::kinematics::{JointForce, JointKinematics};
@@ -64,6 +65,8 @@ pub struct JournalBearing {
     pub switch_eccentricity: f64,
     /// The film's model.
     pub film: Film,
+    /// The rough surfaces' asperity contact, None for smooth surfaces.
+    pub asperity: Option<Asperity>,
     /// Dry contact law (clearance, journal radius, friction, stiffness).
     pub dry: DryContact,
 }
@@ -184,17 +187,34 @@ impl JournalBearing {
         (-couette - pressure, couette - pressure)
     }
 
-    /// Film force and shear moments, plus dry contact when the journal touches the bearing.
+    /// The asperity contact's force and what it carries in the state `k` (zeros for smooth
+    /// surfaces).
+    pub fn asperity_force(&self, k: &JointKinematics) -> (JointForce, AsperityState) {
+        self.asperity
+            .as_ref()
+            .map_or_else(Default::default, |a| a.force(k, &self.dry))
+    }
+
+    /// Film force and shear moments, plus the asperities' force where the film is thin on rough
+    /// surfaces and dry contact when the journal touches the bearing.
     pub fn force(&self, k: &JointKinematics, impact_velocity: f64) -> JointForce {
         let dry = self.dry.force(k, impact_velocity);
         let (film, f_t) = self.film(k);
         let (journal, bearing) = self.shear_moments(k, f_t);
-        JointForce {
+        let mut total = JointForce {
             force: film + dry.force,
             moment: dry.moment + journal,
             bearing_moment: dry.bearing_moment + bearing,
             ..dry
+        };
+        if self.asperity.is_some() {
+            let (asperity, _) = self.asperity_force(k);
+            total.force += asperity.force;
+            total.moment += asperity.moment;
+            total.bearing_moment += asperity.bearing_moment;
+            total.potential += asperity.potential;
         }
+        total
     }
 }
 

@@ -288,6 +288,13 @@ impl DryContact {
         }
     }
 
+    /// The slip speed v_T = ė · t + R_j ω_j − R_b ω_b at the contact point on the line of `t`
+    /// \[m/s\].
+    pub fn slip_speed(&self, k: &JointKinematics, t: &Vector2<f64>) -> f64 {
+        let bearing_radius = self.journal_radius + self.clearance;
+        k.e_dot.dot(t) + self.journal_radius * k.omega_journal - bearing_radius * k.omega_bearing
+    }
+
     /// The contact's normal and friction forces, `None` without penetration.
     fn contact(&self, k: &JointKinematics, impact_velocity: f64) -> Option<Contact> {
         let delta = self.penetration(k);
@@ -297,9 +304,7 @@ impl DryContact {
         let n = k.normal();
         let t = Vector2::new(-n.y, n.x);
         let f_n = self.normal_force(delta, k.e_dot.dot(&n), impact_velocity);
-        let bearing_radius = self.journal_radius + self.clearance;
-        let v_t = k.e_dot.dot(&t) + self.journal_radius * k.omega_journal
-            - bearing_radius * k.omega_bearing;
+        let v_t = self.slip_speed(k, &t);
         let f_t = -self.friction * self.friction_factor(v_t) * f_n * v_t.signum();
         Some(Contact {
             delta,

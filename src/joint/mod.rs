@@ -10,15 +10,18 @@
 //! - P. Flores, J. Ambrósio, J. C. P. Claro, H. M. Lankarani (2008), Kinematics and Dynamics of
 //!   Multibody Systems with Imperfect Joints, Springer.
 
+pub mod asperity;
 pub mod bearing;
 pub mod contact;
 pub mod finite_film;
 pub mod kinematics;
+pub mod oil;
 pub mod parameters;
 pub mod reynolds;
 pub mod role;
 pub mod short_film;
 
+pub use asperity::{Asperity, AsperityState};
 pub use bearing::{Film, JournalBearing};
 pub use contact::{ContactGeometry, ContactLaw, DryContact, Elastic, LineContact, hertz_stiffness};
 pub use kinematics::{
@@ -61,6 +64,16 @@ impl Joint {
                 viscosity: p.viscosity,
                 length: p.bearing_length,
                 switch_eccentricity: p.switch_eccentricity,
+                asperity: (p.roughness > 0.0).then(|| {
+                    asperity::Asperity::new(
+                        p.roughness,
+                        p.asperity_density_product,
+                        p.asperity_roughness_ratio,
+                        (p.youngs_modulus, p.poisson_ratio),
+                        p.boundary_friction,
+                        p.bearing_length,
+                    )
+                }),
                 film: match p.film_model {
                     FilmModel::Short => Film::Short,
                     FilmModel::Finite => {
@@ -178,22 +191,36 @@ impl Joint {
         let c = dry.clearance;
         let eccentricity_ratio = k.e.norm() / c;
         let force = self.force(k, impact_velocity);
-        let (film_pressure, film_loss, oil_flow) = match self {
+        let (film_pressure, film_loss, oil_flow, asperity) = match self {
             Self::Lubricated(bearing) => (
                 bearing.peak_pressure(k),
                 bearing.film_loss(k),
                 bearing.side_flow(k),
+                bearing.asperity_force(k).1,
             ),
-            _ => (0.0, 0.0, 0.0),
+            _ => (0.0, 0.0, 0.0, AsperityState::default()),
+        };
+        let film_thickness = film_thickness(c, eccentricity_ratio);
+        let film_ratio = match self {
+            Self::Lubricated(JournalBearing {
+                asperity: Some(a), ..
+            }) => film_thickness / a.roughness,
+            _ => 0.0,
         };
         BearingState {
             eccentricity_ratio,
-            film_thickness: film_thickness(c, eccentricity_ratio),
+            film_thickness,
             film_pressure,
             friction_torque: force.moment,
-            friction_power: film_loss + dry.friction_power(k, impact_velocity),
+            friction_power: film_loss
+                + dry.friction_power(k, impact_velocity)
+                + asperity.friction_power,
             hysteresis_power: dry.hysteresis_power(k, impact_velocity),
             oil_flow,
+            asperity_force: asperity.force,
+            asperity_pressure_peak: asperity.pressure_peak,
+            asperity_friction_power: asperity.friction_power,
+            film_ratio,
         }
     }
 
@@ -207,16 +234,25 @@ impl Joint {
         }
     }
 
-    /// The joint's friction power and oil flow in a state (what [`Joint::bearing_state`] gives,
-    /// without the force and the pressure peak).
-    pub fn friction_and_flow(&self, k: &JointKinematics, impact_velocity: f64) -> (f64, f64) {
+    /// The joint's friction power, oil flow and asperity force in a state (what
+    /// [`Joint::bearing_state`] gives of them, without the force and the pressure peak).
+    pub fn rates(&self, k: &JointKinematics, impact_velocity: f64) -> JointRates {
         match self {
-            Self::Ideal => (0.0, 0.0),
-            Self::Dry(dry) => (dry.friction_power(k, impact_velocity), 0.0),
-            Self::Lubricated(bearing) => (
-                bearing.film_loss(k) + bearing.dry.friction_power(k, impact_velocity),
-                bearing.side_flow(k),
-            ),
+            Self::Ideal => JointRates::default(),
+            Self::Dry(dry) => JointRates {
+                friction_power: dry.friction_power(k, impact_velocity),
+                ..JointRates::default()
+            },
+            Self::Lubricated(bearing) => {
+                let asperity = bearing.asperity_force(k).1;
+                JointRates {
+                    friction_power: bearing.film_loss(k)
+                        + bearing.dry.friction_power(k, impact_velocity)
+                        + asperity.friction_power,
+                    oil_flow: bearing.side_flow(k),
+                    asperity_force: asperity.force,
+                }
+            }
         }
     }
 }
@@ -225,6 +261,17 @@ impl Joint {
 /// metal contact (ε ≥ 1) \[m\].
 pub fn film_thickness(clearance: f64, eccentricity_ratio: f64) -> f64 {
     (clearance * (1.0 - eccentricity_ratio)).max(0.0)
+}
+
+/// What the cycle results integrate or hold of a joint in one state (SI units).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct JointRates {
+    /// The friction power \[W\] ([`BearingState::friction_power`]).
+    pub friction_power: f64,
+    /// The oil flow \[m³/s\] ([`BearingState::oil_flow`]).
+    pub oil_flow: f64,
+    /// The asperities' normal force \[N\] ([`BearingState::asperity_force`]).
+    pub asperity_force: f64,
 }
 
 /// A joint as its designer reads it in one state (SI units).
@@ -248,6 +295,15 @@ pub struct BearingState {
     /// The oil flow out of both ends of the pressurised film, 0 without a film \[m³/s\]
     /// ([`JournalBearing::side_flow`]).
     pub oil_flow: f64,
+    /// The normal force the rough surfaces' asperities carry, 0 for smooth surfaces \[N\]
+    /// ([`asperity`]).
+    pub asperity_force: f64,
+    /// The largest asperity pressure, at the thinnest film \[Pa\].
+    pub asperity_pressure_peak: f64,
+    /// The asperities' boundary friction power (part of `friction_power`) \[W\].
+    pub asperity_friction_power: f64,
+    /// The film ratio h_min/σ, 0 for smooth surfaces and in metal contact.
+    pub film_ratio: f64,
 }
 
 #[cfg(test)]

@@ -69,6 +69,15 @@ pub struct JointParameters {
     pub switch_eccentricity: f64,
     /// The oil film's model.
     pub film_model: FilmModel,
+    /// Combined RMS roughness σ of journal and bearing, 0 for smooth surfaces \[m\]
+    /// ([`super::asperity`]).
+    pub roughness: f64,
+    /// Boundary friction coefficient μ_b of the asperity contact.
+    pub boundary_friction: f64,
+    /// σβη: the product of roughness, asperity summit radius and summit density.
+    pub asperity_density_product: f64,
+    /// σ/β: the roughness over the asperity summit radius.
+    pub asperity_roughness_ratio: f64,
     /// Where the journal starts.
     pub initial_state: JournalStart,
 }
@@ -95,6 +104,10 @@ impl JointParameters {
             bearing_length: 0.04,
             switch_eccentricity: 0.95,
             film_model: FilmModel::Finite,
+            roughness: 0.0,
+            boundary_friction: 0.1,
+            asperity_density_product: 0.04,
+            asperity_roughness_ratio: 1e-3,
             initial_state: JournalStart::Centred,
         }
     }

@@ -18,7 +18,9 @@ use nalgebra::Vector2;
 
 use super::layout::{CRANK_ANGLE, PIN_A, pair};
 use super::slider_crank::SliderCrank;
-use crate::joint::{BearingState, Contacts, Joint, JointForce, JointKinematics, JointRole};
+use crate::joint::{
+    BearingState, Contacts, Joint, JointForce, JointKinematics, JointRates, JointRole,
+};
 use crate::math;
 use crate::reduction::RodEnd;
 
@@ -198,17 +200,17 @@ impl SliderCrank {
         })
     }
 
-    /// Each joint's friction power \[W\] and oil flow \[m³/s\] in state `y` with the contact
-    /// states `contacts`, by [`JointRole`] ([`Joint::friction_and_flow`]): what the cycle
-    /// results' means integrate.
-    pub fn friction_and_flow(&self, y: &[f64], contacts: &Contacts) -> [(f64, f64); 3] {
+    /// Each joint's friction power, oil flow and asperity force in state `y` with the contact
+    /// states `contacts`, by [`JointRole`] ([`Joint::rates`]): what the cycle results' means
+    /// integrate and their asperity peaks hold.
+    pub fn joint_rates(&self, y: &[f64], contacts: &Contacts) -> [JointRates; 3] {
         JointRole::ALL.map(|role| {
             let joint = self.joint(role);
             if !joint.has_friction_or_film() {
-                return (0.0, 0.0);
+                return JointRates::default();
             }
             let kin = self.joint_kinematics(role, y);
-            joint.friction_and_flow(&kin, self.impact_velocity(role, &kin, contacts))
+            joint.rates(&kin, self.impact_velocity(role, &kin, contacts))
         })
     }
 

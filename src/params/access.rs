@@ -93,6 +93,18 @@ real_fields! {
     SolverMaxStepSize => max_step_size;
     SolverSpectralRadius => spectral_radius;
     SolverImpactErrorWeight => impact_error_weight;
+    JointRoughness => joint.roughness;
+    JointBoundaryFriction => joint.boundary_friction;
+    JointAsperityDensityProduct => joint.asperity_density_product;
+    JointAsperityRoughnessRatio => joint.asperity_roughness_ratio;
+    CrankPinRoughness => crank_pin.roughness;
+    CrankPinBoundaryFriction => crank_pin.boundary_friction;
+    CrankPinAsperityDensityProduct => crank_pin.asperity_density_product;
+    CrankPinAsperityRoughnessRatio => crank_pin.asperity_roughness_ratio;
+    MainBearingRoughness => main_bearing.roughness;
+    MainBearingBoundaryFriction => main_bearing.boundary_friction;
+    MainBearingAsperityDensityProduct => main_bearing.asperity_density_product;
+    MainBearingAsperityRoughnessRatio => main_bearing.asperity_roughness_ratio;
     }
     optional {
         // Not set, the crank starts at drive.speed; its start value reads.

@@ -31,10 +31,15 @@ pub trait WriteRecords {
 fn cycle_values(c: &Cycle) -> Vec<f64> {
     let mut v = vec![c.start, c.end, c.start_angle];
     for j in &c.joints {
-        for e in [j.eccentricity_ratio, j.film_pressure, j.force] {
+        for e in [
+            j.eccentricity_ratio,
+            j.film_pressure,
+            j.force,
+            j.asperity_force,
+        ] {
             v.extend([e.value, e.angle]);
         }
-        v.extend([j.friction_energy, j.oil_volume]);
+        v.extend([j.friction_energy, j.oil_volume, j.metal_contact_time]);
     }
     v
 }
@@ -45,9 +50,10 @@ fn cycle_step_values(s: &CycleStep) -> Vec<f64> {
     for sample in [s.at_end, s.inside, s.place] {
         v.extend(sample);
     }
-    for rates in [s.friction_power, s.oil_flow] {
+    for rates in [s.friction_power, s.oil_flow, s.asperity_force] {
         v.extend(rates.into_iter().flatten());
     }
+    v.extend(s.in_contact.into_iter().flatten().map(f64::from));
     v
 }
 
@@ -106,9 +112,12 @@ impl WriteRecords for ByteWriter<'_> {
     }
 }
 
+/// The numbers of one joint's cycle results in [`cycle_values`].
+const JOINT_CYCLE_VALUES: usize = 11;
+
 /// The cycle of [`cycle_values`].
 fn cycle_from(v: &[f64]) -> Result<Cycle, CodecError> {
-    if v.len() != 3 + 3 * 8 {
+    if v.len() != 3 + 3 * JOINT_CYCLE_VALUES {
         return Err(CodecError(format!(
             "FMU state rejected: a cycle of {} numbers",
             v.len()
@@ -123,13 +132,15 @@ fn cycle_from(v: &[f64]) -> Result<Cycle, CodecError> {
         end: v[1],
         start_angle: v[2],
         joints: std::array::from_fn(|i| {
-            let k = 3 + 8 * i;
+            let k = 3 + JOINT_CYCLE_VALUES * i;
             JointCycle {
                 eccentricity_ratio: extreme(k),
                 film_pressure: extreme(k + 2),
                 force: extreme(k + 4),
-                friction_energy: v[k + 6],
-                oil_volume: v[k + 7],
+                asperity_force: extreme(k + 6),
+                friction_energy: v[k + 8],
+                oil_volume: v[k + 9],
+                metal_contact_time: v[k + 10],
             }
         }),
     })
@@ -137,7 +148,7 @@ fn cycle_from(v: &[f64]) -> Result<Cycle, CodecError> {
 
 /// The step contribution of [`cycle_step_values`].
 fn cycle_step_from(v: &[f64]) -> Result<CycleStep, CodecError> {
-    if v.len() != 5 + 3 * SERIES + 12 {
+    if v.len() != 5 + 3 * SERIES + 24 {
         return Err(CodecError(format!(
             "FMU state rejected: a cycle step of {} numbers",
             v.len()
@@ -155,6 +166,11 @@ fn cycle_step_from(v: &[f64]) -> Result<CycleStep, CodecError> {
         place: sample(2),
         friction_power: rates(5 + 3 * SERIES),
         oil_flow: rates(5 + 3 * SERIES + 6),
+        asperity_force: rates(5 + 3 * SERIES + 12),
+        in_contact: std::array::from_fn(|i| {
+            let k = 5 + 3 * SERIES + 18 + 2 * i;
+            [v[k] != 0.0, v[k + 1] != 0.0]
+        }),
     })
 }
 

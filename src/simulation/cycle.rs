@@ -64,6 +64,10 @@ pub struct JointCycle {
     pub friction_energy: f64,
     /// ∫ oil flow dt \[m³\].
     pub oil_volume: f64,
+    /// The largest asperity force \[N\].
+    pub asperity_force: Extreme,
+    /// The time in dry metal contact \[s\].
+    pub metal_contact_time: f64,
 }
 
 impl JointCycle {
@@ -73,6 +77,8 @@ impl JointCycle {
         force: Extreme::NONE,
         friction_energy: 0.0,
         oil_volume: 0.0,
+        asperity_force: Extreme::NONE,
+        metal_contact_time: 0.0,
     };
 }
 
@@ -127,6 +133,13 @@ impl Cycle {
                 0.5 * h * (rate(step.friction_power[i], from) + rate(step.friction_power[i], to));
             joint.oil_volume +=
                 0.5 * h * (rate(step.oil_flow[i], from) + rate(step.oil_flow[i], to));
+            let contact = step.in_contact[i].map(f64::from);
+            joint.metal_contact_time += 0.5 * h * (rate(contact, from) + rate(contact, to));
+            for s in [from, to] {
+                joint
+                    .asperity_force
+                    .absorb(rate(step.asperity_force[i], s), angle(s));
+            }
         }
         self.end = step.time[0] + to * (step.time[1] - step.time[0]);
     }
@@ -166,6 +179,10 @@ pub struct CycleStep {
     pub friction_power: [[f64; 2]; 3],
     /// Each joint's oil flow at the step's ends \[m³/s\].
     pub oil_flow: [[f64; 2]; 3],
+    /// Each joint's asperity force at the step's ends \[N\].
+    pub asperity_force: [[f64; 2]; 3],
+    /// Whether each joint is in dry contact at the step's ends.
+    pub in_contact: [[bool; 2]; 3],
 }
 
 /// The cycle under way and the last complete one.
@@ -271,6 +288,8 @@ mod tests {
             place: places,
             friction_power: [[2.0, 2.0]; 3],
             oil_flow: [[1e-6, 3e-6]; 3],
+            asperity_force: [[0.0, 0.0]; 3],
+            in_contact: [[false, false]; 3],
         }
     }
 

@@ -199,6 +199,18 @@ pub struct BearingOutputs {
     pub friction_power_mean_cycle: f64,
     /// The mean oil flow over the last complete load cycle \[m³/s\].
     pub oil_flow_mean_cycle: f64,
+    /// The asperities' normal force \[N\].
+    pub asperity_force: f64,
+    /// The largest asperity pressure \[Pa\].
+    pub asperity_pressure_peak: f64,
+    /// The asperities' boundary friction power \[W\].
+    pub asperity_friction_power: f64,
+    /// The film ratio h_min/σ (0 for smooth surfaces and in metal contact).
+    pub film_ratio: f64,
+    /// The largest asperity force over the last complete load cycle \[N\].
+    pub asperity_force_peak_cycle: f64,
+    /// The fraction of the last complete load cycle's duration in dry contact.
+    pub metal_contact_fraction_cycle: f64,
 }
 
 impl Outputs {
@@ -302,6 +314,17 @@ pub(super) fn outputs(
             force_peak_cycle_angle,
             friction_power_mean_cycle: cycle.mean(joint.friction_energy),
             oil_flow_mean_cycle: cycle.mean(joint.oil_volume),
+            asperity_force: now.asperity_force,
+            asperity_pressure_peak: now.asperity_pressure_peak,
+            asperity_friction_power: now.asperity_friction_power,
+            film_ratio: now.film_ratio,
+            asperity_force_peak_cycle: extreme(
+                joint.asperity_force,
+                now.asperity_force,
+                y[CRANK_ANGLE],
+            )
+            .0,
+            metal_contact_fraction_cycle: cycle.mean(joint.metal_contact_time),
         }
     });
     Ok(Outputs {

@@ -6,7 +6,7 @@ use super::peaks::{self, AcceptedStep, KnownEnds, Peaks};
 use super::sample::{Sample, force_series};
 use super::{Engine, InputSignal};
 use crate::error::ModelError;
-use crate::joint::{Joint, JointRole};
+use crate::joint::{Joint, JointRates, JointRole};
 use crate::mechanism::layout::CRANK_ANGLE;
 use crate::mechanism::{Conditions, Driven};
 
@@ -57,6 +57,13 @@ impl Engine {
         self.end_sample
             .store(&self.end, signal, end, from_joint_law.then_some(at_end));
         self.doubt_film_peaks(&within, signal)?;
+        for role in JointRole::ALL {
+            if onsets[role as usize] > 0
+                && matches!(self.mechanism.joint(role), Joint::Lubricated(_))
+            {
+                self.monitor.metal_contact(role, self.end.time);
+            }
+        }
         self.peaks.step_end = Peaks::from_sample(peaks::larger(at_end, within.largest), onsets);
         self.peaks.cycle_step = Some(self.cycle_step(at_end, &within));
         self.peaks.pending = true;
@@ -68,8 +75,10 @@ impl Engine {
     /// times and crank angles, its samples, and each joint's friction power and oil flow at its
     /// ends.
     fn cycle_step(&self, at_end: Sample, within: &peaks::Within) -> CycleStep {
-        let rates = [&self.start.y, &self.end.y]
-            .map(|y| self.mechanism.friction_and_flow(y, &self.contacts));
+        let rates =
+            [&self.start.y, &self.end.y].map(|y| self.mechanism.joint_rates(y, &self.contacts));
+        let ends =
+            |f: fn(&JointRates) -> f64| std::array::from_fn(|i| [f(&rates[0][i]), f(&rates[1][i])]);
         CycleStep {
             from: 0.0,
             time: [self.start.time, self.end.time],
@@ -77,8 +86,15 @@ impl Engine {
             at_end,
             inside: within.largest,
             place: within.place,
-            friction_power: std::array::from_fn(|i| [rates[0][i].0, rates[1][i].0]),
-            oil_flow: std::array::from_fn(|i| [rates[0][i].1, rates[1][i].1]),
+            friction_power: ends(|r| r.friction_power),
+            oil_flow: ends(|r| r.oil_flow),
+            asperity_force: ends(|r| r.asperity_force),
+            in_contact: std::array::from_fn(|i| {
+                [
+                    self.contact_start.0[i].in_contact,
+                    self.contacts.0[i].in_contact,
+                ]
+            }),
         }
     }
 

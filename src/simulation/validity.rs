@@ -31,6 +31,9 @@ pub(super) struct Monitor {
     /// Such a report not yet taken (time, interpolated peak, integrated value), by role: the
     /// message is written when it is taken, so that stepping allocates nothing.
     doubts: [Option<(f64, f64, f64)>; 3],
+    /// A lubricated joint's dry-contact onsets not yet reported (the first one's time and how
+    /// many), by role: written when taken, as the doubts are.
+    metal: [Option<(f64, u64)>; 3],
     messages: Vec<String>,
     /// Warnings raised since the start.
     pub(super) total: u64,
@@ -53,8 +56,34 @@ impl Monitor {
         }
     }
 
+    /// Warns that the lubricated joint `role` went into dry metal contact at time `t` (every
+    /// onset counts).
+    pub(super) fn metal_contact(&mut self, role: JointRole, t: f64) {
+        let pending = &mut self.metal[role as usize];
+        *pending = Some(pending.map_or((t, 1), |(first, n)| (first, n + 1)));
+        self.total += 1;
+    }
+
     /// The warnings raised since the last call.
     pub(super) fn take(&mut self) -> Vec<String> {
+        for (role, pending) in JointRole::ALL.into_iter().zip(&mut self.metal) {
+            let Some((t, onsets)) = pending.take() else {
+                continue;
+            };
+            let more = match onsets {
+                1 => String::new(),
+                n => format!(" ({n} onsets since the last report)"),
+            };
+            self.messages.push(format!(
+                "t = {} s: the lubricated joint {} went into dry metal contact{more}: neither the \
+                 film nor the asperities carried its load there ({}.penetration > 0; see \
+                 {}.metalContactFractionCycle)",
+                Num(t),
+                role.prefix(),
+                role.prefix(),
+                role.prefix(),
+            ));
+        }
         for (role, doubt) in JointRole::ALL.into_iter().zip(&mut self.doubts) {
             let Some((t, value, integrated)) = doubt.take() else {
                 continue;

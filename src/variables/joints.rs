@@ -4,6 +4,7 @@
 
 use super::enumerations::{CONTACT_GEOMETRY, CONTACT_LAW, FILM_MODEL, JOINT_MODEL, JOURNAL_START};
 use super::joint_rows::{JOINT_ROWS, joint_rows};
+use super::surface_rows::{SURFACE_ROWS, surface_rows};
 use super::vr::{Variable, Vr};
 use fmi_core::table::{Causality, Kind, Variability};
 
@@ -172,9 +173,71 @@ const MAIN_BEARING: [Variable; JOINT_ROWS] = joint_rows!(
     ]
 );
 
-/// The three joints' rows, and their loads and the rod–slider joint's contact stiffness.
-pub(super) const VARIABLES: [&[Variable]; 4] =
-    [&ROD_SLIDER_JOINT, &CRANK_PIN, &MAIN_BEARING, LOADS];
+/// The rod-slider joint's rough surfaces.
+const ROD_SLIDER_SURFACES: [Variable; SURFACE_ROWS] = surface_rows!(
+    "joint",
+    "Rod-slider joint",
+    [
+        JointRoughness,
+        JointBoundaryFriction,
+        JointAsperityDensityProduct,
+        JointAsperityRoughnessRatio,
+        JointAsperityForce,
+        JointAsperityPressurePeak,
+        JointAsperityFrictionPower,
+        JointFilmRatio,
+        JointAsperityForcePeakCycle,
+        JointMetalContactFractionCycle,
+    ]
+);
+
+/// The crank pin's rough surfaces.
+const CRANK_PIN_SURFACES: [Variable; SURFACE_ROWS] = surface_rows!(
+    "crankPin",
+    "Crank pin",
+    [
+        CrankPinRoughness,
+        CrankPinBoundaryFriction,
+        CrankPinAsperityDensityProduct,
+        CrankPinAsperityRoughnessRatio,
+        CrankPinAsperityForce,
+        CrankPinAsperityPressurePeak,
+        CrankPinAsperityFrictionPower,
+        CrankPinFilmRatio,
+        CrankPinAsperityForcePeakCycle,
+        CrankPinMetalContactFractionCycle,
+    ]
+);
+
+/// The main bearing's rough surfaces.
+const MAIN_BEARING_SURFACES: [Variable; SURFACE_ROWS] = surface_rows!(
+    "mainBearing",
+    "Main bearing",
+    [
+        MainBearingRoughness,
+        MainBearingBoundaryFriction,
+        MainBearingAsperityDensityProduct,
+        MainBearingAsperityRoughnessRatio,
+        MainBearingAsperityForce,
+        MainBearingAsperityPressurePeak,
+        MainBearingAsperityFrictionPower,
+        MainBearingFilmRatio,
+        MainBearingAsperityForcePeakCycle,
+        MainBearingMetalContactFractionCycle,
+    ]
+);
+
+/// The three joints' rows, their rough surfaces', and their loads and the rod–slider joint's
+/// contact stiffness.
+pub(super) const VARIABLES: [&[Variable]; 7] = [
+    &ROD_SLIDER_JOINT,
+    &CRANK_PIN,
+    &MAIN_BEARING,
+    LOADS,
+    &ROD_SLIDER_SURFACES,
+    &CRANK_PIN_SURFACES,
+    &MAIN_BEARING_SURFACES,
+];
 
 /// The force each joint carries (its components and peak) and the rod–slider joint's contact
 /// stiffness.

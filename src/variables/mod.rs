@@ -22,6 +22,7 @@ mod sections;
 mod slider;
 mod solver;
 mod structure;
+mod surface_rows;
 mod vr;
 
 pub use enumerations::*;
@@ -110,6 +111,12 @@ pub const DESCRIPTION: Description<Vr> = Description {
         (Vr::MainBearingFilmThicknessMinSinceStart, "um"),
         (Vr::MainBearingFilmPressurePeak, "MPa"),
         (Vr::MainBearingFilmPressurePeakSinceStart, "MPa"),
+        (Vr::JointRoughness, "um"),
+        (Vr::CrankPinRoughness, "um"),
+        (Vr::MainBearingRoughness, "um"),
+        (Vr::JointAsperityPressurePeak, "MPa"),
+        (Vr::CrankPinAsperityPressurePeak, "MPa"),
+        (Vr::MainBearingAsperityPressurePeak, "MPa"),
     ],
     enumerations: ENUMERATIONS,
     log_categories: LOG_CATEGORIES,
@@ -174,7 +181,7 @@ pub const LOG_CATEGORIES: &[(&str, &str)] = &[
 pub const VARIABLES: &[Variable] = &in_value_reference_order::<N_VARIABLES>(&PARTS);
 
 /// The table's parts, by component.
-const PARTS: [&[Variable]; 10] = [
+const PARTS: [&[Variable]; 13] = [
     rod::VARIABLES,
     crank::VARIABLES,
     slider::VARIABLES,
@@ -185,6 +192,9 @@ const PARTS: [&[Variable]; 10] = [
     joints::VARIABLES[3],
     solver::VARIABLES,
     energy::VARIABLES,
+    joints::VARIABLES[4],
+    joints::VARIABLES[5],
+    joints::VARIABLES[6],
 ];
 
 /// Number of variables.

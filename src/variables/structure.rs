@@ -114,6 +114,9 @@ pub(super) fn initial_dependency(unknown: Vr, known: Vr) -> bool {
         | CrankPinOilFlowMeanCycle
         | MainBearingFrictionPowerMeanCycle
         | MainBearingOilFlowMeanCycle
+        | JointMetalContactFractionCycle
+        | CrankPinMetalContactFractionCycle
+        | MainBearingMetalContactFractionCycle
         | SolverSteps
         | SolverEvaluations
         | EnergyDriveWork

@@ -12,6 +12,7 @@ fn bearing() -> JournalBearing {
         length: 0.04,
         switch_eccentricity: 0.95,
         film: Film::Short,
+        asperity: None,
         dry: DryContact {
             elastic: crate::joint::Elastic::Point(hertz_stiffness(0.010, 0.0095, 207e9, 0.3)),
             clearance: 0.5e-3,
