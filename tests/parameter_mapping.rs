@@ -228,6 +228,88 @@ const FIELDS: &[(&str, Restore)] = &[
     ("slider.forceTablePeriod", |p, d| {
         p.slider_force_table_period = d.slider_force_table_period
     }),
+    ("joint.roughness", |p, d| {
+        p.joint.roughness = d.joint.roughness
+    }),
+    ("joint.boundaryFriction", |p, d| {
+        p.joint.boundary_friction = d.joint.boundary_friction
+    }),
+    ("joint.asperityDensityProduct", |p, d| {
+        p.joint.asperity_density_product = d.joint.asperity_density_product
+    }),
+    ("joint.asperityRoughnessRatio", |p, d| {
+        p.joint.asperity_roughness_ratio = d.joint.asperity_roughness_ratio
+    }),
+    ("joint.thermalModel", |p, d| {
+        p.joint.thermal_model = d.joint.thermal_model
+    }),
+    ("joint.thermalStart", |p, d| {
+        p.joint.thermal_start = d.joint.thermal_start
+    }),
+    ("joint.heatCapacity", |p, d| {
+        p.joint.heat_capacity = d.joint.heat_capacity
+    }),
+    ("joint.heatTransferCoefficient", |p, d| {
+        p.joint.heat_transfer_coefficient = d.joint.heat_transfer_coefficient
+    }),
+    ("crankPin.roughness", |p, d| {
+        p.crank_pin.roughness = d.crank_pin.roughness
+    }),
+    ("crankPin.boundaryFriction", |p, d| {
+        p.crank_pin.boundary_friction = d.crank_pin.boundary_friction
+    }),
+    ("crankPin.asperityDensityProduct", |p, d| {
+        p.crank_pin.asperity_density_product = d.crank_pin.asperity_density_product
+    }),
+    ("crankPin.asperityRoughnessRatio", |p, d| {
+        p.crank_pin.asperity_roughness_ratio = d.crank_pin.asperity_roughness_ratio
+    }),
+    ("crankPin.thermalModel", |p, d| {
+        p.crank_pin.thermal_model = d.crank_pin.thermal_model
+    }),
+    ("crankPin.thermalStart", |p, d| {
+        p.crank_pin.thermal_start = d.crank_pin.thermal_start
+    }),
+    ("crankPin.heatCapacity", |p, d| {
+        p.crank_pin.heat_capacity = d.crank_pin.heat_capacity
+    }),
+    ("crankPin.heatTransferCoefficient", |p, d| {
+        p.crank_pin.heat_transfer_coefficient = d.crank_pin.heat_transfer_coefficient
+    }),
+    ("mainBearing.roughness", |p, d| {
+        p.main_bearing.roughness = d.main_bearing.roughness
+    }),
+    ("mainBearing.boundaryFriction", |p, d| {
+        p.main_bearing.boundary_friction = d.main_bearing.boundary_friction
+    }),
+    ("mainBearing.asperityDensityProduct", |p, d| {
+        p.main_bearing.asperity_density_product = d.main_bearing.asperity_density_product
+    }),
+    ("mainBearing.asperityRoughnessRatio", |p, d| {
+        p.main_bearing.asperity_roughness_ratio = d.main_bearing.asperity_roughness_ratio
+    }),
+    ("mainBearing.thermalModel", |p, d| {
+        p.main_bearing.thermal_model = d.main_bearing.thermal_model
+    }),
+    ("mainBearing.thermalStart", |p, d| {
+        p.main_bearing.thermal_start = d.main_bearing.thermal_start
+    }),
+    ("mainBearing.heatCapacity", |p, d| {
+        p.main_bearing.heat_capacity = d.main_bearing.heat_capacity
+    }),
+    ("mainBearing.heatTransferCoefficient", |p, d| {
+        p.main_bearing.heat_transfer_coefficient = d.main_bearing.heat_transfer_coefficient
+    }),
+    ("oil.viscosity40", |p, d| {
+        p.oil.viscosity40 = d.oil.viscosity40
+    }),
+    ("oil.viscosity100", |p, d| {
+        p.oil.viscosity100 = d.oil.viscosity100
+    }),
+    ("oil.density", |p, d| p.oil.density = d.oil.density),
+    ("oil.specificHeat", |p, d| {
+        p.oil.specific_heat = d.oil.specific_heat
+    }),
 ];
 
 /// A parameter as the XML declares it: name, value reference, type and range, start.

@@ -15,6 +15,7 @@
 //!   `studies/compressor.toml` with its crank-angle load table, counterweighted crank, lubricated
 //!   crank pin and main bearing (finite film) and a dry piston pin in line contact with friction,
 //!   with an offset guide, the rod's eye masses and gravity besides;
+//! - `warm`: `machine` with a heat balance in both bearings (the film temperature a state);
 //! - `ramp`: `B` with the drive speed ramped through its first and second derivatives, set at
 //!   every communication point as a master that provides input derivatives sets them.
 //!
@@ -86,6 +87,10 @@ const CASES: &[Case] = &[
         ..Case::plain("machine", &MACHINE)
     },
     Case {
+        table: Some("studies/compressor_cycle.csv"),
+        ..Case::plain("warm", &WARM)
+    },
+    Case {
         ramp: Some(Ramp {
             input: "drive.speed",
             coefficients: [523.598_775_598_298_8, 4000.0, -1e5],
@@ -136,6 +141,20 @@ const MACHINE: [(&str, f64); 36] = [
     ("rod.formulation", 3.0),
     ("slider.force", 0.0),
 ];
+
+/// [`MACHINE`] with a heat balance in both bearings (the ISO VG 46 oil supplied at 40 °C, each
+/// film settled at the start's steady temperature).
+const WARM: [(&str, f64); 38] = {
+    let mut warm = [("", 0.0); 38];
+    let mut k = 0;
+    while k < MACHINE.len() {
+        warm[k] = MACHINE[k];
+        k += 1;
+    }
+    warm[36] = ("crankPin.thermalModel", 2.0);
+    warm[37] = ("mainBearing.thermalModel", 2.0);
+    warm
+};
 
 /// Lubricated crank pin and main bearing with the short film, the dry rod–slider joint, every
 /// journal settled.
@@ -277,6 +296,7 @@ fn every_output_of_the_locked_runs_is_bit_identical() {
 /// The outputs an ideal bearing reports as zeros.
 const BEARING: &[&str] = &[
     "metalContactFractionCycle",
+    "viscosityEffective",
     "contactOnsets",
     "contactOnsetsTotal",
     "eccentricityRatio",
@@ -311,6 +331,7 @@ const TOUCH: &[&str] = &[
     "penetration",
 ];
 const JOINTS: &[&str] = &["joint.", "crankPin.", "mainBearing."];
+const THERMAL: &[&str] = &["filmTemperature", "filmTemperatureMaxCycle", "heatFlow"];
 const ASPERITY: &[&str] = &[
     "asperityForce",
     "asperityForcePeakCycle",
@@ -319,6 +340,7 @@ const ASPERITY: &[&str] = &[
     "filmRatio",
 ];
 const FILM: &[&str] = &[
+    "viscosityEffective",
     "filmPressurePeak",
     "filmPressurePeakCycle",
     "filmPressurePeakSinceStart",
@@ -380,7 +402,7 @@ const ZEROS: &[Zero] = &[
     ),
     (
         &[
-            "B", "ramp", "A", "torque", "worn", "finite", "rough", "machine",
+            "B", "ramp", "A", "torque", "worn", "finite", "rough", "machine", "warm",
         ],
         &["joint."],
         FILM,
@@ -393,13 +415,13 @@ const ZEROS: &[Zero] = &[
         "a dry joint without friction",
     ),
     (
-        &["worn", "finite", "rough", "machine"],
+        &["worn", "finite", "rough", "machine", "warm"],
         &["joint."],
         &["filmThicknessMinCycle", "filmThicknessMinSinceStart"],
         "the dry joint is settled on its wall",
     ),
     (
-        &["machine"],
+        &["machine", "warm"],
         &["joint."],
         &["filmThicknessMin"],
         "the dry piston pin stays on its wall",
@@ -446,19 +468,19 @@ const ZEROS: &[Zero] = &[
         "the journal touches its wall in each revolution",
     ),
     (
-        &["machine"],
+        &["machine", "warm"],
         &[""],
         &["cycle.number"],
         "no load cycle completes in 24 ms at 1500 rpm",
     ),
     (
-        &["machine"],
+        &["machine", "warm"],
         CRANK_JOINTS,
         TOUCH,
         "the oiled bearings never touch",
     ),
     (
-        &["B", "ramp", "A", "worn", "torque", "machine"],
+        &["B", "ramp", "A", "worn", "torque", "machine", "warm"],
         &[""],
         &["solver.warnings"],
         "the run warns of nothing",
@@ -473,6 +495,7 @@ const ZEROS: &[Zero] = &[
             "finite",
             "torque",
             "machine",
+            "warm",
         ],
         JOINTS,
         ASPERITY,
@@ -483,6 +506,28 @@ const ZEROS: &[Zero] = &[
         &["joint."],
         ASPERITY,
         "a dry joint has no asperity contact",
+    ),
+    (
+        &[
+            "B",
+            "ramp",
+            "A",
+            "lubricated",
+            "worn",
+            "finite",
+            "rough",
+            "torque",
+            "machine",
+        ],
+        JOINTS,
+        THERMAL,
+        "an isoviscous film has no heat balance",
+    ),
+    (
+        &["warm"],
+        &["joint."],
+        THERMAL,
+        "a dry joint has no heat balance",
     ),
 ];
 

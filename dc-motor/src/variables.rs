@@ -51,22 +51,22 @@ pub const DESCRIPTION: Description<Vr> = Description {
     provides_directional_derivative: true,
 };
 
-/// Units: name and SI base-unit exponents (kg, m, s, A, rad).
-pub const UNITS: &[(&str, Option<[i32; 5]>, f64)] = &[
-    ("s", Some([0, 0, 1, 0, 0]), 1.0),
-    ("rad", Some([0, 0, 0, 0, 1]), 1.0),
-    ("rad/s", Some([0, 0, -1, 0, 1]), 1.0),
-    ("A", Some([0, 0, 0, 1, 0]), 1.0),
-    ("V", Some([1, 2, -3, -1, 0]), 1.0),
-    ("Ohm", Some([1, 2, -3, -2, 0]), 1.0),
-    ("H", Some([1, 2, -2, -2, 0]), 1.0),
-    ("N.m", Some([1, 2, -2, 0, 0]), 1.0),
-    ("N.m/A", Some([1, 2, -2, -1, 0]), 1.0),
-    ("N.m/rad", Some([1, 2, -2, 0, -1]), 1.0),
-    ("N.m.s/rad", Some([1, 2, -1, 0, -1]), 1.0),
-    ("V.s/rad", Some([1, 2, -2, -1, -1]), 1.0),
-    ("V/rad", Some([1, 2, -3, -1, -1]), 1.0),
-    ("kg.m2", Some([1, 2, 0, 0, 0]), 1.0),
+/// Units: name and SI base-unit exponents (kg, m, s, A, K, rad).
+pub const UNITS: &[(&str, Option<[i32; 6]>, f64)] = &[
+    ("s", Some([0, 0, 1, 0, 0, 0]), 1.0),
+    ("rad", Some([0, 0, 0, 0, 0, 1]), 1.0),
+    ("rad/s", Some([0, 0, -1, 0, 0, 1]), 1.0),
+    ("A", Some([0, 0, 0, 1, 0, 0]), 1.0),
+    ("V", Some([1, 2, -3, -1, 0, 0]), 1.0),
+    ("Ohm", Some([1, 2, -3, -2, 0, 0]), 1.0),
+    ("H", Some([1, 2, -2, -2, 0, 0]), 1.0),
+    ("N.m", Some([1, 2, -2, 0, 0, 0]), 1.0),
+    ("N.m/A", Some([1, 2, -2, -1, 0, 0]), 1.0),
+    ("N.m/rad", Some([1, 2, -2, 0, 0, -1]), 1.0),
+    ("N.m.s/rad", Some([1, 2, -1, 0, 0, -1]), 1.0),
+    ("V.s/rad", Some([1, 2, -2, -1, 0, -1]), 1.0),
+    ("V/rad", Some([1, 2, -3, -1, 0, -1]), 1.0),
+    ("kg.m2", Some([1, 2, 0, 0, 0, 0]), 1.0),
 ];
 
 /// Log categories.

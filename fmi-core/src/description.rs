@@ -24,9 +24,9 @@ pub struct Description<V: 'static> {
     pub max_input_derivative_order: u32,
     /// maxOutputDerivativeOrder.
     pub max_output_derivative_order: u32,
-    /// Units: name, SI base-unit exponents (kg, m, s, A, rad) or None where FMI 2's integer
+    /// Units: name, SI base-unit exponents (kg, m, s, A, K, rad) or None where FMI 2's integer
     /// exponents cannot express the unit, and the factor to the base unit (1 for SI units).
-    pub units: &'static [(&'static str, Option<[i32; 5]>, f64)],
+    pub units: &'static [(&'static str, Option<[i32; 6]>, f64)],
     /// Display units: (unit, display unit, factor), the display value being factor × value.
     pub display_units: &'static [(&'static str, &'static str, f64)],
     /// The display unit a master shows a variable in by default.

@@ -91,7 +91,7 @@ pub(crate) fn unit_definitions<V>(d: &Description<V>) -> String {
             .collect();
         let base = match base {
             Some(e) => {
-                let attrs: String = ["kg", "m", "s", "A", "rad"]
+                let attrs: String = ["kg", "m", "s", "A", "K", "rad"]
                     .iter()
                     .zip(e)
                     .filter(|(_, v)| **v != 0)

@@ -30,6 +30,7 @@ fn input_of(v: Var<Vr>) -> Result<Input, FmuError> {
         Vr::DriveSpeed => Ok(Input::DriveSpeed),
         Vr::DriveTorque => Ok(Input::DriveTorque),
         Vr::SliderForce => Ok(Input::SliderForce),
+        Vr::OilSupplyTemperature => Ok(Input::OilSupplyTemperature),
         _ => Err(FmuError::Invalid(format!("{} is not an input", v.name))),
     }
 }
@@ -190,6 +191,7 @@ impl Model for SliderCrankFmu {
                 Vr::DriveSpeed => cx.inputs.reading().value.drive_speed,
                 Vr::DriveTorque => cx.inputs.reading().value.drive_torque,
                 Vr::SliderForce => cx.inputs.reading().value.slider_force,
+                Vr::OilSupplyTemperature => cx.inputs.reading().value.oil_supply_temperature,
                 _ => unreachable_type(v)?,
             };
         }

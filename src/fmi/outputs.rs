@@ -167,7 +167,7 @@ pub fn real_output(o: &Outputs, vr: Vr) -> Option<f64> {
 
 /// Each joint's bearing-design outputs, by [`JointRole`], in the order of
 /// [`bearing_values`].
-const BEARING_OUTPUTS: [[Vr; 24]; 3] = [
+const BEARING_OUTPUTS: [[Vr; 28]; 3] = [
     [
         Vr::MainBearingEccentricityRatio,
         Vr::MainBearingFilmThickness,
@@ -193,6 +193,10 @@ const BEARING_OUTPUTS: [[Vr; 24]; 3] = [
         Vr::MainBearingFilmRatio,
         Vr::MainBearingAsperityForcePeakCycle,
         Vr::MainBearingMetalContactFractionCycle,
+        Vr::MainBearingFilmTemperature,
+        Vr::MainBearingViscosityEffective,
+        Vr::MainBearingHeatFlow,
+        Vr::MainBearingFilmTemperatureMaxCycle,
     ],
     [
         Vr::CrankPinEccentricityRatio,
@@ -219,6 +223,10 @@ const BEARING_OUTPUTS: [[Vr; 24]; 3] = [
         Vr::CrankPinFilmRatio,
         Vr::CrankPinAsperityForcePeakCycle,
         Vr::CrankPinMetalContactFractionCycle,
+        Vr::CrankPinFilmTemperature,
+        Vr::CrankPinViscosityEffective,
+        Vr::CrankPinHeatFlow,
+        Vr::CrankPinFilmTemperatureMaxCycle,
     ],
     [
         Vr::JointEccentricityRatio,
@@ -245,11 +253,15 @@ const BEARING_OUTPUTS: [[Vr; 24]; 3] = [
         Vr::JointFilmRatio,
         Vr::JointAsperityForcePeakCycle,
         Vr::JointMetalContactFractionCycle,
+        Vr::JointFilmTemperature,
+        Vr::JointViscosityEffective,
+        Vr::JointHeatFlow,
+        Vr::JointFilmTemperatureMaxCycle,
     ],
 ];
 
 /// A joint's bearing-design outputs in the order of a row of [`BEARING_OUTPUTS`].
-fn bearing_values(b: &BearingOutputs) -> [f64; 24] {
+fn bearing_values(b: &BearingOutputs) -> [f64; 28] {
     [
         b.eccentricity_ratio,
         b.film_thickness,
@@ -275,6 +287,10 @@ fn bearing_values(b: &BearingOutputs) -> [f64; 24] {
         b.film_ratio,
         b.asperity_force_peak_cycle,
         b.metal_contact_fraction_cycle,
+        b.film_temperature,
+        b.viscosity_effective,
+        b.heat_flow,
+        b.film_temperature_max_cycle,
     ]
 }
 

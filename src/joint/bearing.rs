@@ -44,6 +44,7 @@ use super::contact::DryContact;
 use super::finite_film::FiniteFilm;
 use super::kinematics::{JointForce, JointKinematics};
 use super::short_film::FilmField;
+use super::thermal::HeatBalance;
 
 /// The oil film's model.
 #[derive(Clone, Debug, PartialEq)]
@@ -67,6 +68,8 @@ pub struct JournalBearing {
     pub film: Film,
     /// The rough surfaces' asperity contact, None for smooth surfaces.
     pub asperity: Option<Asperity>,
+    /// The film's heat balance, None for an isoviscous oil (of `viscosity`).
+    pub heat_balance: Option<HeatBalance>,
     /// Dry contact law (clearance, journal radius, friction, stiffness).
     pub dry: DryContact,
 }
@@ -76,6 +79,24 @@ impl JournalBearing {
     pub fn film_coefficient(&self) -> f64 {
         let c = self.dry.clearance;
         self.viscosity * self.dry.journal_radius * self.length.powi(3) / (2.0 * c * c)
+    }
+
+    /// The oil's viscosity in the state `k` over the joint's own: μ(T)/μ where a heat balance sets
+    /// it, exactly 1 for the isoviscous oil (every film force, pressure and loss is linear in μ).
+    fn viscosity_ratio(&self, k: &JointKinematics) -> f64 {
+        match (k.temperature, &self.heat_balance) {
+            (Some(t), Some(h)) => h.oil.viscosity(t) / self.viscosity,
+            _ => 1.0,
+        }
+    }
+
+    /// The oil's viscosity in the state `k` \[Pa s\]: at the film temperature where a heat balance
+    /// sets it, else the joint's own.
+    pub fn viscosity_at(&self, k: &JointKinematics) -> f64 {
+        match (k.temperature, &self.heat_balance) {
+            (Some(t), Some(h)) => h.oil.viscosity(t),
+            _ => self.viscosity,
+        }
     }
 
     /// Film force on the journal over the positive-pressure region, ε clamped to ε_b.
@@ -103,7 +124,7 @@ impl JournalBearing {
             return (Vector2::zeros(), 0.0);
         };
         let (f_r, f_t) = field.force();
-        let scale = self.film_coefficient();
+        let scale = self.film_coefficient() * self.viscosity_ratio(k);
         let t = field.tangent();
         match &self.film {
             Film::Short => (scale * (f_r * field.n + f_t * t), scale * f_t),
@@ -124,7 +145,7 @@ impl JournalBearing {
             return 0.0;
         };
         let c = self.dry.clearance;
-        let short = 3.0 * self.viscosity * self.length * self.length / (4.0 * c * c)
+        let short = 3.0 * self.viscosity_at(k) * self.length * self.length / (4.0 * c * c)
             * field.amplitude
             * field.peak_shape();
         match self.ratios(&field) {
@@ -153,12 +174,15 @@ impl JournalBearing {
     pub fn film_loss(&self, k: &JointKinematics) -> f64 {
         let relative = k.omega_journal - k.omega_bearing;
         let eps = (k.e.norm() / self.dry.clearance).min(self.switch_eccentricity);
-        let shear = self.petroff_coefficient() * relative * relative / (1.0 - eps * eps).sqrt();
+        let ratio = self.viscosity_ratio(k);
+        let shear =
+            self.petroff_coefficient() * ratio * relative * relative / (1.0 - eps * eps).sqrt();
         let Some(field) = self.field(k) else {
             return shear;
         };
         if matches!(self.film, Film::Short) {
-            return shear + 0.5 * self.dry.clearance * self.film_coefficient() * field.flow_loss();
+            return shear
+                + 0.5 * self.dry.clearance * self.film_coefficient() * ratio * field.flow_loss();
         }
         // v_s = (c A/2) (cos ψ, sin ψ) in (n, t)
         let (force, _) = self.film(k);
@@ -181,7 +205,9 @@ impl JournalBearing {
     fn shear_moments(&self, k: &JointKinematics, f_t: f64) -> (f64, f64) {
         let e_norm = k.e.norm();
         let eps = (e_norm / self.dry.clearance).min(self.switch_eccentricity);
-        let couette = self.petroff_coefficient() * (k.omega_journal - k.omega_bearing)
+        let couette = self.petroff_coefficient()
+            * self.viscosity_ratio(k)
+            * (k.omega_journal - k.omega_bearing)
             / (1.0 - eps * eps).sqrt();
         let pressure = 0.5 * e_norm * f_t;
         (-couette - pressure, couette - pressure)

@@ -20,6 +20,7 @@ pub mod parameters;
 pub mod reynolds;
 pub mod role;
 pub mod short_film;
+pub mod thermal;
 
 pub use asperity::{Asperity, AsperityState};
 pub use bearing::{Film, JournalBearing};
@@ -27,7 +28,13 @@ pub use contact::{ContactGeometry, ContactLaw, DryContact, Elastic, LineContact,
 pub use kinematics::{
     ContactState, Contacts, JointForce, JointKinematics, MIN_IMPACT_VELOCITY, normal_rate_error,
 };
-pub use parameters::{FilmModel, JointModel, JointParameters, JournalStart};
+pub use oil::{Oil, OilParameters};
+pub use parameters::{
+    FilmModel, JointModel, JointParameters, JournalStart, ThermalModel, ThermalStart,
+};
+pub use thermal::HeatBalance;
+
+use crate::error::ModelError;
 pub use role::{JointField, JointRole};
 
 use nalgebra::Vector2;
@@ -46,7 +53,7 @@ pub enum Joint {
 impl Joint {
     /// The joint of the parameters `p` (validated beforehand: a finite film's L/D in its
     /// table's range).
-    pub fn new(p: &JointParameters) -> Result<Self, crate::error::ModelError> {
+    pub fn new(p: &JointParameters) -> Result<Self, ModelError> {
         let dry = DryContact {
             elastic: p.elastic(),
             clearance: p.clearance,
@@ -64,6 +71,7 @@ impl Joint {
                 viscosity: p.viscosity,
                 length: p.bearing_length,
                 switch_eccentricity: p.switch_eccentricity,
+                heat_balance: None,
                 asperity: (p.roughness > 0.0).then(|| {
                     asperity::Asperity::new(
                         p.roughness,
@@ -85,6 +93,30 @@ impl Joint {
         })
     }
 
+    /// The joint of the parameters `p` with the oil `oil`, which its heat balance uses
+    /// (`p.thermal_model`; an isoviscous or dry joint does not).
+    pub fn with_oil(p: &JointParameters, oil: &OilParameters) -> Result<Self, ModelError> {
+        let mut joint = Self::new(p)?;
+        if let (Self::Lubricated(bearing), ThermalModel::HeatBalance) =
+            (&mut joint, p.thermal_model)
+        {
+            bearing.heat_balance = Some(HeatBalance {
+                oil: oil.oil(),
+                capacity: p.heat_capacity,
+                conductance: p.heat_transfer_coefficient,
+            });
+        }
+        Ok(joint)
+    }
+
+    /// The film's heat balance, if the joint has one.
+    pub fn heat_balance(&self) -> Option<&HeatBalance> {
+        match self {
+            Self::Lubricated(bearing) => bearing.heat_balance.as_ref(),
+            _ => None,
+        }
+    }
+
     /// The dry-contact law, if the joint has one.
     pub fn dry_contact(&self) -> Option<&DryContact> {
         match self {
@@ -95,7 +127,8 @@ impl Joint {
     }
 
     /// The eccentricity at which the journal, at rest in the bearing (ė = 0), journal and bearing
-    /// turning at `omega_journal` and `omega_bearing`, receives the force `force` from the joint: its quasi-static equilibrium
+    /// turning at `omega_journal` and `omega_bearing`, the film at `temperature` (where the joint
+    /// has a heat balance), receives the force `force` from the joint: its quasi-static equilibrium
     /// against a steady load (the settled start, docs/model.md §8).
     ///
     /// Dry and frictionless in closed form, e = −(c + δ) F/|F| with F_e(δ) = |F|; with friction
@@ -106,8 +139,8 @@ impl Joint {
     pub fn eccentricity_carrying(
         &self,
         force: Vector2<f64>,
-        omega_journal: f64,
-        omega_bearing: f64,
+        (omega_journal, omega_bearing): (f64, f64),
+        temperature: Option<f64>,
     ) -> Vector2<f64> {
         let Some(dry) = self.dry_contact() else {
             return Vector2::zeros();
@@ -126,6 +159,7 @@ impl Joint {
                 e_dot: Vector2::zeros(),
                 omega_journal,
                 omega_bearing,
+                temperature,
             };
             self.force(&kinematics, MIN_IMPACT_VELOCITY).force - force
         };
@@ -173,6 +207,56 @@ impl Joint {
         eccentricity(best.0)
     }
 
+    /// The film temperature of the steady heat balance of a journal carrying `force` at rest in
+    /// the bearing, journal and bearing turning at `omegas`, the oil supplied at `supply`: where
+    /// the friction power at its settled eccentricity ([`Joint::eccentricity_carrying`] at that
+    /// temperature) equals the heat the oil flow and the housing take,
+    /// P(T) = 2 ρ c_p Q(T) (T − T_s) + k (T − T_s) ([`thermal`]). `supply` itself for a joint
+    /// without heat balance; None where no temperature up to 1000 K above the supply carries the
+    /// friction power away (no oil flow and no housing to take it).
+    ///
+    /// By bisection on the surplus P − Φ, ≥ 0 at T_s and falling with T (the viscosity and with
+    /// it the friction falls, the heat taken rises), to 1e-9 K.
+    pub fn settled_temperature(
+        &self,
+        force: Vector2<f64>,
+        omegas: (f64, f64),
+        supply: f64,
+    ) -> Option<f64> {
+        let Some(balance) = self.heat_balance() else {
+            return Some(supply);
+        };
+        let surplus = |t: f64| {
+            let k = JointKinematics {
+                e: self.eccentricity_carrying(force, omegas, Some(t)),
+                e_dot: Vector2::zeros(),
+                omega_journal: omegas.0,
+                omega_bearing: omegas.1,
+                temperature: Some(t),
+            };
+            let rates = self.rates(&k, MIN_IMPACT_VELOCITY);
+            rates.friction_power
+                - balance.heat_to_oil(rates.oil_flow, t, supply)
+                - balance.heat_to_housing(t, supply)
+        };
+        let (mut low, mut high) = (supply, supply + 1.0);
+        while surplus(high) > 0.0 {
+            (low, high) = (high, supply + 2.0 * (high - supply));
+            if high > supply + 1000.0 {
+                return None;
+            }
+        }
+        while high - low > 1e-9 {
+            let mid = 0.5 * (low + high);
+            if surplus(mid) > 0.0 {
+                low = mid;
+            } else {
+                high = mid;
+            }
+        }
+        Some(0.5 * (low + high))
+    }
+
     /// Force on the journal; `impact_velocity` is δ̇⁽⁻⁾ of the current contact event.
     pub fn force(&self, k: &JointKinematics, impact_velocity: f64) -> JointForce {
         match self {
@@ -191,14 +275,15 @@ impl Joint {
         let c = dry.clearance;
         let eccentricity_ratio = k.e.norm() / c;
         let force = self.force(k, impact_velocity);
-        let (film_pressure, film_loss, oil_flow, asperity) = match self {
+        let (film_pressure, film_loss, oil_flow, asperity, viscosity) = match self {
             Self::Lubricated(bearing) => (
                 bearing.peak_pressure(k),
                 bearing.film_loss(k),
                 bearing.side_flow(k),
                 bearing.asperity_force(k).1,
+                bearing.viscosity_at(k),
             ),
-            _ => (0.0, 0.0, 0.0, AsperityState::default()),
+            _ => (0.0, 0.0, 0.0, AsperityState::default(), 0.0),
         };
         let film_thickness = film_thickness(c, eccentricity_ratio);
         let film_ratio = match self {
@@ -221,6 +306,7 @@ impl Joint {
             asperity_pressure_peak: asperity.pressure_peak,
             asperity_friction_power: asperity.friction_power,
             film_ratio,
+            viscosity,
         }
     }
 
@@ -304,6 +390,9 @@ pub struct BearingState {
     pub asperity_friction_power: f64,
     /// The film ratio h_min/σ, 0 for smooth surfaces and in metal contact.
     pub film_ratio: f64,
+    /// The oil's viscosity in the film, 0 without a film \[Pa s\]
+    /// ([`JournalBearing::viscosity_at`]).
+    pub viscosity: f64,
 }
 
 #[cfg(test)]
@@ -337,12 +426,13 @@ mod tests {
                 for angle in [0.0, 2.0, 4.5] {
                     let (sin, cos) = crate::math::sin_cos(angle);
                     let force = magnitude * Vector2::new(cos, sin);
-                    let e = joint.eccentricity_carrying(force, omega, 0.0);
+                    let e = joint.eccentricity_carrying(force, (omega, 0.0), None);
                     let kinematics = JointKinematics {
                         e,
                         e_dot: Vector2::zeros(),
                         omega_journal: omega,
                         omega_bearing: 0.0,
+                        temperature: None,
                     };
                     let carried = joint.force(&kinematics, MIN_IMPACT_VELOCITY).force;
                     assert!(
@@ -358,11 +448,11 @@ mod tests {
         }
         let joint = Joint::new(&p).unwrap();
         assert_eq!(
-            joint.eccentricity_carrying(Vector2::zeros(), omega, 0.0),
+            joint.eccentricity_carrying(Vector2::zeros(), (omega, 0.0), None),
             Vector2::zeros()
         );
         assert_eq!(
-            Joint::Ideal.eccentricity_carrying(Vector2::new(5.0, 1.0), omega, 0.0),
+            Joint::Ideal.eccentricity_carrying(Vector2::new(5.0, 1.0), (omega, 0.0), None),
             Vector2::zeros()
         );
     }

@@ -18,6 +18,43 @@
 //!   Petroleum or Hydrocarbon Products (the Walther equation).
 //! - C. Walther (1931), Über die Auswertung von Viskositätsangaben, Erdöl und Teer 7, 382–384.
 
+/// The oil's data, as the FMU's `oil.` parameters give them (SI units).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OilParameters {
+    /// Dynamic viscosity at 40 °C \[Pa s\].
+    pub viscosity40: f64,
+    /// Dynamic viscosity at 100 °C \[Pa s\].
+    pub viscosity100: f64,
+    /// Density ρ \[kg/m³\].
+    pub density: f64,
+    /// Specific heat c_p \[J/(kg K)\].
+    pub specific_heat: f64,
+}
+
+impl Default for OilParameters {
+    /// An ISO VG 46 mineral oil: 46 and 6.8 mm²/s at 40 and 100 °C, 870 kg/m³, 2000 J/(kg K).
+    fn default() -> Self {
+        Self {
+            viscosity40: 0.04,
+            viscosity100: 0.0059,
+            density: 870.0,
+            specific_heat: 2000.0,
+        }
+    }
+}
+
+impl OilParameters {
+    /// The oil of these data.
+    pub fn oil(&self) -> Oil {
+        Oil::new(
+            self.viscosity40,
+            self.viscosity100,
+            self.density,
+            self.specific_heat,
+        )
+    }
+}
+
 /// 40 °C and 100 °C \[K\]: where the data sheet gives the viscosities.
 pub const REFERENCE_TEMPERATURES: [f64; 2] = [313.15, 373.15];
 

@@ -26,6 +26,26 @@ pub enum FilmModel {
     Finite,
 }
 
+/// How a lubricated joint's oil gets its viscosity.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ThermalModel {
+    /// The joint's `viscosity`, constant.
+    Isoviscous,
+    /// The oil's viscosity law at the film's effective temperature, a state of its own heat
+    /// balance ([`crate::joint::thermal`]).
+    HeatBalance,
+}
+
+/// Where a heat balance's film temperature starts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ThermalStart {
+    /// At the oil's supply temperature: the bearing warms up from cold oil.
+    Supply,
+    /// In the steady heat balance of the start's load and speed: the bearing at its operating
+    /// temperature.
+    Settled,
+}
+
 /// Where a clearance joint's journal starts.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum JournalStart {
@@ -78,6 +98,14 @@ pub struct JointParameters {
     pub asperity_density_product: f64,
     /// σ/β: the roughness over the asperity summit radius.
     pub asperity_roughness_ratio: f64,
+    /// How a lubricated joint's oil gets its viscosity.
+    pub thermal_model: ThermalModel,
+    /// Where the heat balance's film temperature starts.
+    pub thermal_start: ThermalStart,
+    /// The heat capacity that follows the film's temperature \[J/K\].
+    pub heat_capacity: f64,
+    /// The conductance from the film to the housing, at the supply temperature \[W/K\].
+    pub heat_transfer_coefficient: f64,
     /// Where the journal starts.
     pub initial_state: JournalStart,
 }
@@ -108,6 +136,10 @@ impl JointParameters {
             boundary_friction: 0.1,
             asperity_density_product: 0.04,
             asperity_roughness_ratio: 1e-3,
+            thermal_model: ThermalModel::Isoviscous,
+            thermal_start: ThermalStart::Settled,
+            heat_capacity: 20.0,
+            heat_transfer_coefficient: 0.0,
             initial_state: JournalStart::Centred,
         }
     }

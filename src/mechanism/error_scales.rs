@@ -19,6 +19,7 @@ impl SliderCrank {
     /// rod coordinate  ℓ / d_j               its rate     V / d_j
     /// x_s, r_G        ℓ                     ẋ_s, ṙ_G     V
     /// works           ½ m (ω₀ r_c)² ℓ / r_c,   m = I_O/r_c² + m_rod + m_slider
+    /// film temperature 1 K
     /// ```
     /// (r_G: the centre of mass of a crank free in a clearance main bearing; I_O the crank's
     /// inertia about its pivot.)
@@ -61,6 +62,9 @@ impl SliderCrank {
             scales[rate..rate + 2].fill(speed);
         }
         scales[l.drive_angle()] = scales[CRANK_ANGLE];
+        // (the implicit methods leave the film temperatures, as every state after the drive angle,
+        // to the steps the motion takes: their time constants are seconds)
+        scales[l.temperatures()].fill(1.0);
         for s in &mut scales[l.integrals()] {
             *s = 0.5 * mass * pin_speed * pin_speed * length / self.crank.length;
         }

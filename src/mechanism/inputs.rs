@@ -4,8 +4,11 @@ use fmi_core::signal::{InputValues, Polynomial};
 
 use crate::joint::Contacts;
 
+/// The oil's supply temperature when none is given: 40 °C \[K\].
+pub const SUPPLY_TEMPERATURE: f64 = 313.15;
+
 /// Inputs that the caller may change between steps.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Inputs {
     /// Prescribed crank speed \[rad/s\] (speed drive).
     pub drive_speed: f64,
@@ -13,6 +16,8 @@ pub struct Inputs {
     pub drive_torque: f64,
     /// External force on the slider along the guide \[N\].
     pub slider_force: f64,
+    /// The oil's supply temperature, to the lubricated joints' heat balances \[K\].
+    pub oil_supply_temperature: f64,
 }
 
 /// One of the [`Inputs`], in the order of the input variables.
@@ -24,17 +29,34 @@ pub enum Input {
     DriveTorque,
     /// [`Inputs::slider_force`].
     SliderForce,
+    /// [`Inputs::oil_supply_temperature`].
+    OilSupplyTemperature,
 }
 
 impl Input {
     /// Every input, in the order of the input variables.
-    pub const ALL: [Self; 3] = [Self::DriveSpeed, Self::DriveTorque, Self::SliderForce];
+    pub const ALL: [Self; 4] = [
+        Self::DriveSpeed,
+        Self::DriveTorque,
+        Self::SliderForce,
+        Self::OilSupplyTemperature,
+    ];
+}
+
+impl Default for Inputs {
+    /// No drive speed, torque or slider force; the oil supplied at [`SUPPLY_TEMPERATURE`].
+    fn default() -> Self {
+        Self {
+            oil_supply_temperature: SUPPLY_TEMPERATURE,
+            ..<Self as InputValues>::ZERO
+        }
+    }
 }
 
 impl Inputs {
     /// The inputs a model starts with when none are given: the prescribed speed equal to the
     /// crank's initial speed (`drive.speed`'s start value if it is not set), no torque, no slider
-    /// force.
+    /// force, the oil supplied at [`SUPPLY_TEMPERATURE`].
     pub fn at_start(p: &crate::params::Parameters) -> Self {
         Self {
             drive_speed: p
@@ -50,6 +72,7 @@ impl Inputs {
             Input::DriveSpeed => self.drive_speed,
             Input::DriveTorque => self.drive_torque,
             Input::SliderForce => self.slider_force,
+            Input::OilSupplyTemperature => self.oil_supply_temperature,
         }
     }
 
@@ -59,16 +82,18 @@ impl Inputs {
             Input::DriveSpeed => &mut self.drive_speed,
             Input::DriveTorque => &mut self.drive_torque,
             Input::SliderForce => &mut self.slider_force,
+            Input::OilSupplyTemperature => &mut self.oil_supply_temperature,
         }
     }
 }
 
 impl InputValues for Inputs {
-    const LEN: usize = 3;
+    const LEN: usize = 4;
     const ZERO: Self = Self {
         drive_speed: 0.0,
         drive_torque: 0.0,
         slider_force: 0.0,
+        oil_supply_temperature: 0.0,
     };
     fn value(&self, k: usize) -> f64 {
         self.get(Input::ALL[k])

@@ -16,6 +16,7 @@
 
 use nalgebra::Vector2;
 
+use super::inputs::Conditions;
 use super::layout::{CRANK_ANGLE, PIN_A, pair};
 use super::slider_crank::SliderCrank;
 use crate::joint::{
@@ -65,11 +66,13 @@ impl SliderCrank {
             .map(|g| (pair(y, g), pair(y, l.rate_of(g))))
     }
 
-    /// Journal–bearing kinematics of the joint `role` in state `y`.
+    /// Journal–bearing kinematics of the joint `role` in state `y`, with its film temperature
+    /// where it has a heat balance.
     pub fn joint_kinematics(&self, role: JointRole, y: &[f64]) -> JointKinematics {
         let l = self.layout;
         let (p, p_dot) = (&y[l.rod()], &y[l.rod_rates()]);
         let (theta, omega) = (y[CRANK_ANGLE], y[l.crank_speed()]);
+        let temperature = self.film_temperature(role, y);
         match role {
             JointRole::MainBearing => {
                 let (e, e_dot) = match self.crank_reference(y) {
@@ -88,6 +91,7 @@ impl SliderCrank {
                     e_dot,
                     omega_journal: omega,
                     omega_bearing: 0.0,
+                    temperature,
                 }
             }
             JointRole::CrankPin => {
@@ -104,6 +108,7 @@ impl SliderCrank {
                     e_dot,
                     omega_journal: omega,
                     omega_bearing: self.rod.end_angular_velocity(RodEnd::CrankPin, p, p_dot),
+                    temperature,
                 }
             }
             JointRole::RodSlider => {
@@ -113,6 +118,7 @@ impl SliderCrank {
                     e_dot: Vector2::new(y[b_rate] - y[l.slider_velocity()], y[b_rate + 1]),
                     omega_journal: self.rod.end_angular_velocity(RodEnd::SliderPin, p, p_dot),
                     omega_bearing: 0.0,
+                    temperature,
                 }
             }
         }
@@ -198,6 +204,31 @@ impl SliderCrank {
                 )
             }
         })
+    }
+
+    /// The film temperature of the joint `role` in state `y`, where it has a heat balance \[K\].
+    pub fn film_temperature(&self, role: JointRole, y: &[f64]) -> Option<f64> {
+        self.temperature[role as usize].map(|i| y[i])
+    }
+
+    /// Writes the rate of each film temperature in state `y` under the conditions `c` to `dy`:
+    /// the heat balance's dT/dt = (P − Φ_oil − Φ_housing)/C with the joint's friction power and
+    /// oil flow there ([`crate::joint::thermal`]).
+    pub(super) fn film_temperature_rates(&self, y: &[f64], c: &Conditions, dy: &mut [f64]) {
+        for (role, index) in JointRole::ALL.into_iter().zip(self.temperature) {
+            let (Some(i), Some(balance)) = (index, self.joint(role).heat_balance()) else {
+                continue;
+            };
+            let kin = self.joint_kinematics(role, y);
+            let impact_velocity = self.impact_velocity(role, &kin, c.contacts);
+            let rates = self.joint(role).rates(&kin, impact_velocity);
+            dy[i] = balance.rate(
+                rates.friction_power,
+                rates.oil_flow,
+                y[i],
+                c.inputs.oil_supply_temperature,
+            );
+        }
     }
 
     /// Each joint's friction power, oil flow and asperity force in state `y` with the contact

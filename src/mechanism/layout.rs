@@ -1,6 +1,6 @@
 //! Where each quantity sits in the mechanism's state vector,
 //! ```text
-//! y = [θ, p, x_s, (r_G),  θ̇, ṗ, ẋ_s, (ṙ_G),  θ_d, W_drive, W_joint…, W_external, (D_material)]
+//! y = [θ, p, x_s, (r_G),  θ̇, ṗ, ẋ_s, (ṙ_G),  θ_d, T…, W_drive, W_joint…, W_external, (D_material)]
 //!      └─ n coordinates ─┘ └── n velocities ──┘
 //! ```
 //! with p the rod's coordinates, whose pin A position comes first and pin B position at the rod's
@@ -8,7 +8,8 @@
 //! is free in a clearance main bearing (a fixed pivot otherwise). Every index into a state goes
 //! through [`StateLayout`]. W_joint… is the work of the joint forces, one integral per clearance
 //! joint (from the ground to the slider), or a single one when at most one joint has a
-//! clearance.
+//! clearance. T… is the film temperature of each lubricated joint with a heat balance (from the
+//! ground to the slider; none without).
 
 use std::ops::{Range, RangeFrom};
 
@@ -29,6 +30,8 @@ pub struct StateLayout {
     free_crank: bool,
     /// Number of joint-work integrals (at least 1).
     joint_works: usize,
+    /// Number of film temperatures.
+    temperatures: usize,
 }
 
 /// Position of the crank angle θ.
@@ -45,13 +48,13 @@ impl StateLayout {
     /// The layout of a rod with `n_rod` coordinates whose pin B x is the rod coordinate `pin_b`,
     /// of a crank on a fixed pivot or, with `free_crank`, free in the main bearing, and of
     /// `clearance_joints` joints with a clearance (each with its own work integral when there
-    /// are several).
+    /// are several), of which `temperatures` have a film temperature.
     pub fn new(
         n_rod: usize,
         pin_b: usize,
         material_damping: bool,
         free_crank: bool,
-        clearance_joints: usize,
+        (clearance_joints, temperatures): (usize, usize),
     ) -> Self {
         Self {
             n: n_rod + 2 + 2 * usize::from(free_crank),
@@ -60,6 +63,7 @@ impl StateLayout {
             material_damping,
             free_crank,
             joint_works: clearance_joints.max(1),
+            temperatures,
         }
     }
 
@@ -68,10 +72,10 @@ impl StateLayout {
         self.n
     }
 
-    /// Length of the state vector: 2n + 3 + the joint-work integrals, plus 1 with material
-    /// damping.
+    /// Length of the state vector: 2n + 3 + the film temperatures + the joint-work integrals,
+    /// plus 1 with material damping.
     pub fn n_states(self) -> usize {
-        2 * self.n + 3 + self.joint_works + usize::from(self.material_damping)
+        2 * self.n + 3 + self.temperatures + self.joint_works + usize::from(self.material_damping)
     }
 
     /// The coordinates q.
@@ -139,30 +143,35 @@ impl StateLayout {
         2 * self.n
     }
 
+    /// The film temperatures, from the ground to the slider.
+    pub fn temperatures(self) -> Range<usize> {
+        2 * self.n + 1..2 * self.n + 1 + self.temperatures
+    }
+
     /// The work of the drive.
     pub fn drive_work(self) -> usize {
-        2 * self.n + 1
+        2 * self.n + 1 + self.temperatures
     }
 
     /// The works of the joint forces: one per clearance joint, from the ground to the slider (a
     /// single one with at most one clearance joint).
     pub fn joint_works(self) -> Range<usize> {
-        2 * self.n + 2..2 * self.n + 2 + self.joint_works
+        self.drive_work() + 1..self.drive_work() + 1 + self.joint_works
     }
 
     /// The work of the external slider force.
     pub fn external_work(self) -> usize {
-        2 * self.n + 2 + self.joint_works
+        self.joint_works().end
     }
 
     /// The energy dissipated by material damping (present only with material damping).
     pub fn material_damping(self) -> usize {
-        2 * self.n + 3 + self.joint_works
+        self.external_work() + 1
     }
 
-    /// The work and energy integrals, every state after the drive angle.
+    /// The work and energy integrals, every state after the film temperatures.
     pub fn integrals(self) -> RangeFrom<usize> {
-        2 * self.n + 1..
+        self.drive_work()..
     }
 }
 
@@ -173,13 +182,13 @@ mod tests {
     /// Every state has exactly one place: the named positions and ranges tile 0..len.
     #[test]
     fn positions_tile_the_state() {
-        for (n_rod, pin_b, damping, free, joints) in [
-            (4, 2, false, false, 1),
-            (20, 10, true, false, 0),
-            (36, 32, false, true, 3),
-            (12, 8, true, true, 2),
+        for (n_rod, pin_b, damping, free, joints, temperatures) in [
+            (4, 2, false, false, 1, 0),
+            (20, 10, true, false, 0, 0),
+            (36, 32, false, true, 3, 2),
+            (12, 8, true, true, 2, 1),
         ] {
-            let l = StateLayout::new(n_rod, pin_b, damping, free, joints);
+            let l = StateLayout::new(n_rod, pin_b, damping, free, (joints, temperatures));
             let mut seen = vec![0; l.n_states()];
             let mut mark = |i: usize| seen[i] += 1;
             mark(CRANK_ANGLE);
@@ -194,6 +203,9 @@ mod tests {
                     .for_each(&mut mark);
             }
             mark(l.drive_angle());
+            l.temperatures().for_each(&mut mark);
+            assert_eq!(l.temperatures().len(), temperatures);
+            assert_eq!(l.temperatures().start, l.drive_angle() + 1);
             (l.drive_work()..l.n_states()).for_each(&mut mark);
             assert!(seen.iter().all(|&k| k == 1), "{seen:?}");
             assert_eq!(l.integrals().start, l.drive_work());

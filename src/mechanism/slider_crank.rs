@@ -59,6 +59,12 @@ pub struct SliderCrank {
     /// The state position of each joint's work integral, by [`JointRole`] (none for an ideal
     /// joint; [`StateLayout::joint_works`]).
     pub(super) joint_work: [Option<usize>; 3],
+    /// The state position of each joint's film temperature, by [`JointRole`] (none without a
+    /// heat balance; [`StateLayout::temperatures`]).
+    pub(super) temperature: [Option<usize>; 3],
+    /// The film temperature each joint with a heat balance starts at, by [`JointRole`] \[K\]:
+    /// the supply temperature, or the settled start's ([`SliderCrank::settle_temperatures`]).
+    pub(super) start_temperatures: [f64; 3],
     /// The load on the slider tied to the crank angle (`slider.forceTable`), added to the input.
     pub(super) load_table: Option<LoadTable>,
     /// The elastic energy each joint's contact stored at the start, by [`JointRole`] \[J\].
@@ -123,15 +129,24 @@ impl SliderCrank {
         let clearance = p
             .joints()
             .map(|(_, joint)| joint.model != JointModel::Ideal);
+        let [main_bearing, crank_pin, rod_slider] =
+            p.joints().map(|(_, joint)| Joint::with_oil(joint, &p.oil));
+        let joints = [main_bearing?, crank_pin?, rod_slider?];
+        let thermal = joints
+            .each_ref()
+            .map(|joint| joint.heat_balance().is_some());
+        let count = |flags: &[bool; 3]| flags.iter().filter(|&&f| f).count();
         let layout = StateLayout::new(
             n_rod,
             b,
             rod.rigid_length().is_none() && p.rod.damping() > 0.0,
             free_crank,
-            clearance.iter().filter(|&&c| c).count(),
+            (count(&clearance), count(&thermal)),
         );
         let mut next_work = layout.joint_works();
         let joint_work = clearance.map(|c| if c { next_work.next() } else { None });
+        let mut next_temperature = layout.temperatures();
+        let temperature = thermal.map(|t| if t { next_temperature.next() } else { None });
         let active = Active {
             crank_pin: p.crank_pin.model == JointModel::Ideal,
             ideal_joint: p.joint.model == JointModel::Ideal,
@@ -139,11 +154,12 @@ impl SliderCrank {
             speed_drive: p.drive_mode == DriveMode::Speed,
             free_crank,
         };
-        let [main_bearing, crank_pin, rod_slider] = p.joints().map(|(_, joint)| Joint::new(joint));
         Ok(Self {
             layout,
             joint_work,
-            joints: [main_bearing?, crank_pin?, rod_slider?],
+            temperature,
+            start_temperatures: [inputs.oil_supply_temperature; 3],
+            joints,
             drive: p.drive_mode,
             active,
             crank: Crank {
@@ -359,6 +375,7 @@ impl SliderCrank {
         } else {
             0.0
         };
+        self.film_temperature_rates(y, c, dy);
         dy[l.drive_work()] = crank_torque * v[CRANK_ANGLE];
         dy[l.external_work()] = slider_force * v[l.slider()];
         if let Some(d) = dy.get_mut(l.material_damping()) {

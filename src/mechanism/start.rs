@@ -68,7 +68,49 @@ impl SliderCrank {
             y[l.rate_of(g) + 1] = a * speed * cos;
         }
         y[l.drive_angle()] = angle;
+        for role in JointRole::ALL {
+            if let Some(i) = self.temperature[role as usize] {
+                y[i] = self.start_temperatures[role as usize];
+            }
+        }
         y
+    }
+
+    /// The film temperature the joint `role` starts at, where it has a heat balance \[K\].
+    fn start_temperature(&self, role: JointRole) -> Option<f64> {
+        self.temperature[role as usize].map(|_| self.start_temperatures[role as usize])
+    }
+
+    /// Sets the film temperature each joint with a heat balance starts at: that of the steady heat
+    /// balance ([`crate::joint::Joint::settled_temperature`]) against the start reaction in
+    /// `reactions` where one is given (the settled thermal start), else the oil's supply
+    /// temperature `supply`. Fails, naming the joint, where no steady balance exists.
+    pub fn settle_temperatures(
+        &mut self,
+        reactions: [Option<Reaction>; 3],
+        supply: f64,
+    ) -> Result<(), ModelError> {
+        for role in JointRole::ALL {
+            let i = role as usize;
+            self.start_temperatures[i] = match reactions[i] {
+                Some(r) if self.temperature[i].is_some() => self
+                    .joint(role)
+                    .settled_temperature(r.force, (r.omega_journal, r.omega_bearing), supply)
+                    .ok_or_else(|| {
+                        ModelError::Numerical(format!(
+                            "{}: no steady heat balance at the start: no film temperature up to \
+                             1000 K above the supply carries its friction power away (give it \
+                             an oil flow or {}.heatTransferCoefficient, or start it at the \
+                             supply temperature, {}.thermalStart = supply)",
+                            role.prefix(),
+                            role.prefix(),
+                            role.prefix()
+                        ))
+                    })?,
+                _ => supply,
+            };
+        }
+        Ok(())
     }
 
     /// The start reactions of this mechanism, with every joint ideal: its state at `angle` and
@@ -119,10 +161,11 @@ impl SliderCrank {
         equilibrate: bool,
     ) -> Result<(Vec<f64>, Contacts), ModelError> {
         let e = JointRole::ALL.map(|role| match reactions[role as usize] {
-            Some(r) => {
-                self.joint(role)
-                    .eccentricity_carrying(r.force, r.omega_journal, r.omega_bearing)
-            }
+            Some(r) => self.joint(role).eccentricity_carrying(
+                r.force,
+                (r.omega_journal, r.omega_bearing),
+                self.start_temperature(role),
+            ),
             None => Vector2::zeros(),
         });
         let mut y = self.initial_state_with_eccentricities(angle, speed, e);

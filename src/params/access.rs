@@ -3,7 +3,9 @@
 
 use super::parameters::{BENCHMARK_SPEED, DriveMode, InitialState, Parameters, RodFormulation};
 use crate::integrator::Method;
-use crate::joint::{ContactGeometry, ContactLaw, FilmModel, JointModel, JournalStart};
+use crate::joint::{
+    ContactGeometry, ContactLaw, FilmModel, JointModel, JournalStart, ThermalModel, ThermalStart,
+};
 use crate::reduction::{Boundary, Quadrature};
 use crate::variables::Vr;
 
@@ -105,6 +107,16 @@ real_fields! {
     MainBearingBoundaryFriction => main_bearing.boundary_friction;
     MainBearingAsperityDensityProduct => main_bearing.asperity_density_product;
     MainBearingAsperityRoughnessRatio => main_bearing.asperity_roughness_ratio;
+    OilViscosity40 => oil.viscosity40;
+    OilViscosity100 => oil.viscosity100;
+    OilDensity => oil.density;
+    OilSpecificHeat => oil.specific_heat;
+    JointHeatCapacity => joint.heat_capacity;
+    JointHeatTransferCoefficient => joint.heat_transfer_coefficient;
+    CrankPinHeatCapacity => crank_pin.heat_capacity;
+    CrankPinHeatTransferCoefficient => crank_pin.heat_transfer_coefficient;
+    MainBearingHeatCapacity => main_bearing.heat_capacity;
+    MainBearingHeatTransferCoefficient => main_bearing.heat_transfer_coefficient;
     }
     optional {
         // Not set, the crank starts at drive.speed; its start value reads.
@@ -186,6 +198,15 @@ integer_fields! {
         JointFilmModel => joint.film_model: [FilmModel::Short, FilmModel::Finite];
         CrankPinFilmModel => crank_pin.film_model: [FilmModel::Short, FilmModel::Finite];
         MainBearingFilmModel => main_bearing.film_model: [FilmModel::Short, FilmModel::Finite];
+        JointThermalModel => joint.thermal_model:
+            [ThermalModel::Isoviscous, ThermalModel::HeatBalance];
+        JointThermalStart => joint.thermal_start: [ThermalStart::Supply, ThermalStart::Settled];
+        CrankPinThermalModel => crank_pin.thermal_model:
+            [ThermalModel::Isoviscous, ThermalModel::HeatBalance];
+        CrankPinThermalStart => crank_pin.thermal_start: [ThermalStart::Supply, ThermalStart::Settled];
+        MainBearingThermalModel => main_bearing.thermal_model:
+            [ThermalModel::Isoviscous, ThermalModel::HeatBalance];
+        MainBearingThermalStart => main_bearing.thermal_start: [ThermalStart::Supply, ThermalStart::Settled];
     }
     counts {
         SliderForceTablePeriod => slider_force_table_period;

@@ -3,7 +3,7 @@
 
 use crate::ancf::RodProperties;
 use crate::integrator::{Method, Tolerances};
-use crate::joint::{FilmModel, JointField, JointModel, JointParameters, JointRole};
+use crate::joint::{FilmModel, JointField, JointModel, JointParameters, JointRole, OilParameters};
 use crate::reduction::{Boundary, Quadrature};
 
 /// How the connecting rod is modelled.
@@ -87,6 +87,8 @@ pub struct Parameters {
     pub crank_pin: JointParameters,
     /// The main bearing (`mainBearing.*`): the crank's pivot in the ground.
     pub main_bearing: JointParameters,
+    /// The oil of the lubricated joints' heat balances (`oil.`).
+    pub oil: OilParameters,
     /// Drive mode.
     pub drive_mode: DriveMode,
     /// Magnitude of the gravitational acceleration \[m/s²\] (along −y by default, see
@@ -176,6 +178,7 @@ impl Default for Parameters {
             joint: JointParameters::benchmark(),
             crank_pin: JointParameters::ideal(),
             main_bearing: JointParameters::ideal(),
+            oil: OilParameters::default(),
             drive_mode: DriveMode::Speed,
             gravity: 0.0,
             gravity_angle: 0.0,

@@ -162,6 +162,19 @@ impl Parameters {
         for (role, joint) in self.joints() {
             check_joint(role, joint)?;
         }
+        // The viscosity law falls with the temperature (Walther's B > 0); equal viscosities give
+        // a constant one.
+        if self.oil.viscosity100 > self.oil.viscosity40 {
+            return Err(ModelError::invalid(
+                "oil.viscosity100",
+                self.oil.viscosity100,
+                format!(
+                    "[1e-6, oil.viscosity40] = [1e-6, {}] Pa s: an oil is thinner at 100 degC than \
+                     at 40 degC",
+                    Num(self.oil.viscosity40)
+                ),
+            ));
+        }
         if !matches!(self.slider_force_table_period, 360 | 720) {
             return Err(ModelError::invalid(
                 "slider.forceTablePeriod",

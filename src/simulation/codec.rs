@@ -36,6 +36,7 @@ fn cycle_values(c: &Cycle) -> Vec<f64> {
             j.film_pressure,
             j.force,
             j.asperity_force,
+            j.film_temperature,
         ] {
             v.extend([e.value, e.angle]);
         }
@@ -54,6 +55,7 @@ fn cycle_step_values(s: &CycleStep) -> Vec<f64> {
         v.extend(rates.into_iter().flatten());
     }
     v.extend(s.in_contact.into_iter().flatten().map(f64::from));
+    v.extend(s.film_temperature.into_iter().flatten());
     v
 }
 
@@ -113,7 +115,7 @@ impl WriteRecords for ByteWriter<'_> {
 }
 
 /// The numbers of one joint's cycle results in [`cycle_values`].
-const JOINT_CYCLE_VALUES: usize = 11;
+const JOINT_CYCLE_VALUES: usize = 13;
 
 /// The cycle of [`cycle_values`].
 fn cycle_from(v: &[f64]) -> Result<Cycle, CodecError> {
@@ -138,9 +140,10 @@ fn cycle_from(v: &[f64]) -> Result<Cycle, CodecError> {
                 film_pressure: extreme(k + 2),
                 force: extreme(k + 4),
                 asperity_force: extreme(k + 6),
-                friction_energy: v[k + 8],
-                oil_volume: v[k + 9],
-                metal_contact_time: v[k + 10],
+                film_temperature: extreme(k + 8),
+                friction_energy: v[k + 10],
+                oil_volume: v[k + 11],
+                metal_contact_time: v[k + 12],
             }
         }),
     })
@@ -148,7 +151,7 @@ fn cycle_from(v: &[f64]) -> Result<Cycle, CodecError> {
 
 /// The step contribution of [`cycle_step_values`].
 fn cycle_step_from(v: &[f64]) -> Result<CycleStep, CodecError> {
-    if v.len() != 5 + 3 * SERIES + 24 {
+    if v.len() != 5 + 3 * SERIES + 30 {
         return Err(CodecError(format!(
             "FMU state rejected: a cycle step of {} numbers",
             v.len()
@@ -171,6 +174,7 @@ fn cycle_step_from(v: &[f64]) -> Result<CycleStep, CodecError> {
             let k = 5 + 3 * SERIES + 18 + 2 * i;
             [v[k] != 0.0, v[k + 1] != 0.0]
         }),
+        film_temperature: rates(5 + 3 * SERIES + 24),
     })
 }
 

@@ -68,6 +68,8 @@ pub struct JointCycle {
     pub asperity_force: Extreme,
     /// The time in dry metal contact \[s\].
     pub metal_contact_time: f64,
+    /// The largest film temperature \[K\].
+    pub film_temperature: Extreme,
 }
 
 impl JointCycle {
@@ -79,6 +81,7 @@ impl JointCycle {
         oil_volume: 0.0,
         asperity_force: Extreme::NONE,
         metal_contact_time: 0.0,
+        film_temperature: Extreme::NONE,
     };
 }
 
@@ -139,6 +142,9 @@ impl Cycle {
                 joint
                     .asperity_force
                     .absorb(rate(step.asperity_force[i], s), angle(s));
+                joint
+                    .film_temperature
+                    .absorb(rate(step.film_temperature[i], s), angle(s));
             }
         }
         self.end = step.time[0] + to * (step.time[1] - step.time[0]);
@@ -183,6 +189,8 @@ pub struct CycleStep {
     pub asperity_force: [[f64; 2]; 3],
     /// Whether each joint is in dry contact at the step's ends.
     pub in_contact: [[bool; 2]; 3],
+    /// Each joint's film temperature at the step's ends (0 without a heat balance) \[K\].
+    pub film_temperature: [[f64; 2]; 3],
 }
 
 /// The cycle under way and the last complete one.
@@ -290,6 +298,7 @@ mod tests {
             oil_flow: [[1e-6, 3e-6]; 3],
             asperity_force: [[0.0, 0.0]; 3],
             in_contact: [[false, false]; 3],
+            film_temperature: [[0.0, 0.0]; 3],
         }
     }
 

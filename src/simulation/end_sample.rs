@@ -17,14 +17,14 @@ use crate::mechanism::{Conditions, InputSignal, Inputs};
 #[derive(Clone, Debug)]
 pub(super) struct EndSample {
     point: StepPoint,
-    inputs: Option<[f64; 4]>,
+    inputs: Option<[f64; 5]>,
     contacts: Contacts,
     sample: Sample,
 }
 
 /// What an evaluation at `t` reads of the inputs `signal` ([`Conditions::at`]): their values and
 /// the drive's acceleration.
-fn read_at(signal: &InputSignal, t: f64) -> [f64; 4] {
+fn read_at(signal: &InputSignal, t: f64) -> [f64; 5] {
     let contacts = Contacts::default();
     let c = Conditions::at(signal, t, &contacts);
     // (exhaustive: a new input is a compile error here)
@@ -32,11 +32,13 @@ fn read_at(signal: &InputSignal, t: f64) -> [f64; 4] {
         drive_speed,
         drive_torque,
         slider_force,
+        oil_supply_temperature,
     } = c.inputs;
     [
         drive_speed,
         drive_torque,
         slider_force,
+        oil_supply_temperature,
         c.drive_acceleration,
     ]
 }
@@ -102,8 +104,7 @@ mod tests {
         };
         let signal = InputSignal::held(Inputs {
             drive_speed: 523.6,
-            drive_torque: 0.0,
-            slider_force: 0.0,
+            ..Inputs::default()
         });
         let contacts = Contacts::default();
         let sample = [1.5; SERIES];

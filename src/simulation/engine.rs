@@ -15,9 +15,11 @@ use crate::error::{ModelError, Num};
 use crate::integrator::{Integrator, Stats};
 use crate::joint::JointRole;
 use crate::mechanism::{
-    Conditions, ContactState, Contacts, Energies, Input, InputSignal, Inputs, SliderCrank,
+    Conditions, ContactState, Contacts, Energies, Input, InputSignal, Inputs, Reaction, SliderCrank,
 };
-use crate::params::{DriveMode, InitialState, JointModel, JournalStart, Parameters};
+use crate::params::{
+    DriveMode, InitialState, JointModel, JournalStart, Parameters, ThermalModel, ThermalStart,
+};
 
 /// The slider-crank's simulation engine: the mechanism, its integrator and what it holds of the
 /// run (the step sequence, the state at the current point, the peak holds and cycle results, the
@@ -87,27 +89,13 @@ impl Engine {
         };
         let mut mechanism = SliderCrank::with_inputs(&parameters, start)?;
         let equilibrate = parameters.initial_state == InitialState::Equilibrated;
-        let settled = parameters.joints().map(|(_, joint)| {
-            joint.model != JointModel::Ideal && joint.initial_state == JournalStart::Settled
-        });
-        let (state, contacts) = if settled.contains(&true) {
-            SliderCrank::with_inputs(&parameters.with_ideal_joints(), start)
-                .and_then(|mut ideal| ideal.start_reactions((angle, speed), start, equilibrate))
-                .and_then(|reactions| {
-                    let settled = std::array::from_fn(|i| settled[i].then_some(reactions[i]));
-                    mechanism.settle_journals((angle, speed), start, settled, equilibrate)
-                })
-        } else {
-            let mut state = mechanism.initial_state(angle, speed);
-            let contacts = Contacts::default();
-            if equilibrate {
-                mechanism
-                    .equilibrate(&mut state, start, &contacts)
-                    .map(|()| (state, contacts))
-            } else {
-                Ok((state, contacts))
-            }
-        }
+        let (state, contacts) = Self::start_state(
+            &parameters,
+            &mut mechanism,
+            (angle, speed),
+            start,
+            equilibrate,
+        )
         .map_err(|e| failure::unequilibrated(&parameters, &e))?;
         mechanism.set_contact_at_start(mechanism.contact_energies(&state, &contacts));
         let integrator = Integrator::new(
@@ -145,6 +133,46 @@ impl Engine {
             interval: Interval::default(),
             last_read: None,
         })
+    }
+
+    /// The start state and the joints' contact states: each journal settled against the ideal
+    /// mechanism's start reaction where its joint asks for it (else centred), each film temperature
+    /// in its steady heat balance against it where its joint asks for it (else at the supply
+    /// temperature), the rod equilibrated with `equilibrate`.
+    fn start_state(
+        p: &Parameters,
+        mechanism: &mut SliderCrank,
+        (angle, speed): (f64, f64),
+        start: Inputs,
+        equilibrate: bool,
+    ) -> Result<(Vec<f64>, Contacts), ModelError> {
+        let settled = p.joints().map(|(_, joint)| {
+            joint.model != JointModel::Ideal && joint.initial_state == JournalStart::Settled
+        });
+        let warm = p.joints().map(|(_, joint)| {
+            joint.model == JointModel::Lubricated
+                && joint.thermal_model == ThermalModel::HeatBalance
+                && joint.thermal_start == ThermalStart::Settled
+        });
+        let reactions = if settled.contains(&true) || warm.contains(&true) {
+            let mut ideal = SliderCrank::with_inputs(&p.with_ideal_joints(), start)?;
+            Some(ideal.start_reactions((angle, speed), start, equilibrate)?)
+        } else {
+            None
+        };
+        let only = |flags: [bool; 3]| -> [Option<Reaction>; 3] {
+            std::array::from_fn(|i| reactions.filter(|_| flags[i]).map(|r| r[i]))
+        };
+        mechanism.settle_temperatures(only(warm), start.oil_supply_temperature)?;
+        if settled.contains(&true) {
+            return mechanism.settle_journals((angle, speed), start, only(settled), equilibrate);
+        }
+        let mut state = mechanism.initial_state(angle, speed);
+        let contacts = Contacts::default();
+        if equilibrate {
+            mechanism.equilibrate(&mut state, start, &contacts)?;
+        }
+        Ok((state, contacts))
     }
 
     /// The parameters.
@@ -221,14 +249,18 @@ impl Engine {
         self.integrator.restart();
     }
 
-    /// Which inputs act in the drive mode: the prescribed speed with the speed drive, the torque
-    /// with the torque drive, the slider force always.
+    /// Which inputs act: the prescribed speed with the speed drive, the torque with the torque
+    /// drive, the slider force always, the oil's supply temperature where a joint has a heat
+    /// balance.
     pub(super) fn acts(&self, input: Input) -> bool {
         let drive = self.parameters.drive_mode;
         match input {
             Input::DriveSpeed => drive == DriveMode::Speed,
             Input::DriveTorque => drive == DriveMode::Torque,
             Input::SliderForce => true,
+            Input::OilSupplyTemperature => JointRole::ALL
+                .iter()
+                .any(|&role| self.mechanism.joint(role).heat_balance().is_some()),
         }
     }
 

@@ -37,6 +37,7 @@ pub use fmi_core::clock::{CLOCK_RESOLUTION, on_clock_grid};
 mod tests {
     use super::*;
     use crate::params::Parameters;
+    use fmi_core::signal::InputValues;
 
     /// An input that does not act in the drive mode (the torque with the speed drive) leaves the
     /// step sequence alone: the run equals one without it, bit for bit.
@@ -79,7 +80,7 @@ mod tests {
         let reached = sim.inputs().at(sim.time()).drive_speed;
         assert!((reached - expected).abs() < 1e-10 * expected, "{reached}");
         sim.advance_to(1e-4 + 2.0 * h).unwrap();
-        assert_eq!(sim.inputs().derivatives, [Inputs::default(); 2]);
+        assert_eq!(sim.inputs().derivatives, [<Inputs as InputValues>::ZERO; 2]);
         let held = sim.state()[speed];
         assert!(
             (held - expected).abs() < 1e-9 * expected,

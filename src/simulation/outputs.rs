@@ -211,6 +211,14 @@ pub struct BearingOutputs {
     pub asperity_force_peak_cycle: f64,
     /// The fraction of the last complete load cycle's duration in dry contact.
     pub metal_contact_fraction_cycle: f64,
+    /// The effective film temperature, 0 without a heat balance \[K\].
+    pub film_temperature: f64,
+    /// The oil's viscosity in the film, 0 without a film \[Pa s\].
+    pub viscosity_effective: f64,
+    /// The heat the oil flow carries away, 0 without a heat balance \[W\].
+    pub heat_flow: f64,
+    /// The largest film temperature over the last complete load cycle \[K\].
+    pub film_temperature_max_cycle: f64,
 }
 
 impl Outputs {
@@ -281,6 +289,16 @@ pub(super) fn outputs(
             };
         };
         let now = mechanism.bearing_state(role, y, c.contacts);
+        let (film_temperature, heat_flow) = match (
+            mechanism.film_temperature(role, y),
+            mechanism.joint(role).heat_balance(),
+        ) {
+            (Some(t), Some(balance)) => (
+                t,
+                balance.heat_to_oil(now.oil_flow, t, c.inputs.oil_supply_temperature),
+            ),
+            _ => (0.0, 0.0),
+        };
         let (interval, since_start) = (&peaks.interval, &peaks.since_start);
         let ratio = interval.eccentricity_ratio[i].max(now.eccentricity_ratio);
         let pressure = interval.film_pressure[i].max(now.film_pressure);
@@ -325,6 +343,15 @@ pub(super) fn outputs(
             )
             .0,
             metal_contact_fraction_cycle: cycle.mean(joint.metal_contact_time),
+            film_temperature,
+            viscosity_effective: now.viscosity,
+            heat_flow,
+            film_temperature_max_cycle: extreme(
+                joint.film_temperature,
+                film_temperature,
+                y[CRANK_ANGLE],
+            )
+            .0,
         }
     });
     Ok(Outputs {

@@ -95,6 +95,10 @@ impl Engine {
                     self.contacts.0[i].in_contact,
                 ]
             }),
+            film_temperature: JointRole::ALL.map(|role| {
+                [&self.start.y, &self.end.y]
+                    .map(|y| self.mechanism.film_temperature(role, y).unwrap_or(0.0))
+            }),
         }
     }
 

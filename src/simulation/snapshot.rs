@@ -4,7 +4,8 @@ use super::codec::{ByteReader, ByteWriter, CodecError, ReadRecords, WriteRecords
 use super::peaks::PeakHold;
 use super::step::StepPoint;
 use crate::integrator::{ImplicitState, IntegratorState};
-use crate::mechanism::{Contacts, Inputs};
+use crate::mechanism::{Contacts, Input, Inputs};
+use fmi_core::signal::InputValues;
 
 /// A complete, restorable state of an [`super::Engine`] (its parameters, and the current point
 /// and the inputs, which its owner holds, excepted).
@@ -41,7 +42,7 @@ impl Snapshot {
             && finite(&self.contact_at_start)
             && self.step_start.is_finite()
             && self.step_end.is_finite()
-            && finite(&[start.drive_speed, start.drive_torque, start.slider_force])
+            && finite(&Input::ALL.map(|input| start.get(input)))
     }
 
     /// Appends the pointer-free bytes of the snapshot.
@@ -80,10 +81,9 @@ impl Snapshot {
         }
         w.contact(&self.contact);
         self.contact_at_start.iter().for_each(|&e| w.f64(e));
-        let start = &self.start_inputs;
-        [start.drive_speed, start.drive_torque, start.slider_force]
-            .iter()
-            .for_each(|&x| w.f64(x));
+        for input in Input::ALL {
+            w.f64(self.start_inputs.get(input));
+        }
         w.peaks(&self.peaks.interval);
         w.peaks(&self.peaks.step_end);
         w.u8(u8::from(self.peaks.pending));
@@ -140,10 +140,12 @@ impl Snapshot {
             integrator,
             contact,
             contact_at_start,
-            start_inputs: Inputs {
-                drive_speed: r.f64()?,
-                drive_torque: r.f64()?,
-                slider_force: r.f64()?,
+            start_inputs: {
+                let mut start = <Inputs as InputValues>::ZERO;
+                for input in Input::ALL {
+                    *start.get_mut(input) = r.f64()?;
+                }
+                start
             },
             peaks: PeakHold {
                 interval: r.peaks()?,

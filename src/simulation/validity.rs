@@ -3,7 +3,7 @@
 //! ([`super::Simulation::take_warnings`]).
 
 use crate::error::Num;
-use crate::joint::{Elastic, JointField, JointRole};
+use crate::joint::{Contacts, Elastic, JointField, JointRole};
 use crate::mechanism::SliderCrank;
 use crate::params::{JointModel, Parameters, RodFormulation};
 
@@ -20,12 +20,16 @@ pub const CRANK_SPEED: f64 = 1.01e4;
 /// [√((l − r)² − e²) − c, √((l + r)² − e²) + c] (e: the slider offset), as a fraction of the crank
 /// length.
 pub const STROKE_EXCESS_PER_CRANK: f64 = 0.01;
+/// Shortest time constant of a film temperature, C/(2 ρ c_p Q + k), in units of
+/// `solver.maxStepSize`: the heat balance is integrated with the motion's steps, as a slow state
+/// (its rate taken at each stage, not solved for), and wants many steps per time constant.
+pub const THERMAL_STEPS: f64 = 10.0;
 
 /// The warnings of a simulation: which validity limits were already crossed, the messages not
 /// yet taken, and the count since the start.
 #[derive(Clone, Debug, Default)]
 pub(super) struct Monitor {
-    fired: [bool; 5],
+    fired: [bool; 6],
     /// Whether a joint's force peak was reported as resting on the interpolant, by role.
     doubted: [bool; 3],
     /// Such a report not yet taken (time, interpolated peak, integrated value), by role: the
@@ -153,12 +157,26 @@ impl Monitor {
         } else {
             mechanism.midspan_deflection(y)
         };
+        // The film temperature with the shortest time constant, against the step.
+        let thermal = JointRole::ALL
+            .into_iter()
+            .filter_map(|role| {
+                let balance = mechanism.joint(role).heat_balance()?;
+                let flow = mechanism
+                    .bearing_state(role, y, &Contacts::default())
+                    .oil_flow;
+                let conductance = 2.0 * balance.oil.volumetric_heat() * flow + balance.conductance;
+                Some((role, balance.capacity / conductance))
+            })
+            .min_by(|a, b| a.1.total_cmp(&b.1))
+            .filter(|(_, tau)| *tau < THERMAL_STEPS * p.max_step_size);
         let left = [
             penetration > PENETRATION_PER_RADIUS * radius,
             deflection.abs() > DEFLECTION_PER_LENGTH * l,
             speed.abs() > CRANK_SPEED,
             excess > STROKE_EXCESS_PER_CRANK * r_c,
             beyond.is_some(),
+            thermal.is_some(),
         ];
         for (i, &left) in left.iter().enumerate() {
             if !left || self.fired[i] {
@@ -192,6 +210,21 @@ impl Monitor {
                     Num(inner),
                     Num(outer)
                 ),
+                5 => {
+                    let (role, tau) = thermal.unwrap_or((role, 0.0));
+                    format!(
+                        "{}'s film temperature follows its heat balance with a time constant of \
+                         {} s, shorter than {} solver.maxStepSize = {} s: the heat balance is \
+                         integrated as a slow state, and its temperature is then unreliable; \
+                         raise {}.heatCapacity (a film with the near-surface metal of journal and \
+                         shell holds 1-100 J/K)",
+                        role.prefix(),
+                        Num(tau),
+                        Num(THERMAL_STEPS),
+                        Num(p.max_step_size),
+                        role.prefix(),
+                    )
+                }
                 _ => {
                     let (role, depth, limit) = beyond.unwrap_or((role, 0.0, 0.0));
                     format!(

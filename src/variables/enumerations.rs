@@ -24,6 +24,10 @@ pub const ROD_QUADRATURE: usize = 8;
 pub const CONTACT_GEOMETRY: usize = 9;
 /// Index of the `FilmModel` type in [`ENUMERATIONS`].
 pub const FILM_MODEL: usize = 10;
+/// Index of the `ThermalModel` type in [`ENUMERATIONS`].
+pub const THERMAL_MODEL: usize = 11;
+/// Index of the `ThermalStart` type in [`ENUMERATIONS`].
+pub const THERMAL_START: usize = 12;
 
 /// Enumeration types.
 pub const ENUMERATIONS: &[Enumeration] = &[
@@ -165,6 +169,29 @@ pub const ENUMERATIONS: &[Enumeration] = &[
             ),
         ],
     },
+    Enumeration {
+        name: "ThermalModel",
+        items: &[
+            ("isoviscous", "the joint's viscosity, constant"),
+            (
+                "heatBalance",
+                "the oil's viscosity at the film's effective temperature, a state of the joint's heat balance (friction power in; the oil flow and the housing carry it out)",
+            ),
+        ],
+    },
+    Enumeration {
+        name: "ThermalStart",
+        items: &[
+            (
+                "supply",
+                "the film starts at oil.supplyTemperature: the bearing warms up",
+            ),
+            (
+                "settled",
+                "the film starts in the steady heat balance of the start's load and speed: the bearing at its operating temperature",
+            ),
+        ],
+    },
 ];
 
 #[cfg(test)]
@@ -186,6 +213,8 @@ mod tests {
             (ROD_QUADRATURE, "RodQuadrature"),
             (CONTACT_GEOMETRY, "ContactGeometry"),
             (FILM_MODEL, "FilmModel"),
+            (THERMAL_MODEL, "ThermalModel"),
+            (THERMAL_START, "ThermalStart"),
         ];
         assert_eq!(named.len(), ENUMERATIONS.len());
         for (index, name) in named {

@@ -2,9 +2,13 @@
 //! (`crankPin`) and the main bearing (`mainBearing`) — from one definition of a joint's rows, and
 //! the loads each carries.
 
-use super::enumerations::{CONTACT_GEOMETRY, CONTACT_LAW, FILM_MODEL, JOINT_MODEL, JOURNAL_START};
+use super::enumerations::{
+    CONTACT_GEOMETRY, CONTACT_LAW, FILM_MODEL, JOINT_MODEL, JOURNAL_START, THERMAL_MODEL,
+    THERMAL_START,
+};
 use super::joint_rows::{JOINT_ROWS, joint_rows};
 use super::surface_rows::{SURFACE_ROWS, surface_rows};
+use super::thermal_rows::{THERMAL_ROWS, thermal_rows};
 use super::vr::{Variable, Vr};
 use fmi_core::table::{Causality, Kind, Variability};
 
@@ -227,9 +231,57 @@ const MAIN_BEARING_SURFACES: [Variable; SURFACE_ROWS] = surface_rows!(
     ]
 );
 
-/// The three joints' rows, their rough surfaces', and their loads and the rod–slider joint's
-/// contact stiffness.
-pub(super) const VARIABLES: [&[Variable]; 7] = [
+/// The rod-slider joint's heat balance.
+const ROD_SLIDER_THERMAL: [Variable; THERMAL_ROWS] = thermal_rows!(
+    "joint",
+    "Rod-slider joint",
+    [
+        JointThermalModel,
+        JointThermalStart,
+        JointHeatCapacity,
+        JointHeatTransferCoefficient,
+        JointFilmTemperature,
+        JointViscosityEffective,
+        JointHeatFlow,
+        JointFilmTemperatureMaxCycle,
+    ]
+);
+
+/// The crank pin's heat balance.
+const CRANK_PIN_THERMAL: [Variable; THERMAL_ROWS] = thermal_rows!(
+    "crankPin",
+    "Crank pin",
+    [
+        CrankPinThermalModel,
+        CrankPinThermalStart,
+        CrankPinHeatCapacity,
+        CrankPinHeatTransferCoefficient,
+        CrankPinFilmTemperature,
+        CrankPinViscosityEffective,
+        CrankPinHeatFlow,
+        CrankPinFilmTemperatureMaxCycle,
+    ]
+);
+
+/// The main bearing's heat balance.
+const MAIN_BEARING_THERMAL: [Variable; THERMAL_ROWS] = thermal_rows!(
+    "mainBearing",
+    "Main bearing",
+    [
+        MainBearingThermalModel,
+        MainBearingThermalStart,
+        MainBearingHeatCapacity,
+        MainBearingHeatTransferCoefficient,
+        MainBearingFilmTemperature,
+        MainBearingViscosityEffective,
+        MainBearingHeatFlow,
+        MainBearingFilmTemperatureMaxCycle,
+    ]
+);
+
+/// The three joints' rows, their rough surfaces' and heat balances', and their loads and the
+/// rod–slider joint's contact stiffness.
+pub(super) const VARIABLES: [&[Variable]; 10] = [
     &ROD_SLIDER_JOINT,
     &CRANK_PIN,
     &MAIN_BEARING,
@@ -237,6 +289,9 @@ pub(super) const VARIABLES: [&[Variable]; 7] = [
     &ROD_SLIDER_SURFACES,
     &CRANK_PIN_SURFACES,
     &MAIN_BEARING_SURFACES,
+    &ROD_SLIDER_THERMAL,
+    &CRANK_PIN_THERMAL,
+    &MAIN_BEARING_THERMAL,
 ];
 
 /// The force each joint carries (its components and peak) and the rod–slider joint's contact

@@ -17,12 +17,14 @@ mod enumerations;
 mod gravity;
 mod joint_rows;
 mod joints;
+mod oil;
 mod rod;
 mod sections;
 mod slider;
 mod solver;
 mod structure;
 mod surface_rows;
+mod thermal_rows;
 mod vr;
 
 pub use enumerations::*;
@@ -128,29 +130,37 @@ pub const DESCRIPTION: Description<Vr> = Description {
     provides_directional_derivative: true,
 };
 
-/// Units: name, SI base-unit exponents (kg, m, s, A, rad) and the factor to the base unit, or
+/// Units: name, SI base-unit exponents (kg, m, s, A, K, rad) and the factor to the base unit, or
 /// None where FMI 2's integer exponents cannot express the unit (N/m^1.5).
-pub const UNITS: &[(&str, Option<[i32; 5]>, f64)] = &[
-    ("s", Some([0, 0, 1, 0, 0]), 1.0),
-    ("m", Some([0, 1, 0, 0, 0]), 1.0),
-    ("m/s", Some([0, 1, -1, 0, 0]), 1.0),
-    ("m/s2", Some([0, 1, -2, 0, 0]), 1.0),
-    ("m2", Some([0, 2, 0, 0, 0]), 1.0),
-    ("m4", Some([0, 4, 0, 0, 0]), 1.0),
-    ("kg", Some([1, 0, 0, 0, 0]), 1.0),
-    ("kg/m3", Some([1, -3, 0, 0, 0]), 1.0),
-    ("kg.m2", Some([1, 2, 0, 0, 0]), 1.0),
-    ("Pa", Some([1, -1, -2, 0, 0]), 1.0),
-    ("Pa.s", Some([1, -1, -1, 0, 0]), 1.0),
-    ("N", Some([1, 1, -2, 0, 0]), 1.0),
-    ("N.m", Some([1, 2, -2, 0, 0]), 1.0),
-    ("J", Some([1, 2, -2, 0, 0]), 1.0),
-    ("W", Some([1, 2, -3, 0, 0]), 1.0),
-    ("rad", Some([0, 0, 0, 0, 1]), 1.0),
-    ("deg", Some([0, 0, 0, 0, 1]), core::f64::consts::PI / 180.0),
-    ("rad/s", Some([0, 0, -1, 0, 1]), 1.0),
-    ("m3/s", Some([0, 3, -1, 0, 0]), 1.0),
-    ("1", Some([0, 0, 0, 0, 0]), 1.0),
+pub const UNITS: &[(&str, Option<[i32; 6]>, f64)] = &[
+    ("s", Some([0, 0, 1, 0, 0, 0]), 1.0),
+    ("m", Some([0, 1, 0, 0, 0, 0]), 1.0),
+    ("m/s", Some([0, 1, -1, 0, 0, 0]), 1.0),
+    ("m/s2", Some([0, 1, -2, 0, 0, 0]), 1.0),
+    ("m2", Some([0, 2, 0, 0, 0, 0]), 1.0),
+    ("m4", Some([0, 4, 0, 0, 0, 0]), 1.0),
+    ("kg", Some([1, 0, 0, 0, 0, 0]), 1.0),
+    ("kg/m3", Some([1, -3, 0, 0, 0, 0]), 1.0),
+    ("kg.m2", Some([1, 2, 0, 0, 0, 0]), 1.0),
+    ("Pa", Some([1, -1, -2, 0, 0, 0]), 1.0),
+    ("Pa.s", Some([1, -1, -1, 0, 0, 0]), 1.0),
+    ("N", Some([1, 1, -2, 0, 0, 0]), 1.0),
+    ("N.m", Some([1, 2, -2, 0, 0, 0]), 1.0),
+    ("J", Some([1, 2, -2, 0, 0, 0]), 1.0),
+    ("W", Some([1, 2, -3, 0, 0, 0]), 1.0),
+    ("rad", Some([0, 0, 0, 0, 0, 1]), 1.0),
+    (
+        "deg",
+        Some([0, 0, 0, 0, 0, 1]),
+        core::f64::consts::PI / 180.0,
+    ),
+    ("rad/s", Some([0, 0, -1, 0, 0, 1]), 1.0),
+    ("m3/s", Some([0, 3, -1, 0, 0, 0]), 1.0),
+    ("1", Some([0, 0, 0, 0, 0, 0]), 1.0),
+    ("K", Some([0, 0, 0, 0, 1, 0]), 1.0),
+    ("J/K", Some([1, 2, -2, 0, -1, 0]), 1.0),
+    ("W/K", Some([1, 2, -3, 0, -1, 0]), 1.0),
+    ("J/(kg.K)", Some([0, 2, -2, 0, -1, 0]), 1.0),
     ("N/m1.5", None, 1.0),
 ];
 
@@ -181,7 +191,7 @@ pub const LOG_CATEGORIES: &[(&str, &str)] = &[
 pub const VARIABLES: &[Variable] = &in_value_reference_order::<N_VARIABLES>(&PARTS);
 
 /// The table's parts, by component.
-const PARTS: [&[Variable]; 13] = [
+const PARTS: [&[Variable]; 17] = [
     rod::VARIABLES,
     crank::VARIABLES,
     slider::VARIABLES,
@@ -195,6 +205,10 @@ const PARTS: [&[Variable]; 13] = [
     joints::VARIABLES[4],
     joints::VARIABLES[5],
     joints::VARIABLES[6],
+    oil::VARIABLES,
+    joints::VARIABLES[7],
+    joints::VARIABLES[8],
+    joints::VARIABLES[9],
 ];
 
 /// Number of variables.

@@ -38,6 +38,9 @@ pub(super) const FEEDTHROUGH: &[(Vr, &[Vr])] = &[
     (Vr::RodAxialForceMidspan, ALL_INPUTS),
     (Vr::RodBendingMomentMidspan, ALL_INPUTS),
     (Vr::SliderAppliedForce, &[Vr::SliderForce]),
+    (Vr::JointHeatFlow, &[Vr::OilSupplyTemperature]),
+    (Vr::CrankPinHeatFlow, &[Vr::OilSupplyTemperature]),
+    (Vr::MainBearingHeatFlow, &[Vr::OilSupplyTemperature]),
 ];
 
 /// The accelerations and the forces that follow from them react to every input at once: the

@@ -8,6 +8,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 mod reference;
+mod thermal;
 
 use flexible_slider_crank::joint::{
     FilmModel, Joint, JointKinematics, JointModel, JointParameters, JournalBearing, JournalStart,
@@ -52,6 +53,7 @@ fn kinematics(c: f64, eps: f64, psi: f64) -> JointKinematics {
         e_dot,
         omega_journal: omega,
         omega_bearing: 0.0,
+        temperature: None,
     }
 }
 
@@ -179,6 +181,7 @@ fn a_pure_squeeze_film_without_rotation() {
                 e_dot: Vector2::new(0.0, rate),
                 omega_journal: 0.0,
                 omega_bearing: 0.0,
+                temperature: None,
             };
             let (force, ..) = reference_film(&b, &k);
             let f = b.film_force(&k);

@@ -26,8 +26,8 @@ fn a_slow_loaded_mechanism_has_a_two_force_rod() {
     let speed = 10.0 * std::f64::consts::TAU / 60.0;
     let inputs = Inputs {
         drive_speed: speed,
-        drive_torque: 0.0,
         slider_force: -1000.0,
+        ..Inputs::default()
     };
     for rod_formulation in [RodFormulation::Rigid, RodFormulation::CraigBampton] {
         let p = Parameters {

@@ -31,8 +31,8 @@ fn compressor(worn: &[JointRole], journal_start: JournalStart) -> (Parameters, I
     }
     let inputs = Inputs {
         drive_speed: speed,
-        drive_torque: 0.0,
         slider_force: -880.0,
+        ..Inputs::default()
     };
     (p, inputs)
 }

@@ -100,6 +100,7 @@ fn boundary_friction_opposes_slip() {
         e_dot: Vector2::zeros(),
         omega_journal: 100.0,
         omega_bearing: 0.0,
+        temperature: None,
     };
     let (force, state) = a.force(&k, &dry);
     let v_t = dry.slip_speed(&k, &Vector2::new(-1.0, 0.0));
@@ -148,12 +149,13 @@ fn a_rough_bearing_follows_the_stribeck_curve() {
     let curve: Vec<(f64, f64, f64)> = (0..=18)
         .map(|k| {
             let omega = 0.1 * math::powf(10.0, f64::from(k) / 4.0);
-            let e = joint.eccentricity_carrying(load, omega, 0.0);
+            let e = joint.eccentricity_carrying(load, (omega, 0.0), None);
             let k = JointKinematics {
                 e,
                 e_dot: Vector2::zeros(),
                 omega_journal: omega,
                 omega_bearing: 0.0,
+                temperature: None,
             };
             let state = joint.bearing_state(&k, crate::joint::MIN_IMPACT_VELOCITY);
             let f = state.friction_torque.abs() / (load.norm() * p.journal_radius);
