@@ -95,8 +95,7 @@ impl Engine {
             (angle, speed),
             start,
             equilibrate,
-        )
-        .map_err(|e| failure::unequilibrated(&parameters, &e))?;
+        )?;
         mechanism.set_contact_at_start(mechanism.contact_energies(&state, &contacts));
         let integrator = Integrator::new(
             parameters.method,
@@ -138,7 +137,8 @@ impl Engine {
     /// The start state and the joints' contact states: each journal settled against the ideal
     /// mechanism's start reaction where its joint asks for it (else centred), each film temperature
     /// in its steady heat balance against it where its joint asks for it (else at the supply
-    /// temperature), the rod equilibrated with `equilibrate`.
+    /// temperature), the rod equilibrated with `equilibrate` (a failure to equilibrate it names
+    /// the rod's likely causes, [`failure::unequilibrated`]).
     fn start_state(
         p: &Parameters,
         mechanism: &mut SliderCrank,
@@ -154,9 +154,11 @@ impl Engine {
                 && joint.thermal_model == ThermalModel::HeatBalance
                 && joint.thermal_start == ThermalStart::Settled
         });
+        let unequilibrated = |e: ModelError| failure::unequilibrated(p, &e);
         let reactions = if settled.contains(&true) || warm.contains(&true) {
             let mut ideal = SliderCrank::with_inputs(&p.with_ideal_joints(), start)?;
-            Some(ideal.start_reactions((angle, speed), start, equilibrate)?)
+            let reactions = ideal.start_reactions((angle, speed), start, equilibrate);
+            Some(reactions.map_err(unequilibrated)?)
         } else {
             None
         };
@@ -165,12 +167,16 @@ impl Engine {
         };
         mechanism.settle_temperatures(only(warm), start.oil_supply_temperature)?;
         if settled.contains(&true) {
-            return mechanism.settle_journals((angle, speed), start, only(settled), equilibrate);
+            return mechanism
+                .settle_journals((angle, speed), start, only(settled), equilibrate)
+                .map_err(unequilibrated);
         }
         let mut state = mechanism.initial_state(angle, speed);
         let contacts = Contacts::default();
         if equilibrate {
-            mechanism.equilibrate(&mut state, start, &contacts)?;
+            mechanism
+                .equilibrate(&mut state, start, &contacts)
+                .map_err(unequilibrated)?;
         }
         Ok((state, contacts))
     }

@@ -12,13 +12,16 @@ from test_fmu import FORMULATIONS, JOINTS
 
 
 def every_model_at_2ms(fmu):
-    """For every drive x joint x rod model (and the lubricated joint with a heat balance): (model,
-    instance) 2 ms into benchmark B (20 steps of 1e-4 s). The caller frees the instance."""
+    """For every drive x joint x rod model, and with every joint lubricated and heated (a heat
+    balance): (model, instance) 2 ms into benchmark B (20 steps of 1e-4 s). The caller frees the
+    instance."""
     md = read_model_description(fmu)
     unzipdir = extract(fmu)
     vr = {v.name: v.valueReference for v in md.modelVariables}
     heat_balance = (JOINTS["lubricated"], 2)
     joints = [(joint, 1) for joint in JOINTS.values()] + [heat_balance]
+    # with a heat balance, every joint lubricated and heated
+    every_joint = ("joint", "crankPin", "mainBearing")
     for drive in (1, 2):
         for joint, thermal in joints:
             for formulation in (FORMULATIONS["rigid"], FORMULATIONS["craigBampton"]):
@@ -26,8 +29,10 @@ def every_model_at_2ms(fmu):
                               modelIdentifier=md.coSimulation.modelIdentifier, instanceName="at2ms")
                 s.instantiate()
                 s.setupExperiment(startTime=0.0)
-                s.setInteger([vr["drive.mode"], vr["joint.model"], vr["rod.formulation"],
-                              vr["joint.thermalModel"]], [drive, joint, formulation, thermal])
+                s.setInteger([vr["drive.mode"], vr["rod.formulation"]], [drive, formulation])
+                for name in every_joint if thermal == 2 else ("joint",):
+                    s.setInteger([vr[f"{name}.model"], vr[f"{name}.thermalModel"]],
+                                 [joint, thermal])
                 s.enterInitializationMode()
                 s.exitInitializationMode()
                 t = 0.0
@@ -198,7 +203,7 @@ def start_configurations(n=160, seed=7):
         for joint in ("joint", "crankPin", "mainBearing"):
             slow |= {f"{joint}.model": 2, f"{joint}.friction": 0.1, f"{joint}.initialState": 2}
         configurations.append(slow)
-    # rough joints with a heat balance: every joint lubricated in a 20 µm clearance on 4 µm
+    # rough joints with a heat balance: every joint lubricated in a 20 µm clearance on 1 µm
     # roughness (the asperities touch), its journal settled, its film temperature settled or at
     # the supply, in either drive
     for drive, thermal_start in ((1, 2), (2, 1), (1, 1), (2, 2)):
@@ -206,9 +211,9 @@ def start_configurations(n=160, seed=7):
                 "gravity": 9.81, "oil.supplyTemperature": 330.0}
         for joint in ("joint", "crankPin", "mainBearing"):
             warm |= {f"{joint}.model": 3, f"{joint}.initialState": 2, f"{joint}.clearance": 2e-5,
-                     f"{joint}.roughness": 4e-6, f"{joint}.thermalModel": 2,
+                     f"{joint}.roughness": 1e-6, f"{joint}.thermalModel": 2,
                      f"{joint}.thermalStart": thermal_start,
-                     f"{joint}.heatTransferCoefficient": 1.0}
+                     f"{joint}.heatTransferCoefficient": 10.0}
         configurations.append(warm)
     return configurations
 

@@ -362,6 +362,8 @@ BOUND_COMPANIONS = {
     ("mainBearing.frictionV1", "min"): {"mainBearing.frictionV0": 0.0},
     ("slider.offset", "min"): {"rod.length": 100.0, "rod.formulation": FORMULATIONS["rigid"]},
     ("slider.offset", "max"): {"rod.length": 100.0, "rod.formulation": FORMULATIONS["rigid"]},
+    ("oil.viscosity40", "min"): {"oil.viscosity100": 1e-6},
+    ("oil.viscosity100", "max"): {"oil.viscosity40": 100.0},
 }
 
 
