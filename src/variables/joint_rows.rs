@@ -322,7 +322,7 @@ macro_rules! joint_rows {
                 "W",
                 concat!(
                     $label,
-                    ": rate at which the joint's friction dissipates energy, >= 0 (the oil film's viscous loss in shear and squeeze; dry friction -F_T v_T); 0 for the ideal joint"
+                    ": rate at which the joint's friction dissipates energy, >= 0 (the oil film's viscous loss in shear and squeeze; dry and asperity friction -F_T v_T); 0 for the ideal joint"
                 ),
             ),
             Variable::output(

@@ -156,13 +156,14 @@ def test_directional_derivatives_agree_with_central_differences(fmu):
 
 
 def start_configurations(n=160, seed=7):
-    """Start values covering every drive, joint, rod and start model (each joint's switches drawn
-    independently), with gravity, friction, material damping and the inputs switched on at
-    random; half keep crank.initialSpeed at its start value, so that the crank starts at
-    drive.speed; a third load the slider with a table over the crank angle. Six more put each
-    joint lubricated by the short film at either edge of its range, one starts the crank backwards
-    of zero in a 720° load cycle, and two start every joint dry and settled at a crank speed of
-    0.05 rad/s, where the journals slip between the friction law's regularisation speeds."""
+    """Start values covering every drive, joint (with and without a heat balance), rod and start
+    model (each joint's switches drawn independently), with gravity, friction, material damping and
+    the inputs switched on at random; half keep crank.initialSpeed at its start value, so that the
+    crank starts at drive.speed; a third load the slider with a table over the crank angle. Six
+    more put each joint lubricated by the short film at either edge of its range, one starts the
+    crank backwards of zero in a 720° load cycle, two start every joint dry and settled at a crank
+    speed of 0.05 rad/s, where the journals slip between the friction law's regularisation speeds,
+    and four make every joint rough, lubricated and heated."""
     rng = np.random.default_rng(seed)
 
     def pick(values):
@@ -180,7 +181,8 @@ def start_configurations(n=160, seed=7):
             c["crank.initialSpeed"] = rng.uniform(200.0, 600.0)
         for joint in ("joint", "crankPin", "mainBearing"):
             c |= {f"{joint}.model": pick([1, 2, 3]), f"{joint}.initialState": pick([1, 2]),
-                  f"{joint}.contactLaw": pick([1, 2, 3]), f"{joint}.friction": pick([0.0, 0.1])}
+                  f"{joint}.contactLaw": pick([1, 2, 3]), f"{joint}.friction": pick([0.0, 0.1]),
+                  f"{joint}.thermalModel": pick([1, 2])}
         if rng.uniform() < 0.7:
             c |= {"gravity": 9.81, "gravityAngle": rng.uniform(0.0, 6.0)}
         if rng.uniform() < 0.5:
