@@ -35,7 +35,7 @@ fn load(b: &JournalBearing, eps: f64) -> f64 {
         e_dot: Vector2::zeros(),
         omega_journal: 150.0,
         omega_bearing: 0.0,
-        temperature: None,
+        viscosity: None,
     })
     .norm()
 }

@@ -84,19 +84,12 @@ impl JournalBearing {
     /// The oil's viscosity in the state `k` over the joint's own: μ(T)/μ where a heat balance sets
     /// it, exactly 1 for the isoviscous oil (every film force, pressure and loss is linear in μ).
     fn viscosity_ratio(&self, k: &JointKinematics) -> f64 {
-        match (k.temperature, &self.heat_balance) {
-            (Some(t), Some(h)) => h.oil.viscosity(t) / self.viscosity,
-            _ => 1.0,
-        }
+        k.viscosity.map_or(1.0, |mu| mu / self.viscosity)
     }
 
-    /// The oil's viscosity in the state `k` \[Pa s\]: at the film temperature where a heat balance
-    /// sets it, else the joint's own.
+    /// The oil's viscosity in the state `k` \[Pa s\]: the heat balance's, or the joint's own.
     pub fn viscosity_at(&self, k: &JointKinematics) -> f64 {
-        match (k.temperature, &self.heat_balance) {
-            (Some(t), Some(h)) => h.oil.viscosity(t),
-            _ => self.viscosity,
-        }
+        k.viscosity.unwrap_or(self.viscosity)
     }
 
     /// Film force on the journal over the positive-pressure region, ε clamped to ε_b.

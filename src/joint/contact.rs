@@ -530,7 +530,7 @@ mod tests {
             e_dot: Vector2::new(0.0, rate),
             omega_journal: 0.0,
             omega_bearing: 0.0,
-            temperature: None,
+            viscosity: None,
         };
         assert_eq!(c.force(&at(-1e-6, 1.0), 1.0).force, Vector2::zeros());
         let tiny = c.force(&at(1e-15, 1.0), 1.0).force.norm();
@@ -570,7 +570,7 @@ mod tests {
             e_dot: Vector2::new(0.0, 0.3),
             omega_journal: 0.0,
             omega_bearing: 0.0,
-            temperature: None,
+            viscosity: None,
         };
         let f = c.force(&k, 1.0);
         let f_n = c.normal_force(1e-6, 0.0, 1.0);

@@ -20,9 +20,9 @@ pub struct JointKinematics {
     /// Absolute angular velocity of the bearing (CCW +) \[rad/s\]: 0 for a bearing on the ground
     /// or on the slider, the rod's end rotation for the rod's eye.
     pub omega_bearing: f64,
-    /// The film's effective temperature in this state where the joint has a heat balance (its
-    /// thermal state), which sets the oil's viscosity \[K\]; None for an isoviscous oil.
-    pub temperature: Option<f64>,
+    /// The oil's viscosity in this state where the joint's heat balance sets it (at its film
+    /// temperature, a state) \[Pa s\]; None for the joint's own isoviscous oil.
+    pub viscosity: Option<f64>,
 }
 
 impl JointKinematics {

@@ -127,8 +127,8 @@ impl Joint {
     }
 
     /// The eccentricity at which the journal, at rest in the bearing (ė = 0), journal and bearing
-    /// turning at `omega_journal` and `omega_bearing`, the film at `temperature` (where the joint
-    /// has a heat balance), receives the force `force` from the joint: its quasi-static equilibrium
+    /// turning at `omega_journal` and `omega_bearing`, the oil of viscosity `viscosity` (where the
+    /// joint's heat balance sets it), receives the force `force` from the joint: its quasi-static equilibrium
     /// against a steady load (the settled start, docs/model.md §8).
     ///
     /// Dry and frictionless in closed form, e = −(c + δ) F/|F| with F_e(δ) = |F|; with friction
@@ -140,7 +140,7 @@ impl Joint {
         &self,
         force: Vector2<f64>,
         (omega_journal, omega_bearing): (f64, f64),
-        temperature: Option<f64>,
+        viscosity: Option<f64>,
     ) -> Vector2<f64> {
         let Some(dry) = self.dry_contact() else {
             return Vector2::zeros();
@@ -159,7 +159,7 @@ impl Joint {
                 e_dot: Vector2::zeros(),
                 omega_journal,
                 omega_bearing,
-                temperature,
+                viscosity,
             };
             self.force(&kinematics, MIN_IMPACT_VELOCITY).force - force
         };
@@ -228,11 +228,11 @@ impl Joint {
         };
         let surplus = |t: f64| {
             let k = JointKinematics {
-                e: self.eccentricity_carrying(force, omegas, Some(t)),
+                e: self.eccentricity_carrying(force, omegas, Some(balance.oil.viscosity(t))),
                 e_dot: Vector2::zeros(),
                 omega_journal: omegas.0,
                 omega_bearing: omegas.1,
-                temperature: Some(t),
+                viscosity: Some(balance.oil.viscosity(t)),
             };
             let rates = self.rates(&k, MIN_IMPACT_VELOCITY);
             rates.friction_power
@@ -432,7 +432,7 @@ mod tests {
                         e_dot: Vector2::zeros(),
                         omega_journal: omega,
                         omega_bearing: 0.0,
-                        temperature: None,
+                        viscosity: None,
                     };
                     let carried = joint.force(&kinematics, MIN_IMPACT_VELOCITY).force;
                     assert!(

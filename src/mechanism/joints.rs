@@ -66,13 +66,13 @@ impl SliderCrank {
             .map(|g| (pair(y, g), pair(y, l.rate_of(g))))
     }
 
-    /// Journal–bearing kinematics of the joint `role` in state `y`, with its film temperature
-    /// where it has a heat balance.
+    /// Journal–bearing kinematics of the joint `role` in state `y`, with the oil's viscosity at
+    /// its film temperature where it has a heat balance.
     pub fn joint_kinematics(&self, role: JointRole, y: &[f64]) -> JointKinematics {
         let l = self.layout;
         let (p, p_dot) = (&y[l.rod()], &y[l.rod_rates()]);
         let (theta, omega) = (y[CRANK_ANGLE], y[l.crank_speed()]);
-        let temperature = self.film_temperature(role, y);
+        let viscosity = self.film_viscosity(role, y);
         match role {
             JointRole::MainBearing => {
                 let (e, e_dot) = match self.crank_reference(y) {
@@ -91,7 +91,7 @@ impl SliderCrank {
                     e_dot,
                     omega_journal: omega,
                     omega_bearing: 0.0,
-                    temperature,
+                    viscosity,
                 }
             }
             JointRole::CrankPin => {
@@ -108,7 +108,7 @@ impl SliderCrank {
                     e_dot,
                     omega_journal: omega,
                     omega_bearing: self.rod.end_angular_velocity(RodEnd::CrankPin, p, p_dot),
-                    temperature,
+                    viscosity,
                 }
             }
             JointRole::RodSlider => {
@@ -118,7 +118,7 @@ impl SliderCrank {
                     e_dot: Vector2::new(y[b_rate] - y[l.slider_velocity()], y[b_rate + 1]),
                     omega_journal: self.rod.end_angular_velocity(RodEnd::SliderPin, p, p_dot),
                     omega_bearing: 0.0,
-                    temperature,
+                    viscosity,
                 }
             }
         }
@@ -204,6 +204,14 @@ impl SliderCrank {
                 )
             }
         })
+    }
+
+    /// The oil's viscosity in the joint `role` in state `y` at its film temperature, where its
+    /// heat balance sets it \[Pa s\].
+    fn film_viscosity(&self, role: JointRole, y: &[f64]) -> Option<f64> {
+        let balance = self.joint(role).heat_balance()?;
+        self.film_temperature(role, y)
+            .map(|t| balance.oil.viscosity(t))
     }
 
     /// The film temperature of the joint `role` in state `y`, where it has a heat balance \[K\].

@@ -76,9 +76,15 @@ impl SliderCrank {
         y
     }
 
-    /// The film temperature the joint `role` starts at, where it has a heat balance \[K\].
-    fn start_temperature(&self, role: JointRole) -> Option<f64> {
-        self.temperature[role as usize].map(|_| self.start_temperatures[role as usize])
+    /// The oil's viscosity at the film temperature the joint `role` starts at, where its heat
+    /// balance sets it \[Pa s\].
+    fn start_viscosity(&self, role: JointRole) -> Option<f64> {
+        let balance = self.joint(role).heat_balance()?;
+        Some(
+            balance
+                .oil
+                .viscosity(self.start_temperatures[role as usize]),
+        )
     }
 
     /// Sets the film temperature each joint with a heat balance starts at: that of the steady heat
@@ -164,7 +170,7 @@ impl SliderCrank {
             Some(r) => self.joint(role).eccentricity_carrying(
                 r.force,
                 (r.omega_journal, r.omega_bearing),
-                self.start_temperature(role),
+                self.start_viscosity(role),
             ),
             None => Vector2::zeros(),
         });

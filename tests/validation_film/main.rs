@@ -53,7 +53,7 @@ fn kinematics(c: f64, eps: f64, psi: f64) -> JointKinematics {
         e_dot,
         omega_journal: omega,
         omega_bearing: 0.0,
-        temperature: None,
+        viscosity: None,
     }
 }
 
@@ -181,7 +181,7 @@ fn a_pure_squeeze_film_without_rotation() {
                 e_dot: Vector2::new(0.0, rate),
                 omega_journal: 0.0,
                 omega_bearing: 0.0,
-                temperature: None,
+                viscosity: None,
             };
             let (force, ..) = reference_film(&b, &k);
             let f = b.film_force(&k);

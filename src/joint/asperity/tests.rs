@@ -100,7 +100,7 @@ fn boundary_friction_opposes_slip() {
         e_dot: Vector2::zeros(),
         omega_journal: 100.0,
         omega_bearing: 0.0,
-        temperature: None,
+        viscosity: None,
     };
     let (force, state) = a.force(&k, &dry);
     let v_t = dry.slip_speed(&k, &Vector2::new(-1.0, 0.0));
@@ -155,7 +155,7 @@ fn a_rough_bearing_follows_the_stribeck_curve() {
                 e_dot: Vector2::zeros(),
                 omega_journal: omega,
                 omega_bearing: 0.0,
-                temperature: None,
+                viscosity: None,
             };
             let state = joint.bearing_state(&k, crate::joint::MIN_IMPACT_VELOCITY);
             let f = state.friction_torque.abs() / (load.norm() * p.journal_radius);

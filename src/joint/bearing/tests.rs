@@ -46,7 +46,7 @@ fn steady_attitude_angle() {
         e_dot: Vector2::zeros(),
         omega_journal: 100.0,
         omega_bearing: 0.0,
-        temperature: None,
+        viscosity: None,
     };
     let f = b.film_force(&k);
     assert!(f.x < 0.0);
@@ -69,7 +69,7 @@ fn pure_rotation_matches_the_closed_form() {
             e_dot: Vector2::zeros(),
             omega_journal: w,
             omega_bearing: 0.0,
-            temperature: None,
+            viscosity: None,
         };
         let f = b.film_force(&k);
         let s = 1.0 - eps * eps;
@@ -102,7 +102,7 @@ fn pure_squeeze_is_radial_and_restoring() {
         e_dot: Vector2::new(eps_dot * c, 0.0),
         omega_journal: 0.0,
         omega_bearing: 0.0,
-        temperature: None,
+        viscosity: None,
     };
     let f = b.film_force(&k);
     let m = 200_000;
@@ -134,7 +134,7 @@ fn force_is_continuous_across_zero_wedge_speed() {
         e_dot: Vector2::new(-3e-3, 0.0),
         omega_journal: omega,
         omega_bearing: 0.0,
-        temperature: None,
+        viscosity: None,
     };
     let below = b.film_force(&at(-1e-9));
     let above = b.film_force(&at(1e-9));
@@ -150,7 +150,7 @@ fn squeeze_film_resists_approach() {
         e_dot: Vector2::new(0.0, 0.1),
         omega_journal: 0.0,
         omega_bearing: 0.0,
-        temperature: None,
+        viscosity: None,
     };
     assert!(b.film_force(&k).y < 0.0);
 }
@@ -169,7 +169,7 @@ fn a_lightly_loaded_journal_has_petroffs_torque() {
         e_dot: Vector2::zeros(),
         omega_journal: 300.0,
         omega_bearing: -20.0,
-        temperature: None,
+        viscosity: None,
     };
     let petroff = std::f64::consts::TAU * mu * r * r * r * l * 320.0 / c;
     let f = b.force(&k, 1.0);
@@ -200,7 +200,7 @@ fn the_steady_peak_pressure_is_the_short_bearings() {
                 e_dot: Vector2::zeros(),
                 omega_journal: w,
                 omega_bearing: 0.0,
-                temperature: None,
+                viscosity: None,
             };
             let cos = (1.0 - (1.0 + 24.0 * eps * eps).sqrt()) / (4.0 * eps);
             let sin = (1.0 - cos * cos).sqrt();
@@ -242,7 +242,7 @@ fn the_film_transmits_no_moment_and_dissipates() {
                     e_dot: radial * c * 100.0 * n + eps * c * whirl * t,
                     omega_journal,
                     omega_bearing,
-                    temperature: None,
+                    viscosity: None,
                 };
                 let f = b.force(&k, 1.0);
                 let f_t = f.force.dot(&t);
@@ -272,7 +272,7 @@ fn hand_over_is_continuous() {
         e_dot: Vector2::new(0.02, 0.01),
         omega_journal: 50.0,
         omega_bearing: 0.0,
-        temperature: None,
+        viscosity: None,
     };
     for r in [b.switch_eccentricity, 1.0] {
         let below = b.force(&at(r * (1.0 - 1e-9)), 0.1).force;
