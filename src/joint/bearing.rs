@@ -39,6 +39,7 @@
 
 use nalgebra::Vector2;
 
+use super::JointRates;
 use super::asperity::{Asperity, AsperityState};
 use super::contact::DryContact;
 use super::finite_film::FiniteFilm;
@@ -111,22 +112,41 @@ impl JournalBearing {
         }
     }
 
-    /// Film force on the journal and its tangential component F_t = F · t.
-    fn film(&self, k: &JointKinematics) -> (Vector2<f64>, f64) {
-        let Some(field) = self.field(k) else {
-            return (Vector2::zeros(), 0.0);
-        };
+    /// The film in the state `k` from one evaluation of its field and table: its force on the
+    /// journal, F_t = F · t, and with `with_flow` the finite film's flow ratio T_q; None where the
+    /// film vanishes.
+    fn film_state(&self, k: &JointKinematics, with_flow: bool) -> Option<FilmState> {
+        let field = self.field(k)?;
         let (f_r, f_t) = field.force();
         let scale = self.film_coefficient() * self.viscosity_ratio(k);
         let t = field.tangent();
-        match &self.film {
-            Film::Short => (scale * (f_r * field.n + f_t * t), scale * f_t),
+        let (force, f_t, t_q) = match &self.film {
+            Film::Short => (scale * (f_r * field.n + f_t * t), scale * f_t, None),
             Film::Finite(finite) => {
-                let [t_r, t_t] = finite.force_ratios_at(field.eps, field.squeeze_direction());
+                let direction = field.squeeze_direction();
+                let (t_r, t_t, t_q) = if with_flow {
+                    let [t_r, t_t, _, t_q] = finite.ratios_at(field.eps, direction);
+                    (t_r, t_t, Some(t_q))
+                } else {
+                    let [t_r, t_t] = finite.force_ratios_at(field.eps, direction);
+                    (t_r, t_t, None)
+                };
                 let magnitude = scale * crate::math::hypot(f_r, f_t);
-                (magnitude * (t_r * field.n + t_t * t), magnitude * t_t)
+                (magnitude * (t_r * field.n + t_t * t), magnitude * t_t, t_q)
             }
-        }
+        };
+        Some(FilmState {
+            field,
+            force,
+            f_t,
+            t_q,
+        })
+    }
+
+    /// Film force on the journal and its tangential component F_t = F · t.
+    fn film(&self, k: &JointKinematics) -> (Vector2<f64>, f64) {
+        self.film_state(k, false)
+            .map_or((Vector2::zeros(), 0.0), |s| (s.force, s.f_t))
     }
 
     /// The largest film pressure \[Pa\], at mid-length: the short bearing's field
@@ -151,13 +171,17 @@ impl JournalBearing {
     /// (A = √((εw)² + (2ε̇)²), ε clamped to ε_b), times the finite film's ratio T_q for the finite
     /// bearing; 0 without a film.
     pub fn side_flow(&self, k: &JointKinematics) -> f64 {
-        let Some(field) = self.field(k) else {
-            return 0.0;
-        };
-        let short = self.dry.clearance * self.dry.journal_radius * self.length * field.amplitude;
-        match self.ratios(&field) {
+        self.film_state(k, true)
+            .map_or(0.0, |state| self.flow_of(&state))
+    }
+
+    /// The side flow of the film state `state` (one evaluated with its flow ratio).
+    fn flow_of(&self, state: &FilmState) -> f64 {
+        let short =
+            self.dry.clearance * self.dry.journal_radius * self.length * state.field.amplitude;
+        match state.t_q {
             None => short,
-            Some([.., t_q]) => t_q * short,
+            Some(t_q) => t_q * short,
         }
     }
 
@@ -165,12 +189,17 @@ impl JournalBearing {
     /// T (ω_J − ω_B) and its pressure flow −F · v_s (module documentation), which equal
     /// −(F·ė + M_J ω_J + M_B ω_B) for ε ≤ ε_b; above ε_b, those of the film clamped there.
     pub fn film_loss(&self, k: &JointKinematics) -> f64 {
+        self.loss_of(k, self.film_state(k, false).as_ref())
+    }
+
+    /// [`JournalBearing::film_loss`] with the film state `state` in `k` already evaluated.
+    fn loss_of(&self, k: &JointKinematics, state: Option<&FilmState>) -> f64 {
         let relative = k.omega_journal - k.omega_bearing;
         let eps = (k.e.norm() / self.dry.clearance).min(self.switch_eccentricity);
         let ratio = self.viscosity_ratio(k);
         let shear =
             self.petroff_coefficient() * ratio * relative * relative / (1.0 - eps * eps).sqrt();
-        let Some(field) = self.field(k) else {
+        let Some(FilmState { field, force, .. }) = state else {
             return shear;
         };
         if matches!(self.film, Film::Short) {
@@ -178,7 +207,6 @@ impl JournalBearing {
                 + 0.5 * self.dry.clearance * self.film_coefficient() * ratio * field.flow_loss();
         }
         // v_s = (c A/2) (cos ψ, sin ψ) in (n, t)
-        let (force, _) = self.film(k);
         let (cos, sin) = field.squeeze_direction();
         let half = 0.5 * self.dry.clearance * field.amplitude;
         let v_s = half * (cos * field.n + sin * field.tangent());
@@ -217,8 +245,40 @@ impl JournalBearing {
     /// Film force and shear moments, plus the asperities' force where the film is thin on rough
     /// surfaces and dry contact when the journal touches the bearing.
     pub fn force(&self, k: &JointKinematics, impact_velocity: f64) -> JointForce {
+        self.assemble(k, impact_velocity, self.film_state(k, false).as_ref())
+            .0
+    }
+
+    /// [`JournalBearing::force`] and the joint's friction power, oil flow and asperity force in
+    /// the same state, from one evaluation of the film (what a heat balance reads at every
+    /// right-hand side).
+    pub fn force_and_rates(
+        &self,
+        k: &JointKinematics,
+        impact_velocity: f64,
+    ) -> (JointForce, JointRates) {
+        let state = self.film_state(k, true);
+        let (force, asperity) = self.assemble(k, impact_velocity, state.as_ref());
+        let rates = JointRates {
+            friction_power: self.loss_of(k, state.as_ref())
+                + self.dry.friction_power(k, impact_velocity)
+                + asperity.friction_power,
+            oil_flow: state.as_ref().map_or(0.0, |state| self.flow_of(state)),
+            asperity_force: asperity.force,
+        };
+        (force, rates)
+    }
+
+    /// The joint's force of the film state `state`, with the shear, the asperities and the dry
+    /// contact, and what the asperities carry.
+    fn assemble(
+        &self,
+        k: &JointKinematics,
+        impact_velocity: f64,
+        state: Option<&FilmState>,
+    ) -> (JointForce, AsperityState) {
         let dry = self.dry.force(k, impact_velocity);
-        let (film, f_t) = self.film(k);
+        let (film, f_t) = state.map_or((Vector2::zeros(), 0.0), |s| (s.force, s.f_t));
         let (journal, bearing) = self.shear_moments(k, f_t);
         let mut total = JointForce {
             force: film + dry.force,
@@ -226,15 +286,28 @@ impl JournalBearing {
             bearing_moment: dry.bearing_moment + bearing,
             ..dry
         };
+        let (asperity, carried) = self.asperity_force(k);
         if self.asperity.is_some() {
-            let (asperity, _) = self.asperity_force(k);
             total.force += asperity.force;
             total.moment += asperity.moment;
             total.bearing_moment += asperity.bearing_moment;
             total.potential += asperity.potential;
         }
-        total
+        (total, carried)
     }
+}
+
+/// The film in one state ([`JournalBearing::film_state`]).
+#[derive(Clone, Copy, Debug)]
+struct FilmState {
+    /// The short film's field.
+    field: FilmField,
+    /// The force on the journal \[N\].
+    force: Vector2<f64>,
+    /// Its tangential component F_t = F · t \[N\].
+    f_t: f64,
+    /// The finite film's flow ratio T_q, where evaluated.
+    t_q: Option<f64>,
 }
 
 #[cfg(test)]

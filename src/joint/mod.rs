@@ -329,16 +329,7 @@ impl Joint {
                 friction_power: dry.friction_power(k, impact_velocity),
                 ..JointRates::default()
             },
-            Self::Lubricated(bearing) => {
-                let asperity = bearing.asperity_force(k).1;
-                JointRates {
-                    friction_power: bearing.film_loss(k)
-                        + bearing.dry.friction_power(k, impact_velocity)
-                        + asperity.friction_power,
-                    oil_flow: bearing.side_flow(k),
-                    asperity_force: asperity.force,
-                }
-            }
+            Self::Lubricated(bearing) => bearing.force_and_rates(k, impact_velocity).1,
         }
     }
 }

@@ -38,6 +38,8 @@ pub(super) struct CrankLoad {
     pub power: f64,
     /// Elastic energy stored in the contact \[J\].
     pub potential: f64,
+    /// The joint's friction power and oil flow, where its heat balance reads them.
+    pub heat: Option<JointRates>,
 }
 
 impl SliderCrank {
@@ -137,6 +139,25 @@ impl SliderCrank {
         (self.joint(role).force(&kin, impact_velocity), kin)
     }
 
+    /// [`SliderCrank::joint_force`] with, where the joint has a heat balance, its friction power
+    /// and oil flow from the same evaluation of its film (what its film temperature's rate reads).
+    pub(super) fn joint_force_with_heat(
+        &self,
+        role: JointRole,
+        y: &[f64],
+        contacts: &Contacts,
+    ) -> (JointForce, JointKinematics, Option<JointRates>) {
+        let kin = self.joint_kinematics(role, y);
+        let impact_velocity = self.impact_velocity(role, &kin, contacts);
+        match self.joint(role) {
+            Joint::Lubricated(bearing) if bearing.heat_balance.is_some() => {
+                let (force, rates) = bearing.force_and_rates(&kin, impact_velocity);
+                (force, kin, Some(rates))
+            }
+            joint => (joint.force(&kin, impact_velocity), kin, None),
+        }
+    }
+
     /// The crank pin's clearance-joint force in state `y` applied to the rod (−F at its end A and
     /// the bearing moment M_b on its eye, added to the rod's generalised forces `rod_force`), with
     /// the crank's share returned; `None` for the ideal crank pin (a constraint).
@@ -149,13 +170,13 @@ impl SliderCrank {
         if !self.has_clearance(JointRole::CrankPin) {
             return None;
         }
-        let (f, kin) = self.joint_force(JointRole::CrankPin, y, contacts);
+        let (f, kin, heat) = self.joint_force_with_heat(JointRole::CrankPin, y, contacts);
         rod_force[0] -= f.force.x;
         rod_force[1] -= f.force.y;
         let p = &y[self.layout.rod()];
         self.rod
             .add_end_moment(RodEnd::CrankPin, p, f.bearing_moment, rod_force);
-        Some(self.crank_load(y, self.crank.arm, &f, &kin))
+        Some(self.crank_load(y, self.crank.arm, (&f, &kin, heat)))
     }
 
     /// The main bearing's clearance-joint load on the free crank in state `y`; `None` for the ideal
@@ -164,13 +185,18 @@ impl SliderCrank {
         if !self.active.free_crank {
             return None;
         }
-        let (f, kin) = self.joint_force(JointRole::MainBearing, y, contacts);
-        Some(self.crank_load(y, -self.crank.centre, &f, &kin))
+        let (f, kin, heat) = self.joint_force_with_heat(JointRole::MainBearing, y, contacts);
+        Some(self.crank_load(y, -self.crank.centre, (&f, &kin, heat)))
     }
 
     /// The load on the crank of the joint force `f` whose journal lies at `arm` from the crank's
     /// reference point along the crank, with the joint's power from its kinematics `kin`.
-    fn crank_load(&self, y: &[f64], arm: f64, f: &JointForce, kin: &JointKinematics) -> CrankLoad {
+    fn crank_load(
+        &self,
+        y: &[f64],
+        arm: f64,
+        (f, kin, heat): (&JointForce, &JointKinematics, Option<JointRates>),
+    ) -> CrankLoad {
         let (sin, cos) = math::sin_cos(y[CRANK_ANGLE]);
         let arm = arm * Vector2::new(cos, sin);
         CrankLoad {
@@ -178,6 +204,7 @@ impl SliderCrank {
             torque: arm.x * f.force.y - arm.y * f.force.x + f.moment,
             power: kin.power(f),
             potential: f.potential,
+            heat,
         }
     }
 
@@ -221,15 +248,20 @@ impl SliderCrank {
 
     /// Writes the rate of each film temperature in state `y` under the conditions `c` to `dy`:
     /// the heat balance's dT/dt = (P − Φ_oil − Φ_housing)/C with the joint's friction power and
-    /// oil flow there ([`crate::joint::thermal`]).
-    pub(super) fn film_temperature_rates(&self, y: &[f64], c: &Conditions, dy: &mut [f64]) {
+    /// oil flow there, `heat` by [`JointRole`] ([`crate::joint::thermal`]).
+    pub(super) fn film_temperature_rates(
+        &self,
+        y: &[f64],
+        c: &Conditions,
+        heat: [Option<JointRates>; 3],
+        dy: &mut [f64],
+    ) {
         for (role, index) in JointRole::ALL.into_iter().zip(self.temperature) {
-            let (Some(i), Some(balance)) = (index, self.joint(role).heat_balance()) else {
+            let (Some(i), Some(balance), Some(rates)) =
+                (index, self.joint(role).heat_balance(), heat[role as usize])
+            else {
                 continue;
             };
-            let kin = self.joint_kinematics(role, y);
-            let impact_velocity = self.impact_velocity(role, &kin, c.contacts);
-            let rates = self.joint(role).rates(&kin, impact_velocity);
             dy[i] = balance.rate(
                 rates.friction_power,
                 rates.oil_flow,

@@ -299,7 +299,8 @@ impl SliderCrank {
         for (f, g) in self.force.iter_mut().zip(&self.rod_data.gravity) {
             *f = g - *f;
         }
-        let (joint, kin) = self.joint_force(JointRole::RodSlider, y, c.contacts);
+        let (joint, kin, joint_heat) =
+            self.joint_force_with_heat(JointRole::RodSlider, y, c.contacts);
         self.force[b] += joint.force.x;
         self.force[b + 1] += joint.force.y;
         self.rod
@@ -375,7 +376,12 @@ impl SliderCrank {
         } else {
             0.0
         };
-        self.film_temperature_rates(y, c, dy);
+        let heat = [
+            main_bearing.and_then(|load| load.heat),
+            crank_pin.and_then(|load| load.heat),
+            joint_heat,
+        ];
+        self.film_temperature_rates(y, c, heat, dy);
         dy[l.drive_work()] = crank_torque * v[CRANK_ANGLE];
         dy[l.external_work()] = slider_force * v[l.slider()];
         if let Some(d) = dy.get_mut(l.material_damping()) {
