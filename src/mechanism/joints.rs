@@ -141,6 +141,7 @@ impl SliderCrank {
 
     /// [`SliderCrank::joint_force`] with, where the joint has a heat balance, its friction power
     /// and oil flow from the same evaluation of its film (what its film temperature's rate reads).
+    #[inline]
     pub(super) fn joint_force_with_heat(
         &self,
         role: JointRole,
@@ -235,10 +236,11 @@ impl SliderCrank {
 
     /// The oil's viscosity in the joint `role` in state `y` at its film temperature, where its
     /// heat balance sets it \[Pa s\].
+    #[inline]
     fn film_viscosity(&self, role: JointRole, y: &[f64]) -> Option<f64> {
+        let i = self.temperature[role as usize]?;
         let balance = self.joint(role).heat_balance()?;
-        self.film_temperature(role, y)
-            .map(|t| balance.oil.viscosity(t))
+        Some(balance.oil.viscosity(y[i]))
     }
 
     /// The film temperature of the joint `role` in state `y`, where it has a heat balance \[K\].

@@ -376,12 +376,14 @@ impl SliderCrank {
         } else {
             0.0
         };
-        let heat = [
-            main_bearing.and_then(|load| load.heat),
-            crank_pin.and_then(|load| load.heat),
-            joint_heat,
-        ];
-        self.film_temperature_rates(y, c, heat, dy);
+        if !l.temperatures().is_empty() {
+            let heat = [
+                main_bearing.and_then(|load| load.heat),
+                crank_pin.and_then(|load| load.heat),
+                joint_heat,
+            ];
+            self.film_temperature_rates(y, c, heat, dy);
+        }
         dy[l.drive_work()] = crank_torque * v[CRANK_ANGLE];
         dy[l.external_work()] = slider_force * v[l.slider()];
         if let Some(d) = dy.get_mut(l.material_damping()) {
