@@ -144,6 +144,24 @@ fn a_steadily_loaded_bearing_settles_at_the_independent_heat_balance() {
     }
 }
 
+/// The rigid rod with a worn, lubricated rod–slider joint (50 µm clearance, 9 mm long) with a heat
+/// balance of heat capacity `capacity` and conductance `conductance` to the housing.
+fn worn_and_heated(capacity: f64, conductance: f64) -> Parameters {
+    Parameters {
+        joint: JointParameters {
+            model: JointModel::Lubricated,
+            clearance: 5e-5,
+            bearing_length: 9e-3,
+            thermal_model: ThermalModel::HeatBalance,
+            heat_capacity: capacity,
+            heat_transfer_coefficient: conductance,
+            ..JointParameters::benchmark()
+        },
+        rod_formulation: RodFormulation::Rigid,
+        ..Parameters::default()
+    }
+}
+
 /// A worn, lubricated rod–slider joint with a heat balance (50 µm clearance, 9 mm long, an oil of
 /// constant viscosity 0.05 Pa s, heat capacity 5 J/K, a conductance of 100 W/K to the housing), the
 /// supply stepped by +10 K at 50 ms: the film temperature's difference from the same run without
@@ -159,21 +177,9 @@ fn the_film_temperature_follows_a_supply_step_as_a_first_order_system() {
         ..OilParameters::default()
     };
     let (capacity, conductance) = (5.0, 100.0);
-    let p = Parameters {
-        joint: JointParameters {
-            model: JointModel::Lubricated,
-            clearance: 5e-5,
-            bearing_length: 9e-3,
-            thermal_model: ThermalModel::HeatBalance,
-            thermal_start: ThermalStart::Supply,
-            heat_capacity: capacity,
-            heat_transfer_coefficient: conductance,
-            ..JointParameters::benchmark()
-        },
-        rod_formulation: RodFormulation::Rigid,
-        oil,
-        ..Parameters::default()
-    };
+    let mut p = worn_and_heated(capacity, conductance);
+    p.joint.thermal_start = ThermalStart::Supply;
+    p.oil = oil;
     let (t1, t_end, step) = (0.05, 0.35, 1e-3);
     let run = |stepped: bool| -> Vec<Outputs> {
         let mut sim = Simulation::new(p.clone()).unwrap();
@@ -222,19 +228,7 @@ fn the_film_temperature_follows_a_supply_step_as_a_first_order_system() {
 #[test]
 fn the_heat_balance_closes_in_thermal_steady_state() {
     let conductance = 2.0;
-    let p = Parameters {
-        joint: JointParameters {
-            model: JointModel::Lubricated,
-            clearance: 5e-5,
-            bearing_length: 9e-3,
-            thermal_model: ThermalModel::HeatBalance,
-            heat_capacity: 0.2,
-            heat_transfer_coefficient: conductance,
-            ..JointParameters::benchmark()
-        },
-        rod_formulation: RodFormulation::Rigid,
-        ..Parameters::default()
-    };
+    let p = worn_and_heated(0.2, conductance);
     let revolution = std::f64::consts::TAU / flexible_slider_crank::params::BENCHMARK_SPEED;
     let mut sim = Simulation::new(p).unwrap();
     sim.advance_to(29.0 * revolution).unwrap();
