@@ -15,11 +15,14 @@ A machine file names the FMU's parameters (the start values of the run) and, opt
     "slider.forceTable" = "compression.csv"         # a file, relative to the machine file
 
 For every joint that is not ideal the report draws the polar load diagram (the force on the bearing
-in the ground's frame and in the frame of the body that carries the journal: the crank for the main
-bearing and the crank pin, the rod for the rod-slider joint), the journal's orbit in its clearance
-circle, and the film thickness, film pressure, friction power and oil flow over the crank angle of
-the last complete cycle, with the FMU's cycle results (`<joint>.filmThicknessMinCycle` …) in a
-table. It writes one PNG per joint and `index.html` into the output directory (default
+in the ground's frame and in the frame of the body that carries the bearing: the ground for the main
+bearing, the rod's big-end eye for the crank pin, the rod for the rod-slider joint), with crank-angle
+marks every 60°, the journal's orbit in its clearance circle, and for a lubricated joint the film
+thickness, film pressure, friction power and oil flow over the crank angle of the last complete
+cycle — with its film temperature and viscosity where it has a heat balance, and the asperities' load
+where its surfaces are rough — with the FMU's cycle results (`<joint>.filmThicknessMinCycle` …) in a
+table; a dry joint's figure and table leave out the film. The page names each joint's models. It
+writes one PNG per joint and `index.html` into the output directory (default
 `target/bearing-report/<machine name>`), and shows its progress while the FMU runs.
 """
 import html
@@ -29,6 +32,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import matplotlib
+import matplotlib.ticker
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -41,26 +45,34 @@ from .session import Session, errors  # noqa: E402
 from .study import StudyError, _check_value, _variables  # noqa: E402
 
 #: Each joint: its prefix, its name, the sign that turns its force output into the force on its
-#: bearing, and the body that carries its journal.
+#: bearing, and the moving body that carries its bearing (None: the ground).
 JOINTS = [
-    ("mainBearing", "Main bearing", -1.0, "crank"),
-    ("crankPin", "Crank pin", 1.0, "crank"),
+    ("mainBearing", "Main bearing", -1.0, None),
+    ("crankPin", "Crank pin", 1.0, "rod"),
     ("joint", "Rod–slider joint", -1.0, "rod"),
 ]
 #: Each joint's outputs the report reads at every communication point.
 SERIES = ["forceX", "forceY", "forcePeak", "eccentricityX", "eccentricityY", "filmThicknessMin",
-          "filmPressurePeak", "frictionPower", "oilFlow"]
-#: The cycle results, with their unit in the report and the factor from SI.
+          "filmPressurePeak", "frictionPower", "oilFlow", "filmTemperature", "viscosityEffective",
+          "asperityForce"]
+#: The cycle results, with their unit in the report, the factor from SI and whether they describe
+#: the film (left out for a dry joint).
 CYCLE_RESULTS = [
-    ("filmThicknessMinCycle", "smallest film thickness", "µm", 1e6),
-    ("filmThicknessMinCycleAngle", "… at crank angle", "°", 1.0),
-    ("filmPressurePeakCycle", "largest film pressure", "MPa", 1e-6),
-    ("filmPressurePeakCycleAngle", "… at crank angle", "°", 1.0),
-    ("forcePeakCycle", "largest force", "kN", 1e-3),
-    ("forcePeakCycleAngle", "… at crank angle", "°", 1.0),
-    ("frictionPowerMeanCycle", "mean friction power", "W", 1.0),
-    ("oilFlowMeanCycle", "mean oil flow", "cm³/s", 1e6),
+    ("filmThicknessMinCycle", "smallest film thickness", "µm", 1e6, True),
+    ("filmThicknessMinCycleAngle", "… at crank angle", "°", 1.0, True),
+    ("filmPressurePeakCycle", "largest film pressure", "MPa", 1e-6, True),
+    ("filmPressurePeakCycleAngle", "… at crank angle", "°", 1.0, True),
+    ("forcePeakCycle", "largest force", "kN", 1e-3, False),
+    ("forcePeakCycleAngle", "… at crank angle", "°", 1.0, False),
+    ("frictionPowerMeanCycle", "mean friction power", "W", 1.0, False),
+    ("oilFlowMeanCycle", "mean oil flow", "cm³/s", 1e6, True),
+    ("filmTemperatureMaxCycle", "hottest film (heat balance)", "°C", 1.0, True),
+    ("asperityForcePeakCycle", "largest asperity load (rough surfaces)", "N", 1.0, True),
+    ("metalContactFractionCycle", "time in dry metal contact", "%", 100.0, False),
 ]
+#: Each joint's model switches the page names, and their items.
+MODELS = [("model", ["ideal", "dry", "lubricated"]), ("filmModel", ["short", "finite"]),
+          ("thermalModel", ["isoviscous", "heat balance"])]
 
 
 @dataclass
@@ -145,11 +157,11 @@ def _run(machine: Machine, session: Session, progress: bool) -> dict:
     bar.close()
     data = {n: np.array(c) for n, c in zip(names, zip(*rows))}
     for prefix, *_ in JOINTS:
-        data[f"{prefix}.model"] = value(f"{prefix}.model")
-        data[f"{prefix}.clearance"] = value(f"{prefix}.clearance")
+        for name in ["clearance", "roughness"] + [switch for switch, _ in MODELS]:
+            data[f"{prefix}.{name}"] = value(f"{prefix}.{name}")
         for name, *_ in CYCLE_RESULTS:
             data[f"{prefix}.{name}"] = value(f"{prefix}.{name}")
-    for name in ["crank.length", "slider.offset", "solver.warnings"]:
+    for name in ["crank.length", "slider.offset", "solver.warnings", "cycle.number"]:
         data[name] = value(name)
     data["period"] = period
     return data
@@ -172,22 +184,45 @@ def rod_angle(data: dict) -> np.ndarray:
     return np.arctan2(e - r * np.sin(theta), data["slider.position"] - r * np.cos(theta))
 
 
-def plot_joint(data: dict, rows: np.ndarray, prefix: str, title: str, sign: float, body: str,
+def _load_diagram(a, x, y, angles, label):
+    """A polar load diagram on axes `a`: the force's path with crank-angle marks every 60°, on equal
+    and equally long axes."""
+    a.plot(x, y, lw=0.9)
+    a.plot([0], [0], "k+")
+    for mark in range(0, 360, 60):
+        k = int(np.argmin(np.abs((angles - mark + 180.0) % 360.0 - 180.0)))
+        a.plot(x[k], y[k], "o", ms=3, color="C1")
+        a.annotate(f"{mark}°", (x[k], y[k]), textcoords="offset points", xytext=(4, 4), fontsize=8)
+    reach = 1.1 * max(np.max(np.abs(x)), np.max(np.abs(y)), 1e-9)
+    a.set(xlim=(-reach, reach), ylim=(-reach, reach), aspect="equal", xlabel="x [kN]",
+          ylabel="y [kN]", title=f"Force on the bearing, {label}")
+    a.xaxis.set_major_locator(matplotlib.ticker.MaxNLocator(5))
+    a.yaxis.set_major_locator(matplotlib.ticker.MaxNLocator(5))
+
+
+def plot_joint(data: dict, rows: np.ndarray, prefix: str, title: str, sign: float, body,
                path: Path):
-    """One joint's figure: load diagrams, orbit and the film over the last cycle."""
+    """One joint's figure: load diagrams and orbit, and for a lubricated joint the film over the
+    last cycle (its temperature and viscosity with a heat balance, the asperities' load on rough
+    surfaces)."""
     deg = np.degrees(np.mod(data["crank.angle"][rows], data["period"]))
     fx = sign * data[f"{prefix}.forceX"][rows] / 1e3
     fy = sign * data[f"{prefix}.forceY"][rows] / 1e3
-    frame = data["crank.angle"][rows] if body == "crank" else rod_angle(data)[rows]
-    c, s = np.cos(frame), np.sin(frame)
     clearance = data[f"{prefix}.clearance"]
-    fig, ax = plt.subplots(2, 3, figsize=(15, 9))
-    for a, (x, y), label in [(ax[0, 0], (fx, fy), "ground's frame"),
-                             (ax[0, 1], (c * fx + s * fy, -s * fx + c * fy), f"{body}'s frame")]:
-        a.plot(x, y, lw=0.9)
-        a.plot([0], [0], "k+")
-        a.set(xlabel="x [kN]", ylabel="y [kN]", aspect="equal",
-              title=f"Force on the bearing, {label}")
+    lubricated = data[f"{prefix}.model"] == 3
+    heated = lubricated and data[f"{prefix}.thermalModel"] == 2
+    rough = lubricated and data[f"{prefix}.roughness"] > 0
+    extra = int(heated or rough)
+    fig, ax = plt.subplots(1 + int(lubricated) + extra, 3,
+                           figsize=(15, 4.6 * (1 + int(lubricated) + extra)), squeeze=False)
+    _load_diagram(ax[0, 0], fx, fy, deg, "ground's frame")
+    if body is None:
+        ax[0, 1].set_axis_off()
+    else:
+        frame = rod_angle(data)[rows]
+        c, s = np.cos(frame), np.sin(frame)
+        shell = "the rod's big-end eye" if prefix == "crankPin" else f"the {body}"
+        _load_diagram(ax[0, 1], c * fx + s * fy, -s * fx + c * fy, deg, f"frame of {shell}")
     phi = np.linspace(0, 2 * np.pi, 200)
     ax[0, 2].plot(np.cos(phi), np.sin(phi), "k--", lw=0.8, label="clearance circle")
     ax[0, 2].plot(data[f"{prefix}.eccentricityX"][rows] / clearance,
@@ -195,24 +230,52 @@ def plot_joint(data: dict, rows: np.ndarray, prefix: str, title: str, sign: floa
                   label="journal centre")
     ax[0, 2].set(xlabel="x / c", ylabel="y / c", aspect="equal", title="Journal orbit")
     ax[0, 2].legend(loc="lower right", fontsize=8)
-    ax[1, 0].plot(deg, 1e6 * data[f"{prefix}.filmThicknessMin"][rows], lw=0.9, color="C3")
-    ax[1, 0].set(xlabel="crank angle in the cycle [°]", ylabel="smallest film thickness [µm]",
-                 title="Film thickness")
-    ax[1, 1].plot(deg, 1e-6 * data[f"{prefix}.filmPressurePeak"][rows], lw=0.9, color="C4")
-    ax[1, 1].set(xlabel="crank angle in the cycle [°]", ylabel="largest film pressure [MPa]",
-                 title="Film pressure")
-    ax[1, 2].plot(deg, data[f"{prefix}.frictionPower"][rows], lw=0.9, color="C5")
-    ax[1, 2].set(xlabel="crank angle in the cycle [°]", ylabel="friction power [W]",
-                 title="Friction power and oil flow")
-    flow = ax[1, 2].twinx()
-    flow.plot(deg, 1e6 * data[f"{prefix}.oilFlow"][rows], lw=0.9, color="C0")
-    flow.set_ylabel("oil flow [cm³/s]", color="C0")
+    angle = "crank angle in the cycle [°]"
+    if lubricated:
+        ax[1, 0].plot(deg, 1e6 * data[f"{prefix}.filmThicknessMin"][rows], lw=0.9, color="C3")
+        ax[1, 0].set(xlabel=angle, ylabel="smallest film thickness [µm]", title="Film thickness")
+        ax[1, 1].plot(deg, 1e-6 * data[f"{prefix}.filmPressurePeak"][rows], lw=0.9, color="C4")
+        ax[1, 1].set(xlabel=angle, ylabel="largest film pressure [MPa]", title="Film pressure")
+        ax[1, 2].plot(deg, data[f"{prefix}.frictionPower"][rows], lw=0.9, color="C5")
+        ax[1, 2].set(xlabel=angle, ylabel="friction power [W]", title="Friction power and oil flow")
+        flow = ax[1, 2].twinx()
+        flow.plot(deg, 1e6 * data[f"{prefix}.oilFlow"][rows], lw=0.9, color="C0")
+        flow.set_ylabel("oil flow [cm³/s]", color="C0")
+    if extra:
+        row = ax[2]
+        if heated:
+            row[0].plot(deg, data[f"{prefix}.filmTemperature"][rows] - 273.15, lw=0.9, color="C3")
+            row[0].set(xlabel=angle, ylabel="film temperature [°C]",
+                       title="Film temperature (heat balance)")
+            row[1].plot(deg, 1e3 * data[f"{prefix}.viscosityEffective"][rows], lw=0.9, color="C4")
+            row[1].set(xlabel=angle, ylabel="viscosity [mPa s]", title="The oil's viscosity")
+        else:
+            row[0].set_axis_off()
+            row[1].set_axis_off()
+        if rough:
+            row[2].plot(deg, data[f"{prefix}.asperityForce"][rows], lw=0.9, color="C5")
+            row[2].set(xlabel=angle, ylabel="asperity load [N]",
+                       title="Rough surfaces: the asperities' load")
+        else:
+            row[2].set_axis_off()
     for a in ax.flat:
         a.grid(alpha=0.3)
-    fig.suptitle(f"{title}: the last complete load cycle")
+    fig.suptitle(f"{title}: load cycle {int(data['cycle.number'])}, the last complete one")
     fig.tight_layout()
     fig.savefig(path, dpi=100)
     plt.close(fig)
+
+
+def models(data: dict, prefix: str) -> str:
+    """The joint's models as the page names them."""
+    model = data[f"{prefix}.model"]
+    names = [dict(MODELS)["model"][int(model) - 1]]
+    if model == 3:
+        names.append(f"{dict(MODELS)['filmModel'][int(data[f'{prefix}.filmModel']) - 1]} film")
+        names.append(dict(MODELS)["thermalModel"][int(data[f"{prefix}.thermalModel"]) - 1])
+        roughness = data[f"{prefix}.roughness"]
+        names.append(f"roughness {roughness * 1e6:.3g} µm" if roughness > 0 else "smooth")
+    return ", ".join(names)
 
 
 def write(machine: Machine, data: dict, out: Path) -> Path:
@@ -224,11 +287,19 @@ def write(machine: Machine, data: dict, out: Path) -> Path:
         if data[f"{prefix}.model"] == 1:
             continue
         plot_joint(data, rows, prefix, title, sign, body, out / f"{prefix}.png")
+        lubricated = data[f"{prefix}.model"] == 3
+        shown = [r for r in CYCLE_RESULTS if lubricated or not r[4]]
+        if data[f"{prefix}.thermalModel"] != 2:
+            shown = [r for r in shown if r[0] != "filmTemperatureMaxCycle"]
+        if data[f"{prefix}.roughness"] == 0:
+            shown = [r for r in shown if r[0] != "asperityForcePeakCycle"]
         cells = "".join(
             f"<tr><td>{html.escape(label)}</td><td><code>{prefix}.{name}</code></td>"
-            f"<td>{data[f'{prefix}.{name}'] * factor:.4g} {unit}</td></tr>"
-            for name, label, unit, factor in CYCLE_RESULTS)
-        sections.append(f"<h2>{html.escape(title)}</h2>\n<table>{cells}</table>\n"
+            f"<td>{(data[f'{prefix}.{name}'] - (273.15 if unit == '°C' else 0.0)) * factor:.4g} "
+            f"{unit}</td></tr>"
+            for name, label, unit, factor, _ in shown)
+        sections.append(f"<h2>{html.escape(title)}</h2>\n"
+                        f"<p>{html.escape(models(data, prefix))}</p>\n<table>{cells}</table>\n"
                         f'<p><img src="{prefix}.png" alt="{html.escape(title)}" width="100%"></p>')
     if not sections:
         sections.append("<p>Every joint is ideal: no bearing to report.</p>")
@@ -243,7 +314,8 @@ def write(machine: Machine, data: dict, out: Path) -> Path:
         f"<h1>Bearing report: {html.escape(machine.name)}</h1>"
         f"<p>{machine.cycles} load cycles of {math.degrees(data['period']):.0f}° "
         f"({data['time'][-1]:.4g} s), {machine.points_per_cycle} points per cycle; the results "
-        f"are those of the last complete cycle. FMU warnings: {int(data['solver.warnings'])}.</p>"
+        f"and the pictures are those of the last complete cycle, cycle "
+        f"{int(data['cycle.number'])}. FMU warnings: {int(data['solver.warnings'])}.</p>"
         + "\n".join(sections)
         + f"<h2>Parameters</h2><table>{parameters}</table></body></html>")
     return page

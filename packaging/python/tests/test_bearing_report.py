@@ -53,15 +53,37 @@ def test_the_cycle_results_are_the_interval_holds_over_the_last_cycle(compressor
 
 
 def test_the_report_draws_each_clearance_joint(compressor, tmp_path):
-    """index.html with the cycle results of the two lubricated bearings and the piston pin, and one
-    PNG per clearance joint."""
+    """index.html with the cycle results of the two lubricated bearings and the piston pin (its
+    force and friction, no film), each joint's models named, the cycle drawn numbered, and one PNG
+    per clearance joint."""
     machine, data = compressor
     page = report.write(machine, data, tmp_path)
     text = page.read_text()
     for prefix in ["mainBearing", "crankPin", "joint"]:
         assert (tmp_path / f"{prefix}.png").stat().st_size > 10_000
+        assert f"{prefix}.forcePeakCycle" in text
+    for prefix in ["mainBearing", "crankPin"]:
         assert f"{prefix}.filmThicknessMinCycle" in text
+    assert "joint.filmThicknessMinCycle" not in text
+    assert "lubricated, finite film, isoviscous, smooth" in text
+    assert f"cycle {int(data['cycle.number'])}." in text
     assert "FMU warnings: 0" in text
+
+
+def test_the_report_draws_a_heated_rough_bearing(root, fmu, tmp_path):
+    """A bearing with a heat balance and rough surfaces: its film temperature, viscosity and
+    asperity load drawn, its hottest film tabulated in °C."""
+    machine = report.load(root / "studies" / "compressor.toml", fmu=fmu, cycles=2)
+    machine.parameters |= {"crankPin.thermalModel": 2, "crankPin.roughness": 1.5e-6}
+    data = report.run(machine, progress=False)
+    page = report.write(machine, data, tmp_path)
+    text = page.read_text()
+    assert "heat balance, roughness 1.5 µm" in text
+    assert "crankPin.filmTemperatureMaxCycle" in text
+    assert "crankPin.asperityForcePeakCycle" in text
+    hottest = data["crankPin.filmTemperatureMaxCycle"] - 273.15
+    assert 40.0 < hottest < 80.0
+    assert (tmp_path / "crankPin.png").stat().st_size > 20_000
 
 
 def test_a_wrong_machine_file_is_refused_naming_its_entry(tmp_path, fmu):
