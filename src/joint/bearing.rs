@@ -39,11 +39,10 @@
 
 use nalgebra::Vector2;
 
-use super::JointRates;
 use super::asperity::{Asperity, AsperityState};
 use super::contact::DryContact;
 use super::finite_film::FiniteFilm;
-use super::kinematics::{JointForce, JointKinematics};
+use super::kinematics::{JointForce, JointKinematics, JointRates};
 use super::short_film::FilmField;
 use super::thermal::HeatBalance;
 

@@ -77,6 +77,17 @@ pub struct JointForce {
     pub potential: f64,
 }
 
+/// What the cycle results integrate or hold of a joint in one state (SI units).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct JointRates {
+    /// The friction power \[W\] ([`super::BearingState::friction_power`]).
+    pub friction_power: f64,
+    /// The oil flow \[m³/s\] ([`super::BearingState::oil_flow`]).
+    pub oil_flow: f64,
+    /// The asperities' normal force \[N\] ([`super::BearingState::asperity_force`]).
+    pub asperity_force: f64,
+}
+
 /// Discrete contact state, updated at accepted steps only.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ContactState {

@@ -26,7 +26,8 @@ pub use asperity::{Asperity, AsperityState};
 pub use bearing::{Film, JournalBearing};
 pub use contact::{ContactGeometry, ContactLaw, DryContact, Elastic, LineContact, hertz_stiffness};
 pub use kinematics::{
-    ContactState, Contacts, JointForce, JointKinematics, MIN_IMPACT_VELOCITY, normal_rate_error,
+    ContactState, Contacts, JointForce, JointKinematics, JointRates, MIN_IMPACT_VELOCITY,
+    normal_rate_error,
 };
 pub use oil::{Oil, OilParameters};
 pub use parameters::{
@@ -338,17 +339,6 @@ impl Joint {
 /// metal contact (ε ≥ 1) \[m\].
 pub fn film_thickness(clearance: f64, eccentricity_ratio: f64) -> f64 {
     (clearance * (1.0 - eccentricity_ratio)).max(0.0)
-}
-
-/// What the cycle results integrate or hold of a joint in one state (SI units).
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct JointRates {
-    /// The friction power \[W\] ([`BearingState::friction_power`]).
-    pub friction_power: f64,
-    /// The oil flow \[m³/s\] ([`BearingState::oil_flow`]).
-    pub oil_flow: f64,
-    /// The asperities' normal force \[N\] ([`BearingState::asperity_force`]).
-    pub asperity_force: f64,
 }
 
 /// A joint as its designer reads it in one state (SI units).
