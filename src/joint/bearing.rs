@@ -285,13 +285,14 @@ impl JournalBearing {
             bearing_moment: dry.bearing_moment + bearing,
             ..dry
         };
-        let (asperity, carried) = self.asperity_force(k);
-        if self.asperity.is_some() {
-            total.force += asperity.force;
-            total.moment += asperity.moment;
-            total.bearing_moment += asperity.bearing_moment;
-            total.potential += asperity.potential;
-        }
+        let Some(asperity) = &self.asperity else {
+            return (total, AsperityState::default());
+        };
+        let (force, carried) = asperity.force(k, &self.dry);
+        total.force += force.force;
+        total.moment += force.moment;
+        total.bearing_moment += force.bearing_moment;
+        total.potential += force.potential;
         (total, carried)
     }
 }

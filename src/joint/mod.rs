@@ -33,12 +33,12 @@ pub use oil::{Oil, OilParameters};
 pub use parameters::{
     FilmModel, JointModel, JointParameters, JournalStart, ThermalModel, ThermalStart,
 };
+pub use role::{JointField, JointRole};
 pub use thermal::HeatBalance;
 
-use crate::error::ModelError;
-pub use role::{JointField, JointRole};
-
 use nalgebra::Vector2;
+
+use crate::error::ModelError;
 
 /// The joint model with its constants.
 #[derive(Clone, Debug, PartialEq)]
@@ -275,16 +275,20 @@ impl Joint {
         };
         let c = dry.clearance;
         let eccentricity_ratio = k.e.norm() / c;
-        let force = self.force(k, impact_velocity);
-        let (film_pressure, film_loss, oil_flow, asperity, viscosity) = match self {
-            Self::Lubricated(bearing) => (
-                bearing.peak_pressure(k),
-                bearing.film_loss(k),
-                bearing.side_flow(k),
-                bearing.asperity_force(k).1,
-                bearing.viscosity_at(k),
+        let (force, rates, film_pressure, asperity, viscosity) = match self {
+            Self::Lubricated(bearing) => {
+                let (force, rates) = bearing.force_and_rates(k, impact_velocity);
+                let asperity = bearing.asperity_force(k).1;
+                let pressure = bearing.peak_pressure(k);
+                (force, rates, pressure, asperity, bearing.viscosity_at(k))
+            }
+            _ => (
+                self.force(k, impact_velocity),
+                self.rates(k, impact_velocity),
+                0.0,
+                AsperityState::default(),
+                0.0,
             ),
-            _ => (0.0, 0.0, 0.0, AsperityState::default(), 0.0),
         };
         let film_thickness = film_thickness(c, eccentricity_ratio);
         let film_ratio = match self {
@@ -298,12 +302,10 @@ impl Joint {
             film_thickness,
             film_pressure,
             friction_torque: force.moment,
-            friction_power: film_loss
-                + dry.friction_power(k, impact_velocity)
-                + asperity.friction_power,
+            friction_power: rates.friction_power,
             hysteresis_power: dry.hysteresis_power(k, impact_velocity),
-            oil_flow,
-            asperity_force: asperity.force,
+            oil_flow: rates.oil_flow,
+            asperity_force: rates.asperity_force,
             asperity_pressure_peak: asperity.pressure_peak,
             asperity_friction_power: asperity.friction_power,
             film_ratio,

@@ -3,7 +3,7 @@
 //! ([`super::Simulation::take_warnings`]).
 
 use crate::error::Num;
-use crate::joint::{Contacts, Elastic, JointField, JointRole};
+use crate::joint::{Elastic, Joint, JointField, JointRole};
 use crate::mechanism::SliderCrank;
 use crate::params::{JointModel, Parameters, RodFormulation};
 
@@ -161,10 +161,11 @@ impl Monitor {
         let thermal = JointRole::ALL
             .into_iter()
             .filter_map(|role| {
-                let balance = mechanism.joint(role).heat_balance()?;
-                let flow = mechanism
-                    .bearing_state(role, y, &Contacts::default())
-                    .oil_flow;
+                let Joint::Lubricated(bearing) = mechanism.joint(role) else {
+                    return None;
+                };
+                let balance = bearing.heat_balance.as_ref()?;
+                let flow = bearing.side_flow(&mechanism.joint_kinematics(role, y));
                 let conductance = 2.0 * balance.oil.volumetric_heat() * flow + balance.conductance;
                 Some((role, balance.capacity / conductance))
             })
