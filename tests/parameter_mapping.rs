@@ -310,6 +310,47 @@ const FIELDS: &[(&str, Restore)] = &[
     ("oil.specificHeat", |p, d| {
         p.oil.specific_heat = d.oil.specific_heat
     }),
+    ("joint.feed", |p, d| p.joint.feed = d.joint.feed),
+    ("joint.feedLocation", |p, d| {
+        p.joint.feed_location = d.joint.feed_location
+    }),
+    ("joint.feedPosition", |p, d| {
+        p.joint.feed_position = d.joint.feed_position
+    }),
+    ("joint.feedDiameter", |p, d| {
+        p.joint.feed_diameter = d.joint.feed_diameter
+    }),
+    ("joint.feedGrooveLength", |p, d| {
+        p.joint.feed_groove_length = d.joint.feed_groove_length
+    }),
+    ("crankPin.feed", |p, d| p.crank_pin.feed = d.crank_pin.feed),
+    ("crankPin.feedLocation", |p, d| {
+        p.crank_pin.feed_location = d.crank_pin.feed_location
+    }),
+    ("crankPin.feedPosition", |p, d| {
+        p.crank_pin.feed_position = d.crank_pin.feed_position
+    }),
+    ("crankPin.feedDiameter", |p, d| {
+        p.crank_pin.feed_diameter = d.crank_pin.feed_diameter
+    }),
+    ("crankPin.feedGrooveLength", |p, d| {
+        p.crank_pin.feed_groove_length = d.crank_pin.feed_groove_length
+    }),
+    ("mainBearing.feed", |p, d| {
+        p.main_bearing.feed = d.main_bearing.feed
+    }),
+    ("mainBearing.feedLocation", |p, d| {
+        p.main_bearing.feed_location = d.main_bearing.feed_location
+    }),
+    ("mainBearing.feedPosition", |p, d| {
+        p.main_bearing.feed_position = d.main_bearing.feed_position
+    }),
+    ("mainBearing.feedDiameter", |p, d| {
+        p.main_bearing.feed_diameter = d.main_bearing.feed_diameter
+    }),
+    ("mainBearing.feedGrooveLength", |p, d| {
+        p.main_bearing.feed_groove_length = d.main_bearing.feed_groove_length
+    }),
 ];
 
 /// A parameter as the XML declares it: name, value reference, type and range, start.

@@ -16,6 +16,8 @@
 //!   crank pin and main bearing (finite film) and a dry piston pin in line contact with friction,
 //!   with an offset guide, the rod's eye masses and gravity besides;
 //! - `warm`: `machine` with a heat balance in both bearings (the film temperature a state);
+//! - `fed`: `warm` with the crank pin fed through a hole in the journal (the crankshaft's
+//!   drilling) and the main bearing through a circumferential groove (two lands);
 //! - `ramp`: `B` with the drive speed ramped through its first and second derivatives, set at
 //!   every communication point as a master that provides input derivatives sets them.
 //!
@@ -91,6 +93,10 @@ const CASES: &[Case] = &[
         ..Case::plain("warm", &WARM)
     },
     Case {
+        table: Some("studies/compressor_cycle.csv"),
+        ..Case::plain("fed", &FED)
+    },
+    Case {
         ramp: Some(Ramp {
             input: "drive.speed",
             coefficients: [523.598_775_598_298_8, 4000.0, -1e5],
@@ -154,6 +160,21 @@ const WARM: [(&str, f64); 38] = {
     warm[36] = ("crankPin.thermalModel", 2.0);
     warm[37] = ("mainBearing.thermalModel", 2.0);
     warm
+};
+
+/// [`WARM`] with a 4 mm hole in the crank pin's journal and a 4 mm circumferential groove in the
+/// main bearing, the oil supplied at 2 bar.
+const FED: [(&str, f64); 41] = {
+    let mut fed = [("", 0.0); 41];
+    let mut k = 0;
+    while k < WARM.len() {
+        fed[k] = WARM[k];
+        k += 1;
+    }
+    fed[38] = ("crankPin.feed", 2.0);
+    fed[39] = ("crankPin.feedLocation", 2.0);
+    fed[40] = ("mainBearing.feed", 3.0);
+    fed
 };
 
 /// Lubricated crank pin and main bearing with the short film, the dry rod–slider joint, every
@@ -402,7 +423,7 @@ const ZEROS: &[Zero] = &[
     ),
     (
         &[
-            "B", "ramp", "A", "torque", "worn", "finite", "rough", "machine", "warm",
+            "B", "ramp", "A", "torque", "worn", "finite", "rough", "machine", "warm", "fed",
         ],
         &["joint."],
         FILM,
@@ -415,13 +436,13 @@ const ZEROS: &[Zero] = &[
         "a dry joint without friction",
     ),
     (
-        &["worn", "finite", "rough", "machine", "warm"],
+        &["worn", "finite", "rough", "machine", "warm", "fed"],
         &["joint."],
         &["filmThicknessMinCycle", "filmThicknessMinSinceStart"],
         "the dry joint is settled on its wall",
     ),
     (
-        &["machine", "warm"],
+        &["machine", "warm", "fed"],
         &["joint."],
         &["filmThicknessMin"],
         "the dry piston pin stays on its wall",
@@ -468,19 +489,19 @@ const ZEROS: &[Zero] = &[
         "the journal touches its wall in each revolution",
     ),
     (
-        &["machine", "warm"],
+        &["machine", "warm", "fed"],
         &[""],
         &["cycle.number"],
         "no load cycle completes in 24 ms at 1500 rpm",
     ),
     (
-        &["machine", "warm"],
+        &["machine", "warm", "fed"],
         CRANK_JOINTS,
         TOUCH,
         "the oiled bearings never touch",
     ),
     (
-        &["B", "ramp", "A", "worn", "torque", "machine", "warm"],
+        &["B", "ramp", "A", "worn", "torque", "machine", "warm", "fed"],
         &[""],
         &["solver.warnings"],
         "the run warns of nothing",
@@ -496,6 +517,7 @@ const ZEROS: &[Zero] = &[
             "torque",
             "machine",
             "warm",
+            "fed",
         ],
         JOINTS,
         ASPERITY,
@@ -524,10 +546,33 @@ const ZEROS: &[Zero] = &[
         "an isoviscous film has no heat balance",
     ),
     (
-        &["warm"],
+        &["warm", "fed"],
         &["joint."],
         THERMAL,
         "a dry joint has no heat balance",
+    ),
+    (
+        &[
+            "B",
+            "ramp",
+            "A",
+            "lubricated",
+            "worn",
+            "finite",
+            "rough",
+            "torque",
+            "machine",
+            "warm",
+        ],
+        JOINTS,
+        &["feedFlow"],
+        "an unfed film has no feed flow",
+    ),
+    (
+        &["fed"],
+        &["joint."],
+        &["feedFlow"],
+        "a dry joint has no feed",
     ),
 ];
 

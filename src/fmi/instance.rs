@@ -31,6 +31,7 @@ fn input_of(v: Var<Vr>) -> Result<Input, FmuError> {
         Vr::DriveTorque => Ok(Input::DriveTorque),
         Vr::SliderForce => Ok(Input::SliderForce),
         Vr::OilSupplyTemperature => Ok(Input::OilSupplyTemperature),
+        Vr::OilSupplyPressure => Ok(Input::OilSupplyPressure),
         _ => Err(FmuError::Invalid(format!("{} is not an input", v.name))),
     }
 }
@@ -192,6 +193,7 @@ impl Model for SliderCrankFmu {
                 Vr::DriveTorque => cx.inputs.reading().value.drive_torque,
                 Vr::SliderForce => cx.inputs.reading().value.slider_force,
                 Vr::OilSupplyTemperature => cx.inputs.reading().value.oil_supply_temperature,
+                Vr::OilSupplyPressure => cx.inputs.reading().value.oil_supply_pressure,
                 _ => unreachable_type(v)?,
             };
         }

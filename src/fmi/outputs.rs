@@ -167,7 +167,7 @@ pub fn real_output(o: &Outputs, vr: Vr) -> Option<f64> {
 
 /// Each joint's bearing-design outputs, by [`JointRole`], in the order of
 /// [`bearing_values`].
-const BEARING_OUTPUTS: [[Vr; 28]; 3] = [
+const BEARING_OUTPUTS: [[Vr; 29]; 3] = [
     [
         Vr::MainBearingEccentricityRatio,
         Vr::MainBearingFilmThickness,
@@ -197,6 +197,7 @@ const BEARING_OUTPUTS: [[Vr; 28]; 3] = [
         Vr::MainBearingViscosityEffective,
         Vr::MainBearingHeatFlow,
         Vr::MainBearingFilmTemperatureMaxCycle,
+        Vr::MainBearingFeedFlow,
     ],
     [
         Vr::CrankPinEccentricityRatio,
@@ -227,6 +228,7 @@ const BEARING_OUTPUTS: [[Vr; 28]; 3] = [
         Vr::CrankPinViscosityEffective,
         Vr::CrankPinHeatFlow,
         Vr::CrankPinFilmTemperatureMaxCycle,
+        Vr::CrankPinFeedFlow,
     ],
     [
         Vr::JointEccentricityRatio,
@@ -257,11 +259,12 @@ const BEARING_OUTPUTS: [[Vr; 28]; 3] = [
         Vr::JointViscosityEffective,
         Vr::JointHeatFlow,
         Vr::JointFilmTemperatureMaxCycle,
+        Vr::JointFeedFlow,
     ],
 ];
 
 /// A joint's bearing-design outputs in the order of a row of [`BEARING_OUTPUTS`].
-fn bearing_values(b: &BearingOutputs) -> [f64; 28] {
+fn bearing_values(b: &BearingOutputs) -> [f64; 29] {
     [
         b.eccentricity_ratio,
         b.film_thickness,
@@ -291,6 +294,7 @@ fn bearing_values(b: &BearingOutputs) -> [f64; 28] {
         b.viscosity_effective,
         b.heat_flow,
         b.film_temperature_max_cycle,
+        b.feed_flow,
     ]
 }
 

@@ -41,6 +41,7 @@ use nalgebra::Vector2;
 
 use super::asperity::{Asperity, AsperityState};
 use super::contact::DryContact;
+use super::feed::Feed;
 use super::finite_film::FiniteFilm;
 use super::kinematics::{JointForce, JointKinematics, JointRates};
 use super::short_film::FilmField;
@@ -60,8 +61,14 @@ pub enum Film {
 pub struct JournalBearing {
     /// Dynamic viscosity μ \[Pa s\].
     pub viscosity: f64,
-    /// Bearing length L \[m\].
+    /// The length of each of the film's lands \[m\]: the bearing's length L, or (L − w)/2 beside
+    /// a circumferential groove of width w.
     pub length: f64,
+    /// How many lands carry the film side by side: 1, or 2 beside a circumferential groove
+    /// ([`Feed::lands`]).
+    pub lands: f64,
+    /// The oil feed, None for an unfed film (boxed: most joints have none).
+    pub feed: Option<Box<Feed>>,
     /// Eccentricity ratio ε_b above which the film model is clamped and dry contact may act.
     pub switch_eccentricity: f64,
     /// The film's model.
@@ -75,10 +82,10 @@ pub struct JournalBearing {
 }
 
 impl JournalBearing {
-    /// Film coefficient K_h = μ R L³ / (2c²) \[N s\].
+    /// Film coefficient K_h = μ R L³ / (2c²) \[N s\], summed over the lands.
     pub fn film_coefficient(&self) -> f64 {
         let c = self.dry.clearance;
-        self.viscosity * self.dry.journal_radius * self.length.powi(3) / (2.0 * c * c)
+        self.lands * self.viscosity * self.dry.journal_radius * self.length.powi(3) / (2.0 * c * c)
     }
 
     /// The oil's viscosity in the state `k` over the joint's own: μ(T)/μ where a heat balance sets
@@ -168,7 +175,7 @@ impl JournalBearing {
 
     /// The oil flow out of both ends of the pressurised film \[m³/s\]: the short film's c R L A
     /// (A = √((εw)² + (2ε̇)²), ε clamped to ε_b), times the finite film's ratio T_q for the finite
-    /// bearing; 0 without a film.
+    /// bearing, summed over the lands; 0 without a film.
     pub fn side_flow(&self, k: &JointKinematics) -> f64 {
         self.film_state(k, true)
             .map_or(0.0, |state| self.flow_of(&state))
@@ -176,8 +183,11 @@ impl JournalBearing {
 
     /// The side flow of the film state `state` (one evaluated with its flow ratio).
     fn flow_of(&self, state: &FilmState) -> f64 {
-        let short =
-            self.dry.clearance * self.dry.journal_radius * self.length * state.field.amplitude;
+        let short = self.lands
+            * self.dry.clearance
+            * self.dry.journal_radius
+            * self.length
+            * state.field.amplitude;
         match state.t_q {
             None => short,
             Some(t_q) => t_q * short,
@@ -213,10 +223,20 @@ impl JournalBearing {
     }
 
     /// Petroff's coefficient 2π μ R³ L / c \[N m s\]: the Couette shear torque of a centred
-    /// journal per unit of relative speed ω_J − ω_B.
+    /// journal per unit of relative speed ω_J − ω_B, over the lands (a groove carries no shear).
     pub fn petroff_coefficient(&self) -> f64 {
         let r = self.dry.journal_radius;
-        std::f64::consts::TAU * self.viscosity * r * r * r * self.length / self.dry.clearance
+        std::f64::consts::TAU * self.viscosity * r * r * r * self.lands * self.length
+            / self.dry.clearance
+    }
+
+    /// The feed's pressure flow in the state `k` \[m³/s\] ([`Feed::flow`]) for the supply
+    /// pressure `pressure` \[Pa\], the feed's body's axis along `axis`; 0 without a feed.
+    pub fn feed_flow(&self, k: &JointKinematics, axis: Vector2<f64>, pressure: f64) -> f64 {
+        self.feed.as_ref().map_or(0.0, |feed| {
+            let geometry = (self.dry.clearance, self.dry.journal_radius);
+            feed.flow(geometry, k.e, axis, self.viscosity_at(k), pressure)
+        })
     }
 
     /// The film's shear moments (M_J on the journal, M_B on the bearing) for its tangential

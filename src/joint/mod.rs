@@ -13,6 +13,7 @@
 pub mod asperity;
 pub mod bearing;
 pub mod contact;
+pub mod feed;
 pub mod finite_film;
 pub mod kinematics;
 pub mod oil;
@@ -25,6 +26,7 @@ pub mod thermal;
 pub use asperity::{Asperity, AsperityState};
 pub use bearing::{Film, JournalBearing};
 pub use contact::{ContactGeometry, ContactLaw, DryContact, Elastic, LineContact, hertz_stiffness};
+pub use feed::{Feed, FeedLocation, FeedModel};
 pub use kinematics::{
     ContactState, Contacts, JointForce, JointKinematics, JointRates, MIN_IMPACT_VELOCITY,
     normal_rate_error,
@@ -68,29 +70,45 @@ impl Joint {
         Ok(match p.model {
             JointModel::Ideal => Self::Ideal,
             JointModel::Dry => Self::Dry(dry),
-            JointModel::Lubricated => Self::Lubricated(JournalBearing {
-                viscosity: p.viscosity,
-                length: p.bearing_length,
-                switch_eccentricity: p.switch_eccentricity,
-                heat_balance: None,
-                asperity: (p.roughness > 0.0).then(|| {
-                    asperity::Asperity::new(
-                        p.roughness,
-                        p.asperity_density_product,
-                        p.asperity_roughness_ratio,
-                        (p.youngs_modulus, p.poisson_ratio),
-                        p.boundary_friction,
-                        p.bearing_length,
-                    )
-                }),
-                film: match p.film_model {
-                    FilmModel::Short => Film::Short,
-                    FilmModel::Finite => {
-                        Film::Finite(finite_film::FiniteFilm::new(p.length_ratio())?)
-                    }
-                },
-                dry,
+            JointModel::Lubricated => Self::Lubricated(Self::bearing(p, dry)?),
+        })
+    }
+
+    /// The lubricated joint of the parameters `p` with the dry contact `dry`: its film over the
+    /// lands its feed leaves ([`Feed::lands`]).
+    fn bearing(p: &JointParameters, dry: DryContact) -> Result<JournalBearing, ModelError> {
+        let feed = Feed::new(
+            p.feed,
+            p.feed_location,
+            p.feed_position,
+            (p.feed_diameter, p.feed_groove_length * p.bearing_length),
+            (p.bearing_length, p.journal_radius),
+        );
+        let (lands, length) = Feed::lands(feed.as_ref(), p.bearing_length);
+        Ok(JournalBearing {
+            viscosity: p.viscosity,
+            length,
+            lands,
+            feed: feed.map(Box::new),
+            switch_eccentricity: p.switch_eccentricity,
+            heat_balance: None,
+            asperity: (p.roughness > 0.0).then(|| {
+                asperity::Asperity::new(
+                    p.roughness,
+                    p.asperity_density_product,
+                    p.asperity_roughness_ratio,
+                    (p.youngs_modulus, p.poisson_ratio),
+                    p.boundary_friction,
+                    lands * length,
+                )
             }),
+            film: match p.film_model {
+                FilmModel::Short => Film::Short,
+                FilmModel::Finite => Film::Finite(finite_film::FiniteFilm::new(
+                    length / (2.0 * p.journal_radius),
+                )?),
+            },
+            dry,
         })
     }
 
@@ -114,6 +132,14 @@ impl Joint {
     pub fn heat_balance(&self) -> Option<&HeatBalance> {
         match self {
             Self::Lubricated(bearing) => bearing.heat_balance.as_ref(),
+            _ => None,
+        }
+    }
+
+    /// The oil feed, if the joint has one.
+    pub fn feed(&self) -> Option<&Feed> {
+        match self {
+            Self::Lubricated(bearing) => bearing.feed.as_deref(),
             _ => None,
         }
     }
@@ -209,9 +235,10 @@ impl Joint {
     }
 
     /// The film temperature of the steady heat balance of a journal carrying `force` at rest in
-    /// the bearing, journal and bearing turning at `omegas`, the oil supplied at `supply`: where
+    /// the bearing, journal and bearing turning at `omegas`, the oil supplied at the temperature
+    /// `supply` and the pressure `pressure`, the body the feed sits in along `feed_axis`: where
     /// the friction power at its settled eccentricity ([`Joint::eccentricity_carrying`] at that
-    /// temperature) equals the heat the oil flow and the housing take,
+    /// temperature) equals the heat the oil flow (the film's and the feed's) and the housing take,
     /// P(T) = 2 ρ c_p Q(T) (T − T_s) + k (T − T_s) ([`thermal`]). `supply` itself for a joint
     /// without heat balance; None where no temperature up to 1000 K above the supply carries the
     /// friction power away (no oil flow and no housing to take it).
@@ -222,9 +249,10 @@ impl Joint {
         &self,
         force: Vector2<f64>,
         omegas: (f64, f64),
-        supply: f64,
+        (supply, pressure): (f64, f64),
+        feed_axis: Vector2<f64>,
     ) -> Option<f64> {
-        let Some(balance) = self.heat_balance() else {
+        let (Self::Lubricated(bearing), Some(balance)) = (self, self.heat_balance()) else {
             return Some(supply);
         };
         let surplus = |t: f64| {
@@ -236,8 +264,9 @@ impl Joint {
                 viscosity: Some(balance.oil.viscosity(t)),
             };
             let rates = self.rates(&k, MIN_IMPACT_VELOCITY);
+            let flow = rates.oil_flow + bearing.feed_flow(&k, feed_axis, pressure);
             rates.friction_power
-                - balance.heat_to_oil(rates.oil_flow, t, supply)
+                - balance.heat_to_oil(flow, t, supply)
                 - balance.heat_to_housing(t, supply)
         };
         let (mut low, mut high) = (supply, supply + 1.0);
@@ -305,6 +334,7 @@ impl Joint {
             friction_power: rates.friction_power,
             hysteresis_power: dry.hysteresis_power(k, impact_velocity),
             oil_flow: rates.oil_flow,
+            feed_flow: 0.0,
             asperity_force: rates.asperity_force,
             asperity_pressure_peak: asperity.pressure_peak,
             asperity_friction_power: asperity.friction_power,
@@ -361,9 +391,14 @@ pub struct BearingState {
     /// The rate at which the dry contact's hysteresis damping dissipates energy, ≥ 0 \[W\]
     /// ([`DryContact::hysteresis_power`]).
     pub hysteresis_power: f64,
-    /// The oil flow out of both ends of the pressurised film, 0 without a film \[m³/s\]
-    /// ([`JournalBearing::side_flow`]).
+    /// The oil flow through the bearing: out of both ends of the pressurised film
+    /// ([`JournalBearing::side_flow`]) and, where the mechanism adds it, the feed's
+    /// (`feed_flow`); 0 without a film \[m³/s\].
     pub oil_flow: f64,
+    /// The flow the supply pressure drives from the feed, 0 without one \[m³/s\]
+    /// ([`JournalBearing::feed_flow`]): the mechanism sets it, with the bodies' axes and the
+    /// supply pressure.
+    pub feed_flow: f64,
     /// The normal force the rough surfaces' asperities carry, 0 for smooth surfaces \[N\]
     /// ([`asperity`]).
     pub asperity_force: f64,

@@ -3,6 +3,7 @@
 //! where its journal starts.
 
 use super::contact::{ContactGeometry, ContactLaw, Elastic, LineContact, hertz_stiffness};
+use super::feed::{FeedLocation, FeedModel};
 
 /// Model of a revolute joint.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -108,6 +109,16 @@ pub struct JointParameters {
     pub heat_transfer_coefficient: f64,
     /// Where the journal starts.
     pub initial_state: JournalStart,
+    /// The oil feed ([`super::feed`]).
+    pub feed: FeedModel,
+    /// The body the feed sits in.
+    pub feed_location: FeedLocation,
+    /// The feed's angle from its body's axis \[rad\].
+    pub feed_position: f64,
+    /// A hole's diameter or a groove's width \[m\].
+    pub feed_diameter: f64,
+    /// An axial groove's length over the bearing's length.
+    pub feed_groove_length: f64,
 }
 
 impl JointParameters {
@@ -141,6 +152,11 @@ impl JointParameters {
             heat_capacity: 20.0,
             heat_transfer_coefficient: 0.0,
             initial_state: JournalStart::Centred,
+            feed: FeedModel::None,
+            feed_location: FeedLocation::Shell,
+            feed_position: 0.0,
+            feed_diameter: 4e-3,
+            feed_groove_length: 0.8,
         }
     }
 

@@ -31,6 +31,8 @@ macro_rules! names {
             concat!($prefix, ".switchEccentricity"),
             concat!($prefix, ".initialState"),
             concat!($prefix, ".filmModel"),
+            concat!($prefix, ".feedDiameter"),
+            concat!($prefix, ".feedGrooveLength"),
         ]
     };
 }
@@ -54,6 +56,8 @@ pub enum JointField {
     SwitchEccentricity,
     InitialState,
     FilmModel,
+    FeedDiameter,
+    FeedGrooveLength,
 }
 
 impl JointRole {
@@ -71,7 +75,7 @@ impl JointRole {
 
     /// The FMU name of one of the joint's parameters, e.g. `crankPin.clearance`.
     pub fn parameter(self, field: JointField) -> &'static str {
-        const NAMES: [[&str; 15]; 3] = [names!("mainBearing"), names!("crankPin"), names!("joint")];
+        const NAMES: [[&str; 17]; 3] = [names!("mainBearing"), names!("crankPin"), names!("joint")];
         NAMES[self as usize][field as usize]
     }
 }

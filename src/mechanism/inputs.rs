@@ -7,6 +7,9 @@ use crate::joint::Contacts;
 /// The oil's supply temperature when none is given: 40 °C \[K\].
 pub const SUPPLY_TEMPERATURE: f64 = 313.15;
 
+/// The oil's supply pressure when none is given: 2 bar above ambient \[Pa\].
+pub const SUPPLY_PRESSURE: f64 = 2e5;
+
 /// Inputs that the caller may change between steps.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Inputs {
@@ -18,6 +21,8 @@ pub struct Inputs {
     pub slider_force: f64,
     /// The oil's supply temperature, to the lubricated joints' heat balances \[K\].
     pub oil_supply_temperature: f64,
+    /// The oil's supply (gauge) pressure, to the lubricated joints' feeds \[Pa\].
+    pub oil_supply_pressure: f64,
 }
 
 /// One of the [`Inputs`], in the order of the input variables.
@@ -31,23 +36,28 @@ pub enum Input {
     SliderForce,
     /// [`Inputs::oil_supply_temperature`].
     OilSupplyTemperature,
+    /// [`Inputs::oil_supply_pressure`].
+    OilSupplyPressure,
 }
 
 impl Input {
     /// Every input, in the order of the input variables.
-    pub const ALL: [Self; 4] = [
+    pub const ALL: [Self; 5] = [
         Self::DriveSpeed,
         Self::DriveTorque,
         Self::SliderForce,
         Self::OilSupplyTemperature,
+        Self::OilSupplyPressure,
     ];
 }
 
 impl Default for Inputs {
-    /// No drive speed, torque or slider force; the oil supplied at [`SUPPLY_TEMPERATURE`].
+    /// No drive speed, torque or slider force; the oil supplied at [`SUPPLY_TEMPERATURE`] and
+    /// [`SUPPLY_PRESSURE`].
     fn default() -> Self {
         Self {
             oil_supply_temperature: SUPPLY_TEMPERATURE,
+            oil_supply_pressure: SUPPLY_PRESSURE,
             ..<Self as InputValues>::ZERO
         }
     }
@@ -56,7 +66,7 @@ impl Default for Inputs {
 impl Inputs {
     /// The inputs a model starts with when none are given: the prescribed speed equal to the
     /// crank's initial speed (`drive.speed`'s start value if it is not set), no torque, no slider
-    /// force, the oil supplied at [`SUPPLY_TEMPERATURE`].
+    /// force, the oil supplied at [`SUPPLY_TEMPERATURE`] and [`SUPPLY_PRESSURE`].
     pub fn at_start(p: &crate::params::Parameters) -> Self {
         Self {
             drive_speed: p
@@ -73,6 +83,7 @@ impl Inputs {
             Input::DriveTorque => self.drive_torque,
             Input::SliderForce => self.slider_force,
             Input::OilSupplyTemperature => self.oil_supply_temperature,
+            Input::OilSupplyPressure => self.oil_supply_pressure,
         }
     }
 
@@ -83,17 +94,19 @@ impl Inputs {
             Input::DriveTorque => &mut self.drive_torque,
             Input::SliderForce => &mut self.slider_force,
             Input::OilSupplyTemperature => &mut self.oil_supply_temperature,
+            Input::OilSupplyPressure => &mut self.oil_supply_pressure,
         }
     }
 }
 
 impl InputValues for Inputs {
-    const LEN: usize = 4;
+    const LEN: usize = 5;
     const ZERO: Self = Self {
         drive_speed: 0.0,
         drive_torque: 0.0,
         slider_force: 0.0,
         oil_supply_temperature: 0.0,
+        oil_supply_pressure: 0.0,
     };
     fn value(&self, k: usize) -> f64 {
         self.get(Input::ALL[k])

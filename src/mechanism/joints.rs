@@ -20,7 +20,7 @@ use super::inputs::Conditions;
 use super::layout::{CRANK_ANGLE, PIN_A, pair};
 use super::slider_crank::SliderCrank;
 use crate::joint::{
-    BearingState, Contacts, Joint, JointForce, JointKinematics, JointRates, JointRole,
+    BearingState, Contacts, FeedLocation, Joint, JointForce, JointKinematics, JointRates, JointRole,
 };
 use crate::math;
 use crate::reduction::RodEnd;
@@ -210,11 +210,70 @@ impl SliderCrank {
     }
 
     /// What a bearing designer reads off the joint `role` in state `y` with the contact states
-    /// `contacts` ([`crate::joint::Joint::bearing_state`]).
-    pub fn bearing_state(&self, role: JointRole, y: &[f64], contacts: &Contacts) -> BearingState {
+    /// `contacts` ([`crate::joint::Joint::bearing_state`]), the oil supplied at the pressure
+    /// `supply_pressure` \[Pa\]: its oil flow the film's side flow and the feed's.
+    pub fn bearing_state(
+        &self,
+        role: JointRole,
+        y: &[f64],
+        contacts: &Contacts,
+        supply_pressure: f64,
+    ) -> BearingState {
         let kin = self.joint_kinematics(role, y);
         let impact_velocity = self.impact_velocity(role, &kin, contacts);
-        self.joint(role).bearing_state(&kin, impact_velocity)
+        let mut state = self.joint(role).bearing_state(&kin, impact_velocity);
+        state.feed_flow = self.feed_flow(role, y, &kin, supply_pressure);
+        state.oil_flow += state.feed_flow;
+        state
+    }
+
+    /// The pressure-fed flow of the joint `role`'s feed in state `y` of kinematics `kin` for the
+    /// supply pressure `pressure` \[m³/s\] ([`crate::joint::Feed::flow`]); 0 without a feed.
+    fn feed_flow(&self, role: JointRole, y: &[f64], kin: &JointKinematics, pressure: f64) -> f64 {
+        match self.joint(role) {
+            Joint::Lubricated(bearing) if bearing.feed.is_some() => {
+                bearing.feed_flow(kin, self.feed_axis(role, y), pressure)
+            }
+            _ => 0.0,
+        }
+    }
+
+    /// The unit axis of the body the joint `role`'s feed sits in, in state `y`: its journal's or
+    /// its bearing's (x̂ without a feed).
+    pub(super) fn feed_axis(&self, role: JointRole, y: &[f64]) -> Vector2<f64> {
+        match self.joint(role).feed().map(|feed| feed.location) {
+            Some(FeedLocation::Journal) => self.journal_axis(role, y),
+            Some(FeedLocation::Shell) => self.bearing_axis(role, y),
+            None => Vector2::x(),
+        }
+    }
+
+    /// The unit axis of the joint `role`'s journal body in state `y`: the crank's from its pivot
+    /// to its pin, the rod's tangent at its pin.
+    fn journal_axis(&self, role: JointRole, y: &[f64]) -> Vector2<f64> {
+        match role {
+            JointRole::MainBearing | JointRole::CrankPin => {
+                let (sin, cos) = math::sin_cos(y[CRANK_ANGLE]);
+                Vector2::new(cos, sin)
+            }
+            JointRole::RodSlider => self.rod_axis(RodEnd::SliderPin, y),
+        }
+    }
+
+    /// The unit axis of the joint `role`'s bearing body in state `y`: the ground's and the
+    /// slider's x axis, the rod's tangent at its eye.
+    fn bearing_axis(&self, role: JointRole, y: &[f64]) -> Vector2<f64> {
+        match role {
+            JointRole::MainBearing | JointRole::RodSlider => Vector2::x(),
+            JointRole::CrankPin => self.rod_axis(RodEnd::CrankPin, y),
+        }
+    }
+
+    /// The rod's unit tangent at its end `end` in state `y`.
+    fn rod_axis(&self, end: RodEnd, y: &[f64]) -> Vector2<f64> {
+        self.rod
+            .end_direction(end, &y[self.layout.rod()])
+            .normalize()
     }
 
     /// The eccentricity ratio ε = |e|/c and the film's peak pressure of each joint in state `y`,
@@ -250,7 +309,7 @@ impl SliderCrank {
 
     /// Writes the rate of each film temperature in state `y` under the conditions `c` to `dy`:
     /// the heat balance's dT/dt = (P − Φ_oil − Φ_housing)/C with the joint's friction power and
-    /// oil flow there, `heat` by [`JointRole`] ([`crate::joint::thermal`]).
+    /// oil flow there, `heat` by [`JointRole`], and its feed's flow ([`crate::joint::thermal`]).
     pub(super) fn film_temperature_rates(
         &self,
         y: &[f64],
@@ -264,26 +323,41 @@ impl SliderCrank {
             else {
                 continue;
             };
+            let feed = match self.joint(role).feed() {
+                Some(_) => {
+                    let kin = self.joint_kinematics(role, y);
+                    self.feed_flow(role, y, &kin, c.inputs.oil_supply_pressure)
+                }
+                None => 0.0,
+            };
             dy[i] = balance.rate(
                 rates.friction_power,
-                rates.oil_flow,
+                rates.oil_flow + feed,
                 y[i],
                 c.inputs.oil_supply_temperature,
             );
         }
     }
 
-    /// Each joint's friction power, oil flow and asperity force in state `y` with the contact
-    /// states `contacts`, by [`JointRole`] ([`Joint::rates`]): what the cycle results' means
-    /// integrate and their asperity peaks hold.
-    pub fn joint_rates(&self, y: &[f64], contacts: &Contacts) -> [JointRates; 3] {
+    /// Each joint's friction power, oil flow (the film's and the feed's, the oil supplied at the
+    /// pressure `supply_pressure`) and asperity force in state `y` with the contact states
+    /// `contacts`, by [`JointRole`] ([`Joint::rates`]): what the cycle results' means integrate
+    /// and their asperity peaks hold.
+    pub fn joint_rates(
+        &self,
+        y: &[f64],
+        contacts: &Contacts,
+        supply_pressure: f64,
+    ) -> [JointRates; 3] {
         JointRole::ALL.map(|role| {
             let joint = self.joint(role);
             if !joint.has_friction_or_film() {
                 return JointRates::default();
             }
             let kin = self.joint_kinematics(role, y);
-            joint.rates(&kin, self.impact_velocity(role, &kin, contacts))
+            let mut rates = joint.rates(&kin, self.impact_velocity(role, &kin, contacts));
+            rates.oil_flow += self.feed_flow(role, y, &kin, supply_pressure);
+            rates
         })
     }
 

@@ -201,7 +201,7 @@ impl RodBody {
     /// Direction whose rotation is the rod's at the end `end`: the end slope r_x of the ANCF rod,
     /// or the chord r_B − r_A of the rigid rod. It is linear in the coordinates, so applied to ṗ
     /// it gives the rate.
-    fn end_direction(&self, end: RodEnd, v: &[f64]) -> Vector2<f64> {
+    pub fn end_direction(&self, end: RodEnd, v: &[f64]) -> Vector2<f64> {
         match self {
             Self::Rigid { .. } => Vector2::new(v[2] - v[0], v[3] - v[1]),
             Self::Flexible(model) => model.end_slope(end, v),

@@ -21,6 +21,8 @@ pub struct Reaction {
     pub omega_journal: f64,
     /// The bearing's rotation speed \[rad/s\].
     pub omega_bearing: f64,
+    /// The unit axis of the body the joint's feed sits in (x̂ without a feed).
+    pub feed_axis: Vector2<f64>,
 }
 
 impl SliderCrank {
@@ -90,18 +92,25 @@ impl SliderCrank {
     /// Sets the film temperature each joint with a heat balance starts at: that of the steady heat
     /// balance ([`crate::joint::Joint::settled_temperature`]) against the start reaction in
     /// `reactions` where one is given (the settled thermal start), else the oil's supply
-    /// temperature `supply`. Fails, naming the joint, where no steady balance exists.
+    /// temperature, the oil supplied at `inputs`' temperature and pressure. Fails, naming the
+    /// joint, where no steady balance exists.
     pub fn settle_temperatures(
         &mut self,
         reactions: [Option<Reaction>; 3],
-        supply: f64,
+        inputs: &Inputs,
     ) -> Result<(), ModelError> {
+        let supply = inputs.oil_supply_temperature;
         for role in JointRole::ALL {
             let i = role as usize;
             self.start_temperatures[i] = match reactions[i] {
                 Some(r) if self.temperature[i].is_some() => self
                     .joint(role)
-                    .settled_temperature(r.force, (r.omega_journal, r.omega_bearing), supply)
+                    .settled_temperature(
+                        r.force,
+                        (r.omega_journal, r.omega_bearing),
+                        (supply, inputs.oil_supply_pressure),
+                        r.feed_axis,
+                    )
                     .ok_or_else(|| {
                         ModelError::Numerical(format!(
                             "{}: no steady heat balance at the start: no film temperature up to \
@@ -146,6 +155,7 @@ impl SliderCrank {
                 force: forces[role as usize],
                 omega_journal: kin.omega_journal,
                 omega_bearing: kin.omega_bearing,
+                feed_axis: self.feed_axis(role, &y),
             }
         }))
     }

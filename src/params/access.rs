@@ -4,8 +4,10 @@
 use super::parameters::{BENCHMARK_SPEED, DriveMode, InitialState, Parameters, RodFormulation};
 use crate::integrator::Method;
 use crate::joint::{
-    ContactGeometry, ContactLaw, FilmModel, JointModel, JournalStart, ThermalModel, ThermalStart,
+    ContactGeometry, ContactLaw, FeedLocation, FeedModel, FilmModel, JointModel, JournalStart,
+    ThermalModel, ThermalStart,
 };
+
 use crate::reduction::{Boundary, Quadrature};
 use crate::variables::Vr;
 
@@ -117,6 +119,15 @@ real_fields! {
     CrankPinHeatTransferCoefficient => crank_pin.heat_transfer_coefficient;
     MainBearingHeatCapacity => main_bearing.heat_capacity;
     MainBearingHeatTransferCoefficient => main_bearing.heat_transfer_coefficient;
+    JointFeedPosition => joint.feed_position;
+    JointFeedDiameter => joint.feed_diameter;
+    JointFeedGrooveLength => joint.feed_groove_length;
+    CrankPinFeedPosition => crank_pin.feed_position;
+    CrankPinFeedDiameter => crank_pin.feed_diameter;
+    CrankPinFeedGrooveLength => crank_pin.feed_groove_length;
+    MainBearingFeedPosition => main_bearing.feed_position;
+    MainBearingFeedDiameter => main_bearing.feed_diameter;
+    MainBearingFeedGrooveLength => main_bearing.feed_groove_length;
     }
     optional {
         // Not set, the crank starts at drive.speed; its start value reads.
@@ -207,6 +218,30 @@ integer_fields! {
         MainBearingThermalModel => main_bearing.thermal_model:
             [ThermalModel::Isoviscous, ThermalModel::HeatBalance];
         MainBearingThermalStart => main_bearing.thermal_start: [ThermalStart::Supply, ThermalStart::Settled];
+        JointFeed => joint.feed:
+            [
+                FeedModel::None,
+                FeedModel::Hole,
+                FeedModel::CircumferentialGroove,
+                FeedModel::AxialGroove,
+            ];
+        JointFeedLocation => joint.feed_location: [FeedLocation::Shell, FeedLocation::Journal];
+        CrankPinFeed => crank_pin.feed:
+            [
+                FeedModel::None,
+                FeedModel::Hole,
+                FeedModel::CircumferentialGroove,
+                FeedModel::AxialGroove,
+            ];
+        CrankPinFeedLocation => crank_pin.feed_location: [FeedLocation::Shell, FeedLocation::Journal];
+        MainBearingFeed => main_bearing.feed:
+            [
+                FeedModel::None,
+                FeedModel::Hole,
+                FeedModel::CircumferentialGroove,
+                FeedModel::AxialGroove,
+            ];
+        MainBearingFeedLocation => main_bearing.feed_location: [FeedLocation::Shell, FeedLocation::Journal];
     }
     counts {
         SliderForceTablePeriod => slider_force_table_period;

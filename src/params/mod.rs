@@ -8,8 +8,8 @@ mod parameters;
 mod validate;
 
 pub use crate::joint::{
-    ContactGeometry, ContactLaw, FilmModel, JointModel, JointParameters, JointRole, JournalStart,
-    OilParameters, ThermalModel, ThermalStart,
+    ContactGeometry, ContactLaw, FeedLocation, FeedModel, FilmModel, JointModel, JointParameters,
+    JointRole, JournalStart, OilParameters, ThermalModel, ThermalStart,
 };
 pub use access::{
     integer_parameter, real_parameter, set_integer_parameter, set_real_parameter,

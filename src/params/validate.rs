@@ -10,7 +10,7 @@ use super::parameters::{
 use crate::error::{ModelError, Num};
 use crate::integrator::Method;
 use crate::joint::finite_film::MAX_LENGTH_RATIO;
-use crate::joint::{FilmModel, JointField, JointModel, JointParameters, JointRole};
+use crate::joint::{FeedModel, FilmModel, JointField, JointModel, JointParameters, JointRole};
 use crate::reduction::{Quadrature, check_mode_count};
 use crate::variables::{Causality, Kind, VARIABLES};
 
@@ -249,6 +249,7 @@ fn check_joint(role: JointRole, joint: &JointParameters) -> Result<(), ModelErro
             ),
         ));
     }
+    check_feed(role, joint)?;
     if joint.friction_v1 <= joint.friction_v0 {
         return Err(ModelError::invalid(
             name(JointField::FrictionV1),
@@ -257,6 +258,46 @@ fn check_joint(role: JointRole, joint: &JointParameters) -> Result<(), ModelErro
                 "({}, inf) = ({}, inf)",
                 name(JointField::FrictionV0),
                 Num(joint.friction_v0)
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// A lubricated joint's feed fits its bearing: a hole or a groove at most half the bearing's length
+/// across (the lands beside a circumferential groove at least a quarter of it each), an axial
+/// groove with half its width short of the bearing's ends.
+fn check_feed(role: JointRole, joint: &JointParameters) -> Result<(), ModelError> {
+    if joint.model != JointModel::Lubricated || joint.feed == FeedModel::None {
+        return Ok(());
+    }
+    let name = |field| role.parameter(field);
+    let length = joint.bearing_length;
+    if joint.feed_diameter > 0.5 * length {
+        return Err(ModelError::invalid(
+            name(JointField::FeedDiameter),
+            joint.feed_diameter,
+            format!(
+                "(0, {}] m with {} = {} m: a feed at most half the bearing's length across",
+                Num(0.5 * length),
+                name(JointField::BearingLength),
+                Num(length),
+            ),
+        ));
+    }
+    let reach = joint.feed_groove_length + 0.5 * joint.feed_diameter / length;
+    if joint.feed == FeedModel::AxialGroove && reach >= 0.95 {
+        return Err(ModelError::invalid(
+            name(JointField::FeedGrooveLength),
+            joint.feed_groove_length,
+            format!(
+                "(0, {}) with {} = {} m and {} = {} m: an axial groove stops short of the \
+                 bearing's ends (its length plus half its width below 0.95 of the bearing's)",
+                Num(0.95 - 0.5 * joint.feed_diameter / length),
+                name(JointField::FeedDiameter),
+                Num(joint.feed_diameter),
+                name(JointField::BearingLength),
+                Num(length),
             ),
         ));
     }

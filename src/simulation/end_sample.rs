@@ -17,14 +17,14 @@ use crate::mechanism::{Conditions, InputSignal, Inputs};
 #[derive(Clone, Debug)]
 pub(super) struct EndSample {
     point: StepPoint,
-    inputs: Option<[f64; 5]>,
+    inputs: Option<[f64; 6]>,
     contacts: Contacts,
     sample: Sample,
 }
 
 /// What an evaluation at `t` reads of the inputs `signal` ([`Conditions::at`]): their values and
 /// the drive's acceleration.
-fn read_at(signal: &InputSignal, t: f64) -> [f64; 5] {
+fn read_at(signal: &InputSignal, t: f64) -> [f64; 6] {
     let contacts = Contacts::default();
     let c = Conditions::at(signal, t, &contacts);
     // (exhaustive: a new input is a compile error here)
@@ -33,12 +33,14 @@ fn read_at(signal: &InputSignal, t: f64) -> [f64; 5] {
         drive_torque,
         slider_force,
         oil_supply_temperature,
+        oil_supply_pressure,
     } = c.inputs;
     [
         drive_speed,
         drive_torque,
         slider_force,
         oil_supply_temperature,
+        oil_supply_pressure,
         c.drive_acceleration,
     ]
 }

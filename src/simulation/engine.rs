@@ -165,7 +165,7 @@ impl Engine {
         let only = |flags: [bool; 3]| -> [Option<Reaction>; 3] {
             std::array::from_fn(|i| reactions.filter(|_| flags[i]).map(|r| r[i]))
         };
-        mechanism.settle_temperatures(only(warm), start.oil_supply_temperature)?;
+        mechanism.settle_temperatures(only(warm), &start)?;
         if settled.contains(&true) {
             return mechanism
                 .settle_journals((angle, speed), start, only(settled), equilibrate)
@@ -257,7 +257,7 @@ impl Engine {
 
     /// Which inputs act: the prescribed speed with the speed drive, the torque with the torque
     /// drive, the slider force always, the oil's supply temperature where a joint has a heat
-    /// balance.
+    /// balance, its supply pressure where a joint has a feed.
     pub(super) fn acts(&self, input: Input) -> bool {
         let drive = self.parameters.drive_mode;
         match input {
@@ -267,6 +267,9 @@ impl Engine {
             Input::OilSupplyTemperature => JointRole::ALL
                 .iter()
                 .any(|&role| self.mechanism.joint(role).heat_balance().is_some()),
+            Input::OilSupplyPressure => JointRole::ALL
+                .iter()
+                .any(|&role| self.mechanism.joint(role).feed().is_some()),
         }
     }
 

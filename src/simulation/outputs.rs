@@ -180,8 +180,11 @@ pub struct BearingOutputs {
     pub hysteresis_power: f64,
     /// The energy the joint has dissipated since the start \[J\].
     pub energy_dissipated: f64,
-    /// The oil flow out of both ends of the pressurised film \[m³/s\].
+    /// The oil flow through the bearing: out of both ends of the pressurised film, and the
+    /// feed's \[m³/s\].
     pub oil_flow: f64,
+    /// The flow the supply pressure drives from the feed \[m³/s\].
+    pub feed_flow: f64,
     /// The smallest film thickness over the last complete load cycle \[m\]
     /// ([`super::CycleHold`]).
     pub film_thickness_min_cycle: f64,
@@ -288,7 +291,7 @@ pub(super) fn outputs(
                 ..BearingOutputs::default()
             };
         };
-        let now = mechanism.bearing_state(role, y, c.contacts);
+        let now = mechanism.bearing_state(role, y, c.contacts, c.inputs.oil_supply_pressure);
         let (film_temperature, heat_flow) = match (
             mechanism.film_temperature(role, y),
             mechanism.joint(role).heat_balance(),
@@ -324,6 +327,7 @@ pub(super) fn outputs(
             hysteresis_power: now.hysteresis_power,
             energy_dissipated: energies.joints[i].dissipated(),
             oil_flow: now.oil_flow,
+            feed_flow: now.feed_flow,
             film_thickness_min_cycle: film_thickness(clearance, ratio_cycle),
             film_thickness_min_cycle_angle,
             film_pressure_peak_cycle,

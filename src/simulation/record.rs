@@ -65,7 +65,7 @@ impl Engine {
             }
         }
         self.peaks.step_end = Peaks::from_sample(peaks::larger(at_end, within.largest), onsets);
-        self.peaks.cycle_step = Some(self.cycle_step(at_end, &within));
+        self.peaks.cycle_step = Some(self.cycle_step(at_end, &within, signal));
         self.peaks.pending = true;
         self.check_validity(None);
         Ok(())
@@ -74,9 +74,17 @@ impl Engine {
     /// What the step just accepted brings to the cycle results ([`super::cycle`]): its ends'
     /// times and crank angles, its samples, and each joint's friction power and oil flow at its
     /// ends.
-    fn cycle_step(&self, at_end: Sample, within: &peaks::Within) -> CycleStep {
-        let rates =
-            [&self.start.y, &self.end.y].map(|y| self.mechanism.joint_rates(y, &self.contacts));
+    fn cycle_step(
+        &self,
+        at_end: Sample,
+        within: &peaks::Within,
+        signal: &InputSignal,
+    ) -> CycleStep {
+        let rates = [&self.start, &self.end].map(|point| {
+            let pressure = signal.at(point.time).oil_supply_pressure;
+            self.mechanism
+                .joint_rates(&point.y, &self.contacts, pressure)
+        });
         let ends =
             |f: fn(&JointRates) -> f64| std::array::from_fn(|i| [f(&rates[0][i]), f(&rates[1][i])]);
         CycleStep {

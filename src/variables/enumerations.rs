@@ -28,6 +28,10 @@ pub const FILM_MODEL: usize = 10;
 pub const THERMAL_MODEL: usize = 11;
 /// Index of the `ThermalStart` type in [`ENUMERATIONS`].
 pub const THERMAL_START: usize = 12;
+/// Index of the `Feed` type in [`ENUMERATIONS`].
+pub const FEED: usize = 13;
+/// Index of the `FeedLocation` type in [`ENUMERATIONS`].
+pub const FEED_LOCATION: usize = 14;
 
 /// Enumeration types.
 pub const ENUMERATIONS: &[Enumeration] = &[
@@ -192,6 +196,37 @@ pub const ENUMERATIONS: &[Enumeration] = &[
             ),
         ],
     },
+    Enumeration {
+        name: "Feed",
+        items: &[
+            ("none", "no feed: the film's side flow alone"),
+            (
+                "hole",
+                "a lubrication hole of feedDiameter at mid-length, at feedPosition",
+            ),
+            (
+                "circumferentialGroove",
+                "a groove of width feedDiameter all around at mid-length: two lands of (bearingLength - feedDiameter)/2 carry the film",
+            ),
+            (
+                "axialGroove",
+                "a groove feedDiameter wide and feedGrooveLength of the bearing long, centred on the length, at feedPosition",
+            ),
+        ],
+    },
+    Enumeration {
+        name: "FeedLocation",
+        items: &[
+            (
+                "shell",
+                "in the bearing's shell: the feed stays with the bearing's body",
+            ),
+            (
+                "journal",
+                "in the journal (a drilling through the crankshaft): the feed turns with the journal",
+            ),
+        ],
+    },
 ];
 
 #[cfg(test)]
@@ -215,6 +250,8 @@ mod tests {
             (FILM_MODEL, "FilmModel"),
             (THERMAL_MODEL, "ThermalModel"),
             (THERMAL_START, "ThermalStart"),
+            (FEED, "Feed"),
+            (FEED_LOCATION, "FeedLocation"),
         ];
         assert_eq!(named.len(), ENUMERATIONS.len());
         for (index, name) in named {

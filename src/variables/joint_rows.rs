@@ -352,9 +352,11 @@ macro_rules! joint_rows {
                 "m3/s",
                 concat!(
                     $label,
-                    ": oil flow out of both ends of the pressurised film (side leakage, Raimondi and Boyd's Q_s) of ",
+                    ": oil flow through the bearing: the side flow out of both ends of the pressurised film (Raimondi and Boyd's Q_s) of ",
                     $prefix,
-                    ".filmModel; 0 without a film (dry and ideal joints)"
+                    ".filmModel, plus ",
+                    $prefix,
+                    ".feedFlow, the flow the supply pressure drives from a feed; 0 without a film (dry and ideal joints)"
                 ),
             ),
             Variable::peak(

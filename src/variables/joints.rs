@@ -3,9 +3,10 @@
 //! the loads each carries.
 
 use super::enumerations::{
-    CONTACT_GEOMETRY, CONTACT_LAW, FILM_MODEL, JOINT_MODEL, JOURNAL_START, THERMAL_MODEL,
-    THERMAL_START,
+    CONTACT_GEOMETRY, CONTACT_LAW, FEED, FEED_LOCATION, FILM_MODEL, JOINT_MODEL, JOURNAL_START,
+    THERMAL_MODEL, THERMAL_START,
 };
+use super::feed_rows::{FEED_ROWS, feed_rows};
 use super::joint_rows::{JOINT_ROWS, joint_rows};
 use super::surface_rows::{SURFACE_ROWS, surface_rows};
 use super::thermal_rows::{THERMAL_ROWS, thermal_rows};
@@ -279,9 +280,54 @@ const MAIN_BEARING_THERMAL: [Variable; THERMAL_ROWS] = thermal_rows!(
     ]
 );
 
-/// The three joints' rows, their rough surfaces' and heat balances', and their loads and the
-/// rod–slider joint's contact stiffness.
-pub(super) const VARIABLES: [&[Variable]; 10] = [
+/// The rod-slider joint's feed.
+const ROD_SLIDER_FEED: [Variable; FEED_ROWS] = feed_rows!(
+    "joint",
+    "Rod-slider joint",
+    "the shell's in the slider along the guide's x axis, the journal's along the rod at its pin",
+    [
+        JointFeed,
+        JointFeedLocation,
+        JointFeedPosition,
+        JointFeedDiameter,
+        JointFeedGrooveLength,
+        JointFeedFlow,
+    ]
+);
+
+/// The crank pin's feed.
+const CRANK_PIN_FEED: [Variable; FEED_ROWS] = feed_rows!(
+    "crankPin",
+    "Crank pin",
+    "the shell's in the rod's eye along the rod at its end, the journal's along the crank from its pivot to the pin",
+    [
+        CrankPinFeed,
+        CrankPinFeedLocation,
+        CrankPinFeedPosition,
+        CrankPinFeedDiameter,
+        CrankPinFeedGrooveLength,
+        CrankPinFeedFlow,
+    ]
+);
+
+/// The main bearing's feed.
+const MAIN_BEARING_FEED: [Variable; FEED_ROWS] = feed_rows!(
+    "mainBearing",
+    "Main bearing",
+    "the shell's along the ground's x axis, the journal's along the crank from its pivot to the pin",
+    [
+        MainBearingFeed,
+        MainBearingFeedLocation,
+        MainBearingFeedPosition,
+        MainBearingFeedDiameter,
+        MainBearingFeedGrooveLength,
+        MainBearingFeedFlow,
+    ]
+);
+
+/// The three joints' rows, their rough surfaces', heat balances' and feeds', and their loads and
+/// the rod–slider joint's contact stiffness.
+pub(super) const VARIABLES: [&[Variable]; 13] = [
     &ROD_SLIDER_JOINT,
     &CRANK_PIN,
     &MAIN_BEARING,
@@ -292,6 +338,9 @@ pub(super) const VARIABLES: [&[Variable]; 10] = [
     &ROD_SLIDER_THERMAL,
     &CRANK_PIN_THERMAL,
     &MAIN_BEARING_THERMAL,
+    &ROD_SLIDER_FEED,
+    &CRANK_PIN_FEED,
+    &MAIN_BEARING_FEED,
 ];
 
 /// The force each joint carries (its components and peak) and the rod–slider joint's contact

@@ -14,6 +14,7 @@ pub use fmi_core::table::{Causality, Kind, ValueReference, Variability};
 mod crank;
 mod energy;
 mod enumerations;
+mod feed_rows;
 mod gravity;
 mod joint_rows;
 mod joints;
@@ -191,7 +192,7 @@ pub const LOG_CATEGORIES: &[(&str, &str)] = &[
 pub const VARIABLES: &[Variable] = &in_value_reference_order::<N_VARIABLES>(&PARTS);
 
 /// The table's parts, by component.
-const PARTS: [&[Variable]; 17] = [
+const PARTS: [&[Variable]; 21] = [
     rod::VARIABLES,
     crank::VARIABLES,
     slider::VARIABLES,
@@ -209,6 +210,10 @@ const PARTS: [&[Variable]; 17] = [
     joints::VARIABLES[7],
     joints::VARIABLES[8],
     joints::VARIABLES[9],
+    oil::SUPPLY,
+    joints::VARIABLES[10],
+    joints::VARIABLES[11],
+    joints::VARIABLES[12],
 ];
 
 /// Number of variables.

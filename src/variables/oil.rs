@@ -1,5 +1,6 @@
 //! The oil of the lubricated joints' heat balances: its viscosity at 40 °C and 100 °C, density and
-//! specific heat, and its supply temperature, an input a lubrication-circuit model can drive.
+//! specific heat, and its supply temperature and pressure, inputs a lubrication-circuit model can
+//! drive.
 
 use super::vr::{Variable, Vr};
 
@@ -51,3 +52,14 @@ pub(super) const VARIABLES: &[Variable] = &[
         "Temperature at which the oil is fed to the bearings (the lubrication circuit's): the inlet of every heat balance and the housing's temperature (default 40 degC)",
     ),
 ];
+
+/// The oil's supply pressure, the second input of a lubrication circuit.
+pub(super) const SUPPLY: &[Variable] = &[Variable::input(
+    Vr::OilSupplyPressure,
+    "oil.supplyPressure",
+    2e5,
+    0.0,
+    1e8,
+    "Pa",
+    "Gauge pressure at which the oil is fed to the bearings (the lubrication circuit's pump or gallery): it drives each fed joint's feedFlow through the clearance (default 2 bar)",
+)];

@@ -38,10 +38,20 @@ pub(super) const FEEDTHROUGH: &[(Vr, &[Vr])] = &[
     (Vr::RodAxialForceMidspan, ALL_INPUTS),
     (Vr::RodBendingMomentMidspan, ALL_INPUTS),
     (Vr::SliderAppliedForce, &[Vr::SliderForce]),
-    (Vr::JointHeatFlow, &[Vr::OilSupplyTemperature]),
-    (Vr::CrankPinHeatFlow, &[Vr::OilSupplyTemperature]),
-    (Vr::MainBearingHeatFlow, &[Vr::OilSupplyTemperature]),
+    (Vr::JointOilFlow, &[Vr::OilSupplyPressure]),
+    (Vr::CrankPinOilFlow, &[Vr::OilSupplyPressure]),
+    (Vr::MainBearingOilFlow, &[Vr::OilSupplyPressure]),
+    (Vr::JointHeatFlow, OIL_SUPPLY),
+    (Vr::CrankPinHeatFlow, OIL_SUPPLY),
+    (Vr::MainBearingHeatFlow, OIL_SUPPLY),
+    (Vr::JointFeedFlow, &[Vr::OilSupplyPressure]),
+    (Vr::CrankPinFeedFlow, &[Vr::OilSupplyPressure]),
+    (Vr::MainBearingFeedFlow, &[Vr::OilSupplyPressure]),
 ];
+
+/// The oil supply's inputs: a fed joint's oil flow follows the pressure at once, and the heat the
+/// flow carries both the flow and the supply temperature.
+const OIL_SUPPLY: &[Vr] = &[Vr::OilSupplyTemperature, Vr::OilSupplyPressure];
 
 /// The accelerations and the forces that follow from them react to every input at once: the
 /// torque and the slider force through the equations of motion, the speed of the speed drive

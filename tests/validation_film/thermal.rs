@@ -10,7 +10,7 @@ use flexible_slider_crank::{InputSignal, Inputs, Outputs};
 
 /// The Walther equation (ASTM D341) through ν₄₀ and ν₁₀₀ \[mm²/s\], written here apart from the
 /// product's: (ν(T), T(ν)) with T in K.
-fn walther(nu40: f64, nu100: f64) -> (impl Fn(f64) -> f64, impl Fn(f64) -> f64) {
+pub(super) fn walther(nu40: f64, nu100: f64) -> (impl Fn(f64) -> f64, impl Fn(f64) -> f64) {
     let w = |nu: f64| (nu + 0.7).log10().log10();
     let b = (w(nu40) - w(nu100)) / (373.15f64.log10() - 313.15f64.log10());
     let a = w(nu40) + b * 313.15f64.log10();

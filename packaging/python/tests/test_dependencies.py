@@ -20,7 +20,7 @@ def every_model_at_2ms(fmu):
     vr = {v.name: v.valueReference for v in md.modelVariables}
     heat_balance = (JOINTS["lubricated"], 2)
     joints = [(joint, 1) for joint in JOINTS.values()] + [heat_balance]
-    # with a heat balance, every joint lubricated and heated
+    # with a heat balance, every joint lubricated, heated and fed through a hole
     every_joint = ("joint", "crankPin", "mainBearing")
     for drive in (1, 2):
         for joint, thermal in joints:
@@ -31,8 +31,8 @@ def every_model_at_2ms(fmu):
                 s.setupExperiment(startTime=0.0)
                 s.setInteger([vr["drive.mode"], vr["rod.formulation"]], [drive, formulation])
                 for name in every_joint if thermal == 2 else ("joint",):
-                    s.setInteger([vr[f"{name}.model"], vr[f"{name}.thermalModel"]],
-                                 [joint, thermal])
+                    s.setInteger([vr[f"{name}.model"], vr[f"{name}.thermalModel"],
+                                  vr[f"{name}.feed"]], [joint, thermal, HOLE if thermal == 2 else 1])
                 s.enterInitializationMode()
                 s.exitInitializationMode()
                 t = 0.0
@@ -40,6 +40,10 @@ def every_model_at_2ms(fmu):
                     s.doStep(t, 1e-4)
                     t += 1e-4
                 yield (drive, joint, formulation, thermal), s
+
+
+#: The `<joint>.feed` item of a feed hole.
+HOLE = 2
 
 
 def feedthrough_measured(fmu):
@@ -205,15 +209,15 @@ def start_configurations(n=160, seed=7):
         for joint in ("joint", "crankPin", "mainBearing"):
             slow |= {f"{joint}.model": 2, f"{joint}.friction": 0.1, f"{joint}.initialState": 2}
         configurations.append(slow)
-    # rough joints with a heat balance: every joint lubricated in a 20 µm clearance on 1 µm
-    # roughness (the asperities touch), its journal settled, its film temperature settled or at
-    # the supply, in either drive
+    # rough, fed joints with a heat balance: every joint lubricated in a 20 µm clearance on 1 µm
+    # roughness (the asperities touch), fed through a hole, its journal settled, its film
+    # temperature settled or at the supply, in either drive
     for drive, thermal_start in ((1, 2), (2, 1), (1, 1), (2, 2)):
         warm = {"drive.mode": drive, "drive.torque": 5.0, "slider.force": -100.0,
                 "gravity": 9.81, "oil.supplyTemperature": 330.0}
         for joint in ("joint", "crankPin", "mainBearing"):
             warm |= {f"{joint}.model": 3, f"{joint}.initialState": 2, f"{joint}.clearance": 2e-5,
-                     f"{joint}.roughness": 1e-6, f"{joint}.thermalModel": 2,
+                     f"{joint}.roughness": 1e-6, f"{joint}.thermalModel": 2, f"{joint}.feed": 2,
                      f"{joint}.thermalStart": thermal_start,
                      f"{joint}.heatTransferCoefficient": 10.0}
         configurations.append(warm)

@@ -10,6 +10,8 @@ fn bearing() -> JournalBearing {
     JournalBearing {
         viscosity: 0.4,
         length: 0.04,
+        lands: 1.0,
+        feed: None,
         switch_eccentricity: 0.95,
         film: Film::Short,
         asperity: None,

@@ -355,3 +355,42 @@ fn bad_values_name_the_parameter() {
     };
     ok.validate().unwrap();
 }
+
+/// A feed wider than half the bearing's length, or an axial groove that reaches the bearing's
+/// ends, is refused naming the parameter, its value and the allowed range; an unfed or dry joint
+/// is not checked.
+#[test]
+fn feeds_that_do_not_fit_are_refused() {
+    let fed = |feed, feed_diameter, feed_groove_length| Parameters {
+        crank_pin: JointParameters {
+            model: JointModel::Lubricated,
+            bearing_length: 0.016,
+            feed,
+            feed_diameter,
+            feed_groove_length,
+            ..JointParameters::benchmark()
+        },
+        ..Parameters::default()
+    };
+    fed(FeedModel::Hole, 8e-3, 0.8).validate().unwrap();
+    fed(FeedModel::AxialGroove, 3e-3, 0.8).validate().unwrap();
+    fed(FeedModel::None, 0.1, 0.8).validate().unwrap();
+    let message = fed(FeedModel::CircumferentialGroove, 9e-3, 0.8)
+        .validate()
+        .unwrap_err()
+        .to_string();
+    assert!(
+        message.contains("crankPin.feedDiameter")
+            && message.contains("0.009")
+            && message.contains("(0, 0.008]"),
+        "{message}"
+    );
+    let message = fed(FeedModel::AxialGroove, 4e-3, 0.9)
+        .validate()
+        .unwrap_err()
+        .to_string();
+    assert!(
+        message.contains("crankPin.feedGrooveLength") && message.contains("0.825"),
+        "{message}"
+    );
+}
