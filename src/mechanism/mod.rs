@@ -40,7 +40,7 @@ mod start;
 pub use crate::joint::{ContactState, Contacts};
 pub use energy::{Energies, JointEnergy};
 pub use events::{CONTACT_ONSET_PENETRATION, Driven};
-pub use inputs::{Conditions, Input, InputSignal, Inputs, SUPPLY_TEMPERATURE};
+pub use inputs::{Conditions, Input, InputSignal, Inputs, SUPPLY_PRESSURE, SUPPLY_TEMPERATURE};
 pub use layout::StateLayout;
 pub use loads::{Loads, RigidRodResultants, rigid_rod_stress};
 pub use slider_crank::{Evaluation, SliderCrank};
