@@ -234,8 +234,13 @@ impl JournalBearing {
     /// pressure `pressure` \[Pa\], the feed's body's axis along `axis`; 0 without a feed.
     pub fn feed_flow(&self, k: &JointKinematics, axis: Vector2<f64>, pressure: f64) -> f64 {
         self.feed.as_ref().map_or(0.0, |feed| {
-            let geometry = (self.dry.clearance, self.dry.journal_radius);
-            feed.flow(geometry, k.e, axis, self.viscosity_at(k), pressure)
+            feed.flow(
+                self.dry.clearance,
+                k.e,
+                axis,
+                self.viscosity_at(k),
+                pressure,
+            )
         })
     }
 

@@ -76,23 +76,34 @@ pub enum FeedLocation {
     Journal,
 }
 
+/// Where a feed lets the oil in.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Opening {
+    /// All around the journal (a circumferential groove), `width` w wide \[m\].
+    AllAround {
+        /// The groove's width w \[m\].
+        width: f64,
+    },
+    /// At one place (a hole, an axial groove).
+    At {
+        /// Its direction in its body's frame, (cos φ, sin φ) of its angle φ from the body's
+        /// axis.
+        direction: (f64, f64),
+        /// The reach's sines s₁, s₂, s₃ of the film's average (module documentation).
+        reach: [f64; 3],
+    },
+}
+
 /// A joint's oil feed (module documentation).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Feed {
-    /// The feed's kind (not [`FeedModel::None`]).
-    pub model: FeedModel,
     /// The body it sits in.
     pub location: FeedLocation,
-    /// Its direction in that body's frame, (cos φ, sin φ) of its angle φ from the body's axis.
-    pub direction: (f64, f64),
-    /// The groove's width w (circumferential groove) \[m\].
-    pub width: f64,
-    /// The bearing's length L \[m\].
-    pub length: f64,
-    /// The geometric factor S of a hole or an axial groove.
+    /// Where it lets the oil in.
+    pub opening: Opening,
+    /// The geometric factor: S of a hole or an axial groove, 2π R · 4/(L − w) of a
+    /// circumferential groove \[m/m\].
     pub shape: f64,
-    /// The reach's sines s₁, s₂, s₃ of the film's average (module documentation).
-    pub reach: [f64; 3],
 }
 
 impl Feed {
@@ -110,69 +121,66 @@ impl Feed {
         let shape = match model {
             FeedModel::None => return None,
             FeedModel::Hole => hole_shape(size / length),
-            FeedModel::CircumferentialGroove => 0.0,
+            FeedModel::CircumferentialGroove => {
+                return Some(Self {
+                    location,
+                    opening: Opening::AllAround { width: size },
+                    shape: TAU * radius * 4.0 / (length - size),
+                });
+            }
             FeedModel::AxialGroove => slot_shape((groove_length + 0.875 * size) / length),
         };
         let (sin, cos) = math::sin_cos(angle);
         let beta = 0.375 * length / radius;
         let reach = [1.0, 2.0, 3.0].map(|n: f64| math::sin(n * beta) / (n * beta));
         Some(Self {
-            model,
             location,
-            direction: (cos, sin),
-            width: size,
-            length,
+            opening: Opening::At {
+                direction: (cos, sin),
+                reach,
+            },
             shape,
-            reach,
         })
     }
 
     /// The film's lands: how many bearings side by side and each one's width, for a bearing of
     /// length `length` (two of (L − w)/2 for a circumferential groove, else one of L).
     pub fn lands(feed: Option<&Self>, length: f64) -> (f64, f64) {
-        match feed {
-            Some(f) if f.model == FeedModel::CircumferentialGroove => {
-                (2.0, 0.5 * (f.length - f.width))
-            }
+        match feed.map(|f| f.opening) {
+            Some(Opening::AllAround { width }) => (2.0, 0.5 * (length - width)),
             _ => (1.0, length),
         }
     }
 
     /// The pressure-fed flow \[m³/s\] (module documentation) of the supply pressure `pressure`
-    /// \[Pa\] through the clearance `clearance` of a journal of radius `radius` at the
-    /// eccentricity `e`, the oil of viscosity `viscosity`, the body carrying the feed with its
-    /// axis along `axis` (a unit vector in the ground frame).
+    /// \[Pa\] through the clearance `clearance` at the eccentricity `e`, the oil of viscosity
+    /// `viscosity`, the body carrying the feed with its axis along `axis` (a unit vector in the
+    /// ground frame).
     pub fn flow(
         &self,
-        (clearance, radius): (f64, f64),
+        clearance: f64,
         e: Vector2<f64>,
         axis: Vector2<f64>,
         viscosity: f64,
         pressure: f64,
     ) -> f64 {
-        let per_conductance = clearance.powi(3) * pressure / (12.0 * viscosity);
-        match self.model {
-            FeedModel::None => 0.0,
-            FeedModel::CircumferentialGroove => {
-                let eps = (e.norm() / clearance).min(1.0);
-                per_conductance * TAU * radius * (1.0 + 1.5 * eps * eps) * 4.0
-                    / (self.length - self.width)
-            }
-            FeedModel::Hole | FeedModel::AxialGroove => {
-                let (cos, sin) = self.direction;
+        let eps = (e.norm() / clearance).min(1.0);
+        let e2 = eps * eps;
+        let cube = match self.opening {
+            Opening::AllAround { .. } => 1.0 + 1.5 * e2,
+            Opening::At { direction, reach } => {
+                let (cos, sin) = direction;
                 let u = Vector2::new(axis.x * cos - axis.y * sin, axis.y * cos + axis.x * sin);
-                let eps = (e.norm() / clearance).min(1.0);
                 let g = (-e.dot(&u) / clearance).clamp(-eps, eps);
-                let (e2, [s1, s2, s3]) = (eps * eps, self.reach);
-                let cube = 1.0
-                    + 3.0 * g * s1
+                let [s1, s2, s3] = reach;
+                1.0 + 3.0 * g * s1
                     + 1.5 * e2
                     + 1.5 * (2.0 * g * g - e2) * s2
                     + 0.75 * e2 * g * s1
-                    + 0.25 * (4.0 * g * g * g - 3.0 * e2 * g) * s3;
-                per_conductance * self.shape * cube
+                    + 0.25 * (4.0 * g * g * g - 3.0 * e2 * g) * s3
             }
-        }
+        };
+        clearance.powi(3) * pressure / (12.0 * viscosity) * self.shape * cube
     }
 }
 

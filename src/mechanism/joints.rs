@@ -139,20 +139,22 @@ impl SliderCrank {
         (self.joint(role).force(&kin, impact_velocity), kin)
     }
 
-    /// [`SliderCrank::joint_force`] with, where the joint has a heat balance, its friction power
-    /// and oil flow from the same evaluation of its film (what its film temperature's rate reads).
+    /// [`SliderCrank::joint_force`] under the conditions `c` with, where the joint has a heat
+    /// balance, its friction power and oil flow (the film's, from the same evaluation of it, and
+    /// the feed's) — what its film temperature's rate reads.
     #[inline]
     pub(super) fn joint_force_with_heat(
         &self,
         role: JointRole,
         y: &[f64],
-        contacts: &Contacts,
+        c: &Conditions,
     ) -> (JointForce, JointKinematics, Option<JointRates>) {
         let kin = self.joint_kinematics(role, y);
-        let impact_velocity = self.impact_velocity(role, &kin, contacts);
+        let impact_velocity = self.impact_velocity(role, &kin, c.contacts);
         match self.joint(role) {
             Joint::Lubricated(bearing) if bearing.heat_balance.is_some() => {
-                let (force, rates) = bearing.force_and_rates(&kin, impact_velocity);
+                let (force, mut rates) = bearing.force_and_rates(&kin, impact_velocity);
+                rates.oil_flow += self.feed_flow(role, y, &kin, c.inputs.oil_supply_pressure);
                 (force, kin, Some(rates))
             }
             joint => (joint.force(&kin, impact_velocity), kin, None),
@@ -165,13 +167,13 @@ impl SliderCrank {
     pub(super) fn apply_crank_pin(
         &self,
         y: &[f64],
-        contacts: &Contacts,
+        c: &Conditions,
         rod_force: &mut [f64],
     ) -> Option<CrankLoad> {
         if !self.has_clearance(JointRole::CrankPin) {
             return None;
         }
-        let (f, kin, heat) = self.joint_force_with_heat(JointRole::CrankPin, y, contacts);
+        let (f, kin, heat) = self.joint_force_with_heat(JointRole::CrankPin, y, c);
         rod_force[0] -= f.force.x;
         rod_force[1] -= f.force.y;
         let p = &y[self.layout.rod()];
@@ -182,11 +184,11 @@ impl SliderCrank {
 
     /// The main bearing's clearance-joint load on the free crank in state `y`; `None` for the ideal
     /// main bearing (the fixed pivot).
-    pub(super) fn main_bearing_load(&self, y: &[f64], contacts: &Contacts) -> Option<CrankLoad> {
+    pub(super) fn main_bearing_load(&self, y: &[f64], c: &Conditions) -> Option<CrankLoad> {
         if !self.active.free_crank {
             return None;
         }
-        let (f, kin, heat) = self.joint_force_with_heat(JointRole::MainBearing, y, contacts);
+        let (f, kin, heat) = self.joint_force_with_heat(JointRole::MainBearing, y, c);
         Some(self.crank_load(y, -self.crank.centre, (&f, &kin, heat)))
     }
 
@@ -309,7 +311,8 @@ impl SliderCrank {
 
     /// Writes the rate of each film temperature in state `y` under the conditions `c` to `dy`:
     /// the heat balance's dT/dt = (P − Φ_oil − Φ_housing)/C with the joint's friction power and
-    /// oil flow there, `heat` by [`JointRole`], and its feed's flow ([`crate::joint::thermal`]).
+    /// oil flow (the film's and the feed's) there, `heat` by [`JointRole`]
+    /// ([`crate::joint::thermal`]).
     pub(super) fn film_temperature_rates(
         &self,
         y: &[f64],
@@ -323,16 +326,9 @@ impl SliderCrank {
             else {
                 continue;
             };
-            let feed = match self.joint(role).feed() {
-                Some(_) => {
-                    let kin = self.joint_kinematics(role, y);
-                    self.feed_flow(role, y, &kin, c.inputs.oil_supply_pressure)
-                }
-                None => 0.0,
-            };
             dy[i] = balance.rate(
                 rates.friction_power,
-                rates.oil_flow + feed,
+                rates.oil_flow,
                 y[i],
                 c.inputs.oil_supply_temperature,
             );

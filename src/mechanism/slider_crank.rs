@@ -299,16 +299,15 @@ impl SliderCrank {
         for (f, g) in self.force.iter_mut().zip(&self.rod_data.gravity) {
             *f = g - *f;
         }
-        let (joint, kin, joint_heat) =
-            self.joint_force_with_heat(JointRole::RodSlider, y, c.contacts);
+        let (joint, kin, joint_heat) = self.joint_force_with_heat(JointRole::RodSlider, y, c);
         self.force[b] += joint.force.x;
         self.force[b + 1] += joint.force.y;
         self.rod
             .add_end_moment(RodEnd::SliderPin, p, joint.moment, &mut self.force);
         let mut rod_force = std::mem::take(&mut self.force);
-        let crank_pin = self.apply_crank_pin(y, c.contacts, &mut rod_force);
+        let crank_pin = self.apply_crank_pin(y, c, &mut rod_force);
         self.force = rod_force;
-        let main_bearing = self.main_bearing_load(y, c.contacts);
+        let main_bearing = self.main_bearing_load(y, c);
         let crank_loads = [crank_pin, main_bearing];
         let slider_force = self.slider_force(&c.inputs, q[CRANK_ANGLE]);
         let torque_in = match self.drive {

@@ -3,11 +3,10 @@
 //! and a steadily loaded main bearing with a feed hole whose film temperature, smallest film and
 //! total oil flow an independent steady calculation gives.
 
-use super::thermal::walther;
+use super::thermal::{secant, steadily_loaded_main_bearing, walther};
 use super::*;
-use flexible_slider_crank::Inputs;
 use flexible_slider_crank::joint::{Feed, FeedLocation, FeedModel};
-use flexible_slider_crank::params::{OilParameters, ThermalModel, ThermalStart};
+use flexible_slider_crank::params::OilParameters;
 use std::f64::consts::{PI, TAU};
 
 /// The compressor's main bearing: R 15 mm, L 20 mm, c 25 µm.
@@ -29,7 +28,7 @@ fn product_flow(model: FeedModel, (size, groove): (f64, f64), eps: f64, angle: f
     .unwrap();
     // the thickest film along +x: e = −ε c x̂
     let e = Vector2::new(-eps * C, 0.0);
-    12.0 * feed.flow((C, R), e, Vector2::x(), 1.0, 1.0) / C.powi(3)
+    12.0 * feed.flow(C, e, Vector2::x(), 1.0, 1.0) / C.powi(3)
 }
 
 /// Whether the point (θ, z) of the unrolled bearing (z in bearing radii) lies in the feed.
@@ -109,9 +108,8 @@ fn the_feed_flow_matches_the_reynolds_solution_with_the_supply_boundary() {
     }
 }
 
-/// The compressor's main bearing steadily loaded (the crank at 90° turning at 157 rad/s, a 2 kN
-/// slider force, rigid rod, ideal crank pin and rod–slider joint) with a 4 mm feed hole in the
-/// shell on the line of the film's force (in the unloaded film) at 2 bar, `heatBalance`, settled
+/// The compressor's main bearing steadily loaded ([`steadily_loaded_main_bearing`], adiabatic)
+/// with a 4 mm feed hole in the shell on the line of the film's force (in the unloaded film) at 2 bar, `heatBalance`, settled
 /// in temperature and position. An independent steady calculation — the reference Reynolds
 /// solution of the steady film with the supply pressure on the hole, the Walther law written
 /// anew, the standards' heat balance P = 2 ρ c_p Q (T − T_s) with the total flow out of the
@@ -122,33 +120,10 @@ fn a_steadily_loaded_bearing_with_a_feed_hole_settles_at_the_independent_heat_ba
     let oil = OilParameters::default();
     let (rho, cp) = (oil.density, oil.specific_heat);
     let (_, temperature_of) = walther(1e6 * oil.viscosity40 / rho, 1e6 * oil.viscosity100 / rho);
-    let (supply_pressure, hole) = (2e5, 4e-3);
-    let main_bearing = JointParameters {
-        model: JointModel::Lubricated,
-        clearance: C,
-        journal_radius: R,
-        bearing_length: L,
-        initial_state: JournalStart::Settled,
-        film_model: FilmModel::Finite,
-        thermal_model: ThermalModel::HeatBalance,
-        thermal_start: ThermalStart::Settled,
-        switch_eccentricity: 0.99,
-        ..JointParameters::benchmark()
-    };
-    let p = Parameters {
-        main_bearing,
-        joint: JointParameters::ideal(),
-        rod_formulation: RodFormulation::Rigid,
-        crank_initial_angle: std::f64::consts::FRAC_PI_2,
-        drive_mode: DriveMode::Speed,
-        relative_tolerance: 1e-6,
-        ..Parameters::default()
-    };
-    let mut inputs = Inputs::at_start(&p);
-    inputs.drive_speed = 157.0;
-    inputs.slider_force = -2000.0;
-    inputs.oil_supply_pressure = supply_pressure;
-    let supply = inputs.oil_supply_temperature;
+    let hole = 4e-3;
+    let (p, inputs) = steadily_loaded_main_bearing(0.0);
+    let main_bearing = p.main_bearing;
+    let (supply, supply_pressure) = (inputs.oil_supply_temperature, inputs.oil_supply_pressure);
     // the film's force on the journal without a feed: the hole goes on its line
     let unfed = Simulation::with_inputs(p.clone(), inputs)
         .unwrap()
@@ -203,17 +178,7 @@ fn a_steadily_loaded_bearing_with_a_feed_hole_settles_at_the_independent_heat_ba
         let surplus = couette + pressure - 2.0 * rho * cp * flow * (t - supply);
         (surplus, t, flow, angle)
     };
-    let (mut e0, mut e1) = (0.3, 0.5);
-    let (mut s0, mut s1) = (steady(e0).0, steady(e1).0);
-    for _ in 0..30 {
-        if (e1 - e0).abs() < 1e-6 {
-            break;
-        }
-        let e2 = (e1 - s1 * (e1 - e0) / (s1 - s0)).clamp(0.05, 0.98);
-        (e0, s0) = (e1, s1);
-        e1 = e2;
-        s1 = steady(e1).0;
-    }
+    let e1 = secant(|eps| steady(eps).0, (0.3, 0.5), 1e-6);
     let (_, t, flow, angle) = steady(e1);
     let h_min = C * (1.0 - e1);
     println!(

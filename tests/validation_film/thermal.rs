@@ -36,31 +36,8 @@ fn a_steadily_loaded_bearing_settles_at_the_independent_heat_balance() {
     let (rho, cp) = (oil.density, oil.specific_heat);
     let (nu, temperature_of) = walther(1e6 * oil.viscosity40 / rho, 1e6 * oil.viscosity100 / rho);
     for conductance in [0.0, 2.0] {
-        let main_bearing = JointParameters {
-            model: JointModel::Lubricated,
-            clearance: 25e-6,
-            journal_radius: 0.015,
-            bearing_length: 0.02,
-            initial_state: JournalStart::Settled,
-            film_model: FilmModel::Finite,
-            thermal_model: ThermalModel::HeatBalance,
-            thermal_start: ThermalStart::Settled,
-            heat_transfer_coefficient: conductance,
-            switch_eccentricity: 0.99,
-            ..JointParameters::benchmark()
-        };
-        let p = Parameters {
-            main_bearing,
-            joint: JointParameters::ideal(),
-            rod_formulation: RodFormulation::Rigid,
-            crank_initial_angle: std::f64::consts::FRAC_PI_2,
-            drive_mode: DriveMode::Speed,
-            relative_tolerance: 1e-6,
-            ..Parameters::default()
-        };
-        let mut inputs = Inputs::at_start(&p);
-        inputs.drive_speed = 157.0;
-        inputs.slider_force = -2000.0;
+        let (p, inputs) = steadily_loaded_main_bearing(conductance);
+        let main_bearing = p.main_bearing;
         let supply = inputs.oil_supply_temperature;
         let mut sim = Simulation::with_inputs(p.clone(), inputs).unwrap();
         let o = sim.outputs().unwrap();
@@ -84,17 +61,7 @@ fn a_steadily_loaded_bearing_settles_at_the_independent_heat_balance() {
             let surplus = couette + pressure - (2.0 * rho * cp * flow + conductance) * (t - supply);
             (surplus, t, flow)
         };
-        let (mut e0, mut e1) = (0.5, 0.7);
-        let (mut s0, mut s1) = (steady(e0).0, steady(e1).0);
-        for _ in 0..30 {
-            if (e1 - e0).abs() < 1e-7 {
-                break;
-            }
-            let e2 = (e1 - s1 * (e1 - e0) / (s1 - s0)).clamp(0.05, 0.98);
-            (e0, s0) = (e1, s1);
-            e1 = e2;
-            s1 = steady(e1).0;
-        }
+        let e1 = secant(|eps| steady(eps).0, (0.5, 0.7), 1e-7);
         let (_, t, flow) = steady(e1);
         let h_min = c * (1.0 - e1);
         println!(
@@ -142,6 +109,57 @@ fn a_steadily_loaded_bearing_settles_at_the_independent_heat_balance() {
         println!("isoviscous at 40 degC: h_min {:.3} µm", 1e6 * cold);
         assert!(cold > 1.05 * b.film_thickness);
     }
+}
+
+/// The compressor's main bearing (R 15 mm, L 20 mm, c 25 µm, the finite film, ISO VG 46 supplied
+/// at 40 °C and 2 bar) with a heat balance of conductance `conductance` to the housing \[W/K\],
+/// settled in temperature and position, steadily loaded: the crank at 90° turning at 157 rad/s,
+/// a 2 kN slider force, rigid rod, ideal crank pin and rod–slider joint. Its parameters and
+/// inputs.
+pub(super) fn steadily_loaded_main_bearing(conductance: f64) -> (Parameters, Inputs) {
+    let main_bearing = JointParameters {
+        model: JointModel::Lubricated,
+        clearance: 25e-6,
+        journal_radius: 0.015,
+        bearing_length: 0.02,
+        initial_state: JournalStart::Settled,
+        film_model: FilmModel::Finite,
+        thermal_model: ThermalModel::HeatBalance,
+        thermal_start: ThermalStart::Settled,
+        heat_transfer_coefficient: conductance,
+        switch_eccentricity: 0.99,
+        ..JointParameters::benchmark()
+    };
+    let p = Parameters {
+        main_bearing,
+        joint: JointParameters::ideal(),
+        rod_formulation: RodFormulation::Rigid,
+        crank_initial_angle: std::f64::consts::FRAC_PI_2,
+        drive_mode: DriveMode::Speed,
+        relative_tolerance: 1e-6,
+        ..Parameters::default()
+    };
+    let mut inputs = Inputs::at_start(&p);
+    inputs.drive_speed = 157.0;
+    inputs.slider_force = -2000.0;
+    inputs.oil_supply_pressure = 2e5;
+    (p, inputs)
+}
+
+/// The root of `surplus` between the eccentricity ratios `start` by secant, to `tolerance`.
+pub(super) fn secant(surplus: impl Fn(f64) -> f64, start: (f64, f64), tolerance: f64) -> f64 {
+    let (mut e0, mut e1) = start;
+    let (mut s0, mut s1) = (surplus(e0), surplus(e1));
+    for _ in 0..30 {
+        if (e1 - e0).abs() < tolerance {
+            break;
+        }
+        let e2 = (e1 - s1 * (e1 - e0) / (s1 - s0)).clamp(0.05, 0.98);
+        (e0, s0) = (e1, s1);
+        e1 = e2;
+        s1 = surplus(e1);
+    }
+    e1
 }
 
 /// The rigid rod with a worn, lubricated rod–slider joint (50 µm clearance, 9 mm long) with a heat
