@@ -14,14 +14,26 @@ A machine file names the FMU's parameters (the start values of the run) and, opt
     "crankPin.model" = "lubricated"                 # a switch by item name or number
     "slider.forceTable" = "compression.csv"         # a file, relative to the machine file
 
+    [limits]                                        # the bearing maker's limits (optional, SI)
+    specific_load = 40e6                            # Pa, largest F/(B D) the lining carries
+    temperature = 393.15                            # K, hottest film
+    film_ratio = 3.0                                # smallest h_min/sigma
+    film_thickness = 3e-6                           # m, smallest film (else ISO 7902-3's h_lim)
+
 For every joint that is not ideal the report draws the polar load diagram (the force on the bearing
 in the ground's frame and in the frame of the body that carries the bearing: the ground for the main
 bearing, the rod's big-end eye for the crank pin, the rod for the rod-slider joint), with crank-angle
 marks every 60°, the journal's orbit in its clearance circle, and for a lubricated joint the film
-thickness, film pressure, friction power and oil flow over the crank angle of the last complete
-cycle — with its film temperature and viscosity where it has a heat balance, and the asperities' load
-where its surfaces are rough — with the FMU's cycle results (`<joint>.filmThicknessMinCycle` …) in a
-table; a dry joint's figure and table leave out the film. The page names each joint's models. It
+thickness, film pressure, friction power and oil flow (with the feed's share where it is fed) over
+the crank angle of the last complete cycle — with its film temperature and viscosity where it has a
+heat balance, and the asperities' load where its surfaces are rough — with the FMU's cycle results
+(`<joint>.filmThicknessMinCycle` …) in a table, and a table of the operating limits a designer
+checks (`LIMITS`: the largest specific load, the smallest film against ISO 7902-3's limit for the
+journal's size and sliding speed, the film ratio on rough surfaces, the hottest film), each with its
+limit and where the limit comes from; a dry joint's figure and tables leave out the film. The page
+names each joint's models (film, thermal, roughness and feed). The tables and the pictures are of
+the same cycle: the FMU's cycle results describe the cycle the crank angle last completed, which is
+the one drawn, wherever the run starts and ends. It
 writes one PNG per joint and `index.html` into the output directory (default
 `target/bearing-report/<machine name>`), and shows its progress while the FMU runs.
 """
@@ -53,8 +65,8 @@ JOINTS = [
 ]
 #: Each joint's outputs the report reads at every communication point.
 SERIES = ["forceX", "forceY", "forcePeak", "eccentricityX", "eccentricityY", "filmThicknessMin",
-          "filmPressurePeak", "frictionPower", "oilFlow", "filmTemperature", "viscosityEffective",
-          "asperityForce"]
+          "filmPressurePeak", "frictionPower", "oilFlow", "feedFlow", "filmTemperature",
+          "viscosityEffective", "asperityForce"]
 #: The cycle results, with their unit in the report, the factor from SI and whether they describe
 #: the film (left out for a dry joint).
 CYCLE_RESULTS = [
@@ -72,7 +84,37 @@ CYCLE_RESULTS = [
 ]
 #: Each joint's model switches the page names, and their items.
 MODELS = [("model", ["ideal", "dry", "lubricated"]), ("filmModel", ["short", "finite"]),
-          ("thermalModel", ["isoviscous", "heat balance"])]
+          ("thermalModel", ["isoviscous", "heat balance"]),
+          ("feed", ["unfed", "feed hole", "circumferential feed groove", "axial feed groove"]),
+          ("feedLocation", ["shell", "journal"])]
+#: Each joint's parameters the report reads beside its model switches.
+GEOMETRY = ["clearance", "roughness", "journalRadius", "bearingLength", "feedPosition",
+            "feedDiameter"]
+
+#: The smallest permissible film thickness h_lim [µm] of ISO 7902-3 (and DIN 31652-3) by the
+#: shaft's diameter, rows up to 63, 160, 400, 1000 and 2500 mm (the first row also below 24 mm,
+#: which the standard leaves out), and the journal's sliding speed, columns up to 1, 3, 10, 30 m/s
+#: and above: guide values for finely finished, well-aligned steel journals.
+FILM_LIMIT_DIAMETERS = [63e-3, 160e-3, 400e-3, 1000e-3]
+FILM_LIMIT_SPEEDS = [1.0, 3.0, 10.0, 30.0]
+FILM_LIMITS = [[3, 4, 5, 7, 10], [4, 5, 7, 9, 12], [6, 7, 9, 11, 14], [8, 9, 11, 13, 16],
+               [10, 12, 14, 16, 18]]
+#: The operating limits the report checks: their default value (SI) and where it comes from. A
+#: machine file's [limits] table replaces a default with the bearing maker's figure (the film
+#: thickness's default is ISO 7902-3's table, above).
+LIMITS = {
+    "specific_load": (25e6, "ISO 7902-3 / DIN 31652-3: the largest guide value of the mean "
+                            "specific load for tin- and lead-bronze and aluminium-tin linings "
+                            "(white metal: 15 MPa); dynamically loaded bearings are rated by "
+                            "their lining's fatigue strength, the bearing maker's figure"),
+    "film_thickness": (None, "ISO 7902-3 / DIN 31652-3: h_lim by the journal's diameter and its "
+                             "mean sliding speed over the cycle"),
+    "film_ratio": (3.0, "h_min/σ ≥ 3: a full film over Gaussian surfaces, below it mixed "
+                        "lubrication (Hamrock, Schmid & Jacobson, Fundamentals of Fluid Film "
+                        "Lubrication, 2004)"),
+    "temperature": (383.15, "ISO 7902-3 / DIN 31652-3: the guide value of the largest bearing "
+                            "temperature of a pressure-fed bearing (100–115 °C)"),
+}
 
 
 @dataclass
@@ -83,6 +125,9 @@ class Machine:
     parameters: dict
     cycles: int
     points_per_cycle: int
+    #: The operating limits the report checks: `LIMITS`' keys, each (value, source); a value None
+    #: is ISO 7902-3's film limit.
+    limits: dict
 
 
 def load(path, fmu=None, cycles=None) -> Machine:
@@ -104,12 +149,19 @@ def load(path, fmu=None, cycles=None) -> Machine:
                 raise StudyError(f"{path}: {name} names {value}, which is not a file next to it")
             value = str(file.resolve())
         parameters[name] = value
+    limits = dict(LIMITS)
+    for name, value in spec.get("limits", {}).items():
+        if name not in LIMITS:
+            raise StudyError(f"{path}: [limits] {name} is not one of {', '.join(LIMITS)}")
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or not value > 0:
+            raise StudyError(f"{path}: [limits] {name} = {value!r} is not a positive number")
+        limits[name] = (float(value), f"the machine file ({path.name})")
     cycles = int(cycles or spec.get("cycles", 3))
     points = int(spec.get("points_per_cycle", 720))
     if cycles < 2 or points < 36:
         raise StudyError(f"{path}: cycles = {cycles} (at least 2: the first settles) and "
                          f"points_per_cycle = {points} (at least 36)")
-    return Machine(path.stem, fmu, parameters, cycles, points)
+    return Machine(path.stem, fmu, parameters, cycles, points, limits)
 
 
 def run(machine: Machine, progress=True) -> dict:
@@ -157,7 +209,7 @@ def _run(machine: Machine, session: Session, progress: bool) -> dict:
     bar.close()
     data = {n: np.array(c) for n, c in zip(names, zip(*rows))}
     for prefix, *_ in JOINTS:
-        for name in ["clearance", "roughness"] + [switch for switch, _ in MODELS]:
+        for name in GEOMETRY + [switch for switch, _ in MODELS]:
             data[f"{prefix}.{name}"] = value(f"{prefix}.{name}")
         for name, *_ in CYCLE_RESULTS:
             data[f"{prefix}.{name}"] = value(f"{prefix}.{name}")
@@ -239,7 +291,12 @@ def plot_joint(data: dict, rows: np.ndarray, prefix: str, title: str, sign: floa
         ax[1, 2].plot(deg, data[f"{prefix}.frictionPower"][rows], lw=0.9, color="C5")
         ax[1, 2].set(xlabel=angle, ylabel="friction power [W]", title="Friction power and oil flow")
         flow = ax[1, 2].twinx()
-        flow.plot(deg, 1e6 * data[f"{prefix}.oilFlow"][rows], lw=0.9, color="C0")
+        flow.plot(deg, 1e6 * data[f"{prefix}.oilFlow"][rows], lw=0.9, color="C0",
+                  label="oil flow")
+        if data[f"{prefix}.feed"] != 1:
+            flow.plot(deg, 1e6 * data[f"{prefix}.feedFlow"][rows], lw=0.9, ls="--", color="C0",
+                      label="the feed's share")
+            flow.legend(loc="upper right", fontsize=8)
         flow.set_ylabel("oil flow [cm³/s]", color="C0")
     if extra:
         row = ax[2]
@@ -275,7 +332,69 @@ def models(data: dict, prefix: str) -> str:
         names.append(dict(MODELS)["thermalModel"][int(data[f"{prefix}.thermalModel"]) - 1])
         roughness = data[f"{prefix}.roughness"]
         names.append(f"roughness {roughness * 1e6:.3g} µm" if roughness > 0 else "smooth")
+        feed = int(data[f"{prefix}.feed"])
+        name = dict(MODELS)["feed"][feed - 1]
+        size = data[f"{prefix}.feedDiameter"] * 1e3
+        if feed == 2:
+            name += f" {size:.3g} mm"
+        elif feed > 2:
+            name += f" {size:.3g} mm wide"
+        if feed in (2, 4):
+            body = dict(MODELS)["feedLocation"][int(data[f"{prefix}.feedLocation"]) - 1]
+            name += f" in the {body} at {math.degrees(data[f'{prefix}.feedPosition']):.4g}°"
+        names.append(name)
     return ", ".join(names)
+
+
+def sliding_speed(data: dict, rows: np.ndarray, prefix: str) -> float:
+    """The journal's mean sliding speed over the cycle's `rows`, R |ω_J − ω_B| [m/s]: the crank's
+    rate in the main bearing, the crank's relative to the rod's in the crank pin, the rod's in the
+    rod–slider joint (rigid geometry)."""
+    t = data["time"]
+    crank = np.gradient(data["crank.angle"], t)
+    rod = np.gradient(np.unwrap(rod_angle(data)), t)
+    relative = {"mainBearing": crank, "crankPin": crank - rod, "joint": rod}[prefix]
+    return data[f"{prefix}.journalRadius"] * float(np.mean(np.abs(relative[rows])))
+
+
+def film_limit(diameter: float, speed: float) -> float:
+    """ISO 7902-3's smallest permissible film thickness [m] for a journal of `diameter` [m] at the
+    sliding speed `speed` [m/s] (`FILM_LIMITS`)."""
+    row = int(np.searchsorted(FILM_LIMIT_DIAMETERS, diameter))
+    column = int(np.searchsorted(FILM_LIMIT_SPEEDS, speed))
+    return FILM_LIMITS[min(row, len(FILM_LIMITS) - 1)][column] / 1e6
+
+
+def operating_limits(machine: Machine, data: dict, rows: np.ndarray, prefix: str) -> list:
+    """The joint's operating limits over the cycle's `rows`: (check, value, limit, within, source)
+    for the largest specific load, and for a lubricated joint the smallest film, the film ratio
+    (rough surfaces) and the hottest film (heat balance)."""
+    radius, length = data[f"{prefix}.journalRadius"], data[f"{prefix}.bearingLength"]
+    (load_limit, load_source) = machine.limits["specific_load"]
+    load = data[f"{prefix}.forcePeakCycle"] / (2.0 * radius * length)
+    checks = [("largest specific load F/(B D)", f"{load * 1e-6:.3g} MPa",
+               f"{load_limit * 1e-6:.3g} MPa", load <= load_limit, load_source)]
+    if data[f"{prefix}.model"] != 3:
+        return checks
+    film = data[f"{prefix}.filmThicknessMinCycle"]
+    (film_min, source) = machine.limits["film_thickness"]
+    if film_min is None:
+        speed = sliding_speed(data, rows, prefix)
+        film_min = film_limit(2.0 * radius, speed)
+        source += f" ({2e3 * radius:.3g} mm, {speed:.3g} m/s)"
+    checks.append(("smallest film h_min", f"{film * 1e6:.3g} µm", f"{film_min * 1e6:.3g} µm",
+                   film >= film_min, source))
+    roughness = data[f"{prefix}.roughness"]
+    if roughness > 0:
+        (ratio_min, source) = machine.limits["film_ratio"]
+        checks.append(("smallest film ratio h_min/σ", f"{film / roughness:.3g}",
+                       f"{ratio_min:.3g}", film >= ratio_min * roughness, source))
+    if data[f"{prefix}.thermalModel"] == 2:
+        hottest = data[f"{prefix}.filmTemperatureMaxCycle"]
+        (hottest_max, source) = machine.limits["temperature"]
+        checks.append(("hottest film", f"{hottest - 273.15:.4g} °C",
+                       f"{hottest_max - 273.15:.4g} °C", hottest <= hottest_max, source))
+    return checks
 
 
 def write(machine: Machine, data: dict, out: Path) -> Path:
@@ -298,8 +417,16 @@ def write(machine: Machine, data: dict, out: Path) -> Path:
             f"<td>{(data[f'{prefix}.{name}'] - (273.15 if unit == '°C' else 0.0)) * factor:.4g} "
             f"{unit}</td></tr>"
             for name, label, unit, factor, _ in shown)
+        checks = "".join(
+            f"<tr><td>{html.escape(check)}</td><td>{html.escape(value)}</td>"
+            f"<td>{html.escape(limit)}</td><td>{'within' if within else '<b>beyond</b>'}</td>"
+            f"<td>{html.escape(source)}</td></tr>"
+            for check, value, limit, within, source in operating_limits(machine, data, rows,
+                                                                          prefix))
         sections.append(f"<h2>{html.escape(title)}</h2>\n"
                         f"<p>{html.escape(models(data, prefix))}</p>\n<table>{cells}</table>\n"
+                        "<h3>Operating limits</h3>\n<table><tr><th>check</th><th>this cycle</th>"
+                        f"<th>limit</th><th></th><th>the limit's source</th></tr>{checks}</table>\n"
                         f'<p><img src="{prefix}.png" alt="{html.escape(title)}" width="100%"></p>')
     if not sections:
         sections.append("<p>Every joint is ideal: no bearing to report.</p>")
