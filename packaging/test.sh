@@ -8,26 +8,29 @@
 # fresh Debian machine with Rust.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# Each step's marker carries the seconds since the command started, so that a run's log shows
+# where its time went.
+step() { echo "== [${SECONDS} s] $*"; }
 
 bash packaging/bootstrap.sh
-echo "== cargo fmt --check"
+step "cargo fmt --check"
 cargo fmt --all -- --check
-echo "== cargo clippy --all-targets -D warnings"
+step "cargo clippy --all-targets -D warnings"
 cargo clippy --workspace --all-targets -- -D warnings
-echo "== cargo doc (warnings are errors)"
+step "cargo doc (warnings are errors)"
 RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps --quiet
-echo "== package the FMU (release build)"
+step "package the FMU (release build)"
 cargo run --release --quiet -p packaging
 cargo build --release --quiet --example simulate
-echo "== the user guide's Rust code (doc test, on the packaged FMU)"
+step "the user guide's Rust code (doc test, on the packaged FMU)"
 cargo test --doc --quiet -p flexible-slider-crank
-echo "== benches and examples compile"
+step "benches and examples compile"
 cargo test --benches --examples --no-run --quiet
-echo "== cargo test (unit, validation and FMI tests)"
+step "cargo test (unit, validation and FMI tests)"
 cargo test --workspace --lib --tests
-echo "== fuzzing: state deserialization, fmi2* and fmi3* call sequences, 60 s each"
+step "fuzzing: state deserialization, fmi2* and fmi3* call sequences, 60 s each"
 bash packaging/fuzz.sh 60
-echo "== platform test tools: wine (win64 DLL), debootstrap (an older Debian for linux64), qemu-user and"
+step "platform test tools: wine (win64 DLL), debootstrap (an older Debian for linux64), qemu-user and"
 echo "   Debian's ARM64 C library (aarch64-linux)"
 need=()
 for p in wine wine64 debootstrap qemu-user libc6-arm64-cross libgcc-s1-arm64-cross; do dpkg -s "$p" >/dev/null 2>&1 || need+=("$p"); done
@@ -47,13 +50,13 @@ if [ "$(id -u)" -eq 0 ] && [ ! -x "$old_debian/usr/bin/ldd" ]; then
     >target/platform-tests/debootstrap.log 2>&1 &
   root_pid=$!
 fi
-echo "== release FMU: linux64 (glibc 2.28), win64, darwin64; FMI 3 adds aarch64-linux"
+step "release FMU: linux64 (glibc 2.28), win64, darwin64; FMI 3 adds aarch64-linux"
 bash packaging/release.sh
 if [ -n "$root_pid" ] && ! wait "$root_pid"; then
   cat target/platform-tests/debootstrap.log >&2
   exit 1
 fi
-echo "== pytest (packaged FMU through fmpy and libcosimpy; release binaries on every platform)"
+step "pytest (packaged FMU through fmpy and libcosimpy; release binaries on every platform)"
 set +e
 .venv/bin/python -m pytest -q packaging/python/tests
 status=$?
@@ -62,4 +65,5 @@ if [ "$status" -eq 5 ]; then
   echo "pytest collected no tests" >&2
   exit 1
 fi
+step "done (pytest exit status $status)"
 exit "$status"
