@@ -52,6 +52,16 @@ pub fn motor() -> &'static Fmi2Binding {
     })
 }
 
+/// The lubrication circuit's loaded library (one per test process).
+pub fn circuit() -> &'static Fmi2Binding {
+    static CIRCUIT: OnceLock<Fmi2Binding> = OnceLock::new();
+    CIRCUIT.get_or_init(|| {
+        init_logging();
+        // SAFETY: loading our own FMU library; its initialisers do nothing.
+        unsafe { Fmi2Binding::new(library_of("lube-circuit", "lube_circuit")) }.unwrap()
+    })
+}
+
 /// Messages received per instance name.
 static MESSAGES: OnceLock<Mutex<HashMap<String, Vec<String>>>> = OnceLock::new();
 
@@ -186,11 +196,21 @@ impl Instance {
 
     /// A co-simulation instance of the DC motor.
     pub fn motor(name: &str) -> Self {
+        Self::companion(motor(), dc_motor::GUID, name)
+    }
+
+    /// A co-simulation instance of the lubrication circuit.
+    pub fn circuit(name: &str) -> Self {
+        Self::companion(circuit(), lube_circuit::GUID, name)
+    }
+
+    /// A co-simulation instance `name` of the library `lib` whose GUID is `guid`.
+    fn companion(lib: &'static Fmi2Binding, guid: &str, name: &str) -> Self {
         let name_c = CString::new(name).unwrap();
-        let guid = CString::new(dc_motor::GUID).unwrap();
+        let guid = CString::new(guid).unwrap();
         // SAFETY: NUL-terminated strings and a callbacks struct that outlive the call.
         let c = unsafe {
-            motor().fmi2Instantiate(
+            lib.fmi2Instantiate(
                 name_c.as_ptr(),
                 fmi2Type_fmi2CoSimulation,
                 guid.as_ptr(),
@@ -204,7 +224,7 @@ impl Instance {
         Self {
             c,
             name: name.to_string(),
-            lib: motor(),
+            lib,
         }
     }
 

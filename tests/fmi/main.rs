@@ -2,11 +2,12 @@
 //! (libloading): exported symbols, instantiation checks, the state machine, argument checks, range
 //! errors naming the variable, logging of `%` and `#`, reset, FMU state (bit-exact, corrupted bytes
 //! rejected), interleaved instances and threads, and FMU = library (docs/fmi.md §3); the DC motor's
-//! FMU through the same calls.
+//! and the lubrication circuit's FMUs through the same calls.
 
 // Test code: a failed unwrap is a failed test, with its message; calling a C API needs unsafe.
 #![allow(clippy::unwrap_used, clippy::expect_used, unsafe_code)]
 
+mod circuit;
 mod conformance;
 mod fmi3;
 mod harness;
