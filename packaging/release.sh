@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The release build: target/fmu/release/FlexibleSliderCrank.fmu and DcMotor.fmu, and the motor-crank
-# system made of them (MotorCrank.ssp, motor-crank/OspSystemStructure.xml), with stripped binaries for
+# The release build: target/fmu/release/FlexibleSliderCrank.fmu, DcMotor.fmu and LubricationCircuit.fmu,
+# and the systems made of them (MotorCrank.ssp, motor-crank/OspSystemStructure.xml, LubeCrank.ssp,
+# lube-crank/OspSystemStructure.xml), with stripped binaries for
 #   binaries/linux64   x86_64 Linux, glibc 2.28 or later (RHEL/Rocky 8, Ubuntu 18.10, Debian 10 on)
 #   binaries/win64     x86_64 Windows 10 or later
 #   binaries/darwin64  macOS 11 or later, universal (x86_64 and arm64), ad-hoc signed
@@ -89,7 +90,7 @@ mkdir -p "$bin/linux64" "$bin/win64" "$bin/darwin64" "$bin/x86_64-darwin" "$bin/
 export CARGO_HOME=$cargo_home
 remap="--remap-path-prefix=$root=/build --remap-path-prefix=$cargo_home=/cargo"
 remap="$remap --remap-path-prefix=$toolchain/usr/lib/rustlib/src/rust=/rustc/$rust_web"
-lib=(--offline --locked --quiet --release --lib -p flexible-slider-crank -p dc-motor)
+lib=(--offline --locked --quiet --release --lib -p flexible-slider-crank -p dc-motor -p lube-circuit)
 
 linux64() {
   env CARGO_PROFILE_RELEASE_STRIP=symbols RUSTFLAGS="$remap" \
@@ -97,6 +98,7 @@ linux64() {
     cargo zigbuild "${lib[@]}" --target x86_64-unknown-linux-gnu.2.28 --target-dir "$out/linux"
   cp "$out/linux/x86_64-unknown-linux-gnu/release/libflexible_slider_crank.so" "$bin/linux64/FlexibleSliderCrank.so"
   cp "$out/linux/x86_64-unknown-linux-gnu/release/libdc_motor.so" "$bin/linux64/DcMotor.so"
+  cp "$out/linux/x86_64-unknown-linux-gnu/release/liblube_circuit.so" "$bin/linux64/LubricationCircuit.so"
 }
 
 # The standard library is built without backtrace symbolization (a panic inside the FMU is caught
@@ -110,6 +112,7 @@ win64() {
     cargo build "${build_std[@]}" "${lib[@]}" --target x86_64-pc-windows-gnu --target-dir "$out/win"
   cp "$out/win/x86_64-pc-windows-gnu/release/flexible_slider_crank.dll" "$bin/win64/FlexibleSliderCrank.dll"
   cp "$out/win/x86_64-pc-windows-gnu/release/dc_motor.dll" "$bin/win64/DcMotor.dll"
+  cp "$out/win/x86_64-pc-windows-gnu/release/lube_circuit.dll" "$bin/win64/LubricationCircuit.dll"
 }
 
 # zig's Mach-O linker exports every symbol of default visibility (it ignores rustc's export list,
@@ -122,7 +125,7 @@ darwin64() {
     "BINDGEN_EXTRA_CLANG_ARGS_x86_64-apple-darwin=$macos" "BINDGEN_EXTRA_CLANG_ARGS_aarch64-apple-darwin=$macos" \
     cargo zigbuild "${build_std[@]}" "${lib[@]}" --target-dir "$out/darwin" \
     --target x86_64-apple-darwin --target aarch64-apple-darwin
-  for lib in flexible_slider_crank:FlexibleSliderCrank dc_motor:DcMotor; do
+  for lib in flexible_slider_crank:FlexibleSliderCrank dc_motor:DcMotor lube_circuit:LubricationCircuit; do
     llvm-lipo-14 -create "$out/darwin/x86_64-apple-darwin/release/lib${lib%%:*}.dylib" \
       "$out/darwin/aarch64-apple-darwin/release/lib${lib%%:*}.dylib" \
       -output "$bin/darwin64/${lib##*:}.dylib"
@@ -146,6 +149,7 @@ aarch64_linux() {
   cp "$out/aarch64-linux/aarch64-unknown-linux-gnu/release/libflexible_slider_crank.so" \
     "$bin/aarch64-linux/FlexibleSliderCrank.so"
   cp "$out/aarch64-linux/aarch64-unknown-linux-gnu/release/libdc_motor.so" "$bin/aarch64-linux/DcMotor.so"
+  cp "$out/aarch64-linux/aarch64-unknown-linux-gnu/release/liblube_circuit.so" "$bin/aarch64-linux/LubricationCircuit.so"
 }
 
 jobs=(linux64 win64 darwin64 aarch64_linux)

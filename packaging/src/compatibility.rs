@@ -13,6 +13,7 @@ use dc_motor::fmu::DcMotorFmu;
 use flexible_slider_crank::fmi::instance::SliderCrankFmu;
 use fmi_export::reference::{Experiment, Results, Slave, run};
 use fmi_export::{FmuError, Model};
+use lube_circuit::fmu::LubricationCircuitFmu;
 
 /// The exporting tool and its version in the cross-check layout.
 pub const TOOL: (&str, &str) = ("flexible-slider-crank", env!("CARGO_PKG_VERSION"));
@@ -68,6 +69,28 @@ pub fn motor() -> Result<References, Box<dyn Error>> {
             step,
             tolerance,
             inputs: vec![("shaft.speed", 500.0), ("speed.setPoint", set_point)],
+        },
+    )
+}
+
+/// The lubrication circuit's DefaultExperiment (one second) with the compressor's bearings'
+/// flows held: 0.6 and 0.4 cm³/s of oil through the main bearing and the crank pin, carrying
+/// back 10 W and 6 W.
+pub fn circuit() -> Result<References, Box<dyn Error>> {
+    let (start, stop, tolerance, step) = lube_circuit::variables::DESCRIPTION.default_experiment;
+    references::<LubricationCircuitFmu>(
+        lube_circuit::MODEL_IDENTIFIER,
+        &Experiment {
+            start,
+            stop,
+            step,
+            tolerance,
+            inputs: vec![
+                ("mainBearing.oilFlow", 0.6e-6),
+                ("crankPin.oilFlow", 0.4e-6),
+                ("mainBearing.heatFlow", 10.0),
+                ("crankPin.heatFlow", 6.0),
+            ],
         },
     )
 }

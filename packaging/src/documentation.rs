@@ -404,3 +404,50 @@ extra/org.fmi-standard.fmi-ls-ref/. {identity}.</p>
         rows(Causality::Output)
     )
 }
+
+/// The lubrication circuit's documentation/index.html for `edition`.
+pub fn circuit(edition: Edition) -> String {
+    use lube_circuit::variables::DESCRIPTION as CIRCUIT;
+    let rows = |causality| variable_rows(&CIRCUIT, &[], causality);
+    let heading = edition.heading();
+    let identity = edition.identity(
+        lube_circuit::GUID,
+        lube_circuit::FMI3_TOKEN,
+        lube_circuit::FMI3_SCALAR_TOKEN,
+    );
+    format!(
+        r#"<!DOCTYPE html>
+<html lang="en"><head><meta charset="utf-8"><title>LubricationCircuit</title>
+<style>{STYLE}</style></head>
+<body>
+<h1>LubricationCircuit — {heading}</h1>
+<p>{}</p>
+<pre>
+C_g dp/dt = Q_p - Q_r(p) - Q_b            gallery, C_g = gallery.volume/oil.bulkModulus, p >= 0
+Q_r(p)    = k_r max(0, p - p_c)           relief valve (relief.conductance, relief.pressure)
+rho c_p V_s dT_s/dt = P_b - Phi_c         sump (sump.volume)
+Phi_c     = rho c_p Q_p eps (T_s - T_c)   cooler.heatFlow (cooler.effectiveness, cooler.coolantTemperature)
+T_supply  = T_s - eps (T_s - T_c)         oil.supplyTemperature; p is oil.supplyPressure
+</pre>
+<p>Q_b is the sum of the bearings' oil flows (the slider-crank's mainBearing.oilFlow, crankPin.oilFlow,
+joint.oilFlow), P_b the sum of the heat their oil carries back to the sump (their heatFlow outputs); the
+relief valve returns the pump's surplus at the supply temperature. Starts with the gallery at its steady
+pressure for the bearings' flows and the sump at sump.initialTemperature. Classical Runge-Kutta in equal
+steps of at most an eighth of the gallery's time constant C_g/k_r per communication step; inputs can be
+interpolated (first and second derivatives, for one communication step). No output depends directly on an
+input (its directional derivatives are zero), so the loop with the slider-crank (whose oil flows depend on
+the supply pressure) has no algebraic loop. A gallery the bearings draw more from
+than the pump delivers stays at zero pressure, and the FMU warns (solver.warnings). Reference results of
+the DefaultExperiment (the compressor's bearings' flows) are in extra/org.fmi-standard.fmi-ls-ref/.
+{identity}.</p>
+<h2>Parameters</h2>{}
+<h2>Inputs</h2>{}
+<h2>Outputs</h2>{}
+</body></html>
+"#,
+        CIRCUIT.description,
+        rows(Causality::Parameter),
+        rows(Causality::Input),
+        rows(Causality::Output)
+    )
+}

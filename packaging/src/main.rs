@@ -2,14 +2,18 @@
 //! FMU (FMI 2.0.4 §2.3), and the systems built from the workspace's FMUs.
 //!
 //! - `cargo run --release -p packaging`: builds the libraries for this machine and writes
-//!   `target/fmu/FlexibleSliderCrank.fmu` and `target/fmu/DcMotor.fmu` with their one binary
-//!   (`binaries/linux64` on Linux), the motor-crank system as an SSP, `target/fmu/MotorCrank.ssp`
+//!   `target/fmu/FlexibleSliderCrank.fmu`, `target/fmu/DcMotor.fmu` and
+//!   `target/fmu/LubricationCircuit.fmu` with their one binary (`binaries/linux64` on Linux), the
+//!   motor-crank system as an SSP, `target/fmu/MotorCrank.ssp`
 //!   (`systems/motor-crank/SystemStructure.ssd` with both FMUs as resources), and as an OSP system
-//!   structure, `target/fmu/motor-crank/` (`OspSystemStructure.xml` beside both FMUs). Each FMU
+//!   structure, `target/fmu/motor-crank/` (`OspSystemStructure.xml` beside both FMUs), and the
+//!   lubrication-circuit system alike (`systems/lube-crank/`: `target/fmu/LubeCrank.ssp`,
+//!   `target/fmu/lube-crank/`). Each FMU
 //!   carries the reference results of its DefaultExperiment (FMI-LS-REF), which are also written
 //!   in the FMI cross-check layout under `target/fmu/compatibility/` ([`compatibility`]).
 //! - `cargo run --release -p packaging -- --binaries DIR`: takes the libraries the release build
-//!   (`packaging/release.sh`) made, `DIR/<platform>/<FlexibleSliderCrank|DcMotor>.<so|dll|dylib>`
+//!   (`packaging/release.sh`) made,
+//!   `DIR/<platform>/<FlexibleSliderCrank|DcMotor|LubricationCircuit>.<so|dll|dylib>`
 //!   for every platform folder present (FMI 2's linux64, win64, darwin64; FMI 3's own aarch64-linux,
 //!   x86_64-darwin, aarch64-darwin), and writes the same files under `target/fmu/release/`.
 //!
@@ -22,20 +26,21 @@
 //!
 //! The archive is reproducible: its entries come in a fixed order with a fixed time stamp.
 
+mod archive;
 mod compatibility;
 mod documentation;
 
 use std::error::Error;
-use std::io::{BufRead, BufReader, Write};
+use std::io::{BufRead, BufReader};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
+use archive::{with_terminals, write_fmu, write_ssp};
 use documentation::Edition;
 use flexible_slider_crank::fmi::{
     MODEL_DESCRIPTION, MODEL_DESCRIPTION_FMI3, MODEL_DESCRIPTION_FMI3_SCALAR, MODEL_IDENTIFIER,
     TERMINALS_AND_ICONS_FMI3,
 };
-use zip::write::SimpleFileOptions;
 
 /// Builds the cdylib of `package` in release mode and returns the path of the `.so` cargo reports.
 fn build_library(root: &Path, package: &str) -> Result<PathBuf, Box<dyn Error>> {
@@ -140,175 +145,136 @@ fn release_binaries(
     Ok(found)
 }
 
-/// The packaging time, for modelDescription's generationDateAndTime: `SOURCE_DATE_EPOCH` if set,
-/// else the commit time of the checked-out revision, else now — so that packaging the same
-/// commit twice gives the same bytes.
-fn generation_time(root: &Path) -> String {
-    let from_env = std::env::var("SOURCE_DATE_EPOCH").ok();
-    let from_git = || {
-        let out = std::process::Command::new("git")
-            .current_dir(root)
-            .args(["log", "-1", "--format=%ct"])
-            .output()
-            .ok()?;
-        out.status
-            .success()
-            .then(|| String::from_utf8_lossy(&out.stdout).trim().to_string())
-    };
-    let now = || {
-        std::time::SystemTime::now()
-            .duration_since(std::time::UNIX_EPOCH)
-            .map(|d| d.as_secs())
-            .unwrap_or(0)
-    };
-    let seconds = from_env
-        .or_else(from_git)
-        .and_then(|s| s.parse::<u64>().ok())
-        .unwrap_or_else(now);
-    utc_date_time(seconds)
+/// An FMU of the workspace that goes beside the slider-crank into systems: its model
+/// identifier, its model descriptions (FMI 2.0, FMI 3.0, FMI 3.0 without input derivatives), its
+/// FMI 3 terminals, its documentation and the reference results of its DefaultExperiment.
+struct Companion {
+    identifier: &'static str,
+    descriptions: [&'static str; 3],
+    terminals: &'static str,
+    documentation: fn(Edition) -> String,
+    references: compatibility::References,
 }
 
-/// Seconds since 1970-01-01T00:00:00Z as an xs:dateTime in UTC (days to civil date after
-/// H. Hinnant, "chrono-Compatible Low-Level Date Algorithms").
-fn utc_date_time(seconds: u64) -> String {
-    let (days, rest) = (seconds / 86_400, seconds % 86_400);
-    let z = days + 719_468;
-    let era = z / 146_097;
-    let doe = z - era * 146_097;
-    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
-    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
-    let mp = (5 * doy + 2) / 153;
-    let day = doy - (153 * mp + 2) / 5 + 1;
-    let month = if mp < 10 { mp + 3 } else { mp - 9 };
-    let year = yoe + era * 400 + u64::from(month <= 2);
-    format!(
-        "{year:04}-{month:02}-{day:02}T{:02}:{:02}:{:02}Z",
-        rest / 3600,
-        rest % 3600 / 60,
-        rest % 60
-    )
-}
-
-/// `xml` with generationDateAndTime = `time` after its generationTool attribute (the attribute
-/// is stamped at packaging, so the XML the build script renders, and its GUID, do not change
-/// with the date).
-fn stamped(xml: &str, time: &str) -> Result<String, Box<dyn Error>> {
-    let at = xml
-        .find("generationTool=")
-        .ok_or("modelDescription.xml has no generationTool attribute")?;
-    Ok(format!(
-        "{}generationDateAndTime=\"{time}\"\n  {}",
-        &xml[..at],
-        &xml[at..]
-    ))
-}
-
-/// Writes the FMU `path`: modelDescription.xml, the binaries, documentation/index.html and the
-/// images of `images` (files of `image_dir`) it shows, and the `extras` (name in the archive,
-/// contents).
-fn write_fmu(
-    path: &Path,
-    (identifier, xml): (&str, &str),
-    binaries: &[(&str, PathBuf)],
-    documentation: &str,
-    images: &[PathBuf],
-    extras: &[(String, Vec<u8>)],
-) -> Result<(), Box<dyn Error>> {
-    let mut zip = zip::ZipWriter::new(std::fs::File::create(path)?);
-    let options = zip_options();
-    zip.start_file("modelDescription.xml", options)?;
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    zip.write_all(stamped(xml, &generation_time(root))?.as_bytes())?;
-    for (platform, library) in binaries {
-        let ext = library.extension().and_then(|e| e.to_str()).unwrap_or("so");
-        zip.start_file(format!("binaries/{platform}/{identifier}.{ext}"), options)?;
-        zip.write_all(&std::fs::read(library)?)?;
+impl Companion {
+    /// The DC motor.
+    fn motor() -> Result<Self, Box<dyn Error>> {
+        Ok(Self {
+            identifier: dc_motor::MODEL_IDENTIFIER,
+            descriptions: [
+                dc_motor::MODEL_DESCRIPTION,
+                dc_motor::MODEL_DESCRIPTION_FMI3,
+                dc_motor::MODEL_DESCRIPTION_FMI3_SCALAR,
+            ],
+            terminals: dc_motor::TERMINALS_AND_ICONS_FMI3,
+            documentation: documentation::motor,
+            references: compatibility::motor()?,
+        })
     }
-    zip.start_file("documentation/index.html", options)?;
-    zip.write_all(documentation.as_bytes())?;
-    for image in images {
-        if !image.exists() {
-            return Err(format!(
-                "the documentation shows {}, which is missing",
-                image.display()
-            )
-            .into());
+
+    /// The lubrication circuit.
+    fn circuit() -> Result<Self, Box<dyn Error>> {
+        Ok(Self {
+            identifier: lube_circuit::MODEL_IDENTIFIER,
+            descriptions: [
+                lube_circuit::MODEL_DESCRIPTION,
+                lube_circuit::MODEL_DESCRIPTION_FMI3,
+                lube_circuit::MODEL_DESCRIPTION_FMI3_SCALAR,
+            ],
+            terminals: "",
+            documentation: documentation::circuit,
+            references: compatibility::circuit()?,
+        })
+    }
+
+    /// Writes its FMI 2.0 FMU into `out_dir` with the libraries of FMI 2's platform folders among
+    /// `libraries` (and its cross-check files), its FMI 3.0 twins into `out_dir/fmi3/` and
+    /// `out_dir/fmi3/scalar/` with every library. Returns the three FMUs' paths.
+    fn write(
+        &self,
+        out_dir: &Path,
+        libraries: &[(&'static str, PathBuf)],
+    ) -> Result<[PathBuf; 3], Box<dyn Error>> {
+        let file = format!("{}.fmu", self.identifier);
+        let paths = [
+            out_dir.join(&file),
+            out_dir.join("fmi3").join(&file),
+            out_dir.join("fmi3").join("scalar").join(&file),
+        ];
+        let fmi2 = &fmi2_binaries(libraries);
+        write_fmu(
+            &paths[0],
+            (self.identifier, self.descriptions[0]),
+            fmi2,
+            &(self.documentation)(Edition::Fmi2),
+            &[],
+            &self.references.fmu_entries(),
+        )?;
+        self.references
+            .write_cross_check(out_dir, &paths[0], fmi2)?;
+        for (k, edition) in [(1, Edition::Fmi3), (2, Edition::Fmi3Scalar)] {
+            write_fmu(
+                &paths[k],
+                (self.identifier, self.descriptions[k]),
+                &fmi3_binaries(libraries),
+                &(self.documentation)(edition),
+                &[],
+                &with_terminals(self.references.fmu_entries(), self.terminals),
+            )?;
         }
-        let name = image
-            .file_name()
-            .and_then(|n| n.to_str())
-            .unwrap_or("image");
-        zip.start_file(format!("documentation/{name}"), options)?;
-        zip.write_all(&std::fs::read(image)?)?;
+        Ok(paths)
     }
-    for (name, contents) in extras {
-        zip.start_file(name.as_str(), options)?;
-        zip.write_all(contents)?;
-    }
-    zip.finish()?;
-    Ok(())
 }
 
-/// An FMI 3 FMU's extra entries: `entries` and its terminalsAndIcons.xml, if it has terminals.
-fn with_terminals(mut entries: Vec<(String, Vec<u8>)>, terminals: &str) -> Vec<(String, Vec<u8>)> {
-    if !terminals.is_empty() {
-        entries.push((
-            "terminalsAndIcons/terminalsAndIcons.xml".into(),
-            terminals.as_bytes().to_vec(),
-        ));
-    }
-    entries
-}
-
-/// Deflated entries with a fixed time stamp, so that the same inputs give the same bytes.
-fn zip_options() -> SimpleFileOptions {
-    SimpleFileOptions::default()
-        .compression_method(zip::CompressionMethod::Deflated)
-        .last_modified_time(zip::DateTime::default())
-}
-
-/// A zip of `entries` (name in the archive, file).
-fn write_zip(path: &Path, entries: &[(String, PathBuf)]) -> Result<(), Box<dyn Error>> {
-    let mut zip = zip::ZipWriter::new(std::fs::File::create(path)?);
-    for (name, file) in entries {
-        zip.start_file(name.as_str(), zip_options())?;
-        zip.write_all(&std::fs::read(file)?)?;
-    }
-    zip.finish()?;
-    Ok(())
-}
-
-/// The SSP archive `ssp` of the system structure in `system` with `fmus` as its resources.
-fn write_ssp(system: &Path, ssp: &Path, fmus: [&PathBuf; 2]) -> Result<(), Box<dyn Error>> {
-    let mut entries = vec![(
-        "SystemStructure.ssd".to_string(),
-        system.join("SystemStructure.ssd"),
-    )];
+/// The system `name` of `root/systems/<folder>/` made of the FMI 2 FMUs `fmus` (its SSP
+/// `out_dir/<name>.ssp` and its OSP system structure `out_dir/<folder>/` beside them) and of the
+/// FMI 3 FMUs every master loads, `fmus3` (`out_dir/fmi3/<name>.ssp`). Returns the SSP, the FMI 3
+/// SSP and the OSP folder.
+fn write_system(
+    (root, out_dir): (&Path, &Path),
+    (folder, name): (&str, &str),
+    fmus: [&PathBuf; 2],
+    fmus3: [&PathBuf; 2],
+) -> Result<[PathBuf; 3], Box<dyn Error>> {
+    let system = root.join("systems").join(folder);
+    let ssp = out_dir.join(format!("{name}.ssp"));
+    write_ssp(&system, &ssp, fmus)?;
+    let ssp3 = out_dir.join("fmi3").join(format!("{name}.ssp"));
+    write_ssp(&system, &ssp3, fmus3)?;
+    let osp = out_dir.join(folder);
+    std::fs::create_dir_all(&osp)?;
+    std::fs::copy(
+        system.join("OspSystemStructure.xml"),
+        osp.join("OspSystemStructure.xml"),
+    )?;
     for fmu in fmus {
-        let name = fmu
-            .file_name()
-            .and_then(|n| n.to_str())
-            .unwrap_or("model.fmu");
-        entries.push((format!("resources/{name}"), fmu.clone()));
+        if let Some(file) = fmu.file_name() {
+            std::fs::copy(fmu, osp.join(file))?;
+        }
     }
-    write_zip(ssp, &entries)
+    Ok([ssp, ssp3, osp])
 }
 
-/// Writes both FMUs into `out_dir` with the libraries of FMI 2's platform folders among
-/// `binaries` (the slider-crank's) and `motor_libraries`, their FMI 3.0 twins into `out_dir/fmi3/`
-/// with every library (without arrays and input derivatives into `out_dir/fmi3/scalar/`), and the
-/// motor-crank system made of the FMI 2 FMUs: `MotorCrank.ssp` and `motor-crank/` (OSP system
-/// structure beside both FMUs), and of the FMI 3 FMUs every master loads, `fmi3/MotorCrank.ssp`.
+/// The shared libraries to package, each as (platform folder, path).
+struct Libraries {
+    crank: Vec<(&'static str, PathBuf)>,
+    motor: Vec<(&'static str, PathBuf)>,
+    circuit: Vec<(&'static str, PathBuf)>,
+}
+
+/// Writes the three FMUs into `out_dir` with the libraries of FMI 2's platform folders, their FMI
+/// 3.0 twins into `out_dir/fmi3/` with every library (without arrays and input derivatives into
+/// `out_dir/fmi3/scalar/`), and the systems made of them: the motor-crank system
+/// (`MotorCrank.ssp`, `motor-crank/` with its OSP system structure, `fmi3/MotorCrank.ssp`) and
+/// the lubrication-circuit system (`LubeCrank.ssp`, `lube-crank/`, `fmi3/LubeCrank.ssp`).
 /// Returns the paths written.
 fn package(
     root: &Path,
     out_dir: &Path,
-    binaries: &[(&'static str, PathBuf)],
-    motor_libraries: &[(&'static str, PathBuf)],
+    libraries: &Libraries,
 ) -> Result<Vec<PathBuf>, Box<dyn Error>> {
-    std::fs::create_dir_all(out_dir)?;
-    let crank_binaries = &fmi2_binaries(binaries);
-    let motor_binaries = &fmi2_binaries(motor_libraries);
+    std::fs::create_dir_all(out_dir.join("fmi3").join("scalar"))?;
+    let crank_binaries = &fmi2_binaries(&libraries.crank);
     let (guide, images) = documentation::slider_crank(root, Edition::Fmi2)?;
     let crank_references = compatibility::slider_crank()?;
     let crank_fmu = out_dir.join(format!("{MODEL_IDENTIFIER}.fmu"));
@@ -320,22 +286,8 @@ fn package(
         &images,
         &crank_references.fmu_entries(),
     )?;
-    let motor = (dc_motor::MODEL_IDENTIFIER, dc_motor::MODEL_DESCRIPTION);
-    let motor_references = compatibility::motor()?;
-    let motor_fmu = out_dir.join(format!("{}.fmu", motor.0));
-    write_fmu(
-        &motor_fmu,
-        motor,
-        motor_binaries,
-        &documentation::motor(Edition::Fmi2),
-        &[],
-        &motor_references.fmu_entries(),
-    )?;
     crank_references.write_cross_check(out_dir, &crank_fmu, crank_binaries)?;
-    motor_references.write_cross_check(out_dir, &motor_fmu, motor_binaries)?;
     let fmi3 = out_dir.join("fmi3");
-    std::fs::create_dir_all(&fmi3)?;
-    std::fs::create_dir_all(fmi3.join("scalar"))?;
     let crank_fmu3 = fmi3.join(format!("{MODEL_IDENTIFIER}.fmu"));
     let crank_fmu3_scalar = fmi3.join("scalar").join(format!("{MODEL_IDENTIFIER}.fmu"));
     for (fmu, description, edition) in [
@@ -350,65 +302,46 @@ fn package(
         write_fmu(
             fmu,
             (MODEL_IDENTIFIER, description),
-            &fmi3_binaries(binaries),
+            &fmi3_binaries(&libraries.crank),
             &guide,
             &images,
             &with_terminals(crank_references.fmu_entries(), TERMINALS_AND_ICONS_FMI3),
         )?;
     }
-    let motor_fmu3 = fmi3.join(format!("{}.fmu", motor.0));
-    let motor_fmu3_scalar = fmi3.join("scalar").join(format!("{}.fmu", motor.0));
-    for (fmu, description, edition) in [
-        (&motor_fmu3, dc_motor::MODEL_DESCRIPTION_FMI3, Edition::Fmi3),
-        (
-            &motor_fmu3_scalar,
-            dc_motor::MODEL_DESCRIPTION_FMI3_SCALAR,
-            Edition::Fmi3Scalar,
-        ),
-    ] {
-        write_fmu(
-            fmu,
-            (motor.0, description),
-            &fmi3_binaries(motor_libraries),
-            &documentation::motor(edition),
-            &[],
-            &with_terminals(
-                motor_references.fmu_entries(),
-                dc_motor::TERMINALS_AND_ICONS_FMI3,
-            ),
-        )?;
-    }
-    let system = root.join("systems/motor-crank");
-    let ssp = out_dir.join("MotorCrank.ssp");
-    let fmus = [&motor_fmu, &crank_fmu];
-    write_ssp(&system, &ssp, fmus)?;
-    // the same system of the FMI 3 FMUs every master loads
-    let ssp3 = fmi3.join("MotorCrank.ssp");
-    write_ssp(&system, &ssp3, [&motor_fmu3_scalar, &crank_fmu3_scalar])?;
-    compatibility::system()?.write_system(out_dir, &ssp)?;
-    let osp = out_dir.join("motor-crank");
-    std::fs::create_dir_all(&osp)?;
-    std::fs::copy(
-        system.join("OspSystemStructure.xml"),
-        osp.join("OspSystemStructure.xml"),
+    let [motor_fmu, motor_fmu3, motor_fmu3_scalar] =
+        Companion::motor()?.write(out_dir, &libraries.motor)?;
+    let [circuit_fmu, circuit_fmu3, circuit_fmu3_scalar] =
+        Companion::circuit()?.write(out_dir, &libraries.circuit)?;
+    let [ssp, motor_ssp3, motor_osp] = write_system(
+        (root, out_dir),
+        ("motor-crank", "MotorCrank"),
+        [&motor_fmu, &crank_fmu],
+        [&motor_fmu3_scalar, &crank_fmu3_scalar],
     )?;
-    for fmu in fmus {
-        if let Some(name) = fmu.file_name() {
-            std::fs::copy(fmu, osp.join(name))?;
-        }
-    }
-    Ok(vec![
+    compatibility::system()?.write_system(out_dir, &ssp)?;
+    let lube = write_system(
+        (root, out_dir),
+        ("lube-crank", "LubeCrank"),
+        [&circuit_fmu, &crank_fmu],
+        [&circuit_fmu3_scalar, &crank_fmu3_scalar],
+    )?;
+    let mut written = vec![
         crank_fmu,
         motor_fmu,
+        circuit_fmu,
         crank_fmu3,
         crank_fmu3_scalar,
         motor_fmu3,
         motor_fmu3_scalar,
-        ssp3,
+        circuit_fmu3,
+        circuit_fmu3_scalar,
+        motor_ssp3,
         ssp,
-        osp,
-        out_dir.join("compatibility"),
-    ])
+        motor_osp,
+    ];
+    written.extend(lube);
+    written.push(out_dir.join("compatibility"));
+    Ok(written)
 }
 
 fn main() -> Result<(), Box<dyn Error>> {
@@ -416,22 +349,27 @@ fn main() -> Result<(), Box<dyn Error>> {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let written = match args.as_slice() {
         [] => {
-            let crank = build_library(&root, "flexible-slider-crank")?;
-            let motor = build_library(&root, "dc-motor")?;
-            package(
-                &root,
-                &root.join("target").join("fmu"),
-                &[("linux64", crank)],
-                &[("linux64", motor)],
-            )?
+            let built = |package| {
+                Ok::<_, Box<dyn Error>>(vec![("linux64", build_library(&root, package)?)])
+            };
+            let libraries = Libraries {
+                crank: built("flexible-slider-crank")?,
+                motor: built("dc-motor")?,
+                circuit: built("lube-circuit")?,
+            };
+            package(&root, &root.join("target").join("fmu"), &libraries)?
         }
         [flag, dir] if flag == "--binaries" => {
             let dir = PathBuf::from(dir);
+            let libraries = Libraries {
+                crank: release_binaries(&dir, MODEL_IDENTIFIER)?,
+                motor: release_binaries(&dir, dc_motor::MODEL_IDENTIFIER)?,
+                circuit: release_binaries(&dir, lube_circuit::MODEL_IDENTIFIER)?,
+            };
             package(
                 &root,
                 &root.join("target").join("fmu").join("release"),
-                &release_binaries(&dir, MODEL_IDENTIFIER)?,
-                &release_binaries(&dir, dc_motor::MODEL_IDENTIFIER)?,
+                &libraries,
             )?
         }
         _ => return Err("usage: packaging [--binaries DIR]".into()),
@@ -440,29 +378,4 @@ fn main() -> Result<(), Box<dyn Error>> {
         println!("{}", path.canonicalize()?.display());
     }
     Ok(())
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn dates_are_utc_civil_dates() {
-        // Against Python's datetime: the epoch, a leap day, the last day of February 2100 (no leap year), a time of day.
-        assert_eq!(utc_date_time(0), "1970-01-01T00:00:00Z");
-        assert_eq!(utc_date_time(951_782_400), "2000-02-29T00:00:00Z");
-        assert_eq!(utc_date_time(4_107_542_399), "2100-02-28T23:59:59Z");
-        assert_eq!(utc_date_time(1_795_575_696), "2026-11-25T03:01:36Z");
-    }
-
-    #[test]
-    fn the_stamp_goes_before_generation_tool() {
-        let xml = "<fmiModelDescription a=\"1\"\n  generationTool=\"t\">";
-        let out = stamped(xml, "2026-11-25T00:00:00Z").unwrap();
-        assert_eq!(
-            out,
-            "<fmiModelDescription a=\"1\"\n  generationDateAndTime=\"2026-11-25T00:00:00Z\"\n  generationTool=\"t\">"
-        );
-        assert!(stamped("<fmiModelDescription>", "x").is_err());
-    }
 }

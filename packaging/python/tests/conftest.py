@@ -34,6 +34,6 @@ def value_references(model_description) -> dict:
 
 @pytest.fixture(autouse=True, scope="session")
 def packaged_fmus():
-    """Points the motor-crank master at this clone's packaged FMUs, wherever pytest runs from."""
-    from fsc import system
-    system.FMU_DIR = ROOT / "target" / "fmu"
+    """Points the systems' masters at this clone's packaged FMUs, wherever pytest runs from."""
+    from fsc import lube_system, system
+    system.FMU_DIR = lube_system.FMU_DIR = ROOT / "target" / "fmu"

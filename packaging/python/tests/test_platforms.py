@@ -84,7 +84,7 @@ def lines_differing(a, b):
     return [i for i, (x, y) in enumerate(zip(a, b)) if x != y]
 
 
-MODELS = ["FlexibleSliderCrank", "DcMotor"]
+MODELS = ["FlexibleSliderCrank", "DcMotor", "LubricationCircuit"]
 
 
 @pytest.mark.parametrize("model", MODELS)
@@ -137,15 +137,18 @@ def test_release_fmu_validates_and_holds_every_platform(model):
         assert platform in platforms, platforms
 
 
-def test_release_system_holds_both_release_fmus():
-    """The release SSP carries the release FMUs (every platform), byte for byte."""
+def test_release_systems_hold_the_release_fmus():
+    """Each release SSP and OSP folder carries its release FMUs (every platform), byte for byte."""
     import zipfile
 
-    with zipfile.ZipFile(RELEASE_FMU.parent / "MotorCrank.ssp") as ssp:
-        for model in MODELS:
-            fmu = (RELEASE_FMU.parent / f"{model}.fmu").read_bytes()
-            assert ssp.read(f"resources/{model}.fmu") == fmu
-            assert (RELEASE_FMU.parent / "motor-crank" / f"{model}.fmu").read_bytes() == fmu
+    for name, folder, models in [("MotorCrank", "motor-crank", ["FlexibleSliderCrank", "DcMotor"]),
+                                 ("LubeCrank", "lube-crank",
+                                  ["FlexibleSliderCrank", "LubricationCircuit"])]:
+        with zipfile.ZipFile(RELEASE_FMU.parent / f"{name}.ssp") as ssp:
+            for model in models:
+                fmu = (RELEASE_FMU.parent / f"{model}.fmu").read_bytes()
+                assert ssp.read(f"resources/{model}.fmu") == fmu
+                assert (RELEASE_FMU.parent / folder / f"{model}.fmu").read_bytes() == fmu
 
 
 @pytest.mark.parametrize("model", MODELS)

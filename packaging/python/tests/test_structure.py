@@ -6,11 +6,12 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parents[3]
-CRATES = ["src", "fmi-core/src", "fmi-export/src", "dc-motor/src", "packaging/src", "fuzz/src"]
+CRATES = ["src", "fmi-core/src", "fmi-export/src", "dc-motor/src", "lube-circuit/src", "packaging/src",
+          "fuzz/src"]
 #: Longest file, in lines before its unit tests.
 MAX_LINES = 520
 #: Data tables: one row per FMI variable (the slider-crank's, by component, in a folder).
-TABLES = ("src/variables/", "dc-motor/src/variables.rs")
+TABLES = ("src/variables/", "dc-motor/src/variables.rs", "lube-circuit/src/variables.rs")
 
 
 def modules(crate):
@@ -144,9 +145,10 @@ def test_no_module_imports_the_fmi_layer():
 def test_only_the_fmi_adapters_import_the_fmi_versions():
     """The run, the physics and the variable tables import the version-neutral core (`fmi_core`),
     never the crate with the FMI versions' C API (`fmi_export`): only the FMI adapter does
-    (src/fmi/ of the slider-crank, fmu.rs and lib.rs of the motor)."""
+    (src/fmi/ of the slider-crank, fmu.rs and lib.rs of the motor and of the circuit)."""
     found = []
-    for crate, adapters in [("src", ("fmi/",)), ("dc-motor/src", ("fmu.rs", "lib.rs"))]:
+    for crate, adapters in [("src", ("fmi/",)), ("dc-motor/src", ("fmu.rs", "lib.rs")),
+                            ("lube-circuit/src", ("fmu.rs", "lib.rs"))]:
         for path in sorted((ROOT / crate).rglob("*.rs")):
             name = path.relative_to(ROOT / crate).as_posix()
             text = re.sub(r"//.*", "", path.read_text())
