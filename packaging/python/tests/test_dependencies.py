@@ -161,8 +161,8 @@ def test_directional_derivatives_agree_with_central_differences(fmu):
 
 def start_configurations(n=160, seed=7):
     """Start values covering every drive, joint (with and without a heat balance), rod and start
-    model (each joint's switches drawn independently), with gravity, friction, material damping and
-    the inputs switched on at random; half keep crank.initialSpeed at its start value, so that the
+    model (each joint's switches drawn independently, a joint with a heat balance fed through a
+    hole), with gravity, friction, material damping and the inputs switched on at random; half keep crank.initialSpeed at its start value, so that the
     crank starts at drive.speed; a third load the slider with a table over the crank angle. Six
     more put each joint lubricated by the short film at either edge of its range, one starts the
     crank backwards of zero in a 720° load cycle, two start every joint dry and settled at a crank
@@ -187,6 +187,9 @@ def start_configurations(n=160, seed=7):
             c |= {f"{joint}.model": pick([1, 2, 3]), f"{joint}.initialState": pick([1, 2]),
                   f"{joint}.contactLaw": pick([1, 2, 3]), f"{joint}.friction": pick([0.0, 0.1]),
                   f"{joint}.thermalModel": pick([1, 2])}
+            # a joint with a heat balance is fed through a hole: its settled film temperature
+            # then reads the supply pressure as it reads the supply temperature
+            c[f"{joint}.feed"] = HOLE if c[f"{joint}.thermalModel"] == 2 else 1
         if rng.uniform() < 0.7:
             c |= {"gravity": 9.81, "gravityAngle": rng.uniform(0.0, 6.0)}
         if rng.uniform() < 0.5:
