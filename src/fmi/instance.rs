@@ -100,7 +100,7 @@ impl Model for SliderCrankFmu {
     const GUID: &'static str = super::model_description::GUID;
     const LOG_CATEGORIES: &'static [(&'static str, &'static str)] = LOG_CATEGORIES;
     const STATE_MAGIC: [u8; 4] = *b"FSCS";
-    const STATE_VERSION: u32 = 20;
+    const STATE_VERSION: u32 = 21;
     type Vr = Vr;
     type Inputs = Inputs;
     const VARIABLES: &'static [Variable] = VARIABLES;
