@@ -64,7 +64,7 @@ impl LubricationCircuitFmu {
             relief_pressure: p(Vr::ReliefPressure),
             relief_conductance: p(Vr::ReliefConductance),
             gallery_volume: p(Vr::GalleryVolume),
-            bulk_modulus: p(Vr::OilBulkModulus),
+            bulk_modulus: p(Vr::GalleryBulkModulus),
             sump_volume: p(Vr::SumpVolume),
             density: p(Vr::OilDensity),
             specific_heat: p(Vr::OilSpecificHeat),
@@ -155,7 +155,7 @@ impl Model for LubricationCircuitFmu {
         if f64::from(n) > MAX_STEPS {
             return Err(FmuError::Invalid(format!(
                 "communicationStepSize = {} s is more than {} internal steps of an eighth of the \
-                 gallery's time constant (gallery.volume/oil.bulkModulus/relief.conductance)",
+                 gallery's time constant (gallery.volume/gallery.bulkModulus/relief.conductance)",
                 Num(step.h),
                 Num(MAX_STEPS)
             )));

@@ -423,7 +423,7 @@ pub fn circuit(edition: Edition) -> String {
 <h1>LubricationCircuit — {heading}</h1>
 <p>{}</p>
 <pre>
-C_g dp/dt = Q_p - Q_r(p) - Q_b            gallery, C_g = gallery.volume/oil.bulkModulus, p >= 0
+C_g dp/dt = Q_p - Q_r(p) - Q_b            gallery, C_g = gallery.volume/gallery.bulkModulus, p >= 0
 Q_r(p)    = k_r max(0, p - p_c)           relief valve (relief.conductance, relief.pressure)
 rho c_p V_s dT_s/dt = P_b - Phi_c         sump (sump.volume)
 Phi_c     = rho c_p Q_p eps (T_s - T_c)   cooler.heatFlow (cooler.effectiveness, cooler.coolantTemperature)

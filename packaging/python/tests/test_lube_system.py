@@ -58,7 +58,7 @@ def test_the_gallery_follows_its_equation_under_the_bearings_draw(fmpy_rows):
     start = {v.name: v.start for v in read_model_description(str(CIRCUIT_FMU)).modelVariables}
     q_p, p_c, k_r, v_g, beta = (float(start[n]) for n in ["pump.flow", "relief.pressure",
                                                           "relief.conductance", "gallery.volume",
-                                                          "oil.bulkModulus"])
+                                                          "gallery.bulkModulus"])
     p = np.array([v[PRESSURE] for _, v in fmpy_rows])
     draw = np.array([sum(v[f] for f in FLOWS) for _, v in fmpy_rows])
     steady = p_c + (q_p - draw[:-1]) / k_r
