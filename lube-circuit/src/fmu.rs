@@ -45,8 +45,6 @@ pub struct LubricationCircuitFmu {
     state: Option<CircuitState>,
     /// Warnings since the start (the gallery emptied).
     warnings: u32,
-    /// Whether the gallery is empty (zero pressure) at the last communication point.
-    starved: bool,
 }
 
 fn start(vr: usize) -> f64 {
@@ -86,11 +84,16 @@ impl LubricationCircuitFmu {
         })
     }
 
-    /// Warns when the gallery empties at `time` (once per emptying) with the bearings drawing
-    /// `oil_flow`.
-    fn check_starved(&mut self, log: &Logger, x: &CircuitState, time: f64, oil_flow: f64) {
-        let starved = x[0] <= 0.0;
-        if starved && !self.starved {
+    /// Warns when the gallery, not empty in the state before (`was_starved` false), is empty in
+    /// the state `x` at `time` (so once per emptying), the bearings drawing `oil_flow`.
+    fn check_starved(
+        &mut self,
+        log: &Logger,
+        (was_starved, x): (bool, &CircuitState),
+        time: f64,
+        oil_flow: f64,
+    ) {
+        if x[0] <= 0.0 && !was_starved {
             self.warnings += 1;
             log.warning(&format!(
                 "t = {} s: the gallery is empty (zero supply pressure): the bearings draw {} m3/s, \
@@ -100,7 +103,6 @@ impl LubricationCircuitFmu {
                 Num(self.parameters[Vr::PumpFlow as usize])
             ));
         }
-        self.starved = starved;
     }
 }
 
@@ -126,7 +128,6 @@ impl Model for LubricationCircuitFmu {
             parameters: std::array::from_fn(start),
             state: None,
             warnings: 0,
-            starved: false,
         }
     }
 
@@ -136,7 +137,7 @@ impl Model for LubricationCircuitFmu {
         let x = self.state(cx.inputs);
         self.state = Some(x);
         let oil_flow = loads(cx.inputs.stepping(), time(cx)).oil_flow;
-        self.check_starved(cx.log, &x, time(cx), oil_flow);
+        self.check_starved(cx.log, (false, &x), time(cx), oil_flow);
         cx.log.event(&format!(
             "circuit initialised: supply pressure {} Pa, sump at {} K",
             Num(x[0]),
@@ -161,13 +162,14 @@ impl Model for LubricationCircuitFmu {
             )));
         }
         let mut x = self.state(cx.inputs);
+        let was_starved = x[0] <= 0.0;
         let signal = Signal {
             start: t,
             ..*cx.inputs.stepping()
         };
         circuit.advance(&mut x, end - t, n, |tau| loads(&signal, t + tau));
         self.state = Some(x);
-        self.check_starved(cx.log, &x, end, loads(&signal, end).oil_flow);
+        self.check_starved(cx.log, (was_starved, &x), end, loads(&signal, end).oil_flow);
         Ok(StepOutcome::Completed { time: end })
     }
 
@@ -228,15 +230,13 @@ impl Model for LubricationCircuitFmu {
         Ok(())
     }
 
-    /// The parameters, the state (NaN before initialization), the warnings count and whether
-    /// the gallery is empty.
+    /// The parameters, the state (NaN before initialization) and the warnings count.
     fn save(&self, out: &mut Vec<u8>) {
         let mut w = ByteWriter(out);
         self.parameters.iter().for_each(|&p| w.f64(p));
         let x = self.state.unwrap_or([f64::NAN; 2]);
         x.iter().for_each(|&v| w.f64(v));
         w.u32(self.warnings);
-        w.u32(u32::from(self.starved));
     }
 
     fn load(&mut self, _cx: &Cx, bytes: &[u8], apply: bool) -> Result<(), FmuError> {
@@ -249,18 +249,17 @@ impl Model for LubricationCircuitFmu {
         }
         let state = [r.f64()?, r.f64()?];
         let initialised = state.iter().all(|v| v.is_finite());
-        let (warnings, starved) = (r.u32()?, r.u32()?);
+        let warnings = r.u32()?;
         if r.remaining() != 0 {
             return bad(&format!("{} bytes too many", r.remaining()));
         }
-        if !(initialised || state.iter().all(|v| v.is_nan())) || state[0] < 0.0 || starved > 1 {
-            return bad("a non-finite or negative state, or a flag other than 0 or 1");
+        if !(initialised || state.iter().all(|v| v.is_nan())) || state[0] < 0.0 {
+            return bad("a non-finite state or a negative pressure");
         }
         if apply {
             self.parameters = parameters;
             self.state = initialised.then_some(state);
             self.warnings = warnings;
-            self.starved = starved == 1;
         }
         Ok(())
     }
