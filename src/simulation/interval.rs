@@ -210,6 +210,7 @@ impl Engine {
             self.state.copy_from_slice(&self.end.y);
         } else {
             self.peaks.complete_cycle_before(t_end);
+            self.divide_pending_step(signal, t_end)?;
             let span = self.start.span_to(&self.end);
             // the contact states the step was integrated with
             let mut contacts = self.contact_start;
@@ -267,6 +268,47 @@ mod tests {
             );
         }
         assert!(pauses > 20, "{pauses} pauses");
+    }
+
+    /// Each interval holds the extremes of the solution inside it, also where the internal steps
+    /// are longer than the communication step and a step's peak lies in an earlier interval than
+    /// its end: the lubricated joint's force (sampled inside every step) peaks over 1 µs
+    /// intervals within 2e-3 of its largest value of the largest of its values every 0.1 µs
+    /// inside each, through the first millisecond (internal steps of several microseconds; the
+    /// steps do not depend on the communication points). The peak-hold samples the quintic
+    /// Hermite interpolant, the outputs the integrator's dense output, whose part beyond the
+    /// cubic is filtered: they differ by 1.1e-3 of the largest value here. A step's peak taken
+    /// into the interval where the step ends, wherever it lies in the step, errs by 4.3 %.
+    #[test]
+    fn each_interval_holds_the_peak_inside_it() {
+        use crate::params::JointModel;
+        let mut p = Parameters::default();
+        p.joint.model = JointModel::Lubricated;
+        let mut coarse = Simulation::new(p).unwrap();
+        let mut fine = coarse.clone();
+        let (n, sub): (u32, usize) = (1000, 10);
+        let mut values = vec![fine.outputs().unwrap().joint_force];
+        for k in 1..=n * sub as u32 {
+            fine.advance_to(f64::from(k) * 1e-7).unwrap();
+            values.push(fine.outputs().unwrap().joint_force);
+        }
+        let largest = values.iter().copied().fold(0.0, f64::max);
+        let mut worst: f64 = 0.0;
+        for j in 1..=n {
+            coarse.advance_to(f64::from(j) * 1e-6).unwrap();
+            let peak = coarse.outputs().unwrap().joint_force_peak;
+            let inside = values[(j as usize - 1) * sub..=j as usize * sub]
+                .iter()
+                .copied()
+                .fold(0.0, f64::max);
+            worst = worst.max((peak - inside).abs() / largest);
+        }
+        assert!(
+            coarse.stats().steps < u64::from(n / 2),
+            "{:?}",
+            coarse.stats()
+        );
+        assert!(worst < 2e-3, "{worst:e}");
     }
 
     /// Ending at a pause is an early return there: the time reached is the step's end rounded

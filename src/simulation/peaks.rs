@@ -166,9 +166,11 @@ const PEAK_SAMPLES: usize = 4;
 /// force and slider acceleration read at communication points alias their peaks. The peak-hold
 /// outputs are the maxima over the communication interval (t_prev, t] of every accepted internal
 /// step's end point and of the value at t itself and, for each step in which the journal touches
-/// the bearing, of the joint load inside the step; the contact onsets are counted at the accepted
-/// step in which the journal starts touching. The internal steps follow the solution, not the
-/// master's grid, so the maxima do not depend on the communication step.
+/// the bearing, of the joint load inside the step's part in the interval (a step across t is
+/// sampled on each side of it, `Engine::divide_pending_step`, so that a peak counts in the
+/// interval where it happens, also when the internal steps are longer than the communication
+/// step); the contact onsets are counted at the accepted step in which the journal starts
+/// touching. The internal steps follow the solution, not the master's grid.
 ///
 /// Inside a step the load is read from the step's dense output: a stiff rod's impact lasts only a
 /// few internal steps, whose ends alone can miss its peak by tens of percent (the rigid rod's
@@ -182,9 +184,10 @@ const PEAK_SAMPLES: usize = 4;
 /// exceed them by at most 3.5 % at rtol 1e-1.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PeakHold {
-    /// Over the current communication interval, from the steps that end inside it.
+    /// Over the current communication interval, from the steps' parts inside it.
     pub interval: Peaks,
-    /// At the end of the last accepted step.
+    /// Of the last accepted step: at its end, and inside it after the last communication point
+    /// it crosses.
     pub step_end: Peaks,
     /// Whether `step_end` lies beyond the current time (it belongs to a later interval).
     pub pending: bool,
@@ -277,20 +280,30 @@ pub(super) struct KnownEnds {
     pub(super) end: Option<Sample>,
 }
 
-/// The largest peak-held magnitudes inside the step just accepted (under the contact states it
-/// was integrated with: an onset inside it is latched at its end), if the journal touches the
-/// bearing at either end of it (zeros otherwise); see [`PeakHold`]. The samples at its ends are
-/// `known`'s where it has them; `sample` and `acceleration` are scratch space of one state each.
+/// Whether the peak-hold outputs sample the inside of the step `step`: the journal touches the
+/// bearing at either end of it, or a film carries the load.
+pub(super) fn sampled_inside(mechanism: &SliderCrank, step: &AcceptedStep<'_>) -> bool {
+    step.contact_start.any() || step.contact_end.any() || mechanism.has_film()
+}
+
+/// The largest peak-held magnitudes inside the part `range` = (s₀, s₁) of the step just accepted
+/// (fractions of it: (0, 1) the whole step), under the contact states it was integrated with (an
+/// onset inside it is latched at its end), if [`sampled_inside`] (no extreme otherwise); see
+/// [`PeakHold`]. The samples at the range's ends are `known`'s where it has them; `sample` and
+/// `acceleration` are scratch space of one state each.
 pub(super) fn within_step(
     mechanism: &mut SliderCrank,
     step: &AcceptedStep<'_>,
+    range: (f64, f64),
     known: KnownEnds,
     sample: &mut [f64],
     acceleration: &mut [f64],
 ) -> Within {
-    if !(step.contact_start.any() || step.contact_end.any() || mechanism.has_film()) {
+    if !sampled_inside(mechanism, step) {
         return Within::default();
     }
+    let (from, to) = range;
+    let fraction = |k: f64| from + (to - from) * k / (PEAK_SAMPLES + 1) as f64;
     // The worn crank joints' forces are refined as the rod–slider joint's is.
     let refined = std::array::from_fn(|i| match i {
         CRANK_PIN_FORCE => mechanism.has_clearance(JointRole::CrankPin),
@@ -302,10 +315,16 @@ pub(super) fn within_step(
         match (k == 0.0, end, known) {
             (true, _, KnownEnds { start: Some(s), .. }) => s,
             (_, true, KnownEnds { end: Some(s), .. }) => s,
-            _ => load_within(mechanism, step, sample, acceleration, k),
+            _ => load_within(mechanism, step, sample, acceleration, fraction(k)),
         }
     };
-    largest_loads(&mut at, refined)
+    let mut within = largest_loads(&mut at, refined);
+    if range != (0.0, 1.0) {
+        for place in &mut within.place {
+            *place = from + (to - from) * *place;
+        }
+    }
+    within
 }
 
 /// The largest of each quantity among the samples k = 0 … [`PEAK_SAMPLES`] + 1 of a step and at
@@ -397,17 +416,16 @@ pub(super) fn interpolated_peak(value: f64, rise: f64, largest: f64) -> bool {
     rise > PEAK_TOLERANCE * value && value >= 0.5 * largest
 }
 
-/// The peak-held magnitudes at sample `k` (of [`PEAK_SAMPLES`] + 1 intervals) of the step just
-/// accepted, from the dense output's state and accelerations.
+/// The peak-held magnitudes at the fraction `theta` of the step just accepted, from the dense
+/// output's state and accelerations.
 fn load_within(
     mechanism: &mut SliderCrank,
     step: &AcceptedStep<'_>,
     sample: &mut [f64],
     acceleration: &mut [f64],
-    k: f64,
+    theta: f64,
 ) -> Sample {
     let span = step.start.span_to(step.end);
-    let theta = k / (PEAK_SAMPLES + 1) as f64;
     let c = Conditions::at(step.signal, span.t0 + theta * span.h, &step.contact_start);
     let n_q = mechanism.n_coordinates();
     dense::interpolate(n_q, &span, theta, sample);

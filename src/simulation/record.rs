@@ -17,25 +17,7 @@ impl Engine {
         let end = self.contacts;
         let onsets = JointRole::ALL
             .map(|role| u64::from(!self.contact_start[role].in_contact && end[role].in_contact));
-        let c = Conditions::at(signal, self.end.time, &end);
-        let film = self.mechanism.film_extremes(&self.end.y);
-        // From the joint law, the sample is the one the dense output gives at the step's end.
-        let (at_end, from_joint_law) = match self.mechanism.clearance_joint_load(&self.end.y, &c) {
-            Some((force, acceleration)) => {
-                let loads = self.mechanism.loads(&self.end.y, &self.end.f, force, &end);
-                (peaks::sample(force, acceleration, &loads, film), true)
-            }
-            None => {
-                let ev = *self
-                    .mechanism
-                    .evaluate(&self.end.y, &c, &mut self.scratch)?;
-                let loads = self
-                    .mechanism
-                    .loads(&self.end.y, &self.scratch, ev.joint_force, &end);
-                let sample = peaks::sample(ev.joint_force, ev.slider_acceleration, &loads, film);
-                (sample, false)
-            }
-        };
+        let (at_end, from_joint_law) = self.step_end_sample(signal)?;
         let step = AcceptedStep {
             start: &self.start,
             end: &self.end,
@@ -50,6 +32,7 @@ impl Engine {
         let within = peaks::within_step(
             &mut self.mechanism,
             &step,
+            (0.0, 1.0),
             known,
             &mut self.y_sample,
             &mut self.a_sample,
@@ -68,6 +51,76 @@ impl Engine {
         self.peaks.cycle_step = Some(self.cycle_step(at_end, &within, signal));
         self.peaks.pending = true;
         self.check_validity(None);
+        Ok(())
+    }
+
+    /// The peak-held magnitudes at the end of the step just accepted, under the contact states at
+    /// its end, and whether they come from the joint law alone (the clearance joint's load, which
+    /// is then the one the dense output gives there) rather than a whole evaluation.
+    fn step_end_sample(&mut self, signal: &InputSignal) -> Result<(Sample, bool), ModelError> {
+        let end = self.contacts;
+        let c = Conditions::at(signal, self.end.time, &end);
+        let film = self.mechanism.film_extremes(&self.end.y);
+        Ok(match self.mechanism.clearance_joint_load(&self.end.y, &c) {
+            Some((force, acceleration)) => {
+                let loads = self.mechanism.loads(&self.end.y, &self.end.f, force, &end);
+                (peaks::sample(force, acceleration, &loads, film), true)
+            }
+            None => {
+                let ev = *self
+                    .mechanism
+                    .evaluate(&self.end.y, &c, &mut self.scratch)?;
+                let loads = self
+                    .mechanism
+                    .loads(&self.end.y, &self.scratch, ev.joint_force, &end);
+                let sample = peaks::sample(ev.joint_force, ev.slider_acceleration, &loads, film);
+                (sample, false)
+            }
+        })
+    }
+
+    /// Divides the extremes of the pending step, which the interval ending at `t_end` ends
+    /// inside, at `t_end`: the interval takes the step's samples from the interval's start (or
+    /// the step's, if later) to `t_end`, and the step keeps, for the intervals after, its samples
+    /// from `t_end` to its end with its end's value. So each interval holds the extremes of the
+    /// part of the solution inside it, whatever the internal steps' lengths against the
+    /// communication step (a step across several intervals is divided at each).
+    pub(super) fn divide_pending_step(
+        &mut self,
+        signal: &InputSignal,
+        t_end: f64,
+    ) -> Result<(), ModelError> {
+        let step = AcceptedStep {
+            start: &self.start,
+            end: &self.end,
+            contact_start: self.contact_start,
+            contact_end: self.contacts,
+            signal,
+        };
+        if !peaks::sampled_inside(&self.mechanism, &step) {
+            return Ok(());
+        }
+        let (t0, h) = (self.start.time, self.end.time - self.start.time);
+        let from = ((self.interval.t_start - t0) / h).max(0.0);
+        let at = (t_end - t0) / h;
+        let mut part = |range| {
+            peaks::within_step(
+                &mut self.mechanism,
+                &step,
+                range,
+                KnownEnds::default(),
+                &mut self.y_sample,
+                &mut self.a_sample,
+            )
+            .largest
+        };
+        let before = Peaks::from_sample(part((from, at)), [0; 3]);
+        let after = part((at, 1.0));
+        self.peaks.interval.absorb(&before);
+        self.peaks.since_start.absorb(&before);
+        let (at_end, _) = self.step_end_sample(signal)?;
+        let onsets = self.peaks.step_end.contact_onsets;
+        self.peaks.step_end = Peaks::from_sample(peaks::larger(at_end, after), onsets);
         Ok(())
     }
 
