@@ -15,7 +15,10 @@ use crate::mechanism::Driven;
 
 /// How the steps through an interval ended.
 enum Progress {
-    End,
+    /// At the interval's end; whether the last step, recorded in this call, was divided there.
+    End {
+        divided: bool,
+    },
     Onset(Onset),
     Paused,
 }
@@ -71,11 +74,11 @@ impl Engine {
                 Ok(Advance::Paused(self.end.time))
             }
             Progress::Onset(onset) => {
-                self.finish_interval(signal, onset.time)?;
+                self.finish_interval(signal, onset.time, false)?;
                 Ok(Advance::Onset(onset))
             }
-            Progress::End => {
-                self.finish_interval(signal, t_end)?;
+            Progress::End { divided } => {
+                self.finish_interval(signal, t_end, divided)?;
                 Ok(Advance::Reached(t_end))
             }
         }
@@ -96,7 +99,7 @@ impl Engine {
             return Ok(None);
         }
         self.last_read = None;
-        self.finish_interval(signal, reached)?;
+        self.finish_interval(signal, reached, false)?;
         Ok(Some(reached))
     }
 
@@ -151,6 +154,7 @@ impl Engine {
                 return Ok(Progress::Onset(onset));
             }
         }
+        let mut divided = false;
         while self.end.time < t_end {
             let used = self.work() - work_start;
             let budget = (self.parameters.max_steps_per_interval as u64).saturating_sub(used);
@@ -187,7 +191,7 @@ impl Engine {
             let (f0, f1) = self.integrator.derivatives();
             self.start.f.copy_from_slice(f0);
             self.end.f.copy_from_slice(f1);
-            self.record_step_end(signal)?;
+            divided = self.record_step_end(signal)?;
             if self.end.time <= t_end {
                 self.peaks.take_step_end();
             }
@@ -199,18 +203,26 @@ impl Engine {
                 return Ok(Progress::Paused);
             }
         }
-        Ok(Progress::End)
+        Ok(Progress::End { divided })
     }
 
     /// Ends the interval at `t_end`: the state there (the dense output of the last step, with
     /// the inputs `signal`, when it ends beyond, whose crossing of a cycle boundary before
-    /// `t_end` completes the cycle).
-    fn finish_interval(&mut self, signal: &InputSignal, t_end: f64) -> Result<(), ModelError> {
+    /// `t_end` completes the cycle, and whose extremes are divided there unless `divided`
+    /// already, when it was recorded).
+    fn finish_interval(
+        &mut self,
+        signal: &InputSignal,
+        t_end: f64,
+        divided: bool,
+    ) -> Result<(), ModelError> {
         if t_end == self.end.time {
             self.state.copy_from_slice(&self.end.y);
         } else {
             self.peaks.complete_cycle_before(t_end);
-            self.divide_pending_step(signal, t_end)?;
+            if !divided {
+                self.divide_pending_step(signal, t_end)?;
+            }
             let span = self.start.span_to(&self.end);
             // the contact states the step was integrated with
             let mut contacts = self.contact_start;

@@ -19,6 +19,7 @@ mod snapshot;
 mod standalone;
 mod step;
 pub mod validity;
+mod within;
 
 pub use self::cycle::{Cycle, CycleHold, CycleStep, Extreme, JointCycle};
 pub use self::engine::Engine;

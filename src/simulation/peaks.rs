@@ -4,13 +4,8 @@
 use nalgebra::Vector2;
 
 use super::cycle::{CycleHold, CycleStep};
-use super::sample::{
-    CRANK_PIN_FORCE, ECCENTRICITY_RATIO, FILM_PRESSURE, MAIN_BEARING_FORCE, SERIES, Sample,
-};
-use super::step::StepPoint;
-use crate::integrator::dense;
-use crate::joint::JointRole;
-use crate::mechanism::{Conditions, Contacts, InputSignal, Loads, SliderCrank};
+use super::sample::{ECCENTRICITY_RATIO, FILM_PRESSURE, SERIES, Sample};
+use crate::mechanism::Loads;
 
 /// Extremes of the solution over a stretch of time, and the contact onsets in it (−∞ for an
 /// extreme not yet seen: some are signed).
@@ -54,11 +49,6 @@ impl Default for Peaks {
 
 /// Contact onsets at each joint, indexed by [`crate::joint::JointRole`].
 pub type Onsets = [u64; 3];
-
-/// Positions in a [`Sample`] of the quantities whose peaks inside a step are refined always (the
-/// joint force, the slider acceleration, the deformation energy); the crank pin's and the main
-/// bearing's forces are refined when that joint is worn.
-const ALWAYS_REFINED: usize = 3;
 
 impl Peaks {
     /// Extends these extremes by `other`'s and adds its onsets.
@@ -127,7 +117,7 @@ impl Peaks {
 
 /// The peak-held magnitudes of one instant: the joint force on the journal, the slider
 /// acceleration, the loads, and each joint's eccentricity ratio and film pressure
-/// ([`SliderCrank::film_extremes`]).
+/// ([`crate::mechanism::SliderCrank::film_extremes`]).
 pub(super) fn sample(
     joint_force: Vector2<f64>,
     slider_acceleration: f64,
@@ -156,10 +146,6 @@ pub(super) fn larger(a: Sample, b: Sample) -> Sample {
     std::array::from_fn(|i| a[i].max(b[i]))
 }
 
-/// Interior points of an accepted step at which the peak-hold outputs sample the joint load while
-/// the journal touches the bearing (see [`PeakHold`]).
-const PEAK_SAMPLES: usize = 4;
-
 /// Peak-hold bookkeeping: what a sampled output misses between communication points.
 ///
 /// An impact lasts tens of microseconds, less than a typical communication step, so the joint
@@ -167,18 +153,17 @@ const PEAK_SAMPLES: usize = 4;
 /// outputs are the maxima over the communication interval (t_prev, t] of every accepted internal
 /// step's end point and of the value at t itself and, for each step in which the journal touches
 /// the bearing, of the joint load inside the step's part in the interval (a step across t is
-/// sampled on each side of it, `Engine::divide_pending_step`, so that a peak counts in the
-/// interval where it happens, also when the internal steps are longer than the communication
-/// step); the contact onsets are counted at the accepted step in which the journal starts
-/// touching. The internal steps follow the solution, not the master's grid.
+/// sampled on each side of it, `within::divided_step`, so that a peak counts in the interval
+/// where it happens, also when the internal steps are longer than the communication step; each
+/// side as densely as a whole step, sharing the sample at t); the contact onsets are counted at
+/// the accepted step in which the journal starts touching. The internal steps follow the solution, not the master's grid.
 ///
 /// Inside a step the load is read from the step's dense output: a stiff rod's impact lasts only a
 /// few internal steps, whose ends alone can miss its peak by tens of percent (the rigid rod's
 /// benchmark B at the default tolerance: 36.6 kN at step ends against 45.9 kN converged). The
 /// load is sampled at four equally spaced interior points of the quintic Hermite interpolant
-/// ([`dense::interpolate`]) and once more at the vertex of the parabola through the largest sample
-/// and its neighbours. That interpolant uses the end
-/// accelerations, which after a large implicit step carry amplified unresolved stiff content; on
+/// ([`crate::integrator::dense::interpolate`]) and once more at the vertex of the parabola through
+/// the largest sample and its neighbours. That interpolant uses the end accelerations, which after a large implicit step carry amplified unresolved stiff content; on
 /// benchmark B its peaks agree within 0.1 % with sampling the implicit method's own solution
 /// (a partial step per sample, 3× the run's cost) at the default tolerance, for every rod, and
 /// exceed them by at most 3.5 % at rtol 1e-1.
@@ -225,6 +210,14 @@ impl PeakHold {
         }
     }
 
+    /// Takes the extremes `before` of the pending step's part before the end of the current
+    /// interval into the interval (and the extremes since the start).
+    pub(super) fn take_before(&mut self, before: Sample) {
+        let before = Peaks::from_sample(before, [0; 3]);
+        self.interval.absorb(&before);
+        self.since_start.absorb(&before);
+    }
+
     /// Moves the last step end's extremes into the current interval.
     pub(super) fn take_step_end(&mut self) {
         if let Some(step) = self.cycle_step.take() {
@@ -243,245 +236,5 @@ impl PeakHold {
             *total += onsets;
         }
         self.pending = false;
-    }
-}
-
-/// Abscissa (in sample units) of the vertex of the parabola through the largest of equally spaced
-/// samples `f` and its two neighbours, if that sample is interior and the parabola is concave:
-///
-/// ```text
-/// k* + ½ (f[k*−1] − f[k*+1]) / (f[k*−1] − 2 f[k*] + f[k*+1])
-/// ```
-fn parabola_vertex(f: &[f64]) -> Option<f64> {
-    let k = (0..f.len()).max_by(|&i, &j| f[i].total_cmp(&f[j]))?;
-    if k == 0 || k + 1 == f.len() {
-        return None;
-    }
-    let curvature = f[k - 1] - 2.0 * f[k] + f[k + 1];
-    (curvature < 0.0).then(|| k as f64 + 0.5 * (f[k - 1] - f[k + 1]) / curvature)
-}
-
-/// The step just accepted, whose dense output the peaks are sampled from: its start and end times,
-/// states and derivatives, the contact states it was integrated with and those at its end.
-pub(super) struct AcceptedStep<'a> {
-    pub(super) start: &'a StepPoint,
-    pub(super) end: &'a StepPoint,
-    pub(super) contact_start: Contacts,
-    pub(super) contact_end: Contacts,
-    /// The inputs it was integrated with.
-    pub(super) signal: &'a InputSignal,
-}
-
-/// The samples at a step's ends already taken (the last step's end and this one's), which the
-/// samples inside it at its start and end would repeat.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub(super) struct KnownEnds {
-    pub(super) start: Option<Sample>,
-    pub(super) end: Option<Sample>,
-}
-
-/// Whether the peak-hold outputs sample the inside of the step `step`: the journal touches the
-/// bearing at either end of it, or a film carries the load.
-pub(super) fn sampled_inside(mechanism: &SliderCrank, step: &AcceptedStep<'_>) -> bool {
-    step.contact_start.any() || step.contact_end.any() || mechanism.has_film()
-}
-
-/// The largest peak-held magnitudes inside the part `range` = (s₀, s₁) of the step just accepted
-/// (fractions of it: (0, 1) the whole step), under the contact states it was integrated with (an
-/// onset inside it is latched at its end), if [`sampled_inside`] (no extreme otherwise); see
-/// [`PeakHold`]. The samples at the range's ends are `known`'s where it has them; `sample` and
-/// `acceleration` are scratch space of one state each.
-pub(super) fn within_step(
-    mechanism: &mut SliderCrank,
-    step: &AcceptedStep<'_>,
-    range: (f64, f64),
-    known: KnownEnds,
-    sample: &mut [f64],
-    acceleration: &mut [f64],
-) -> Within {
-    if !sampled_inside(mechanism, step) {
-        return Within::default();
-    }
-    let (from, to) = range;
-    let fraction = |k: f64| from + (to - from) * k / (PEAK_SAMPLES + 1) as f64;
-    // The worn crank joints' forces are refined as the rod–slider joint's is.
-    let refined = std::array::from_fn(|i| match i {
-        CRANK_PIN_FORCE => mechanism.has_clearance(JointRole::CrankPin),
-        MAIN_BEARING_FORCE => mechanism.has_clearance(JointRole::MainBearing),
-        _ => i < ALWAYS_REFINED,
-    });
-    let mut at = |k: f64| {
-        let end = k == (PEAK_SAMPLES + 1) as f64;
-        match (k == 0.0, end, known) {
-            (true, _, KnownEnds { start: Some(s), .. }) => s,
-            (_, true, KnownEnds { end: Some(s), .. }) => s,
-            _ => load_within(mechanism, step, sample, acceleration, fraction(k)),
-        }
-    };
-    let mut within = largest_loads(&mut at, refined);
-    if range != (0.0, 1.0) {
-        for place in &mut within.place {
-            *place = from + (to - from) * *place;
-        }
-    }
-    within
-}
-
-/// The largest of each quantity among the samples k = 0 … [`PEAK_SAMPLES`] + 1 of a step and at
-/// the vertex of the parabola through each `refined` quantity's largest sample and its neighbours:
-/// the joint force, the slider acceleration, the deformation energy and the force of a worn crank
-/// pin or main bearing. The other loads and the stress peak with the joint forces at an impact:
-/// they take the largest of every evaluation made, those vertices included, without evaluations of
-/// their own.
-fn largest_loads(at: &mut impl FnMut(f64) -> Sample, refined: [bool; SERIES]) -> Within {
-    let mut series = [[0.0; PEAK_SAMPLES + 2]; SERIES];
-    for k in 0..PEAK_SAMPLES + 2 {
-        for (values, value) in series.iter_mut().zip(at(k as f64)) {
-            values[k] = value;
-        }
-    }
-    let mut largest: Sample =
-        std::array::from_fn(|i| series[i].iter().copied().fold(f64::NEG_INFINITY, f64::max));
-    // Where each quantity's largest sample lies, as a fraction of the step.
-    let mut place: Sample = std::array::from_fn(|i| {
-        let k = (0..PEAK_SAMPLES + 2)
-            .max_by(|&a, &b| series[i][a].total_cmp(&series[i][b]))
-            .unwrap_or(0);
-        k as f64 / (PEAK_SAMPLES + 1) as f64
-    });
-    let mut vertices: Sample = [f64::NEG_INFINITY; SERIES];
-    for (i, values) in series.iter().enumerate() {
-        if !refined[i] {
-            continue;
-        }
-        if let Some(k) = parabola_vertex(values) {
-            let sample = at(k);
-            if sample[i] > largest[i] {
-                largest[i] = sample[i];
-                place[i] = k / (PEAK_SAMPLES + 1) as f64;
-            }
-            for (v, s) in vertices.iter_mut().zip(sample) {
-                *v = v.max(s);
-            }
-        }
-    }
-    for i in (0..SERIES).filter(|&i| !refined[i]) {
-        largest[i] = largest[i].max(vertices[i]);
-    }
-    let rise = std::array::from_fn(|i| match refined[i] {
-        true => largest[i] - series[i][0].max(series[i][PEAK_SAMPLES + 1]),
-        false => 0.0,
-    });
-    Within {
-        largest,
-        rise,
-        place,
-    }
-}
-
-/// The extremes inside an accepted step ([`within_step`]).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) struct Within {
-    /// The largest value of each quantity inside the step.
-    pub(super) largest: Sample,
-    /// For each refined quantity, how far its largest value rose above the larger of the step's
-    /// ends: the part of an in-step peak that the interpolant, not the integration, decides.
-    pub(super) rise: Sample,
-    /// Where each largest value lies, as a fraction s ∈ [0, 1] of the step.
-    pub(super) place: Sample,
-}
-
-impl Default for Within {
-    /// A step not sampled inside: no extreme, no rise.
-    fn default() -> Self {
-        Self {
-            largest: [f64::NEG_INFINITY; SERIES],
-            rise: [0.0; SERIES],
-            place: [0.0; SERIES],
-        }
-    }
-}
-
-/// Largest relative error of the peak of a lubricated joint's force inside a step: the 2 % its
-/// peaks are held to at the default tolerance.
-pub(super) const PEAK_TOLERANCE: f64 = 0.02;
-
-/// Whether a peak `value` inside a step that rose `rise` above the step's ends may rest on the
-/// interpolant and matters: it rose more than [`PEAK_TOLERANCE`] of itself above both ends
-/// (below that, the ends, which the integration sets, bound its error), and it is at least half
-/// the largest value so far, `largest` (the lesser peaks of a cycle set no design load). Such a
-/// peak is then checked against the integrator's own solution at its place
-/// (`Simulation::doubt_film_peaks`).
-pub(super) fn interpolated_peak(value: f64, rise: f64, largest: f64) -> bool {
-    rise > PEAK_TOLERANCE * value && value >= 0.5 * largest
-}
-
-/// The peak-held magnitudes at the fraction `theta` of the step just accepted, from the dense
-/// output's state and accelerations.
-fn load_within(
-    mechanism: &mut SliderCrank,
-    step: &AcceptedStep<'_>,
-    sample: &mut [f64],
-    acceleration: &mut [f64],
-    theta: f64,
-) -> Sample {
-    let span = step.start.span_to(step.end);
-    let c = Conditions::at(step.signal, span.t0 + theta * span.h, &step.contact_start);
-    let n_q = mechanism.n_coordinates();
-    dense::interpolate(n_q, &span, theta, sample);
-    dense::acceleration(n_q, &span, theta, acceleration);
-    if mechanism.has_film() {
-        dense::cubic_velocities(n_q, span.h, span.y0, span.y1, theta, sample);
-    }
-    let (force, slider_acceleration) = mechanism
-        .clearance_joint_load(sample, &c)
-        .unwrap_or((Vector2::zeros(), 0.0));
-    let loads = mechanism.loads(sample, acceleration, force, c.contacts);
-    let film = mechanism.film_extremes(sample);
-    self::sample(force, slider_acceleration, &loads, film)
-}
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The rise above a step's ends of each refined series, and where its largest value lies:
-    /// a sampled bump between flat ends rises by its height, at its vertex; an unrefined series
-    /// does not rise. A rise of more than 2 % of a peak at least half the largest so far may rest
-    /// on the interpolant.
-    #[test]
-    fn largest_loads_report_the_rise_above_the_ends() {
-        let mut at = |k: f64| -> Sample {
-            let mut s = [1.0; SERIES];
-            s[0] = 1.0 + 0.5 * (1.0 - ((k - 2.5) / 2.5).powi(2));
-            s[5] = s[0];
-            s
-        };
-        let mut refined = [false; SERIES];
-        refined[0] = true;
-        let within = largest_loads(&mut at, refined);
-        assert!(
-            (within.largest[0] - 1.5).abs() < 1e-12,
-            "{:?}",
-            within.largest
-        );
-        assert!((within.rise[0] - 0.5).abs() < 1e-12);
-        assert!((within.place[0] - 0.5).abs() < 1e-12);
-        assert_eq!(within.rise[5], 0.0);
-        assert!(interpolated_peak(within.largest[0], within.rise[0], 2.0));
-        assert!(!interpolated_peak(1000.0, 20.0, 0.0));
-        assert!(!interpolated_peak(1000.0, 300.0, 2500.0));
-    }
-
-    /// Samples of a concave parabola give its vertex; a maximum at either end of the samples, or
-    /// a flat top, gives none.
-    #[test]
-    fn parabola_vertex_locates_the_maximum_between_samples() {
-        let f: Vec<f64> = (0..6).map(|k| 7.0 - (k as f64 - 2.3).powi(2)).collect();
-        let vertex = parabola_vertex(&f).expect("interior maximum");
-        assert!((vertex - 2.3).abs() < 1e-12, "{vertex}");
-        assert_eq!(parabola_vertex(&[3.0, 2.0, 1.0]), None);
-        assert_eq!(parabola_vertex(&[1.0, 2.0, 3.0]), None);
-        assert_eq!(parabola_vertex(&[1.0, 2.0, 2.0, 2.0]), None);
-        assert_eq!(parabola_vertex(&[]), None);
     }
 }

@@ -2,8 +2,9 @@
 //! it, its contact onsets, and the check of a lubricated joint's peak inside it.
 
 use super::cycle::CycleStep;
-use super::peaks::{self, AcceptedStep, KnownEnds, Peaks};
+use super::peaks::{self, Peaks};
 use super::sample::{Sample, force_series};
+use super::within::{self, AcceptedStep, KnownEnds};
 use super::{Engine, InputSignal};
 use crate::error::ModelError;
 use crate::joint::{Joint, JointRates, JointRole};
@@ -12,8 +13,10 @@ use crate::mechanism::{Conditions, Driven};
 
 impl Engine {
     /// Evaluates the end of the step just accepted, integrated with the inputs `signal`, for the
-    /// peak-hold outputs.
-    pub(super) fn record_step_end(&mut self, signal: &InputSignal) -> Result<(), ModelError> {
+    /// peak-hold outputs. A step that ends after the current interval (which it then ends,
+    /// [`Engine::finish_interval`]) is divided at the interval's end: the interval takes its
+    /// extremes before it, the step keeps those after it; the return value says whether it was.
+    pub(super) fn record_step_end(&mut self, signal: &InputSignal) -> Result<bool, ModelError> {
         let end = self.contacts;
         let onsets = JointRole::ALL
             .map(|role| u64::from(!self.contact_start[role].in_contact && end[role].in_contact));
@@ -29,14 +32,22 @@ impl Engine {
             start: self.end_sample.at(&self.start, signal, self.contact_start),
             end: (from_joint_law && self.contact_start == end).then_some(at_end),
         };
-        let within = peaks::within_step(
-            &mut self.mechanism,
-            &step,
-            (0.0, 1.0),
-            known,
-            &mut self.y_sample,
-            &mut self.a_sample,
-        );
+        let (t0, t1) = (self.start.time, self.end.time);
+        let division = (t1 > self.interval.t_end).then(|| {
+            let at = (self.interval.t_end - t0) / (t1 - t0);
+            let (y, a) = (&mut self.y_sample, &mut self.a_sample);
+            within::divided_step(&mut self.mechanism, &step, (0.0, at), known, y, a)
+        });
+        let within = match &division {
+            Some(division) => division.whole,
+            None => within::within_step(
+                &mut self.mechanism,
+                &step,
+                known,
+                &mut self.y_sample,
+                &mut self.a_sample,
+            ),
+        };
         self.end_sample
             .store(&self.end, signal, end, from_joint_law.then_some(at_end));
         self.doubt_film_peaks(&within, signal)?;
@@ -47,11 +58,18 @@ impl Engine {
                 self.monitor.metal_contact(role, self.end.time);
             }
         }
-        self.peaks.step_end = Peaks::from_sample(peaks::larger(at_end, within.largest), onsets);
+        let inside = match &division {
+            Some(division) => {
+                self.peaks.take_before(division.before);
+                division.after
+            }
+            None => within.largest,
+        };
+        self.peaks.step_end = Peaks::from_sample(peaks::larger(at_end, inside), onsets);
         self.peaks.cycle_step = Some(self.cycle_step(at_end, &within, signal));
         self.peaks.pending = true;
         self.check_validity(None);
-        Ok(())
+        Ok(division.is_some())
     }
 
     /// The peak-held magnitudes at the end of the step just accepted, under the contact states at
@@ -80,11 +98,13 @@ impl Engine {
     }
 
     /// Divides the extremes of the pending step, which the interval ending at `t_end` ends
-    /// inside, at `t_end`: the interval takes the step's samples from the interval's start (or
-    /// the step's, if later) to `t_end`, and the step keeps, for the intervals after, its samples
-    /// from `t_end` to its end with its end's value. So each interval holds the extremes of the
-    /// part of the solution inside it, whatever the internal steps' lengths against the
-    /// communication step (a step across several intervals is divided at each).
+    /// inside, at `t_end` (a step that ends after the interval it started in is divided when it
+    /// is recorded, [`Engine::record_step_end`]; this divides a step across an interval it did
+    /// not start in, and one an interval ends inside early): the interval takes the step's
+    /// extremes from the interval's start (or the step's, if later) to `t_end`, and the step
+    /// keeps, for the intervals after, those from `t_end` to its end with its end's value. So
+    /// each interval holds the extremes of the part of the solution inside it, whatever the
+    /// internal steps' lengths against the communication step.
     pub(super) fn divide_pending_step(
         &mut self,
         signal: &InputSignal,
@@ -97,30 +117,26 @@ impl Engine {
             contact_end: self.contacts,
             signal,
         };
-        if !peaks::sampled_inside(&self.mechanism, &step) {
+        if !within::sampled_inside(&self.mechanism, &step) {
             return Ok(());
         }
         let (t0, h) = (self.start.time, self.end.time - self.start.time);
         let from = ((self.interval.t_start - t0) / h).max(0.0);
         let at = (t_end - t0) / h;
-        let mut part = |range| {
-            peaks::within_step(
-                &mut self.mechanism,
-                &step,
-                range,
-                KnownEnds::default(),
-                &mut self.y_sample,
-                &mut self.a_sample,
-            )
-            .largest
+        // the step's end as its recording kept it, where that is the dense output's there
+        let known = KnownEnds {
+            start: None,
+            end: self.end_sample.at(&self.end, signal, self.contact_start),
         };
-        let before = Peaks::from_sample(part((from, at)), [0; 3]);
-        let after = part((at, 1.0));
-        self.peaks.interval.absorb(&before);
-        self.peaks.since_start.absorb(&before);
-        let (at_end, _) = self.step_end_sample(signal)?;
+        let (y, a) = (&mut self.y_sample, &mut self.a_sample);
+        let division = within::divided_step(&mut self.mechanism, &step, (from, at), known, y, a);
+        self.peaks.take_before(division.before);
+        let at_end = match self.end_sample.at(&self.end, signal, self.contacts) {
+            Some(sample) => sample,
+            None => self.step_end_sample(signal)?.0,
+        };
         let onsets = self.peaks.step_end.contact_onsets;
-        self.peaks.step_end = Peaks::from_sample(peaks::larger(at_end, after), onsets);
+        self.peaks.step_end = Peaks::from_sample(peaks::larger(at_end, division.after), onsets);
         Ok(())
     }
 
@@ -130,7 +146,7 @@ impl Engine {
     fn cycle_step(
         &self,
         at_end: Sample,
-        within: &peaks::Within,
+        within: &within::Within,
         signal: &InputSignal,
     ) -> CycleStep {
         let rates = [&self.start, &self.end].map(|point| {
@@ -164,13 +180,13 @@ impl Engine {
     }
 
     /// Warns, once per joint, of a lubricated joint's force peak inside the step just accepted
-    /// that the interpolant decides: one that rose more than [`peaks::PEAK_TOLERANCE`] above the
-    /// step's ends ([`peaks::interpolated_peak`]) and differs by more than that from the force in
+    /// that the interpolant decides: one that rose more than [`within::PEAK_TOLERANCE`] above the
+    /// step's ends ([`within::interpolated_peak`]) and differs by more than that from the force in
     /// the integrator's own solution at its place ([`crate::integrator::Integrator::state_within`],
     /// a partial step: the check costs a step only where such a rise occurs).
     fn doubt_film_peaks(
         &mut self,
-        within: &peaks::Within,
+        within: &within::Within,
         signal: &InputSignal,
     ) -> Result<(), ModelError> {
         let known = peaks::larger(
@@ -181,7 +197,7 @@ impl Engine {
             let i = force_series(role);
             let film = matches!(self.mechanism.joint(role), Joint::Lubricated(_));
             let (value, rise) = (within.largest[i], within.rise[i]);
-            if !(film && peaks::interpolated_peak(value, rise, known[i])) {
+            if !(film && within::interpolated_peak(value, rise, known[i])) {
                 continue;
             }
             let span = self.start.span_to(&self.end);
@@ -202,7 +218,7 @@ impl Engine {
                 .0
                 .force
                 .norm();
-            if (integrated - value).abs() > peaks::PEAK_TOLERANCE * value {
+            if (integrated - value).abs() > within::PEAK_TOLERANCE * value {
                 self.monitor.doubt_peak(role, t0 + s * h, value, integrated);
             }
         }
