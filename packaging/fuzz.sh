@@ -30,7 +30,9 @@ fi
 command -v cargo-fuzz >/dev/null 2>&1 || cargo install cargo-fuzz --locked --quiet
 
 cargo fmt --manifest-path fuzz/Cargo.toml --all -- --check
-cargo clippy --quiet --manifest-path fuzz/Cargo.toml --all-targets -- -D warnings
+# (in the main target directory, whose checked dependencies it shares: fuzz/Cargo.toml repeats the
+# main workspace's development profile)
+CARGO_TARGET_DIR=target cargo clippy --quiet --manifest-path fuzz/Cargo.toml --all-targets -- -D warnings
 echo "== fuzz targets built with sanitizer: $sanitizer"
 if ! "${fuzz[@]}" build -s "$sanitizer" --fuzz-dir fuzz >target/fuzz-build.log 2>&1; then
   cat target/fuzz-build.log >&2

@@ -9,6 +9,7 @@ modelDescription.xml declares under ModelStructure/InitialUnknowns.
 """
 import sys
 import tempfile
+from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
 from fmpy import extract, read_model_description
@@ -55,10 +56,19 @@ def changed(a, b):
     return abs(a - b) > ROUND_OFF * (abs(a) + abs(b))
 
 
-def measure(fmu, configurations):
+def measure(fmu, configurations, workers=2):
     """(unknown, known) name pairs where perturbing the known in initialization mode changes the
-    unknown, over `configurations` (dicts of start values; one that the FMU rejects is skipped).
-    Returns the pairs and the number of configurations measured."""
+    unknown, over `configurations` (dicts of start values; one that the FMU rejects is skipped),
+    shared among `workers` processes. Returns the pairs and the number of configurations
+    measured."""
+    shares = [configurations[i::workers] for i in range(workers)]
+    with ProcessPoolExecutor(max_workers=workers) as pool:
+        results = list(pool.map(measure_in_one_process, [fmu] * workers, shares))
+    return set().union(*(pairs for pairs, _ in results)), sum(n for _, n in results)
+
+
+def measure_in_one_process(fmu, configurations):
+    """`measure` over `configurations`, in this process."""
     md = read_model_description(fmu)
     unzipdir = extract(fmu)
     by_name = {v.name: v for v in md.modelVariables}
