@@ -72,8 +72,8 @@ fn refined_series(mechanism: &SliderCrank) -> [bool; SERIES] {
 
 /// The largest peak-held magnitudes inside the step just accepted, under the contact states it
 /// was integrated with (an onset inside it is latched at its end), if [`sampled_inside`] (no
-/// extreme otherwise); see [`super::peaks::PeakHold`]. The samples at its ends are `known`'s where it has
-/// them; `sample` and `acceleration` are scratch space of one state each.
+/// extreme otherwise); see [`super::peaks::PeakHold`]. The samples at its ends are `known`'s
+/// where it has them; `sample` and `acceleration` are scratch space of one state each.
 pub(super) fn within_step(
     mechanism: &mut SliderCrank,
     step: &AcceptedStep<'_>,
@@ -97,8 +97,8 @@ pub(super) fn within_step(
 }
 
 /// The extremes of the step just accepted divided at the fraction `at` of it, where a
-/// communication interval ends: its part (s₀, `at`) in that interval, s₀ = `range.0`, and its
-/// part (`at`, 1) after it, as [`within_step`] samples a whole step, each as densely
+/// communication interval ends: its part (`from`, `at`) in that interval and its part (`at`, 1)
+/// after it, as [`within_step`] samples a whole step, each as densely
 /// ([`sample_intervals`]) and sharing the sample at `at`.
 pub(super) fn divided_step(
     mechanism: &mut SliderCrank,
