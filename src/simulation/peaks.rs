@@ -156,15 +156,16 @@ pub(super) fn larger(a: Sample, b: Sample) -> Sample {
 /// sampled on each side of it, `within::divided_step`, so that a peak counts in the interval
 /// where it happens, also when the internal steps are longer than the communication step; each
 /// side as densely as a whole step, sharing the sample at t); the contact onsets are counted at
-/// the accepted step in which the journal starts touching. The internal steps follow the solution, not the master's grid.
+/// the accepted step in which the journal starts touching. The internal steps follow the
+/// solution, not the master's grid.
 ///
 /// Inside a step the load is read from the step's dense output: a stiff rod's impact lasts only a
 /// few internal steps, whose ends alone can miss its peak by tens of percent (the rigid rod's
 /// benchmark B at the default tolerance: 36.6 kN at step ends against 45.9 kN converged). The
 /// load is sampled at four equally spaced interior points of the quintic Hermite interpolant
 /// ([`crate::integrator::dense::interpolate`]) and once more at the vertex of the parabola through
-/// the largest sample and its neighbours. That interpolant uses the end accelerations, which after a large implicit step carry amplified unresolved stiff content; on
-/// benchmark B its peaks agree within 0.1 % with sampling the implicit method's own solution
+/// the largest sample and its neighbours. That interpolant uses the end accelerations, which
+/// after a large implicit step carry amplified unresolved stiff content; on benchmark B its peaks agree within 0.1 % with sampling the implicit method's own solution
 /// (a partial step per sample, 3× the run's cost) at the default tolerance, for every rod, and
 /// exceed them by at most 3.5 % at rtol 1e-1.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -203,9 +203,9 @@ fn sample_intervals(length: f64) -> usize {
 /// The largest of each quantity among the samples k = 0 … `n` (n ≤ [`PEAK_SAMPLES`] + 1) of a
 /// step and at the vertex of the parabola through each `refined` quantity's largest sample and
 /// its neighbours: the joint force, the slider acceleration, the deformation energy and the force
-/// of a worn crank pin or main bearing. The other loads and the stress peak with the joint forces at an impact:
-/// they take the largest of every evaluation made, those vertices included, without evaluations of
-/// their own.
+/// of a worn crank pin or main bearing. The other loads and the stress peak with the joint forces
+/// at an impact: they take the largest of every evaluation made, those vertices included, without
+/// evaluations of their own.
 fn largest_loads(at: &mut impl FnMut(f64) -> Sample, n: usize, refined: [bool; SERIES]) -> Within {
     let mut samples = [[0.0; PEAK_SAMPLES + 2]; SERIES];
     for k in 0..=n {
