@@ -165,9 +165,10 @@ pub(super) fn larger(a: Sample, b: Sample) -> Sample {
 /// load is sampled at four equally spaced interior points of the quintic Hermite interpolant
 /// ([`crate::integrator::dense::interpolate`]) and once more at the vertex of the parabola through
 /// the largest sample and its neighbours. That interpolant uses the end accelerations, which
-/// after a large implicit step carry amplified unresolved stiff content; on benchmark B its peaks agree within 0.1 % with sampling the implicit method's own solution
-/// (a partial step per sample, 3× the run's cost) at the default tolerance, for every rod, and
-/// exceed them by at most 3.5 % at rtol 1e-1.
+/// after a large implicit step carry amplified unresolved stiff content; on benchmark B its peaks
+/// agree within 0.1 % with sampling the implicit method's own solution (a partial step per
+/// sample, 3× the run's cost) at the default tolerance, for every rod, and exceed them by at most
+/// 3.5 % at rtol 1e-1.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PeakHold {
     /// Over the current communication interval, from the steps' parts inside it.
