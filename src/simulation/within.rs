@@ -293,7 +293,7 @@ pub(super) fn interpolated_peak(value: f64, rise: f64, largest: f64) -> bool {
 
 /// The peak-held magnitudes at the fraction `theta` of the step just accepted, from the dense
 /// output's state and accelerations.
-pub(super) fn load_within(
+fn load_within(
     mechanism: &mut SliderCrank,
     step: &AcceptedStep<'_>,
     sample: &mut [f64],
