@@ -42,8 +42,9 @@ def test_compare_judges_the_upper_quantiles_and_the_first_impacts():
 
 def test_an_ensembles_runs_differ_and_a_deliberate_error_fails(fmu, tmp_path):
     """Two-run ensembles over 6 ms at the defaults: the runs' impact sequences differ (the initial
-    angle's 1e-12 rad reaches them), the table and the picture are written, and a joint 20 % too
-    stiff in the tested ensemble fails the check (exit status 1)."""
+    angle's 1e-12 rad reaches them), the table and the picture are written (with a second family
+    of the tested ensemble, perturbed from k = 2 on), and a joint 20 % too stiff in the tested
+    ensemble fails the check (exit status 1)."""
     from fmpy import extract, read_model_description
     md = read_model_description(fmu)
     runs = ensemble.ensemble(extract(fmu), md, {}, 1e-2, 2, "joint", 0.006, 1e-5, workers=1)
@@ -52,8 +53,9 @@ def test_an_ensembles_runs_differ_and_a_deliberate_error_fails(fmu, tmp_path):
     assert abs(runs[0][0] / runs[1][0] - 1) < 1e-6
     common = ["--runs", "2", "--stop", "0.006", "--reference-rtol", "1e-4", "--workers", "1",
               "--fmu", fmu]
-    assert ensemble.main(common + ["--out", str(tmp_path / "same")]) in (0, 1)
-    assert (tmp_path / "same" / "ensemble.md").is_file()
+    assert ensemble.main(common + ["--out", str(tmp_path / "same"), "--families", "2"]) in (0, 1)
+    text = (tmp_path / "same" / "ensemble.md").read_text()
+    assert "Further families" in text and "| 2 … |" in text
     assert (tmp_path / "same" / "ensemble.png").stat().st_size > 10_000
     stiff = ensemble.main(common + ["--out", str(tmp_path / "stiff"), "--tested-only",
                                     "joint.youngsModulus=2.484e11"])
