@@ -255,22 +255,17 @@ def main(argv=None) -> int:
     rtol = args.rtol or float(variables["solver.relativeTolerance"].start)
     directory = extract(args.fmu)
     window = (args.joint, args.stop, args.interval)
-    tested = ensemble(directory, md, {**common, **extra}, rtol, args.runs, *window,
-                      workers=args.workers)
+    tested, *others = [ensemble(directory, md, {**common, **extra}, rtol, args.runs, *window,
+                                workers=args.workers, first=f * args.runs)
+                       for f in range(max(args.families, 1))]
     reference = ensemble(directory, md, common, args.reference_rtol, args.runs, *window,
                          workers=args.workers)
-    if any(r[0] is None for r in tested + reference):
+    if any(r[0] is None for runs in [tested, reference, *others] for r in runs):
         print(f"error: {args.joint} never touches in some run", file=sys.stderr)
         return 2
     rows, ok = compare(tested, reference, args.bound)
-    families = []
-    for f in range(1, args.families):
-        runs = ensemble(directory, md, {**common, **extra}, rtol, args.runs, *window,
-                        workers=args.workers, first=f * args.runs)
-        if any(r[0] is None for r in runs):
-            print(f"error: {args.joint} never touches in some run", file=sys.stderr)
-            return 2
-        families.append((f * args.runs, *compare(runs, reference, args.bound)))
+    families = [((f + 1) * args.runs, *compare(runs, reference, args.bound))
+                for f, runs in enumerate(others)]
     ok = ok and all(passed for _, _, passed in families)
     described = ", ".join(args.settings) or "the FMU's defaults"
     if args.tested_only:
