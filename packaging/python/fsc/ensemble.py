@@ -1,33 +1,36 @@
 """A clearance joint's impacts judged as a chaotic system's must be: by ensembles of runs.
 
 The first impact of a dry clearance joint is a smooth function of the settings, but the impacts
-after it are chaotic: a change in the last bit of any number moves them, so two runs that differ in
-the crank's initial angle by 1e-12 rad give different impact sequences, each as right as the other.
-One run cannot be compared with another impact by impact. This compares distributions instead:
+some way after it are chaotic: a small change of the start moves them, and at a loose tolerance
+so does the integration error, so one run cannot be compared with another impact by impact. This
+compares distributions instead:
 
-- an **ensemble** is `runs` runs at the same settings that differ only in the last bits: the
-  crank's initial angle plus k·1e-12 rad, k = 0 … runs − 1 (not the tolerance: the internal steps
-  end on the FMU's clock grid of 2⁻⁴⁰ s, which absorbs a change of the tolerance in its sixth
-  digit);
+- an **ensemble** is `runs` runs at the same settings whose crank starts at initial angles
+  k·1e-5 rad apart, k = 0 … runs − 1 (`PERTURBATION`): small enough that the first impact moves by
+  at most 0.05 %, large enough that even the converged runs part after about ten later peaks, as
+  the runs at the default tolerance do. (With the last bits perturbed, 1e-12 rad, the converged
+  runs stay one trajectory for their first 40-odd later peaks, which hold more than half of the
+  upper decile: the check would judge those peaks as one trajectory against a distribution.)
+- the tested and the converged ensemble are **paired**: the k-th run of each starts at the same
+  angle, so a part of the motion that is not chaotic (before the runs part, or a joint that rolls
+  on its wall) is compared run by run, and the rest as a distribution;
 - a run's **peaks** are the local maxima of `<joint>.forcePeak` (the joint force's largest value
   over each communication interval, every internal step and dense-output sample counted) above
   10 % of the run's first impact, the first local maximum after the joint's first contact onset;
 - the **first impact**, before the motion forgets its start, is judged run by run: each tested
-  run's against the converged ensemble's median, within `bound`;
-- the **later peaks**, pooled over the ensemble, are judged by the mean of their upper decile
-  (the peaks at or above their 90th percentile) and their largest, each within `bound` of the
-  converged ensemble's (`STATISTICS`). These are statistics that two converged ensembles (rtol
-  1e-7 and 1e-8) pass against each other; the 90th percentile itself does not always (where
-  the distribution is thin a small shift of the fraction moves it far), nor do the median and
-  the count of small rattles (docs/guide/validation.md);
-- a verdict near the bound can be luck (the judged statistics' sampling noise is about 1 % per
-  44-run ensemble): with `--families F` the tested ensemble is run F times, the f-th with the
-  perturbations k·1e-12 rad, k = f·runs … (f + 1)·runs − 1, each judged against the same converged
-  ensemble, and the check passes only if every family does.
+  run's against its converged twin's, within `bound`;
+- the **later peaks** are judged by the mean of the pooled peaks' upper decile (the peaks at or
+  above their 90th percentile) and by the largest later peak of each run, averaged over the runs
+  (`STATISTICS`), each within `bound` of the converged ensemble's. The largest of all pooled
+  peaks, the 90th percentile, the median and the count of small rattles are reported, not judged:
+  the pooled largest is one peak, and two converged ensembles of the worn crank pin started at
+  different angles differ in it by 22 % (docs/guide/validation.md);
+- each statistic's **noise** is a bootstrap over the pairs of runs (a run's peaks stay together:
+  they are not independent); with 132 runs it is 0.4–0.7 % for the upper decile.
 
-    python -m fsc ensemble [NAME=VALUE ...] [--joint joint|crankPin|mainBearing] [--runs 44]
+    python -m fsc ensemble [NAME=VALUE ...] [--joint joint|crankPin|mainBearing] [--runs 132]
         [--rtol R] [--reference-rtol 1e-7] [--stop 0.024] [--interval 1e-5] [--bound 0.02]
-        [--tested-only NAME=VALUE ...] [--families 1] [--workers N] [--out DIR] [--fmu PATH]
+        [--tested-only NAME=VALUE ...] [--workers N] [--out DIR] [--fmu PATH]
 
 NAME=VALUE are start values of both ensembles (switches by item name: `crankPin.model=dry`);
 `--tested-only` adds start values to the tested ensemble alone (a deliberate error, to see the
@@ -43,26 +46,16 @@ from pathlib import Path
 
 import numpy as np
 
-#: Runs per ensemble: with 11 the judged statistics' sampling noise is about 1 % per ensemble
-#: (bootstrap over the runs, the 4-mode rod's defaults), so that two converged ensembles differ by
-#: more than 2 % one time in six; with 44 it is halved.
-RUNS = 44
+#: Runs per ensemble: with 132 the upper decile's noise is 0.4–0.7 % (a bootstrap over the pairs of
+#: runs, the 4-mode rod's three worn joints at the defaults), 1–1.5 % with 44.
+RUNS = 132
 #: A peak counts from this fraction of the run's first impact.
 THRESHOLD = 0.1
-#: The perturbation of the crank's initial angle from one run of an ensemble to the next [rad].
-PERTURBATION = 1e-12
-def upper_decile_mean(p):
-    """The mean of the peaks at or above the 90th percentile."""
-    p = np.asarray(p, dtype=float)
-    return float(np.mean(p[p >= np.percentile(p, 90)]))
-
-
-#: The statistics of the later peaks that are judged: (name, function of the pooled peaks).
-STATISTICS = (("upper-decile mean", upper_decile_mean),
-              ("largest", lambda p: float(np.max(p))))
-#: Reported beside them, not judged.
-INFORMATION = (("90th percentile", lambda p: float(np.percentile(p, 90))),
-               ("median", lambda p: float(np.median(p))))
+#: The perturbation of the crank's initial angle from one run of an ensemble to the next [rad]:
+#: converged runs (rtol 1e-7) of the worn rod–slider joint part (a later peak 1 % apart) after
+#: 43 later peaks 1e-9 rad apart, 27 at 1e-7 and 11–13 at 1e-5, where the default tolerance's runs
+#: part at any of these.
+PERTURBATION = 1e-5
 
 
 def peaks(force_peak, onsets, threshold=THRESHOLD):
@@ -96,53 +89,73 @@ def run_one(job):
     return first, later, int(result["solver.steps"][-1])
 
 
-def ensemble(directory, model_description, start_values, rtol, runs, joint, stop, interval,
-             workers=None, first=0):
-    """The runs of one ensemble at `rtol`, the k-th with the crank's initial angle moved by
-    k·PERTURBATION, k = first … first + runs − 1: a list of (first impact, later peaks, steps)."""
-    angle = start_values.get("crank.initialAngle", 0.0)
-    jobs = [(directory, model_description,
-             {**start_values, "solver.relativeTolerance": rtol,
-              "crank.initialAngle": angle + k * PERTURBATION},
-             joint, stop, interval) for k in range(first, first + runs)]
-    with ProcessPoolExecutor(max_workers=workers) as pool:
-        return list(pool.map(run_one, jobs))
-
-
 def pooled(runs):
     """The later peaks of every run of an ensemble, in one array."""
     return np.concatenate([np.asarray(r[1], dtype=float) for r in runs] + [np.zeros(0)])
 
 
+def upper_decile_mean(runs):
+    """The mean of the pooled later peaks at or above their 90th percentile."""
+    p = pooled(runs)
+    return float(np.mean(p[p >= np.percentile(p, 90)]))
+
+
+def largest_per_run(runs):
+    """Each run's largest later peak (0 for a run without one), averaged over the runs."""
+    return float(np.mean([max(r[1], default=0.0) for r in runs]))
+
+
+#: The statistics of the later peaks that are judged: (name, function of an ensemble's runs).
+STATISTICS = (("upper-decile mean", upper_decile_mean),
+              ("largest of each run, mean", largest_per_run))
+#: Reported beside them, not judged.
+INFORMATION = (("largest", lambda runs: float(np.max(pooled(runs)))),
+               ("90th percentile", lambda runs: float(np.percentile(pooled(runs), 90))),
+               ("median", lambda runs: float(np.median(pooled(runs)))))
+
+
+def ensemble(directory, model_description, start_values, rtol, runs, joint, stop, interval,
+             workers=None):
+    """The runs of one ensemble at `rtol`, the k-th with the crank's initial angle moved by
+    k·PERTURBATION, k = 0 … runs − 1: a list of (first impact, later peaks, steps)."""
+    angle = start_values.get("crank.initialAngle", 0.0)
+    jobs = [(directory, model_description,
+             {**start_values, "solver.relativeTolerance": rtol,
+              "crank.initialAngle": angle + k * PERTURBATION},
+             joint, stop, interval) for k in range(runs)]
+    with ProcessPoolExecutor(max_workers=workers) as pool:
+        return list(pool.map(run_one, jobs))
+
+
 def noise(tested, reference, f, draws=500, seed=0):
     """The sampling noise of the relative difference f(tested)/f(reference) − 1 of a statistic
-    `f` of the pooled later peaks: the standard deviation over `draws` bootstrap resamples of
-    each ensemble's runs (a run's peaks stay together: they are not independent)."""
+    `f` of the runs: the standard deviation over `draws` bootstrap resamples of the pairs of runs
+    (the k-th tested run with the k-th converged one, a run's peaks together)."""
     rng = np.random.default_rng(seed)
-
-    def resampled(runs):
-        return f(pooled([runs[i] for i in rng.integers(0, len(runs), len(runs))]))
-    return float(np.std([resampled(tested) / resampled(reference) - 1 for _ in range(draws)]))
+    ratios = []
+    for _ in range(draws):
+        pick = rng.integers(0, len(tested), len(tested))
+        ratios.append(f([tested[i] for i in pick]) / f([reference[i] for i in pick]) - 1)
+    return float(np.std(ratios))
 
 
 def compare(tested, reference, bound):
-    """The rows of the comparison, (statistic, tested, reference, relative difference, its
-    sampling noise or None, judged, within bound), and whether every judged one is within
-    `bound`."""
-    t, r = pooled(tested), pooled(reference)
+    """The rows of the comparison of two paired ensembles (the k-th runs start alike), (statistic,
+    tested, reference, relative difference, its sampling noise or None, judged, within bound),
+    and whether every judged one is within `bound`."""
+    if len(tested) != len(reference):
+        raise ValueError(f"paired ensembles need as many runs: {len(tested)} and {len(reference)}")
     rows = []
-    firsts = np.array([f for f, _, _ in tested], dtype=float)
-    reference_first = float(np.median([f for f, _, _ in reference]))
-    worst = firsts[np.argmax(np.abs(firsts - reference_first))]
-    rows.append(("first impact, worst run", float(worst), reference_first,
-                 worst / reference_first - 1, None, True))
-    for name, f in STATISTICS:
-        a, b = f(t), f(r)
-        rows.append((f"later peaks, {name}", a, b, a / b - 1, noise(tested, reference, f), True))
-    for name, f in INFORMATION:
-        a, b = f(t), f(r)
-        rows.append((f"later peaks, {name}", a, b, a / b - 1, noise(tested, reference, f),
-                     False))
+    firsts = np.array([[t[0], r[0]] for t, r in zip(tested, reference)], dtype=float)
+    worst = int(np.argmax(np.abs(firsts[:, 0] / firsts[:, 1] - 1)))
+    rows.append(("first impact, worst run", float(firsts[worst, 0]), float(firsts[worst, 1]),
+                 firsts[worst, 0] / firsts[worst, 1] - 1, None, True))
+    for judged, statistics in ((True, STATISTICS), (False, INFORMATION)):
+        for name, f in statistics:
+            a, b = f(tested), f(reference)
+            rows.append((f"later peaks, {name}", a, b, a / b - 1, noise(tested, reference, f),
+                         judged))
+    t, r = pooled(tested), pooled(reference)
     a, b = len(t) / len(tested), len(r) / len(reference)
     rows.append(("later peaks per run", a, b, a / b - 1, None, False))
     a = float(np.mean([s for _, _, s in tested]))
@@ -161,19 +174,6 @@ def table(rows, settings, bound):
         verdict = ("yes" if ok else "**no**") if judged else "—"
         spread = "—" if sigma is None else f"{100 * sigma:.2f} %"
         lines.append(f"| {name} | {a:.6g} | {b:.6g} | {100 * d:+.2f} % | {spread} | {verdict} |")
-    return "\n".join(lines) + "\n"
-
-
-def families_table(families, bound):
-    """The judged statistics of each further family of the tested ensemble against the converged
-    one, as a Markdown table: `families` is a list of (first perturbation index, rows, passed)."""
-    judged = [row[0] for row in families[0][1] if row[5]]
-    lines = ["", "Further families of the tested ensemble, against the same converged ensemble:", "",
-             "| perturbations k | " + " | ".join(judged) + f" | within ±{100 * bound:g} % |",
-             "|---|" + "---|" * (len(judged) + 1)]
-    for first, rows, ok in families:
-        cells = [f"{100 * row[3]:+.2f} %" for row in rows if row[5]]
-        lines.append(f"| {first} … | " + " | ".join(cells) + f" | {'yes' if ok else '**no**'} |")
     return "\n".join(lines) + "\n"
 
 
@@ -238,8 +238,6 @@ def main(argv=None) -> int:
     parser.add_argument("--bound", type=float, default=0.02)
     parser.add_argument("--tested-only", nargs="*", default=[],
                         help="NAME=VALUE start values of the tested ensemble alone")
-    parser.add_argument("--families", type=int, default=1,
-                        help="runs of the tested ensemble, each with its own perturbations")
     parser.add_argument("--workers", type=int)
     parser.add_argument("--out", default="target/ensemble")
     parser.add_argument("--fmu", default="target/fmu/FlexibleSliderCrank.fmu")
@@ -255,18 +253,14 @@ def main(argv=None) -> int:
     rtol = args.rtol or float(variables["solver.relativeTolerance"].start)
     directory = extract(args.fmu)
     window = (args.joint, args.stop, args.interval)
-    tested, *others = [ensemble(directory, md, {**common, **extra}, rtol, args.runs, *window,
-                                workers=args.workers, first=f * args.runs)
-                       for f in range(max(args.families, 1))]
+    tested = ensemble(directory, md, {**common, **extra}, rtol, args.runs, *window,
+                      workers=args.workers)
     reference = ensemble(directory, md, common, args.reference_rtol, args.runs, *window,
                          workers=args.workers)
-    if any(r[0] is None for runs in [tested, reference, *others] for r in runs):
+    if any(r[0] is None for runs in [tested, reference] for r in runs):
         print(f"error: {args.joint} never touches in some run", file=sys.stderr)
         return 2
     rows, ok = compare(tested, reference, args.bound)
-    families = [((f + 1) * args.runs, *compare(runs, reference, args.bound))
-                for f, runs in enumerate(others)]
-    ok = ok and all(passed for _, _, passed in families)
     described = ", ".join(args.settings) or "the FMU's defaults"
     if args.tested_only:
         described += f"; tested ensemble only: {', '.join(args.tested_only)}"
@@ -275,8 +269,6 @@ def main(argv=None) -> int:
                 f"{args.reference_rtol:g} (the k-th run's initial crank angle + k·{PERTURBATION:g} "
                 f"rad)")
     text = table(rows, settings, args.bound)
-    if families:
-        text += families_table(families, args.bound)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     (out / "ensemble.md").write_text(text)
