@@ -257,7 +257,7 @@ def main(argv=None) -> int:
                       workers=args.workers)
     reference = ensemble(directory, md, common, args.reference_rtol, args.runs, *window,
                          workers=args.workers)
-    if any(r[0] is None for runs in [tested, reference] for r in runs):
+    if any(r[0] is None for r in tested + reference):
         print(f"error: {args.joint} never touches in some run", file=sys.stderr)
         return 2
     rows, ok = compare(tested, reference, args.bound)
