@@ -173,6 +173,26 @@ impl<V: Copy> Variable<V> {
         }
     }
 
+    /// This Real variable as a calculated parameter: fixed, non-negative, computed from the
+    /// parameters.
+    pub const fn calculated(self) -> Self {
+        let kind = match self.kind {
+            Kind::Real { unit, .. } => Kind::Real {
+                start: None,
+                min: 0.0,
+                max: f64::INFINITY,
+                unit,
+            },
+            other => other,
+        };
+        Self {
+            causality: Causality::CalculatedParameter,
+            variability: Variability::Fixed,
+            kind,
+            ..self
+        }
+    }
+
     /// A peak-hold output: a Real that changes only at communication points.
     pub const fn peak(
         vr: V,

@@ -72,6 +72,15 @@ impl SliderCrankFmu {
                     Num(parameters.relative_tolerance)
                 ));
             }
+            let integrated = parameters.integration_tolerance();
+            if integrated != parameters.relative_tolerance {
+                log.event(&format!(
+                    "integrated at rtol {} (solver.relativeTolerance = {}): the largest with \
+                     mainBearing.model = dry",
+                    Num(integrated),
+                    Num(parameters.relative_tolerance)
+                ));
+            }
             let mut sim = Engine::new(parameters, inputs, cx.time)?;
             log.event(&format!(
                 "model built: {:?} rod, {:?} joint, {:?} drive, {} states",
@@ -189,6 +198,9 @@ impl Model for SliderCrankFmu {
             }
             *value = match v.vr {
                 Vr::JointContactStiffness => Engine::contact_stiffness(p),
+                Vr::SolverIntegrationTolerance => {
+                    model_parameters(p, cx.experiment.tolerance).integration_tolerance()
+                }
                 Vr::DriveSpeed => cx.inputs.reading().value.drive_speed,
                 Vr::DriveTorque => cx.inputs.reading().value.drive_torque,
                 Vr::SliderForce => cx.inputs.reading().value.slider_force,

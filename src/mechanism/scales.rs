@@ -38,7 +38,7 @@ const ROUND_OFF_FLOOR: f64 = 100.0 * f64::EPSILON;
 ///
 /// and at least the round-off floor [`ROUND_OFF_FLOOR`] · (r_c + l) / rtol.
 pub(super) fn position_scale(p: &Parameters, inputs: &Inputs) -> f64 {
-    let floor = ROUND_OFF_FLOOR * (p.crank_length + p.rod.length) / p.relative_tolerance;
+    let floor = ROUND_OFF_FLOOR * (p.crank_length + p.rod.length) / p.integration_tolerance();
     joint_length(p, inputs).max(floor)
 }
 

@@ -346,19 +346,13 @@ pub(super) const VARIABLES: [&[Variable]; 13] = [
 /// The force each joint carries (its components and peak) and the rod–slider joint's contact
 /// stiffness.
 const LOADS: &[Variable] = &[
-    Variable {
-        vr: Vr::JointContactStiffness,
-        name: "joint.contactStiffness",
-        causality: Causality::CalculatedParameter,
-        variability: Variability::Fixed,
-        kind: Kind::Real {
-            start: None,
-            min: 0.0,
-            max: f64::INFINITY,
-            unit: "N/m1.5",
-        },
-        description: "Hertz point-contact stiffness 4/(3(s_i+s_j)) sqrt(Ri Rj/(Ri-Rj)), s = (1-nu^2)/E, of the rod-slider joint (joint.contactGeometry = point; the line contact has no single stiffness: its force is Johnson's law of joint.bearingLength and E/(2(1-nu^2)))",
-    },
+    Variable::output(
+        Vr::JointContactStiffness,
+        "joint.contactStiffness",
+        "N/m1.5",
+        "Hertz point-contact stiffness 4/(3(s_i+s_j)) sqrt(Ri Rj/(Ri-Rj)), s = (1-nu^2)/E, of the rod-slider joint (joint.contactGeometry = point; the line contact has no single stiffness: its force is Johnson's law of joint.bearingLength and E/(2(1-nu^2)))",
+    )
+    .calculated(),
     Variable::output(
         Vr::JointForce,
         "joint.force",

@@ -87,6 +87,7 @@ pub(super) fn initial_dependency(unknown: Vr, known: Vr) -> bool {
             known,
             SliderForce | SliderForceTable | SliderForceTablePeriod | CrankInitialAngle
         ),
+        SolverIntegrationTolerance => matches!(known, SolverRelativeTolerance | MainBearingModel),
         JointContactStiffness => matches!(
             known,
             JointClearance | JointJournalRadius | JointYoungsModulus | JointPoissonRatio

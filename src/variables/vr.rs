@@ -295,6 +295,7 @@ pub enum Vr {
     MainBearingFeedDiameter,
     MainBearingFeedGrooveLength,
     MainBearingFeedFlow,
+    SolverIntegrationTolerance,
 }
 
 impl ValueReference for Vr {

@@ -246,6 +246,30 @@ def test_master_tolerance_tightens_but_never_loosens_the_integration(fmu):
     assert steps(relative_tolerance=1e-6, start_values={"solver.relativeTolerance": 1e-1}) == tight
 
 
+def test_a_dry_main_bearing_is_integrated_at_rtol_1e_3_at_most(fmu):
+    """With mainBearing.model = dry a looser solver.relativeTolerance (the default 1e-2, or 1e-1)
+    runs exactly as 1e-3 and a tighter one as given, and solver.integrationTolerance says which;
+    with the main bearing ideal 1e-2 stays 1e-2, and the master's tolerance tightens either."""
+    def run(rtol, master=None, **start):
+        res = simulate_fmu(fmu, stop_time=0.006, relative_tolerance=master,
+                           output=["solver.steps", "mainBearing.force",
+                                   "solver.integrationTolerance"],
+                           start_values={"solver.relativeTolerance": rtol, **start})
+        return (int(res["solver.steps"][-1]), float(res["mainBearing.force"][-1]),
+                float(res["solver.integrationTolerance"][-1]))
+
+    worn = {"mainBearing.model": 2, "joint.model": 1}
+    capped = run(1e-3, **worn)
+    assert capped[2] == 1e-3
+    assert run(1e-2, **worn) == capped and run(1e-1, **worn) == capped
+    tight = run(1e-4, **worn)
+    assert tight[0] > capped[0] and tight[2] == 1e-4
+    assert run(1e-2, master=1e-4, **worn) == tight
+    ideal = run(1e-2, **{"joint.model": 1})
+    assert ideal[2] == 1e-2 and ideal[:2] != run(1e-3, **{"joint.model": 1})[:2]
+    assert run(1e-2, master=1e-3, **{"joint.model": 1})[2] == 1e-3
+
+
 SWITCHES = {"rod.formulation": 2, "rod.boundary": 2, "rod.quadrature": 2, "rod.initialState": 2, "joint.model": 3,
             "joint.contactLaw": 2, "drive.mode": 2, "solver.method": 3}
 
