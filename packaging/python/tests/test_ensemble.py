@@ -1,9 +1,24 @@
 """The ensemble check of chaotic impacts (`python -m fsc ensemble`): its peaks, its statistics and
-its verdict, and a short run through the FMU in which the runs differ and the check can fail."""
+its verdict, a short run through the FMU in which the runs differ and the check can fail, and the
+defaults' check for each worn joint against its converged ensemble.
+
+The converged ensembles (rtol 1e-7) are the model's own answer, whatever the integrator's settings, and
+take ten times a tested ensemble's time: they are recorded in `data/ensemble_<joint>.json` with the
+model's parameters they were run at. A test fails until they are recorded afresh (`UPDATE_ENSEMBLES=1
+pytest packaging/python/tests/test_ensemble.py`) if its parameters differ from the recorded ones, or if
+the model's first impact (not chaotic) moved: the first run is run again and its first impact held to
+the recorded one's within 1e-6."""
+import json
+import os
+from pathlib import Path
+
 import numpy as np
 import pytest
 
 from fsc import ensemble
+
+#: Where the converged ensembles are recorded.
+RECORDED = Path(__file__).resolve().parent / "data"
 
 
 def test_peaks_are_the_local_maxima_after_the_first_contact():
@@ -69,10 +84,33 @@ def test_an_ensembles_runs_differ_and_a_deliberate_error_fails(fmu, tmp_path):
     assert stiff == 1
 
 
+def converged(directory, md, start_values, runs, window):
+    """The converged ensemble (rtol 1e-7) of `runs` runs over `window` with `start_values` as
+    recorded (module docs), the recording's settings checked against the FMU's parameters."""
+    physical = {v.name: v.start for v in md.modelVariables
+                if v.causality == "parameter" and not v.name.startswith("solver.")}
+    settings = {"start_values": start_values, "rtol": 1e-7, "runs": runs, "window": list(window),
+                "perturbation": ensemble.PERTURBATION, "parameters": physical}
+    path = RECORDED / f"ensemble_{window[0]}.json"
+    if os.environ.get("UPDATE_ENSEMBLES"):
+        runs = ensemble.ensemble(directory, md, start_values, 1e-7, runs, *window, workers=2)
+        rounded = [[float(f"{first:.9g}"), [float(f"{p:.9g}") for p in later], steps]
+                   for first, later, steps in runs]
+        path.write_text(json.dumps({"settings": settings, "runs": rounded}) + "\n")
+    recorded = json.loads(path.read_text())
+    changed = {k: (v, settings[k]) for k, v in recorded["settings"].items() if v != settings[k]}
+    assert not changed, f"{path.name} was recorded with other settings (recorded, now): {changed}"
+    [(first, _, _)] = ensemble.ensemble(directory, md, start_values, 1e-7, 1, *window, workers=1)
+    assert abs(first / recorded["runs"][0][0] - 1) < 1e-6, (
+        f"{path.name}: the first impact is {first} N, recorded {recorded['runs'][0][0]} N")
+    return [(first, later, steps) for first, later, steps in recorded["runs"]]
+
+
 def check(fmu, joint, start_values, youngs_modulus):
     """Whether the 44-run ensemble at the FMU's default tolerance passes against the converged one
-    (rtol 1e-7) over two revolutions, and whether it fails with the bearing's Young's modulus 20 %
-    high (`youngs_modulus` names it): the two verdicts, with the rows of each comparison."""
+    (rtol 1e-7, recorded) over two revolutions, and whether it fails with the bearing's Young's
+    modulus 20 % high (`youngs_modulus` names it): the two verdicts, with the rows of each
+    comparison."""
     from fmpy import extract, read_model_description
     md = read_model_description(fmu)
     directory = extract(fmu)
@@ -80,7 +118,7 @@ def check(fmu, joint, start_values, youngs_modulus):
     runs = 44
     variables = {v.name: v for v in md.modelVariables}
     rtol = float(variables["solver.relativeTolerance"].start)
-    reference = ensemble.ensemble(directory, md, start_values, 1e-7, runs, *window, workers=2)
+    reference = converged(directory, md, start_values, runs, window)
     tested = ensemble.ensemble(directory, md, start_values, rtol, runs, *window, workers=2)
     modulus = float(variables[youngs_modulus].start)
     stiff = ensemble.ensemble(directory, md, {**start_values, youngs_modulus: 1.2 * modulus},
@@ -102,5 +140,14 @@ def test_a_worn_main_bearing_passes_at_the_defaults(fmu):
     modulus 20 % high."""
     worn = {"mainBearing.model": 2, "joint.model": 1}
     (rows, ok), (stiff_rows, stiff_ok) = check(fmu, "mainBearing", worn, "mainBearing.youngsModulus")
+    assert ok, rows
+    assert not stiff_ok, stiff_rows
+
+
+def test_a_worn_crank_pin_passes_at_the_defaults(fmu):
+    """A worn crank pin at the defaults: its ensemble passes against the converged one, and fails
+    with the pin's Young's modulus 20 % high."""
+    worn = {"crankPin.model": 2, "joint.model": 1}
+    (rows, ok), (stiff_rows, stiff_ok) = check(fmu, "crankPin", worn, "crankPin.youngsModulus")
     assert ok, rows
     assert not stiff_ok, stiff_rows
