@@ -57,8 +57,9 @@ if [ -n "$root_pid" ] && ! wait "$root_pid"; then
   exit 1
 fi
 step "pytest (packaged FMU through fmpy and libcosimpy; release binaries on every platform)"
+# Two worker processes, each taking whole test files (their module fixtures built once).
 set +e
-.venv/bin/python -m pytest -q packaging/python/tests
+.venv/bin/python -m pytest -q -n 2 --dist loadfile packaging/python/tests
 status=$?
 set -e
 if [ "$status" -eq 5 ]; then
