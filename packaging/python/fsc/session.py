@@ -8,6 +8,7 @@ instances the package did not make go on to fmpy's default logger, which prints 
 would without the package. An FMI 3.0 instance has a logger of its own (its callback takes no
 instance name), which files its messages the same way.
 """
+import threading
 from ctypes import byref
 
 from fmpy import extract, read_model_description
@@ -41,11 +42,21 @@ _CALLBACKS.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
 _CALLBACKS.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
 
 
+_INSTALLING = threading.Lock()
+
+
 def install_logger():
     """Points fmpy's logger proxy (the process-wide slot) at the package's logger; anything else
-    in the process that passed its own logger to fmpy may have pointed it elsewhere."""
-    _CALLBACKS.logger = _LOGGER
-    addLoggerProxy(byref(_CALLBACKS))
+    in the process that passed its own logger to fmpy may have pointed it elsewhere.
+
+    Threads may instantiate with `_CALLBACKS` while another installs: its logger is only ever the
+    proxy (the slot is pointed through a scratch copy), never the Python logger itself, which
+    would receive an FMU's messages unformatted ("%s")."""
+    with _INSTALLING:
+        scratch = fmi2CallbackFunctions()
+        scratch.logger = _LOGGER
+        addLoggerProxy(byref(scratch))
+        _CALLBACKS.logger = scratch.logger
 
 
 def messages(name: str) -> list:

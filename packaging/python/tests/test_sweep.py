@@ -144,6 +144,24 @@ def test_cases_in_parallel_threads_keep_their_own_instance_and_messages(tmp_path
                 assert metrics["solver_steps"] == reference["solver_steps"]
 
 
+def test_messages_stay_formatted_while_threads_install_the_logger(tmp_path):
+    """Threads instantiating while others install the package's logger: every error message is
+    the FMU's formatted text, never the raw format string ("%s") of an instance that caught the
+    callbacks between the logger's installation steps."""
+    from concurrent.futures import ThreadPoolExecutor
+    study = study_mod.load(write_study(tmp_path, SMALL))
+    fmu = study.fmu.read_bytes()
+
+    def one(_):
+        return run_case(fmu, study.guid, {"joint.clearance": 0.0}, study.stop_time,
+                        study.output_interval, study.series)[:2]
+
+    with ThreadPoolExecutor(max_workers=8) as pool:
+        outcomes = list(pool.map(one, range(64)))
+    assert all(status == "error" and "joint.clearance = 0" in message
+               for status, message in outcomes), outcomes
+
+
 def test_failing_case_is_a_row(tmp_path):
     """Clearance 0 with the dry joint is an error row with the FMU's message; the
     other cases are correct."""
