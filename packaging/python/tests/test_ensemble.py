@@ -93,12 +93,14 @@ def converged(directory, md, start_values, runs, window):
                 "perturbation": ensemble.PERTURBATION, "parameters": physical}
     path = RECORDED / f"ensemble_{window[0]}.json"
     if os.environ.get("UPDATE_ENSEMBLES"):
-        runs = ensemble.ensemble(directory, md, start_values, 1e-7, runs, *window, workers=2)
+        computed = ensemble.ensemble(directory, md, start_values, 1e-7, runs, *window, workers=2)
         rounded = [[float(f"{first:.9g}"), [float(f"{p:.9g}") for p in later], steps]
-                   for first, later, steps in runs]
+                   for first, later, steps in computed]
         path.write_text(json.dumps({"settings": settings, "runs": rounded}) + "\n")
     recorded = json.loads(path.read_text())
-    changed = {k: (v, settings[k]) for k, v in recorded["settings"].items() if v != settings[k]}
+    changed = {k: (recorded["settings"].get(k), settings.get(k))
+               for k in recorded["settings"].keys() | settings.keys()
+               if recorded["settings"].get(k) != settings.get(k)}
     assert not changed, f"{path.name} was recorded with other settings (recorded, now): {changed}"
     [(first, _, _)] = ensemble.ensemble(directory, md, start_values, 1e-7, 1, *window, workers=1)
     assert abs(first / recorded["runs"][0][0] - 1) < 1e-6, (
