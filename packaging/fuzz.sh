@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Coverage-guided fuzzing (libFuzzer through cargo-fuzz) of the FMU's state deserialization and of
-# fmi2* and fmi3* call sequences, each target for a fixed time (seconds, default 60; two targets at
-# a time, one core each) from the corpus kept in fuzz/corpus. New inputs go to a scratch directory,
+# fmi2* and fmi3* call sequences, each target for a fixed time (seconds, default 60; the three
+# targets at once) from the corpus kept in fuzz/corpus. New inputs go to a scratch directory,
 # so a run leaves the repository as it was; a crash fails the run and leaves its input under
 # fuzz/artifacts/. With --update-corpus the kept corpus is regenerated instead (one target at a
 # time): the inputs of the run, the kept ones and (for fmu_state) states of the current format from
@@ -71,10 +71,11 @@ fuzz_target() {
 if [ "$update" = "--update-corpus" ]; then
   for target in fmu_state call_sequence fmi3_call_sequence; do fuzz_target "$target"; done
 else
-  # libFuzzer runs on one core: two targets at a time, each for its full time.
-  fuzz_target fmu_state &
-  first=$!
-  fuzz_target call_sequence
-  wait "$first"
-  fuzz_target fmi3_call_sequence
+  # libFuzzer runs on one core: the three targets at once, each for its full time.
+  pids=()
+  for target in fmu_state call_sequence fmi3_call_sequence; do
+    fuzz_target "$target" &
+    pids+=($!)
+  done
+  for pid in "${pids[@]}"; do wait "$pid"; done
 fi

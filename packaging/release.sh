@@ -171,5 +171,7 @@ done
 [ "$failed" -eq 0 ]
 
 # --- the FMU -----------------------------------------------------------------------------------
+# The packaging program only zips the libraries built above (and computes the reference results
+# in process, to the bit what the release libraries give): its development build serves.
 export CARGO_HOME=$user_cargo_home
-cargo run --release --quiet -p packaging -- --binaries "$bin"
+cargo run --quiet -p packaging -- --binaries "$bin"

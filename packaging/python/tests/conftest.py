@@ -1,5 +1,5 @@
-"""Fixtures the tests share: the repository, the packaged FMU (built by `cargo run --release -p
-packaging`, which the test command runs first) and its model description."""
+"""Fixtures the tests share: the repository, the packaged FMU (`cargo run --release -p packaging`;
+the test command puts the release build's there) and its model description."""
 from pathlib import Path
 
 import pytest

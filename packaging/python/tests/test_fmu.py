@@ -154,7 +154,7 @@ def test_fmu_equals_library(fmu, formulation, joint):
     """The FMU through fmpy and the Rust library (examples/simulate.rs) on the same time grid give
     the same numbers (relative difference <= 1e-12; bit-identical in practice)."""
     csv = subprocess.run(
-        ["cargo", "run", "--quiet", "--release", "--example", "simulate", "--",
+        ["cargo", "run", "--quiet", "--example", "simulate", "--",
          formulation, joint, "0.003", "1e-4"],
         cwd=ROOT, check=True, capture_output=True, text=True).stdout.splitlines()
     header = csv[0].split(",")
