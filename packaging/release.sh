@@ -11,11 +11,13 @@
 # from this workspace, with only Debian packages, crates and PyPI packages:
 #   - linux64: this machine's Rust toolchain, linked by zig (PyPI `ziglang`) through cargo-zigbuild
 #     against glibc 2.28's symbol versions;
-#   - win64, darwin64 and aarch64-linux: Debian's rustc-web/cargo-web and the standard library's sources
-#     (rust-web-src), unpacked into ~/.cache/flexible-slider-crank, since no prebuilt Rust standard library for
-#     those targets can be installed here; std is compiled with the FMU (-Zbuild-std), linked by
-#     mingw-w64 (Windows) and zig (macOS, ARM64 Linux against glibc 2.28's symbol versions), the two
-#     macOS slices merged by llvm-lipo.
+#   - win64 and darwin64: Debian's rustc-web/cargo-web and the standard library's sources
+#     (rust-web-src), unpacked into ~/.cache/flexible-slider-crank, since no prebuilt Rust standard
+#     library for those targets can be installed here; std is compiled with the FMU (-Zbuild-std),
+#     linked by mingw-w64 (Windows) and zig (macOS), the two macOS slices merged by llvm-lipo;
+#   - aarch64-linux: the same compiler with Debian's prebuilt ARM64 standard library (its arm64
+#     package of the same version, unpacked beside it), linked by zig against glibc 2.28's symbol
+#     versions.
 # Set-up needs the package registries; the builds then run offline. Paths are remapped, the DLL has
 # no link time stamps and the zip's entries have fixed time stamps, so the same sources give the same
 # bytes.
@@ -47,11 +49,17 @@ toolchain=${XDG_CACHE_HOME:-$HOME/.cache}/flexible-slider-crank/rust-web-$rust_w
 mkdir -p "$(dirname "$toolchain")"
 exec 9>"$toolchain.lock"
 flock 9 # one unpacking at a time when several checkouts build at once
-if [ ! -x "$toolchain/usr/bin/cargo" ]; then
+arm64_std=$toolchain/usr/lib/rustlib/aarch64-unknown-linux-gnu/lib
+if [ ! -x "$toolchain/usr/bin/cargo" ] || [ ! -d "$arm64_std" ]; then
   echo "== unpacking Debian's Rust $rust_web toolchain into $toolchain"
   debs=$(mktemp -d)
   (cd "$debs" && apt-get download -qq rustc-web cargo-web rust-web-src \
     "libstd-rust-web-$rust_web" libstd-rust-web-dev 2>&1 | grep -v unsandboxed || true)
+  # The ARM64 build of the same standard library (Debian's package of the same version for arm64,
+  # from the same pool folder), so that aarch64-linux links a prebuilt std like linux64.
+  arm64=$(apt-get download --print-uris libstd-rust-web-dev | cut -d"'" -f2 | sed 's/_amd64\.deb$/_arm64.deb/')
+  python3 -c 'import sys, urllib.request; urllib.request.urlretrieve(sys.argv[1], sys.argv[2])' \
+    "$arm64" "$debs/libstd-rust-web-dev-arm64.deb"
   rm -rf "$toolchain" && mkdir -p "$toolchain"
   for deb in "$debs"/*.deb; do dpkg-deb -x "$deb" "$toolchain"; done
   rm -rf "$debs"
@@ -137,14 +145,14 @@ darwin64() {
   done
 }
 
-# The same as linux64 for ARM64, with the standard library built from source (no prebuilt one for
-# the target here) and bindgen reading zig's glibc headers for it.
+# The same as linux64 for ARM64, with Debian's compiler and its prebuilt ARM64 standard library,
+# and bindgen reading zig's glibc headers for the target.
 aarch64_linux() {
   local glibc="-I$clang_include -I$zig_dir/lib/libc/include/aarch64-linux-gnu"
   glibc="$glibc -I$zig_dir/lib/libc/include/generic-glibc -I$zig_dir/lib/libc/include/any-linux-any"
   debian env CARGO_PROFILE_RELEASE_STRIP=symbols RUSTFLAGS="$remap" \
     "BINDGEN_EXTRA_CLANG_ARGS_aarch64-unknown-linux-gnu=$glibc" \
-    cargo zigbuild "${build_std[@]}" "${lib[@]}" --target aarch64-unknown-linux-gnu.2.28 \
+    cargo zigbuild "${lib[@]}" --target aarch64-unknown-linux-gnu.2.28 \
     --target-dir "$out/aarch64-linux"
   cp "$out/aarch64-linux/aarch64-unknown-linux-gnu/release/libflexible_slider_crank.so" \
     "$bin/aarch64-linux/FlexibleSliderCrank.so"

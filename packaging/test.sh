@@ -27,8 +27,19 @@ step "the user guide's Rust code (doc test, on the packaged FMU)"
 cargo test --doc --quiet -p flexible-slider-crank
 step "benches and examples compile"
 cargo test --benches --examples --no-run --quiet
-step "cargo test (unit, validation and FMI tests)"
-cargo test --workspace --lib --tests
+step "cargo test (unit, validation and FMI tests; two test programs at a time)"
+# cargo runs its test programs one after another, and one made of a few long tests leaves a core
+# idle. So cargo builds and lists them, and they run here two at a time, each from its package's
+# folder (as cargo runs it), its output printed when it ends; any failure fails the step.
+cargo test --workspace --lib --tests --no-run
+cargo test --workspace --lib --tests --no-run --quiet --message-format=json | .venv/bin/python -c '
+import json, os, sys
+for line in sys.stdin:
+    m = json.loads(line)
+    if m.get("reason") == "compiler-artifact" and m.get("executable") and m["profile"]["test"]:
+        print(os.path.dirname(m["manifest_path"]), m["executable"])' >target/test-programs.txt
+xargs -P 2 -L 1 bash -c 'cd "$0" && out=$("$1" 2>&1); status=$?
+  printf "== %s\n%s\n" "$1" "$out"; exit "$status"' <target/test-programs.txt
 step "fuzzing: state deserialization, fmi2* and fmi3* call sequences, 60 s each"
 bash packaging/fuzz.sh 60
 step "platform test tools: wine (win64 DLL), debootstrap (an older Debian for linux64), qemu-user and"

@@ -17,7 +17,7 @@ fn packaged_fmu() -> PathBuf {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
     let status = std::process::Command::new(env!("CARGO"))
         .current_dir(&root)
-        .args(["run", "--release", "--quiet", "-p", "packaging"])
+        .args(["run", "--quiet", "-p", "packaging"])
         .stdout(std::process::Stdio::null())
         .status()
         .unwrap();

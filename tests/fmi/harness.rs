@@ -1,4 +1,4 @@
-//! Loads the release library once, captures the FMU's log messages by instance name, and wraps the
+//! Loads the library (the development profile's, which these tests build anyway) once, captures the FMU's log messages by instance name, and wraps the
 //! raw calls in small safe methods.
 
 use std::collections::HashMap;
@@ -9,23 +9,20 @@ use std::sync::{Mutex, OnceLock};
 use flexible_slider_crank::fmi::GUID;
 use fmi_sys::fmi2::*;
 
-/// Path of the release library of `package` (`lib<name>.so`); built on demand when a plain
-/// `cargo test` runs first.
+/// Path of the development library of `package` (`lib<name>.so`), built on demand: `cargo test`
+/// builds the slider-crank's for the tests, not the other packages'.
 fn library_of(package: &str, name: &str) -> PathBuf {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
     let status = std::process::Command::new(env!("CARGO"))
         .current_dir(&root)
-        .args(["build", "--release", "--lib", "--quiet", "-p", package])
+        .args(["build", "--lib", "--quiet", "-p", package])
         .status()
         .unwrap();
-    assert!(
-        status.success(),
-        "cargo build --release --lib -p {package} failed"
-    );
-    root.join(format!("target/release/lib{name}.so"))
+    assert!(status.success(), "cargo build --lib -p {package} failed");
+    root.join(format!("target/debug/lib{name}.so"))
 }
 
-/// Path of the slider-crank's release library.
+/// Path of the slider-crank's library.
 pub fn library_path() -> PathBuf {
     static PATH: OnceLock<PathBuf> = OnceLock::new();
     PATH.get_or_init(|| library_of("flexible-slider-crank", "flexible_slider_crank"))
