@@ -1,5 +1,5 @@
-//! Loads the library (the development profile's, which these tests build anyway) once, captures the FMU's log messages by instance name, and wraps the
-//! raw calls in small safe methods.
+//! Loads the library (the development profile's, which these tests build anyway) once, captures
+//! the FMU's log messages by instance name, and wraps the raw calls in small safe methods.
 
 use std::collections::HashMap;
 use std::ffi::CString;
