@@ -21,9 +21,18 @@
 # Set-up needs the package registries; the builds then run offline. Paths are remapped, the DLL has
 # no link time stamps and the zip's entries have fixed time stamps, so the same sources give the same
 # bytes.
+#
+#   bash packaging/release.sh                  # the binaries, then the FMUs and systems
+#   bash packaging/release.sh --binaries-only  # the binaries only, in target/cross/binaries
+#                                              # (then: cargo run -p packaging -- --binaries DIR)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
+case ${1:-} in
+  "") package=1 ;;
+  --binaries-only) package=0 ;;
+  *) echo "usage: bash packaging/release.sh [--binaries-only]" >&2; exit 2 ;;
+esac
 user_cargo_home=${CARGO_HOME:-$HOME/.cargo}
 
 bash packaging/bootstrap.sh
@@ -177,6 +186,7 @@ for i in "${!jobs[@]}"; do
   fi
 done
 [ "$failed" -eq 0 ]
+[ "$package" -eq 1 ] || exit 0
 
 # --- the FMU -----------------------------------------------------------------------------------
 # The packaging program only zips the libraries built above (and computes the reference results

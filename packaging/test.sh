@@ -13,6 +13,35 @@ cd "$(dirname "$0")/.."
 step() { echo "== [${SECONDS} s] $*"; }
 
 bash packaging/bootstrap.sh
+step "platform test tools: wine (win64 DLL), debootstrap (an older Debian for linux64), qemu-user and"
+echo "   Debian's ARM64 C library (aarch64-linux)"
+need=()
+for p in wine wine64 debootstrap qemu-user libc6-arm64-cross libgcc-s1-arm64-cross; do dpkg -s "$p" >/dev/null 2>&1 || need+=("$p"); done
+if [ ${#need[@]} -gt 0 ]; then
+  sudo=""
+  [ "$(id -u)" -ne 0 ] && sudo=sudo
+  $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${need[@]}" >/dev/null
+fi
+# The older Debian root the linux64 binary is tested in, made while the steps below run (it takes
+# network and disk, hardly any processor).
+mkdir -p target/platform-tests
+old_debian=target/platform-tests/bullseye
+root_pid=""
+if [ "$(id -u)" -eq 0 ] && [ ! -x "$old_debian/usr/bin/ldd" ]; then
+  rm -rf "$old_debian"
+  debootstrap --variant=minbase bullseye "$old_debian" http://deb.debian.org/debian \
+    >target/platform-tests/debootstrap.log 2>&1 &
+  root_pid=$!
+fi
+# The release binaries (four cross builds, the largest part of the command) build in the
+# background at the lowest priority, on the processor time the steps below leave idle: a crate
+# compiled alone, a test program's last minutes, rustdoc. Their own process group, so that a
+# failing step stops them too.
+step "release binaries: linux64 (glibc 2.28), win64, darwin64, aarch64-linux, in the background"
+echo "   at the lowest priority (log: target/release-binaries.log)"
+setsid nice -n 19 bash packaging/release.sh --binaries-only >target/release-binaries.log 2>&1 &
+release_pid=$!
+trap 'kill -- "-$release_pid" 2>/dev/null || true' EXIT
 step "cargo fmt --check"
 cargo fmt --all -- --check
 step "cargo clippy --all-targets -D warnings"
@@ -42,32 +71,18 @@ xargs -P 2 -L 1 bash -c 'cd "$0" && out=$("$1" 2>&1); status=$?
   printf "== %s\n%s\n" "$1" "$out"; exit "$status"' <target/test-programs.txt
 step "fuzzing: state deserialization, fmi2* and fmi3* call sequences, 60 s each"
 bash packaging/fuzz.sh 60
-step "platform test tools: wine (win64 DLL), debootstrap (an older Debian for linux64), qemu-user and"
-echo "   Debian's ARM64 C library (aarch64-linux)"
-need=()
-for p in wine wine64 debootstrap qemu-user libc6-arm64-cross libgcc-s1-arm64-cross; do dpkg -s "$p" >/dev/null 2>&1 || need+=("$p"); done
-if [ ${#need[@]} -gt 0 ]; then
-  sudo=""
-  [ "$(id -u)" -ne 0 ] && sudo=sudo
-  $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${need[@]}" >/dev/null
+step "waiting for the release binaries"
+if ! wait "$release_pid"; then
+  cat target/release-binaries.log >&2
+  exit 1
 fi
-# The older Debian root the linux64 binary is tested in, made while the release builds run (it
-# takes network and disk, hardly any processor).
-old_debian=target/platform-tests/bullseye
-root_pid=""
-if [ "$(id -u)" -eq 0 ] && [ ! -x "$old_debian/usr/bin/ldd" ]; then
-  mkdir -p target/platform-tests
-  rm -rf "$old_debian"
-  debootstrap --variant=minbase bullseye "$old_debian" http://deb.debian.org/debian \
-    >target/platform-tests/debootstrap.log 2>&1 &
-  root_pid=$!
-fi
-step "release FMU: linux64 (glibc 2.28), win64, darwin64; FMI 3 adds aarch64-linux"
-bash packaging/release.sh
+grep -H '^real' target/cross/logs/*.log # each cross build's wall time
 if [ -n "$root_pid" ] && ! wait "$root_pid"; then
   cat target/platform-tests/debootstrap.log >&2
   exit 1
 fi
+step "release FMU: linux64 (glibc 2.28), win64, darwin64; FMI 3 adds aarch64-linux"
+cargo run --quiet -p packaging -- --binaries target/cross/binaries
 # pytest runs on the release FMUs, the optimized libraries that ship, in place of the development ones.
 cp -R target/fmu/release/. target/fmu/
 step "pytest (release FMU through fmpy and libcosimpy; release binaries on every platform)"
