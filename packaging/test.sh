@@ -35,11 +35,14 @@ if [ "$(id -u)" -eq 0 ] && [ ! -x "$old_debian/usr/bin/ldd" ]; then
 fi
 # The release binaries (four cross builds, the largest part of the command) build in the
 # background at the lowest priority, on the processor time the steps below leave idle: a crate
-# compiled alone, a test program's last minutes, rustdoc. Their own process group, so that a
-# failing step stops them too.
+# compiled alone, a test program's last minutes, rustdoc. Their own session, so that a failing
+# step stops them too (the process group's kill below); the kernel then schedules the session as
+# a group of its own (autogroup), which gets as much as the foreground whatever its processes'
+# nice value, unless the group's own nice value is raised too.
 step "release binaries: linux64 (glibc 2.28), win64, darwin64, aarch64-linux, in the background"
 echo "   at the lowest priority (log: target/release-binaries.log)"
-setsid nice -n 19 bash packaging/release.sh --binaries-only >target/release-binaries.log 2>&1 &
+setsid bash -c '{ echo 19 >/proc/self/autogroup; } 2>/dev/null || true
+  exec nice -n 19 bash packaging/release.sh --binaries-only' >target/release-binaries.log 2>&1 &
 release_pid=$!
 trap 'kill -- "-$release_pid" 2>/dev/null || true' EXIT
 step "cargo fmt --check"
