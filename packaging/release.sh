@@ -8,19 +8,15 @@
 # and the FMI 3.0 twins in target/fmu/release/fmi3/ with the same libraries in FMI 3's platform folders
 # (the universal binary's two slices apart: binaries/x86_64-darwin and binaries/aarch64-darwin), plus
 # binaries/aarch64-linux (ARM64 Linux, glibc 2.28 or later), which FMI 2.0 cannot name,
-# from this workspace, with only Debian packages, crates and PyPI packages:
-#   - linux64: this machine's Rust toolchain, linked by zig (PyPI `ziglang`) through cargo-zigbuild
-#     against glibc 2.28's symbol versions;
-#   - win64 and darwin64: Debian's rustc-web/cargo-web and the standard library's sources
-#     (rust-web-src), unpacked into ~/.cache/flexible-slider-crank, since no prebuilt Rust standard
-#     library for those targets can be installed here; std is compiled with the FMU (-Zbuild-std),
-#     linked by mingw-w64 (Windows) and zig (macOS), the two macOS slices merged by llvm-lipo;
-#   - aarch64-linux: the same compiler with Debian's prebuilt ARM64 standard library (its arm64
-#     package of the same version, unpacked beside it), linked by zig against glibc 2.28's symbol
-#     versions.
-# Set-up needs the package registries; the builds then run offline. Paths are remapped, the DLL has
-# no link time stamps and the zip's entries have fixed time stamps, so the same sources give the same
-# bytes.
+# from this workspace, with this machine's Rust toolchain (rustup) and the Rust project's prebuilt
+# standard library for each target (`rustup target add`), Debian packages, crates and PyPI packages:
+#   - linux64 and aarch64-linux: linked by zig (PyPI `ziglang`) through cargo-zigbuild against
+#     glibc 2.28's symbol versions;
+#   - win64: linked by mingw-w64;
+#   - darwin64: linked by zig, the two macOS slices merged by llvm-lipo.
+# Set-up needs the package registries and rustup's server; the builds then run offline. Paths are
+# remapped, the DLL has no link time stamps and the zip's entries have fixed time stamps, so the same
+# sources and the same toolchain give the same bytes.
 #
 #   bash packaging/release.sh                  # the binaries, then the FMUs and systems
 #   bash packaging/release.sh --binaries-only  # the binaries only, in target/cross/binaries
@@ -37,9 +33,9 @@ user_cargo_home=${CARGO_HOME:-$HOME/.cargo}
 
 bash packaging/bootstrap.sh
 
-# --- set-up: system packages and the Debian Rust toolchain ------------------------------------
+# --- set-up: system packages and the targets' standard libraries -----------------------------
 need=()
-for p in gcc-mingw-w64-x86-64 clang llvm libllvm22 libgit2-1.5 libcurl4 libssh2-1 libsqlite3-0; do
+for p in gcc-mingw-w64-x86-64 clang llvm; do
   dpkg -s "$p" >/dev/null 2>&1 || need+=("$p")
 done
 sudo=""
@@ -49,56 +45,23 @@ if [ ${#need[@]} -gt 0 ]; then
   $sudo apt-get update -qq
   $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${need[@]}" >/dev/null
 fi
-
-rust_web=1.96
-# One fixed place for every checkout: cargo identifies the standard library's packages by their
-# absolute path, so a toolchain unpacked inside each checkout would make the binaries differ between
-# checkouts.
-toolchain=${XDG_CACHE_HOME:-$HOME/.cache}/flexible-slider-crank/rust-web-$rust_web
-mkdir -p "$(dirname "$toolchain")"
-exec 9>"$toolchain.lock"
-flock 9 # one unpacking at a time when several checkouts build at once
-arm64_std=$toolchain/usr/lib/rustlib/aarch64-unknown-linux-gnu/lib
-if [ ! -x "$toolchain/usr/bin/cargo" ] || [ ! -d "$arm64_std" ]; then
-  echo "== unpacking Debian's Rust $rust_web toolchain into $toolchain"
-  debs=$(mktemp -d)
-  (cd "$debs" && apt-get download -qq rustc-web cargo-web rust-web-src \
-    "libstd-rust-web-$rust_web" libstd-rust-web-dev 2>&1 | grep -v unsandboxed || true)
-  # The ARM64 build of the same standard library (Debian's package of the same version for arm64,
-  # from the same pool folder), so that aarch64-linux links a prebuilt std like linux64.
-  arm64=$(apt-get download --print-uris libstd-rust-web-dev | cut -d"'" -f2 | sed 's/_amd64\.deb$/_arm64.deb/')
-  python3 -c 'import sys, urllib.request; urllib.request.urlretrieve(sys.argv[1], sys.argv[2])' \
-    "$arm64" "$debs/libstd-rust-web-dev-arm64.deb"
-  rm -rf "$toolchain" && mkdir -p "$toolchain"
-  for deb in "$debs"/*.deb; do dpkg-deb -x "$deb" "$toolchain"; done
-  rm -rf "$debs"
-fi
-flock -u 9
+targets=(x86_64-pc-windows-gnu x86_64-apple-darwin aarch64-apple-darwin aarch64-unknown-linux-gnu)
+rustup target add "${targets[@]}" 2>&1 | grep -v "is up to date" || true
 zig_dir=$(.venv/bin/python -c 'import ziglang, os; print(os.path.dirname(ziglang.__file__))')
 export PATH="$root/.venv/bin:$zig_dir:$PATH"
 clang_include="$(clang -print-resource-dir)/include"
 
-# Debian's toolchain (its std sources serve -Zbuild-std).
-debian() {
-  env PATH="$toolchain/usr/bin:$PATH" RUSTC_BOOTSTRAP=1 \
-    LD_LIBRARY_PATH="$toolchain/usr/lib/x86_64-linux-gnu${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" "$@"
-}
-
 # --- set-up: every crate the offline builds compile ---------------------------------------------
 # The builds run offline with a cargo home of their own, emptied and filled here at every run with
-# exactly what they need: this workspace's crates (Cargo.lock) and those of the standard library's
-# own workspace (rust-web-src's library/Cargo.lock: rustc-demangle, the windows crates, …), which
-# -Zbuild-std compiles and which this workspace's lock file does not list. A crate that is not
-# fetched here then fails the build on every machine, not only on one whose cargo cache happens
-# to lack it. Fetching takes seconds.
+# exactly this workspace's crates (Cargo.lock): a crate that is not fetched here then fails the
+# build on every machine, not only on one whose cargo cache happens to lack it. Fetching takes
+# seconds.
 out=$root/target/cross
 cargo_home=$out/cargo-home
-std_workspace=$toolchain/usr/lib/rustlib/src/rust/library/Cargo.toml
 rm -rf "$cargo_home"
 mkdir -p "$cargo_home"
-echo "== fetching the crates of this workspace and of the standard library into $cargo_home"
+echo "== fetching the crates of this workspace into $cargo_home"
 CARGO_HOME=$cargo_home cargo fetch --locked --quiet
-CARGO_HOME=$cargo_home debian cargo fetch --locked --quiet --manifest-path "$std_workspace"
 
 # --- builds: four jobs in parallel (each is mostly one serial chain of crates) ---------------
 bin=$out/binaries
@@ -106,7 +69,6 @@ mkdir -p "$bin/linux64" "$bin/win64" "$bin/darwin64" "$bin/x86_64-darwin" "$bin/
   "$bin/aarch64-linux" "$out/logs"
 export CARGO_HOME=$cargo_home
 remap="--remap-path-prefix=$root=/build --remap-path-prefix=$cargo_home=/cargo"
-remap="$remap --remap-path-prefix=$toolchain/usr/lib/rustlib/src/rust=/rustc/$rust_web"
 lib=(--offline --locked --quiet --release --lib -p flexible-slider-crank -p dc-motor -p lube-circuit)
 
 linux64() {
@@ -118,15 +80,10 @@ linux64() {
   cp "$out/linux/x86_64-unknown-linux-gnu/release/liblube_circuit.so" "$bin/linux64/LubricationCircuit.so"
 }
 
-# The standard library is built without backtrace symbolization (a panic inside the FMU is caught
-# and reported through the master's logger, never printed with a backtrace), which saves compiling
-# its DWARF readers; unwinding stays (catch_unwind at every fmi2 function needs it).
-build_std=(-Zbuild-std=std,panic_unwind -Zbuild-std-features=panic-unwind)
-
 # mingw-w64's linker stamps the time into the DLL unless told not to.
 win64() {
-  debian env CARGO_PROFILE_RELEASE_STRIP=symbols RUSTFLAGS="$remap -C link-arg=-Wl,--no-insert-timestamp" \
-    cargo build "${build_std[@]}" "${lib[@]}" --target x86_64-pc-windows-gnu --target-dir "$out/win"
+  env CARGO_PROFILE_RELEASE_STRIP=symbols RUSTFLAGS="$remap -C link-arg=-Wl,--no-insert-timestamp" \
+    cargo build "${lib[@]}" --target x86_64-pc-windows-gnu --target-dir "$out/win"
   cp "$out/win/x86_64-pc-windows-gnu/release/flexible_slider_crank.dll" "$bin/win64/FlexibleSliderCrank.dll"
   cp "$out/win/x86_64-pc-windows-gnu/release/dc_motor.dll" "$bin/win64/DcMotor.dll"
   cp "$out/win/x86_64-pc-windows-gnu/release/lube_circuit.dll" "$bin/win64/LubricationCircuit.dll"
@@ -134,13 +91,14 @@ win64() {
 
 # zig's Mach-O linker exports every symbol of default visibility (it ignores rustc's export list,
 # hence hidden by default: only the fmi2 functions stay exported), strips local symbols (-x) and
-# signs the arm64 slice ad hoc; stripping after linking would break that signature.
+# signs the arm64 slice ad hoc; stripping after linking would break that signature. Hidden
+# visibility is an unstable option of rustc (RUSTC_BOOTSTRAP lets the stable compiler take it).
 darwin64() {
   local macos="-I$clang_include -I$zig_dir/lib/libc/include/any-darwin-any"
-  debian env CARGO_PROFILE_RELEASE_STRIP=false MACOSX_DEPLOYMENT_TARGET=11.0 \
+  env CARGO_PROFILE_RELEASE_STRIP=false MACOSX_DEPLOYMENT_TARGET=11.0 RUSTC_BOOTSTRAP=1 \
     RUSTFLAGS="$remap -Zdefault-visibility=hidden -C link-arg=-Wl,-x" \
     "BINDGEN_EXTRA_CLANG_ARGS_x86_64-apple-darwin=$macos" "BINDGEN_EXTRA_CLANG_ARGS_aarch64-apple-darwin=$macos" \
-    cargo zigbuild "${build_std[@]}" "${lib[@]}" --target-dir "$out/darwin" \
+    cargo zigbuild "${lib[@]}" --target-dir "$out/darwin" \
     --target x86_64-apple-darwin --target aarch64-apple-darwin
   for lib in flexible_slider_crank:FlexibleSliderCrank dc_motor:DcMotor lube_circuit:LubricationCircuit; do
     llvm-lipo-14 -create "$out/darwin/x86_64-apple-darwin/release/lib${lib%%:*}.dylib" \
@@ -154,12 +112,11 @@ darwin64() {
   done
 }
 
-# The same as linux64 for ARM64, with Debian's compiler and its prebuilt ARM64 standard library,
-# and bindgen reading zig's glibc headers for the target.
+# The same as linux64 for ARM64, bindgen reading zig's glibc headers for the target.
 aarch64_linux() {
   local glibc="-I$clang_include -I$zig_dir/lib/libc/include/aarch64-linux-gnu"
   glibc="$glibc -I$zig_dir/lib/libc/include/generic-glibc -I$zig_dir/lib/libc/include/any-linux-any"
-  debian env CARGO_PROFILE_RELEASE_STRIP=symbols RUSTFLAGS="$remap" \
+  env CARGO_PROFILE_RELEASE_STRIP=symbols RUSTFLAGS="$remap" \
     "BINDGEN_EXTRA_CLANG_ARGS_aarch64-unknown-linux-gnu=$glibc" \
     cargo zigbuild "${lib[@]}" --target aarch64-unknown-linux-gnu.2.28 \
     --target-dir "$out/aarch64-linux"
