@@ -14,6 +14,8 @@
 #     glibc 2.28's symbol versions;
 #   - win64: linked by mingw-w64;
 #   - darwin64: linked by zig, the two macOS slices merged by llvm-lipo.
+# Where rustup's server cannot be reached, Debian's rustc-web builds win64, darwin64 and aarch64-linux
+# instead (see the set-up below).
 # Set-up needs the package registries and rustup's server; the builds then run offline. Paths are
 # remapped, the DLL has no link time stamps and the zip's entries have fixed time stamps, so the same
 # sources and the same toolchain give the same bytes.
@@ -46,7 +48,52 @@ if [ ${#need[@]} -gt 0 ]; then
   $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${need[@]}" >/dev/null
 fi
 targets=(x86_64-pc-windows-gnu x86_64-apple-darwin aarch64-apple-darwin aarch64-unknown-linux-gnu)
-rustup target add "${targets[@]}" 2>&1 | grep -v "is up to date" || true
+# The cross builds' compiler: the machine's, with rustup's prebuilt standard libraries (cross=()),
+# or, where rustup's server cannot be reached, Debian's rustc-web (cross=(debian)), about 1.7× slower,
+# which compiles std from its sources for win64 and darwin64 (build_std) and links Debian's prebuilt
+# ARM64 std for aarch64-linux.
+cross=()
+build_std=()
+std_remap=""
+if ! rustup target add "${targets[@]}"; then
+  echo "== rustup's standard libraries cannot be installed: Debian's Rust toolchain instead"
+  for p in libllvm22 libgit2-1.5 libcurl4 libssh2-1 libsqlite3-0; do
+    dpkg -s "$p" >/dev/null 2>&1 || $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "$p" >/dev/null
+  done
+  rust_web=1.96
+  # One fixed place for every checkout: cargo identifies the standard library's packages by their
+  # absolute path, so a toolchain unpacked inside each checkout would make the binaries differ
+  # between checkouts.
+  toolchain=${XDG_CACHE_HOME:-$HOME/.cache}/flexible-slider-crank/rust-web-$rust_web
+  mkdir -p "$(dirname "$toolchain")"
+  exec 9>"$toolchain.lock"
+  flock 9 # one unpacking at a time when several checkouts build at once
+  if [ ! -x "$toolchain/usr/bin/cargo" ] || [ ! -d "$toolchain/usr/lib/rustlib/aarch64-unknown-linux-gnu/lib" ]; then
+    echo "== unpacking Debian's Rust $rust_web toolchain into $toolchain"
+    debs=$(mktemp -d)
+    (cd "$debs" && apt-get download -qq rustc-web cargo-web rust-web-src \
+      "libstd-rust-web-$rust_web" libstd-rust-web-dev 2>&1 | grep -v unsandboxed || true)
+    # The ARM64 build of the same standard library (Debian's package of the same version for
+    # arm64, from the same pool folder).
+    arm64=$(apt-get download --print-uris libstd-rust-web-dev | cut -d"'" -f2 | sed 's/_amd64\.deb$/_arm64.deb/')
+    python3 -c 'import sys, urllib.request; urllib.request.urlretrieve(sys.argv[1], sys.argv[2])' \
+      "$arm64" "$debs/libstd-rust-web-dev-arm64.deb"
+    rm -rf "$toolchain" && mkdir -p "$toolchain"
+    for deb in "$debs"/*.deb; do dpkg-deb -x "$deb" "$toolchain"; done
+    rm -rf "$debs"
+  fi
+  flock -u 9
+  cross=(debian)
+  # std without backtrace symbolization (a panic inside the FMU is caught and reported through
+  # the master's logger); unwinding stays (catch_unwind at every fmi2 function needs it).
+  build_std=(-Zbuild-std=std,panic_unwind -Zbuild-std-features=panic-unwind)
+  std_remap="--remap-path-prefix=$toolchain/usr/lib/rustlib/src/rust=/rustc/$rust_web"
+fi
+# Debian's toolchain, for the fallback above.
+debian() {
+  env PATH="$toolchain/usr/bin:$PATH" RUSTC_BOOTSTRAP=1 \
+    LD_LIBRARY_PATH="$toolchain/usr/lib/x86_64-linux-gnu${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" "$@"
+}
 zig_dir=$(.venv/bin/python -c 'import ziglang, os; print(os.path.dirname(ziglang.__file__))')
 export PATH="$root/.venv/bin:$zig_dir:$PATH"
 clang_include="$(clang -print-resource-dir)/include"
@@ -62,13 +109,17 @@ rm -rf "$cargo_home"
 mkdir -p "$cargo_home"
 echo "== fetching the crates of this workspace into $cargo_home"
 CARGO_HOME=$cargo_home cargo fetch --locked --quiet
+if [ ${#build_std[@]} -gt 0 ]; then # the standard library's own workspace's crates, which it compiles
+  CARGO_HOME=$cargo_home debian cargo fetch --locked --quiet \
+    --manifest-path "$toolchain/usr/lib/rustlib/src/rust/library/Cargo.toml"
+fi
 
 # --- builds: four jobs in parallel (each is mostly one serial chain of crates) ---------------
 bin=$out/binaries
 mkdir -p "$bin/linux64" "$bin/win64" "$bin/darwin64" "$bin/x86_64-darwin" "$bin/aarch64-darwin" \
   "$bin/aarch64-linux" "$out/logs"
 export CARGO_HOME=$cargo_home
-remap="--remap-path-prefix=$root=/build --remap-path-prefix=$cargo_home=/cargo"
+remap="--remap-path-prefix=$root=/build --remap-path-prefix=$cargo_home=/cargo $std_remap"
 lib=(--offline --locked --quiet --release --lib -p flexible-slider-crank -p dc-motor -p lube-circuit)
 
 linux64() {
@@ -82,8 +133,8 @@ linux64() {
 
 # mingw-w64's linker stamps the time into the DLL unless told not to.
 win64() {
-  env CARGO_PROFILE_RELEASE_STRIP=symbols RUSTFLAGS="$remap -C link-arg=-Wl,--no-insert-timestamp" \
-    cargo build "${lib[@]}" --target x86_64-pc-windows-gnu --target-dir "$out/win"
+  "${cross[@]}" env CARGO_PROFILE_RELEASE_STRIP=symbols RUSTFLAGS="$remap -C link-arg=-Wl,--no-insert-timestamp" \
+    cargo build "${build_std[@]}" "${lib[@]}" --target x86_64-pc-windows-gnu --target-dir "$out/win"
   cp "$out/win/x86_64-pc-windows-gnu/release/flexible_slider_crank.dll" "$bin/win64/FlexibleSliderCrank.dll"
   cp "$out/win/x86_64-pc-windows-gnu/release/dc_motor.dll" "$bin/win64/DcMotor.dll"
   cp "$out/win/x86_64-pc-windows-gnu/release/lube_circuit.dll" "$bin/win64/LubricationCircuit.dll"
@@ -95,10 +146,10 @@ win64() {
 # visibility is an unstable option of rustc (RUSTC_BOOTSTRAP lets the stable compiler take it).
 darwin64() {
   local macos="-I$clang_include -I$zig_dir/lib/libc/include/any-darwin-any"
-  env CARGO_PROFILE_RELEASE_STRIP=false MACOSX_DEPLOYMENT_TARGET=11.0 RUSTC_BOOTSTRAP=1 \
+  "${cross[@]}" env CARGO_PROFILE_RELEASE_STRIP=false MACOSX_DEPLOYMENT_TARGET=11.0 RUSTC_BOOTSTRAP=1 \
     RUSTFLAGS="$remap -Zdefault-visibility=hidden -C link-arg=-Wl,-x" \
     "BINDGEN_EXTRA_CLANG_ARGS_x86_64-apple-darwin=$macos" "BINDGEN_EXTRA_CLANG_ARGS_aarch64-apple-darwin=$macos" \
-    cargo zigbuild "${lib[@]}" --target-dir "$out/darwin" \
+    cargo zigbuild "${build_std[@]}" "${lib[@]}" --target-dir "$out/darwin" \
     --target x86_64-apple-darwin --target aarch64-apple-darwin
   for lib in flexible_slider_crank:FlexibleSliderCrank dc_motor:DcMotor lube_circuit:LubricationCircuit; do
     llvm-lipo-14 -create "$out/darwin/x86_64-apple-darwin/release/lib${lib%%:*}.dylib" \
@@ -116,7 +167,7 @@ darwin64() {
 aarch64_linux() {
   local glibc="-I$clang_include -I$zig_dir/lib/libc/include/aarch64-linux-gnu"
   glibc="$glibc -I$zig_dir/lib/libc/include/generic-glibc -I$zig_dir/lib/libc/include/any-linux-any"
-  env CARGO_PROFILE_RELEASE_STRIP=symbols RUSTFLAGS="$remap" \
+  "${cross[@]}" env CARGO_PROFILE_RELEASE_STRIP=symbols RUSTFLAGS="$remap" \
     "BINDGEN_EXTRA_CLANG_ARGS_aarch64-unknown-linux-gnu=$glibc" \
     cargo zigbuild "${lib[@]}" --target aarch64-unknown-linux-gnu.2.28 \
     --target-dir "$out/aarch64-linux"
