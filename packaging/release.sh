@@ -55,7 +55,7 @@ targets=(x86_64-pc-windows-gnu x86_64-apple-darwin aarch64-apple-darwin aarch64-
 cross=()
 build_std=()
 std_remap=""
-if ! rustup target add "${targets[@]}"; then
+if ! timeout 300 rustup target add "${targets[@]}"; then
   echo "== rustup's standard libraries cannot be installed: Debian's Rust toolchain instead"
   for p in libllvm22 libgit2-1.5 libcurl4 libssh2-1 libsqlite3-0; do
     dpkg -s "$p" >/dev/null 2>&1 || $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "$p" >/dev/null
