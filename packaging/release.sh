@@ -36,17 +36,17 @@ user_cargo_home=${CARGO_HOME:-$HOME/.cargo}
 bash packaging/bootstrap.sh
 
 # --- set-up: system packages and the targets' standard libraries -----------------------------
-need=()
-for p in gcc-mingw-w64-x86-64 clang llvm; do
-  dpkg -s "$p" >/dev/null 2>&1 || need+=("$p")
-done
-sudo=""
-[ "$(id -u)" -ne 0 ] && sudo=sudo
-if [ ${#need[@]} -gt 0 ]; then
+# Installs the Debian packages given that are not installed yet.
+install_packages() {
+  local need=() p sudo=""
+  for p in "$@"; do dpkg -s "$p" >/dev/null 2>&1 || need+=("$p"); done
+  [ ${#need[@]} -gt 0 ] || return 0
+  [ "$(id -u)" -ne 0 ] && sudo=sudo
   echo "== installing ${need[*]}"
   $sudo apt-get update -qq
   $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${need[@]}" >/dev/null
-fi
+}
+install_packages gcc-mingw-w64-x86-64 clang llvm
 targets=(x86_64-pc-windows-gnu x86_64-apple-darwin aarch64-apple-darwin aarch64-unknown-linux-gnu)
 # The cross builds' compiler: the machine's, with rustup's prebuilt standard libraries (cross=()),
 # or, where rustup's server cannot be reached, Debian's rustc-web (cross=(debian)), about 1.7× slower,
@@ -57,9 +57,7 @@ build_std=()
 std_remap=""
 if ! timeout 300 rustup target add "${targets[@]}"; then
   echo "== rustup's standard libraries cannot be installed: Debian's Rust toolchain instead"
-  for p in libllvm22 libgit2-1.5 libcurl4 libssh2-1 libsqlite3-0; do
-    dpkg -s "$p" >/dev/null 2>&1 || $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "$p" >/dev/null
-  done
+  install_packages libllvm22 libgit2-1.5 libcurl4 libssh2-1 libsqlite3-0
   rust_web=1.96
   # One fixed place for every checkout: cargo identifies the standard library's packages by their
   # absolute path, so a toolchain unpacked inside each checkout would make the binaries differ
