@@ -51,19 +51,25 @@ step "cargo clippy --all-targets -D warnings"
 cargo clippy --workspace --all-targets -- -D warnings
 step "cargo doc (warnings are errors)"
 RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps --quiet
-# The Rust tests' FMU: the libraries in the development profile, which the tests build anyway (the
-# release build below makes the optimized ones; both give the same results to the bit).
+# One development build of the FMUs' libraries, the packaging program and the test programs, which
+# the steps below share: built with the tests' dev-dependencies, crates below the libraries get
+# features those alone do not turn on, and cargo builds a crate once per feature set. So the packaging
+# program runs from that build: `cargo run -p packaging` would build it, the libraries and every crate
+# under them a second time.
+step "development build: the FMUs' libraries, the packaging program, the test programs"
+cargo build --workspace --lib --bins --tests
+# The Rust tests' FMU: the libraries in the development profile (the release build below makes the
+# optimized ones; both give the same results to the bit).
 step "package the FMU (development build)"
-cargo run --quiet -p packaging
+target/debug/packaging
 step "the user guide's Rust code (doc test, on the packaged FMU)"
 cargo test --doc --quiet -p flexible-slider-crank
 step "benches and examples compile"
 cargo test --benches --examples --no-run --quiet
 step "cargo test (unit, validation and FMI tests; two test programs at a time)"
 # cargo runs its test programs one after another, and one made of a few long tests leaves a core
-# idle. So cargo builds and lists them, and they run here two at a time, each from its package's
+# idle. So cargo lists them (built above), and they run here two at a time, each from its package's
 # folder (as cargo runs it), its output printed when it ends; any failure fails the step.
-cargo test --workspace --lib --tests --no-run
 cargo test --workspace --lib --tests --no-run --quiet --message-format=json | .venv/bin/python -c '
 import json, os, sys
 for line in sys.stdin:
@@ -85,7 +91,7 @@ if [ -n "$root_pid" ] && ! wait "$root_pid"; then
   exit 1
 fi
 step "release FMU: linux64 (glibc 2.28), win64, darwin64; FMI 3 adds aarch64-linux"
-cargo run --quiet -p packaging -- --binaries target/cross/binaries
+target/debug/packaging --binaries target/cross/binaries
 # pytest runs on the release FMUs, the optimized libraries that ship, in place of the development ones.
 cp -R target/fmu/release/. target/fmu/
 step "pytest (release FMU through fmpy and libcosimpy; release binaries on every platform)"

@@ -13,11 +13,14 @@ use fmi::fmi2::import::Fmi2Import;
 use fmi::fmi2::instance::{CoSimulation, Common};
 use fmi::traits::FmiImport;
 
+#[path = "support/development_build.rs"]
+mod development_build;
+
+/// Packages the development FMUs and returns the slider-crank's.
 fn packaged_fmu() -> PathBuf {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
-    let status = std::process::Command::new(env!("CARGO"))
+    let status = std::process::Command::new(development_build::build().join("packaging"))
         .current_dir(&root)
-        .args(["run", "--quiet", "-p", "packaging"])
         .stdout(std::process::Stdio::null())
         .status()
         .unwrap();

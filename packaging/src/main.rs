@@ -1,8 +1,8 @@
 //! Packaging: zips the shared libraries with `modelDescription.xml` and the documentation into an
 //! FMU (FMI 2.0.4 §2.3), and the systems built from the workspace's FMUs.
 //!
-//! - `cargo run --release -p packaging`: builds the libraries for this machine (in the development
-//!   profile instead without `--release`) and writes
+//! - `cargo run --release -p packaging`: builds the libraries for this machine (without `--release`,
+//!   in the development profile, with the workspace's test programs: [`build_libraries`]) and writes
 //!   `target/fmu/FlexibleSliderCrank.fmu`, `target/fmu/DcMotor.fmu` and
 //!   `target/fmu/LubricationCircuit.fmu` with their one binary (`binaries/linux64` on Linux), the
 //!   motor-crank system as an SSP, `target/fmu/MotorCrank.ssp`
@@ -43,32 +43,43 @@ use flexible_slider_crank::fmi::{
     TERMINALS_AND_ICONS_FMI3,
 };
 
-/// Builds the cdylib of `package` and returns the path of the `.so` cargo reports: in the profile
-/// this program was built in, so `cargo run --release -p packaging` packages the release library
-/// (the FMU to use) and `cargo run -p packaging` the development one, which the tests build anyway
-/// (the same results to the bit, about 1.3 times slower; the test command packages that one).
-fn build_library(root: &Path, package: &str) -> Result<PathBuf, Box<dyn Error>> {
+/// The workspace's FMU packages and their library names.
+const FMU_PACKAGES: [(&str, &str); 3] = [
+    ("flexible-slider-crank", "flexible_slider_crank"),
+    ("dc-motor", "dc_motor"),
+    ("lube-circuit", "lube_circuit"),
+];
+
+/// Builds the three FMUs' cdylibs for this machine and returns the `.so` of each that cargo
+/// reports, in the profile this program was built in: `cargo run --release -p packaging` packages
+/// the release libraries (the FMUs to use), `cargo run -p packaging` the development ones (the same
+/// results to the bit, about 1.3 times slower; the test command packages those).
+///
+/// The development libraries are built as the tests build them, with the whole workspace's test
+/// programs: the tests' dev-dependencies turn on features of crates the libraries share (fmi-sys's,
+/// libc's, log's …), and cargo builds a crate once per feature set. Built alone, the libraries and
+/// every crate below them (faer, nalgebra) would be compiled a second time, and each build would
+/// replace the other's `target/debug/lib*.so`.
+fn build_libraries(root: &Path) -> Result<Libraries, Box<dyn Error>> {
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
-    let profile = if cfg!(debug_assertions) {
-        "dev"
+    let mut args = vec!["build", "--lib", "--message-format=json"];
+    if cfg!(debug_assertions) {
+        args.extend(["--profile", "dev", "--workspace", "--tests"]);
     } else {
-        "release"
-    };
+        args.extend(["--profile", "release"]);
+        args.extend(
+            FMU_PACKAGES
+                .iter()
+                .flat_map(|(package, _)| ["-p", *package]),
+        );
+    }
     let mut child = Command::new(cargo)
         .current_dir(root)
-        .args([
-            "build",
-            "--profile",
-            profile,
-            "--lib",
-            "-p",
-            package,
-            "--message-format=json",
-        ])
+        .args(&args)
         .stdout(Stdio::piped())
         .spawn()?;
     let stdout = child.stdout.take().ok_or("no stdout from cargo")?;
-    let mut library = None;
+    let mut built = Vec::new();
     for line in BufReader::new(stdout).lines() {
         let message: serde_json::Value = serde_json::from_str(&line?)?;
         let is_cdylib = message["target"]["crate_types"]
@@ -77,15 +88,28 @@ fn build_library(root: &Path, package: &str) -> Result<PathBuf, Box<dyn Error>> 
         if message["reason"] == "compiler-artifact" && is_cdylib {
             for file in message["filenames"].as_array().into_iter().flatten() {
                 if let Some(path) = file.as_str().filter(|p| p.ends_with(".so")) {
-                    library = Some(PathBuf::from(path));
+                    let name = message["target"]["name"].as_str().unwrap_or_default();
+                    built.push((name.to_owned(), PathBuf::from(path)));
                 }
             }
         }
     }
     if !child.wait()?.success() {
-        return Err(format!("cargo build --profile {profile} failed").into());
+        return Err(format!("cargo {} failed", args.join(" ")).into());
     }
-    library.ok_or_else(|| "cargo reported no .so for the cdylib".into())
+    let library = |name: &str| {
+        built
+            .iter()
+            .find(|(built_name, _)| built_name == name)
+            .map(|(_, path)| vec![("linux64", path.clone())])
+            .ok_or_else(|| format!("cargo reported no lib{name}.so"))
+    };
+    let [crank, motor, circuit] = FMU_PACKAGES.map(|(_, name)| library(name));
+    Ok(Libraries {
+        crank: crank?,
+        motor: motor?,
+        circuit: circuit?,
+    })
 }
 
 /// The release build's platform folders and the file extension of their shared libraries: FMI
@@ -358,17 +382,11 @@ fn main() -> Result<(), Box<dyn Error>> {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..");
     let args: Vec<String> = std::env::args().skip(1).collect();
     let written = match args.as_slice() {
-        [] => {
-            let built = |package| {
-                Ok::<_, Box<dyn Error>>(vec![("linux64", build_library(&root, package)?)])
-            };
-            let libraries = Libraries {
-                crank: built("flexible-slider-crank")?,
-                motor: built("dc-motor")?,
-                circuit: built("lube-circuit")?,
-            };
-            package(&root, &root.join("target").join("fmu"), &libraries)?
-        }
+        [] => package(
+            &root,
+            &root.join("target").join("fmu"),
+            &build_libraries(&root)?,
+        )?,
         [flag, dir] if flag == "--binaries" => {
             let dir = PathBuf::from(dir);
             let libraries = Libraries {

@@ -1,4 +1,4 @@
-//! Loads the library (the development profile's, which these tests build anyway) once, captures
+//! Loads the library (the development build's, which `cargo test` builds anyway) once, captures
 //! the FMU's log messages by instance name, and wraps the raw calls in small safe methods.
 
 use std::collections::HashMap;
@@ -9,23 +9,15 @@ use std::sync::{Mutex, OnceLock};
 use flexible_slider_crank::fmi::GUID;
 use fmi_sys::fmi2::*;
 
-/// Path of the development library of `package` (`lib<name>.so`), built on demand: `cargo test`
-/// builds the slider-crank's for the tests, not the other packages'.
-fn library_of(package: &str, name: &str) -> PathBuf {
-    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
-    let status = std::process::Command::new(env!("CARGO"))
-        .current_dir(&root)
-        .args(["build", "--lib", "--quiet", "-p", package])
-        .status()
-        .unwrap();
-    assert!(status.success(), "cargo build --lib -p {package} failed");
-    root.join(format!("target/debug/lib{name}.so"))
+/// Path of the development library `lib<name>.so`, built on demand.
+fn library_of(name: &str) -> PathBuf {
+    crate::development_build::build().join(format!("lib{name}.so"))
 }
 
 /// Path of the slider-crank's library.
 pub fn library_path() -> PathBuf {
     static PATH: OnceLock<PathBuf> = OnceLock::new();
-    PATH.get_or_init(|| library_of("flexible-slider-crank", "flexible_slider_crank"))
+    PATH.get_or_init(|| library_of("flexible_slider_crank"))
         .clone()
 }
 
@@ -45,7 +37,7 @@ pub fn motor() -> &'static Fmi2Binding {
     MOTOR.get_or_init(|| {
         init_logging();
         // SAFETY: loading our own FMU library; its initialisers do nothing.
-        unsafe { Fmi2Binding::new(library_of("dc-motor", "dc_motor")) }.unwrap()
+        unsafe { Fmi2Binding::new(library_of("dc_motor")) }.unwrap()
     })
 }
 
@@ -55,7 +47,7 @@ pub fn circuit() -> &'static Fmi2Binding {
     CIRCUIT.get_or_init(|| {
         init_logging();
         // SAFETY: loading our own FMU library; its initialisers do nothing.
-        unsafe { Fmi2Binding::new(library_of("lube-circuit", "lube_circuit")) }.unwrap()
+        unsafe { Fmi2Binding::new(library_of("lube_circuit")) }.unwrap()
     })
 }
 

@@ -9,6 +9,8 @@
 
 mod circuit;
 mod conformance;
+#[path = "../support/development_build.rs"]
+mod development_build;
 mod fmi3;
 mod harness;
 mod instances;
