@@ -20,7 +20,8 @@ Each case ends as `rejected` (an error before the first step: the message must n
 `stopped` (fmi2Discard/fmi2Error during the run, with a message) or `ran`, with or without
 validity warnings. A case violates the FMU's promises if the process dies, if it does not end
 within --timeout seconds, if an output is not finite, if the energy balance of the outputs
-(docs/guide/variables.md, "Outputs") drifts by more than 10 x solver.relativeTolerance of the largest energy term,
+(docs/guide/variables.md, "Outputs") drifts by more than 10 x solver.integrationTolerance (the tolerance
+the model is integrated at) of the largest energy term,
 or if an output leaves a validity-monitor bound without a warning having been logged. The exit
 code is the number of violations (0: all promises held).
 """
@@ -129,7 +130,7 @@ def run_case(unzipdir, md, values, stop_time, queue):
     vars_ = {v.name: v for v in md.modelVariables}
     outputs = [v for v in md.modelVariables if v.causality == "output" and v.type == "Real"]
     reals = ["joint.journalRadius", "rod.length", "crank.length", "joint.clearance",
-             "solver.relativeTolerance"]
+             "solver.integrationTolerance"]
     reals += [f"{joint}.{name}" for joint in CRANK_JOINTS for name in ("journalRadius", "clearance")]
     record = {"values": values, "outcome": "ran", "message": "", "warnings": [],
               "violations": [], "max_step_wall": 0.0, "time_reached": 0.0, "wall": 0.0}
@@ -168,7 +169,7 @@ def run_case(unzipdir, md, values, stop_time, queue):
             rows.append(row)
             warned = " ".join(m for s, _, m in messages if s == 1)
             check_row(row, p, formulation, warned, t, record["violations"])
-        check_balance(rows, p["solver.relativeTolerance"], record["violations"])
+        check_balance(rows, p["solver.integrationTolerance"], record["violations"])
     except Exception as e:  # noqa: BLE001 - an FMU error is an outcome, recorded with its message
         record["outcome"] = "rejected" if stage == "setup" else "stopped"
         errors = [m for s, _, m in messages if s >= 2]
