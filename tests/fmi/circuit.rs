@@ -1,8 +1,9 @@
 //! The lubrication circuit's FMU through its C API: its steady start in closed form, the sump's
 //! response to the bearings' heat against its first-order solution, its state (bit-exact,
 //! serialized into another instance), the warning of an empty gallery and its refusals of bad
-//! calls, each naming what was wrong.
+//! calls, each naming what was wrong; and its oil, by default the slider-crank's.
 
+use fmi_export::table::{Kind, Variable};
 use fmi_sys::fmi2::*;
 
 use crate::harness::Instance;
@@ -50,6 +51,29 @@ fn loaded_circuit(name: &str) -> Instance {
 /// ρ c_p Q_p ε (T_s − T_c) = 21.75 W. Then, the bearings' 16 W in, the sump relaxes towards
 /// T_c + 16 W/(ρ c_p Q_p ε) with the time constant V_s/(Q_p ε) = 200 s: after 20 s of 1 ms steps
 /// within 1e-9 of its first-order solution, the pressure unchanged within 1e-9.
+/// The start value of the Real variable `name` of a variable table.
+fn start<V>(table: &[Variable<V>], name: &str) -> f64 {
+    match table.iter().find(|v| v.name == name).map(|v| &v.kind) {
+        Some(Kind::Real { start: Some(s), .. }) => *s,
+        _ => panic!("no Real {name} with a start value"),
+    }
+}
+
+/// The circuit's oil properties start as the slider-crank's (each FMU owns its table, so this is
+/// what keeps them one oil when a system runs on their start values).
+#[test]
+fn circuit_oil_starts_as_the_slider_cranks() {
+    for name in ["oil.density", "oil.specificHeat"] {
+        let circuit = start(lube_circuit::variables::VARIABLES, name);
+        let crank = start(flexible_slider_crank::variables::VARIABLES, name);
+        assert_eq!(
+            circuit.to_bits(),
+            crank.to_bits(),
+            "{name}: {circuit} against {crank}"
+        );
+    }
+}
+
 #[test]
 fn circuit_starts_steady_and_its_sump_relaxes_at_first_order() {
     let m = loaded_circuit("circuit-start");
