@@ -3,10 +3,9 @@
 //! serialized into another instance), the warning of an empty gallery and its refusals of bad
 //! calls, each naming what was wrong; and its oil, by default the slider-crank's.
 
-use fmi_export::table::{Kind, Variable};
 use fmi_sys::fmi2::*;
 
-use crate::harness::Instance;
+use crate::harness::{Instance, real_start};
 
 /// Value reference of a circuit variable by name.
 fn vr(name: &str) -> u32 {
@@ -45,27 +44,13 @@ fn loaded_circuit(name: &str) -> Instance {
     m
 }
 
-/// The start: the gallery at the relief valve's steady pressure p_c + (Q_p − Q_b)/k_r for the
-/// bearings' flows (defaults Q_p = 5 cm³/s, p_c = 2 bar, k_r = 1e-10 m³/(s Pa): 2.4 bar), the
-/// sump at 40 °C, the supply half-way to the coolant's 35 °C (ε = 0.5), the cooler taking
-/// ρ c_p Q_p ε (T_s − T_c) = 21.75 W. Then, the bearings' 16 W in, the sump relaxes towards
-/// T_c + 16 W/(ρ c_p Q_p ε) with the time constant V_s/(Q_p ε) = 200 s: after 20 s of 1 ms steps
-/// within 1e-9 of its first-order solution, the pressure unchanged within 1e-9.
-/// The start value of the Real variable `name` of a variable table.
-fn start<V>(table: &[Variable<V>], name: &str) -> f64 {
-    match table.iter().find(|v| v.name == name).map(|v| &v.kind) {
-        Some(Kind::Real { start: Some(s), .. }) => *s,
-        _ => panic!("no Real {name} with a start value"),
-    }
-}
-
 /// The circuit's oil properties start as the slider-crank's (each FMU owns its table, so this is
 /// what keeps them one oil when a system runs on their start values).
 #[test]
 fn circuit_oil_starts_as_the_slider_cranks() {
     for name in ["oil.density", "oil.specificHeat"] {
-        let circuit = start(lube_circuit::variables::VARIABLES, name);
-        let crank = start(flexible_slider_crank::variables::VARIABLES, name);
+        let circuit = real_start(lube_circuit::variables::VARIABLES, name);
+        let crank = real_start(flexible_slider_crank::variables::VARIABLES, name);
         assert_eq!(
             circuit.to_bits(),
             crank.to_bits(),
@@ -74,6 +59,12 @@ fn circuit_oil_starts_as_the_slider_cranks() {
     }
 }
 
+/// The start: the gallery at the relief valve's steady pressure p_c + (Q_p − Q_b)/k_r for the
+/// bearings' flows (defaults Q_p = 5 cm³/s, p_c = 2 bar, k_r = 1e-10 m³/(s Pa): 2.4 bar), the
+/// sump at 40 °C, the supply half-way to the coolant's 35 °C (ε = 0.5), the cooler taking
+/// ρ c_p Q_p ε (T_s − T_c) = 21.75 W. Then, the bearings' 16 W in, the sump relaxes towards
+/// T_c + 16 W/(ρ c_p Q_p ε) with the time constant V_s/(Q_p ε) = 200 s: after 20 s of 1 ms steps
+/// within 1e-9 of its first-order solution, the pressure unchanged within 1e-9.
 #[test]
 fn circuit_starts_steady_and_its_sump_relaxes_at_first_order() {
     let m = loaded_circuit("circuit-start");

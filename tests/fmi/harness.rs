@@ -7,6 +7,7 @@ use std::path::PathBuf;
 use std::sync::{Mutex, OnceLock};
 
 use flexible_slider_crank::fmi::GUID;
+use fmi_export::table::{Kind, Variable};
 use fmi_sys::fmi2::*;
 
 /// Path of the development library `lib<name>.so`, built on demand.
@@ -357,6 +358,14 @@ impl Instance {
                 .fmi2DeSerializeFMUstate(self.c, bytes.as_ptr().cast(), bytes.len(), &mut state)
         };
         (status, state)
+    }
+}
+
+/// The start value of the Real variable `name` of a variable table.
+pub fn real_start<V>(table: &[Variable<V>], name: &str) -> f64 {
+    match table.iter().find(|v| v.name == name).map(|v| &v.kind) {
+        Some(Kind::Real { start: Some(s), .. }) => *s,
+        _ => panic!("no Real {name} with a start value"),
     }
 }
 

@@ -188,10 +188,7 @@ fn run(
 /// The slider's position x(θ) = r cos θ + √(l² − (r sin θ − e)²) of the rigid mechanism and its
 /// acceleration ẍ = x′(θ) θ̈ + x″(θ) θ̇².
 fn slider_acceleration(theta: f64, speed: f64, acceleration: f64) -> f64 {
-    let start = |name: &str| match VARIABLES.iter().find(|v| v.name == name).unwrap().kind {
-        Kind::Real { start: Some(s), .. } => s,
-        _ => unreachable!(),
-    };
+    let start = |name: &str| crate::harness::real_start(VARIABLES, name);
     let (r, l, e) = (
         start("crank.length"),
         start("rod.length"),
